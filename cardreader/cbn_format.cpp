@@ -1,0 +1,130 @@
+#include "cardreader/cbn_format.hpp"
+
+#include "cardreader/deck_error.hpp"
+
+#include <fmt/format.h>
+
+#include <bit>
+#include <istream>
+#include <ostream>
+
+namespace parsons::cardreader {
+namespace {
+
+constexpr std::uint8_t kCardMark = 0x80;
+constexpr std::uint8_t kParityBit = 0x40;
+constexpr std::uint8_t kSixBits = 0x3F;
+
+// Adds bit 6 so that bits 6..0 hold an odd number of ones.
+std::uint8_t with_odd_parity(std::uint8_t six) {
+    return std::popcount(static_cast<unsigned>(six)) % 2 == 0 ? six | kParityBit : six;
+}
+
+bool parity_ok(std::uint8_t byte) {
+    return std::popcount(static_cast<unsigned>(byte & 0x7F)) % 2 == 1;
+}
+
+class CbnSource : public CardSource {
+public:
+    CbnSource(std::istream& in, std::string file) : in_(in), file_(std::move(file)) {}
+
+    std::optional<Card> next() override {
+        std::array<std::uint8_t, kCbnCardBytes> bytes{};
+        in_.read(reinterpret_cast<char*>(bytes.data()), kCbnCardBytes);
+        const auto got = static_cast<long>(in_.gcount());
+        if (in_.bad()) {
+            throw DeckError::in_file(file_, "read error");
+        }
+        if (got == 0) {
+            return std::nullopt;
+        }
+        ++card_;
+        const long base = (card_ - 1) * kCbnCardBytes;
+        if (got < kCbnCardBytes) {
+            throw DeckError::at_card_byte(
+                file_, card_, base + got,
+                fmt::format("truncated card: the file ends after {} of its 160 bytes", got));
+        }
+        return cbn_decode(bytes, file_, card_, base);
+    }
+
+private:
+    std::istream& in_;
+    std::string file_;
+    long card_ = 0;
+};
+
+class CbnSink : public CardSink {
+public:
+    CbnSink(std::ostream& out, std::string file) : out_(out), file_(std::move(file)) {}
+    void write(const Card& card) override {
+        auto bytes = cbn_encode(card);
+        out_.write(reinterpret_cast<const char*>(bytes.data()), kCbnCardBytes);
+        if (!out_) {
+            throw DeckError::in_file(file_, "write error");
+        }
+    }
+
+private:
+    std::ostream& out_;
+    std::string file_;
+};
+
+} // namespace
+
+std::array<std::uint8_t, kCbnCardBytes> cbn_encode(const Card& card) {
+    std::array<std::uint8_t, kCbnCardBytes> bytes{};
+    for (int c = 1; c <= kColumns; ++c) {
+        const ColumnWord w = card.column(c);
+        const auto i = static_cast<std::size_t>(2 * (c - 1));
+        bytes.at(i) = with_odd_parity(static_cast<std::uint8_t>((w >> 6) & kSixBits));
+        bytes.at(i + 1) = with_odd_parity(static_cast<std::uint8_t>(w & kSixBits));
+    }
+    bytes[0] |= kCardMark;
+    return bytes;
+}
+
+Card cbn_decode(std::span<const std::uint8_t, kCbnCardBytes> bytes, const std::string& file,
+                long card_index, long byte_base) {
+    if ((bytes[0] & kCardMark) == 0) {
+        throw DeckError::at_card_byte(
+            file, card_index, byte_base,
+            "no card-start mark: bit 7 of the first byte of every card must be set");
+    }
+    Card card;
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        const std::uint8_t b = i == 0 ? static_cast<std::uint8_t>(bytes[i] & ~kCardMark) : bytes[i];
+        const int column = static_cast<int>(i / 2) + 1;
+        if ((b & kCardMark) != 0) {
+            throw DeckError::at_card_byte(
+                file, card_index, byte_base + static_cast<long>(i),
+                fmt::format("card-start mark (bit 7) inside the card at column {}: the card is "
+                            "short or the file is not column binary",
+                            column));
+        }
+        if (!parity_ok(b)) {
+            throw DeckError::at_card_byte(
+                file, card_index, byte_base + static_cast<long>(i),
+                fmt::format("parity error in column {} (byte {:#04x} has even parity; column "
+                            "binary uses odd parity)",
+                            column, bytes[i]));
+        }
+        auto six = static_cast<ColumnWord>(b & kSixBits);
+        if (i % 2 == 0) {
+            card.set_column(column, static_cast<ColumnWord>(six << 6));
+        } else {
+            card.set_column(column, card.column(column) | six);
+        }
+    }
+    return card;
+}
+
+std::unique_ptr<CardSource> make_cbn_source(std::istream& in, std::string file) {
+    return std::make_unique<CbnSource>(in, std::move(file));
+}
+
+std::unique_ptr<CardSink> make_cbn_sink(std::ostream& out, std::string file) {
+    return std::make_unique<CbnSink>(out, std::move(file));
+}
+
+} // namespace parsons::cardreader

@@ -1,0 +1,31 @@
+#include "cardreader/deck_error.hpp"
+
+#include <fmt/format.h>
+
+namespace parsons::cardreader {
+
+DeckError DeckError::in_file(const std::string& file, const std::string& what) {
+    return DeckError(fmt::format("{}: {}", file, what));
+}
+
+DeckError DeckError::at_line(const std::string& file, long line, const std::string& what) {
+    return DeckError(fmt::format("{}:{}: {}", file, line, what));
+}
+
+DeckError DeckError::at_line_column(const std::string& file, long line, int column,
+                                    const std::string& what) {
+    return DeckError(fmt::format("{}:{}:{}: {}", file, line, column, what));
+}
+
+DeckError DeckError::at_card_byte(const std::string& file, long card, long byte_offset,
+                                  const std::string& what) {
+    return DeckError(fmt::format("{}: card {}, byte {} (offset {:#x}): {}", file, card,
+                                 byte_offset + 1, byte_offset, what));
+}
+
+DeckError DeckError::at_card_column(const std::string& file, long card, int column,
+                                    const std::string& what) {
+    return DeckError(fmt::format("{}: card {}, column {}: {}", file, card, column, what));
+}
+
+} // namespace parsons::cardreader

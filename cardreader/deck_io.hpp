@@ -1,0 +1,53 @@
+// Decks as streams of cards: a reader yields one card at a time, a writer takes one at a time,
+// so no deck has to fit in memory. The format comes from the file's extension or is named.
+//
+//   .cbn          column binary, as SIMH's sim_card.c reads and writes it     (cbn_format.hpp)
+//   .bin          IBM 1130 / bitsavers binary, 12-bit row word << 4, LE     (bin_format.hpp)
+//   .txt .crd     80-column text card images in IBM 029 (or 026) code        (text_format.hpp)
+//   .csv .lst     the listing: one row per axis per card                     (listing_format.hpp)
+#pragma once
+
+#include "cardreader/card.hpp"
+#include "cardreader/hollerith.hpp"
+#include "cardreader/layout.hpp"
+
+#include <iosfwd>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace parsons::cardreader {
+
+enum class DeckFormat : std::uint8_t { cbn, bin, text, listing };
+
+std::string_view format_name(DeckFormat f);
+std::optional<DeckFormat> format_named(std::string_view name);
+std::optional<DeckFormat> format_for_path(std::string_view path);
+
+class CardSource {
+public:
+    virtual ~CardSource() = default;
+    // The next card, or nothing at the end of the deck. Throws DeckError naming where.
+    virtual std::optional<Card> next() = 0;
+};
+
+class CardSink {
+public:
+    virtual ~CardSink() = default;
+    // Throws DeckError when the format cannot hold the card (naming card and column).
+    virtual void write(const Card& card) = 0;
+};
+
+struct DeckOptions {
+    DeckFormat format = DeckFormat::cbn;
+    std::string file_name;                            // for messages
+    KeypunchCode code = KeypunchCode::ibm029;         // text card images
+    const CardLayout* layout = &fig8_layout();        // listing <-> cards
+};
+
+// A reader that also refuses an empty deck ("empty file: no cards").
+std::unique_ptr<CardSource> open_card_source(std::istream& in, const DeckOptions& options);
+std::unique_ptr<CardSink> open_card_sink(std::ostream& out, const DeckOptions& options);
+
+} // namespace parsons::cardreader

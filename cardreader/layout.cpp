@@ -1,0 +1,414 @@
+#include "cardreader/layout.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace parsons::cardreader {
+namespace {
+
+constexpr ColumnWord kDigitRows = 0x03FF; // rows 0 .. 9
+constexpr ColumnWord r0 = row_bit(Row::r0);
+constexpr ColumnWord r1 = row_bit(Row::r1);
+constexpr ColumnWord r2 = row_bit(Row::r2);
+constexpr ColumnWord r12 = row_bit(Row::r12);
+
+// The rows a field may punch in its columns (the 12-row cross marks are added separately).
+ColumnWord rows_allowed(FieldKind k) {
+    switch (k) {
+    case FieldKind::spindle:
+    case FieldKind::motion:
+        return r0 | r1;
+    case FieldKind::start_speed:
+        return r0 | r1 | r2;
+    default:
+        return kDigitRows;
+    }
+}
+
+CardLayout make_fig8() {
+    CardLayout layout;
+    layout.name = "fig8";
+    layout.fields.push_back({FieldKind::spindle, std::nullopt, 1, 1});
+    // Table (axis 1): two slow-downs, columns 2-19.
+    layout.fields.push_back({FieldKind::motion, Axis::table, 2, 1});
+    layout.fields.push_back({FieldKind::start_speed, Axis::table, 3, 1});
+    layout.fields.push_back({FieldKind::slow_down_1, Axis::table, 4, 4});
+    layout.fields.push_back({FieldKind::slow_down_2, Axis::table, 8, 4});
+    layout.fields.push_back({FieldKind::stop, Axis::table, 12, 4});
+    layout.fields.push_back({FieldKind::check, Axis::table, 16, 4});
+    layout.sequence_first_column[axis_index(Axis::table)] = 2;
+    // Cross, vertical, swivel, tilt: one slow-down each, 14 columns from 20, 34, 48, 62.
+    int first = 20;
+    for (Axis a : {Axis::cross, Axis::vertical, Axis::swivel, Axis::tilt}) {
+        layout.fields.push_back({FieldKind::motion, a, first, 1});
+        layout.fields.push_back({FieldKind::start_speed, a, first + 1, 1});
+        layout.fields.push_back({FieldKind::slow_down_1, a, first + 2, 4});
+        layout.fields.push_back({FieldKind::stop, a, first + 6, 4});
+        layout.fields.push_back({FieldKind::check, a, first + 10, 4});
+        layout.sequence_first_column[axis_index(a)] = first;
+        first += 14;
+    }
+    // Column 76 is left unused.
+    layout.fields.push_back({FieldKind::card_number, std::nullopt, 77, 4});
+    return layout;
+}
+
+std::string join_rows(ColumnWord word) {
+    std::string text;
+    for (Row r : kRowsTopToBottom) {
+        if ((word & row_bit(r)) != 0) {
+            text += text.empty() ? "" : " and ";
+            text += row_name(r);
+        }
+    }
+    return text;
+}
+
+int digit_of(ColumnWord digits) {
+    for (int d = 0; d <= 9; ++d) {
+        if (digits == row_bit(digit_row(d))) {
+            return d;
+        }
+    }
+    return -1;
+}
+
+// Collects the bad punch with the lowest column: the one the operator finds first.
+class Problems {
+public:
+    void add(int column, std::string what) {
+        if (!first_ || column < first_->column) {
+            first_ = BadPunch{column, std::move(what)};
+        }
+    }
+    std::optional<BadPunch> first() const { return first_; }
+
+private:
+    std::optional<BadPunch> first_;
+};
+
+// Reads a digit field; nothing if every column is blank.
+std::optional<int> read_number(const Card& card, const LayoutField& f, Problems& problems) {
+    int value = 0;
+    int blanks = 0;
+    int first_blank = 0;
+    bool bad = false;
+    for (int c = f.first_column; c <= f.last_column(); ++c) {
+        ColumnWord digits = card.column(c) & kDigitRows;
+        if (digits == 0) {
+            blanks += 1;
+            first_blank = first_blank == 0 ? c : first_blank;
+            value *= 10;
+            continue;
+        }
+        int d = digit_of(digits);
+        if (d < 0) {
+            problems.add(c, fmt::format("double punch (rows {}) in {}", join_rows(digits),
+                                        field_label(f)));
+            bad = true;
+            continue;
+        }
+        value = value * 10 + d;
+    }
+    if (blanks == f.width) {
+        return std::nullopt;
+    }
+    if (blanks > 0) {
+        problems.add(first_blank, fmt::format("blank digit inside the number in {}",
+                                              field_label(f)));
+        bad = true;
+    }
+    return bad ? 0 : value;
+}
+
+} // namespace
+
+const LayoutField* CardLayout::find(FieldKind kind, std::optional<Axis> axis) const {
+    auto it = std::find_if(fields.begin(), fields.end(), [&](const LayoutField& f) {
+        return f.kind == kind && f.axis == axis;
+    });
+    return it == fields.end() ? nullptr : &*it;
+}
+
+const LayoutField* CardLayout::field_at(int column) const {
+    auto it = std::find_if(fields.begin(), fields.end(), [column](const LayoutField& f) {
+        return column >= f.first_column && column <= f.last_column();
+    });
+    return it == fields.end() ? nullptr : &*it;
+}
+
+std::optional<std::pair<Axis, int>> CardLayout::sequence_at(int column) const {
+    for (Axis a : kAxes) {
+        int first = sequence_first_column.at(axis_index(a));
+        if (column >= first && column < first + kSequencePositions) {
+            return std::pair{a, column - first + 1};
+        }
+    }
+    return std::nullopt;
+}
+
+std::string_view field_short_label(FieldKind kind) {
+    switch (kind) {
+    case FieldKind::spindle:
+        return "SPINDLE";
+    case FieldKind::motion:
+        return "MOTION";
+    case FieldKind::start_speed:
+        return "SPEED";
+    case FieldKind::slow_down_1:
+        return "SLOW 1";
+    case FieldKind::slow_down_2:
+        return "SLOW 2";
+    case FieldKind::stop:
+        return "STOP";
+    case FieldKind::check:
+        return "CHECK";
+    case FieldKind::card_number:
+        return "CARD NO.";
+    }
+    return "";
+}
+
+std::string field_label(const LayoutField& field) {
+    std::string_view what;
+    switch (field.kind) {
+    case FieldKind::spindle:
+        return "spindle";
+    case FieldKind::card_number:
+        return "card number";
+    case FieldKind::motion:
+        what = "motion";
+        break;
+    case FieldKind::start_speed:
+        what = "start speed";
+        break;
+    case FieldKind::slow_down_1:
+        what = "first slow-down";
+        break;
+    case FieldKind::slow_down_2:
+        what = "second slow-down";
+        break;
+    case FieldKind::stop:
+        what = "stop";
+        break;
+    case FieldKind::check:
+        what = "check";
+        break;
+    }
+    return fmt::format("{} {}", axis_name(field.axis.value_or(Axis::table)), what);
+}
+
+const CardLayout& fig8_layout() {
+    static const CardLayout layout = make_fig8();
+    return layout;
+}
+
+const CardLayout* layout_named(std::string_view name) {
+    if (name == "fig8") {
+        return &fig8_layout();
+    }
+    return nullptr;
+}
+
+DecodeResult decode(const Card& card, const CardLayout& layout) {
+    DecodeResult result;
+    Problems problems;
+
+    // Holes where the layout expects none.
+    for (int c = 1; c <= kColumns; ++c) {
+        const LayoutField* f = layout.field_at(c);
+        ColumnWord allowed = f ? rows_allowed(f->kind) : 0;
+        if (layout.sequence_at(c)) {
+            allowed |= r12;
+        }
+        ColumnWord stray = card.column(c) & static_cast<ColumnWord>(~allowed) & kAllRowsMask;
+        if (stray != 0) {
+            std::string where = f ? fmt::format("in {}", field_label(*f))
+                                  : fmt::format("in column {}, which layout {} leaves unused", c,
+                                                layout.name);
+            problems.add(c, fmt::format("punch in row {} where none belongs ({})",
+                                        join_rows(stray), where));
+        }
+    }
+
+    CardOrders& o = result.orders;
+    for (const LayoutField& f : layout.fields) {
+        const int c = f.first_column;
+        const ColumnWord word = card.column(c);
+        AxisOrder* axis = f.axis ? &o.axis(*f.axis) : nullptr;
+        switch (f.kind) {
+        case FieldKind::spindle:
+            if ((word & (r0 | r1)) == (r0 | r1)) {
+                problems.add(c, "spindle punched both forward (row 0) and reverse (row 1)");
+            }
+            o.spindle = (word & r0) ? Spindle::forward : (word & r1) ? Spindle::reverse
+                                                                      : Spindle::off;
+            break;
+        case FieldKind::motion:
+            if ((word & (r0 | r1)) == (r0 | r1)) {
+                problems.add(c, fmt::format("{} punched both forward (row 0) and reverse (row 1)",
+                                            field_label(f)));
+            } else if ((word & (r0 | r1)) == 0) {
+                problems.add(c, fmt::format("missing {} (row 0 = forward, row 1 = reverse)",
+                                            field_label(f)));
+            }
+            axis->motion = (word & r1) && !(word & r0) ? Motion::reverse : Motion::forward;
+            break;
+        case FieldKind::start_speed: {
+            ColumnWord speed = word & (r0 | r1 | r2);
+            if (speed == r0) {
+                axis->start_speed = 1;
+            } else if (speed == (r0 | r1)) {
+                axis->start_speed = 2;
+            } else if (speed == (r0 | r1 | r2)) {
+                axis->start_speed = 3;
+            } else if (speed == 0) {
+                problems.add(c, fmt::format("missing {} (0, 0-1 or 0-1-2 for speed 1, 2 or 3)",
+                                            field_label(f)));
+            } else {
+                problems.add(c, fmt::format("{} punched in rows {}: expected 0, 0-1 or 0-1-2",
+                                            field_label(f), join_rows(speed)));
+            }
+            break;
+        }
+        default: {
+            std::optional<int> value = read_number(card, f, problems);
+            const bool required = f.kind != FieldKind::slow_down_1 &&
+                                  f.kind != FieldKind::slow_down_2;
+            if (!value && required) {
+                problems.add(c, fmt::format("{} is blank (it is always punched)", field_label(f)));
+            }
+            auto v = static_cast<Thousandths>(value.value_or(0));
+            switch (f.kind) {
+            case FieldKind::slow_down_1:
+                axis->slow_down[0] = value ? std::optional<Thousandths>(v) : std::nullopt;
+                break;
+            case FieldKind::slow_down_2:
+                axis->slow_down[1] = value ? std::optional<Thousandths>(v) : std::nullopt;
+                break;
+            case FieldKind::stop:
+                axis->stop = v;
+                break;
+            case FieldKind::check:
+                axis->check = v;
+                break;
+            case FieldKind::card_number:
+                o.number = v;
+                break;
+            default:
+                break;
+            }
+        }
+        }
+    }
+
+    for (Axis a : kAxes) {
+        int first = layout.sequence_first_column.at(axis_index(a));
+        SequencePattern pattern = 0;
+        for (int k = 0; k < kSequencePositions; ++k) {
+            if (card.punched(first + k, Row::r12)) {
+                pattern = static_cast<SequencePattern>(pattern | (1u << k));
+            }
+        }
+        o.axis(a).sequence = pattern;
+    }
+
+    result.bad_punch = problems.first();
+    return result;
+}
+
+EncodeResult encode(const CardOrders& orders, const CardLayout& layout) {
+    EncodeResult result;
+    Card& card = result.card;
+    auto fail = [&](std::string what) {
+        if (!result.error) {
+            result.error = std::move(what);
+        }
+    };
+    auto punch_number = [&](const LayoutField& f, int value) {
+        int max = 1;
+        for (int i = 0; i < f.width; ++i) {
+            max *= 10;
+        }
+        if (value < 0 || value >= max) {
+            fail(fmt::format("{} value {} does not fit in {} digit columns", field_label(f), value,
+                             f.width));
+            return;
+        }
+        for (int c = f.last_column(); c >= f.first_column; --c) {
+            card.punch(c, digit_row(value % 10));
+            value /= 10;
+        }
+    };
+
+    if (orders.number < 0 || orders.number > 9999) {
+        fail(fmt::format("card number {} is outside 0..9999", orders.number));
+    }
+    for (Axis a : kAxes) {
+        const AxisOrder& ax = orders.axis(a);
+        if (ax.start_speed < 1 || ax.start_speed > 3) {
+            fail(fmt::format("{} start speed {} is not 1, 2 or 3", axis_name(a), ax.start_speed));
+        }
+        for (int i = 0; i < 2; ++i) {
+            FieldKind kind = i == 0 ? FieldKind::slow_down_1 : FieldKind::slow_down_2;
+            if (ax.slow_down.at(static_cast<std::size_t>(i)) && !layout.find(kind, a)) {
+                fail(fmt::format("layout {} has no {} slow-down field for the {} axis",
+                                 layout.name, i == 0 ? "first" : "second", axis_name(a)));
+            }
+        }
+        if (ax.sequence >= (1u << kSequencePositions)) {
+            fail(fmt::format("{} sequence pattern has a position over 5", axis_name(a)));
+        }
+        int first = layout.sequence_first_column.at(axis_index(a));
+        for (int k = 0; k < kSequencePositions; ++k) {
+            if ((ax.sequence & (1u << k)) != 0) {
+                card.punch(first + k, Row::r12);
+            }
+        }
+    }
+
+    for (const LayoutField& f : layout.fields) {
+        const int c = f.first_column;
+        if (f.kind == FieldKind::spindle) {
+            if (orders.spindle != Spindle::off) {
+                card.punch(c, orders.spindle == Spindle::forward ? Row::r0 : Row::r1);
+            }
+            continue;
+        }
+        if (f.kind == FieldKind::card_number) {
+            punch_number(f, orders.number);
+            continue;
+        }
+        const AxisOrder& ax = orders.axis(*f.axis);
+        switch (f.kind) {
+        case FieldKind::motion:
+            card.punch(c, ax.motion == Motion::forward ? Row::r0 : Row::r1);
+            break;
+        case FieldKind::start_speed:
+            for (int s = 0; s < ax.start_speed && s < 3; ++s) {
+                card.punch(c, digit_row(s));
+            }
+            break;
+        case FieldKind::slow_down_1:
+        case FieldKind::slow_down_2: {
+            auto& sd = ax.slow_down.at(f.kind == FieldKind::slow_down_1 ? 0 : 1);
+            if (sd) {
+                punch_number(f, *sd);
+            }
+            break;
+        }
+        case FieldKind::stop:
+            punch_number(f, ax.stop);
+            break;
+        case FieldKind::check:
+            punch_number(f, ax.check);
+            break;
+        default:
+            break;
+        }
+    }
+    return result;
+}
+
+} // namespace parsons::cardreader

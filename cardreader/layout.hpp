@@ -1,0 +1,86 @@
+// The card layout: which columns of card 162 (Fig. 8) hold which field, as a table of fields.
+//
+// The reader's brushes are wired to columns by a plugboard; a layout is that plugboard.
+// Figure 8 itself is not legible in the patent text we have, so the default "fig8" layout is
+// the reconstruction of DESIGN.md section 3 (see docs/card-layout.md). Other layouts are other
+// tables.
+//
+// decode() is pure: a card and a layout in, the orders or the first bad punch out (naming the
+// column and what is wrong). encode() is the keypunch: orders in, the holes out.
+#pragma once
+
+#include "cardreader/card.hpp"
+#include "cardreader/orders.hpp"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace parsons::cardreader {
+
+enum class FieldKind : std::uint8_t {
+    spindle,     // one column: row 0 forward, row 1 reverse, blank off
+    motion,      // one column: row 0 forward, row 1 reverse
+    start_speed, // one column: 0 / 0-1 / 0-1-2 = speed 1 / 2 / 3
+    slow_down_1, // digit columns d.ddd, blank = no slow-down
+    slow_down_2, // digit columns d.ddd, blank = no slow-down
+    stop,        // digit columns d.ddd, always punched
+    check,       // digit columns d.ddd, always punched
+    card_number, // digit columns, always punched
+};
+
+struct LayoutField {
+    FieldKind kind;
+    std::optional<Axis> axis; // none for spindle and card number
+    int first_column;         // 1 .. 80
+    int width;                // columns
+
+    int last_column() const { return first_column + width - 1; }
+};
+
+struct CardLayout {
+    std::string name;
+    std::vector<LayoutField> fields;
+    // Sequence pattern 222 of each axis: row 12 of five consecutive columns starting here.
+    std::array<int, kAxisCount> sequence_first_column{};
+
+    const LayoutField* find(FieldKind kind, std::optional<Axis> axis = std::nullopt) const;
+    const LayoutField* field_at(int column) const;
+    // The sequence position (1..5) and axis whose cross mark sits in row 12 of this column.
+    std::optional<std::pair<Axis, int>> sequence_at(int column) const;
+};
+
+// "table stop", "spindle", "card number"
+std::string field_label(const LayoutField& field);
+// Short label for card pictures: "STOP", "SLOW 1", "CHECK"
+std::string_view field_short_label(FieldKind kind);
+
+const CardLayout& fig8_layout();
+const CardLayout* layout_named(std::string_view name);
+
+// A punch the layout cannot read; the reader stops the machine and names the column.
+struct BadPunch {
+    int column;
+    std::string what;
+};
+
+struct DecodeResult {
+    CardOrders orders;
+    std::optional<BadPunch> bad_punch;
+    explicit operator bool() const { return !bad_punch; }
+};
+
+DecodeResult decode(const Card& card, const CardLayout& layout);
+
+// Orders a layout cannot hold (a second slow-down for an axis with no such field, a number
+// over 9.999): the message names the axis and field.
+struct EncodeResult {
+    Card card;
+    std::optional<std::string> error;
+    explicit operator bool() const { return !error; }
+};
+
+EncodeResult encode(const CardOrders& orders, const CardLayout& layout);
+
+} // namespace parsons::cardreader

@@ -1,0 +1,347 @@
+#include "cardreader/listing_format.hpp"
+
+#include "cardreader/deck_error.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <istream>
+#include <ostream>
+#include <vector>
+
+namespace parsons::cardreader {
+namespace {
+
+constexpr std::size_t kFieldCount = 10;
+constexpr std::size_t kMaxLineBytes = 4096;
+
+std::string_view trim(std::string_view s) {
+    const auto first = s.find_first_not_of(" \t");
+    if (first == std::string_view::npos) {
+        return {};
+    }
+    const auto last = s.find_last_not_of(" \t");
+    return s.substr(first, last - first + 1);
+}
+
+std::vector<std::string_view> split_fields(std::string_view line) {
+    std::vector<std::string_view> fields;
+    std::size_t start = 0;
+    while (true) {
+        const auto comma = line.find(',', start);
+        fields.push_back(trim(line.substr(start, comma - start)));
+        if (comma == std::string_view::npos) {
+            break;
+        }
+        start = comma + 1;
+    }
+    return fields;
+}
+
+bool all_digits(std::string_view s) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// Parses a d.ddd inch value, or throws with the reason.
+Thousandths parse_inches(std::string_view text, std::string_view field, const std::string& file,
+                         long line) {
+    auto fail = [&](const std::string& why) {
+        return DeckError::at_line(file, line, fmt::format("{} '{}': {}", field, text, why));
+    };
+    if (!text.empty() && text.front() == '-') {
+        throw fail("inches are never negative (the motion column gives the direction)");
+    }
+    const auto dot = text.find('.');
+    const std::string_view whole = text.substr(0, dot);
+    const std::string_view decimals =
+        dot == std::string_view::npos ? std::string_view{} : text.substr(dot + 1);
+    if (!all_digits(whole) || (!decimals.empty() && !all_digits(decimals))) {
+        throw fail("not a number of inches (write d.ddd, e.g. 8.785)");
+    }
+    if (decimals.size() != 3) {
+        throw fail("needs exactly three decimals, d.ddd (the card holds thousandths)");
+    }
+    const auto nonzero = whole.find_first_not_of('0');
+    const std::string_view significant =
+        nonzero == std::string_view::npos ? std::string_view{} : whole.substr(nonzero);
+    if (significant.size() > 1) {
+        throw fail("over 9.999 inches (the four-digit counters and storage banks hold "
+                   "0.000 .. 9.999)");
+    }
+    int value = significant.empty() ? 0 : (significant.front() - '0') * 1000;
+    value += (decimals[0] - '0') * 100 + (decimals[1] - '0') * 10 + (decimals[2] - '0');
+    return static_cast<Thousandths>(value);
+}
+
+struct ListingRow {
+    int card = 0;
+    Spindle spindle = Spindle::off;
+    Axis axis = Axis::table;
+    AxisOrder order;
+};
+
+ListingRow parse_row(std::string_view text, const std::string& file, long line) {
+    auto fields = split_fields(text);
+    if (fields.size() != kFieldCount) {
+        throw DeckError::at_line(file, line,
+                                 fmt::format("expected 10 comma-separated fields ({}), found {}",
+                                             kListingHeader, fields.size()));
+    }
+    auto fail = [&](const std::string& why) { return DeckError::at_line(file, line, why); };
+    ListingRow row;
+    if (!all_digits(fields[0]) || fields[0].size() > 4) {
+        throw fail(fmt::format("card number '{}' is not 0..9999", fields[0]));
+    }
+    row.card = std::stoi(std::string(fields[0]));
+
+    if (fields[1].empty()) {
+        row.spindle = Spindle::off;
+    } else if (fields[1] == "0") {
+        row.spindle = Spindle::forward;
+    } else if (fields[1] == "1") {
+        row.spindle = Spindle::reverse;
+    } else {
+        throw fail(fmt::format("spindle '{}' is not 0 (forward), 1 (reverse) or blank (off)",
+                               fields[1]));
+    }
+
+    auto axis = axis_named(fields[2]);
+    if (!axis) {
+        throw fail(fmt::format("unknown axis '{}' (table, cross, vertical, swivel or tilt)",
+                               fields[2]));
+    }
+    row.axis = *axis;
+
+    if (fields[3] == "+") {
+        row.order.motion = Motion::forward;
+    } else if (fields[3] == "-") {
+        row.order.motion = Motion::reverse;
+    } else {
+        throw fail(fmt::format("motion '{}' is not + (forward) or - (reverse)", fields[3]));
+    }
+
+    if (fields[4] != "1" && fields[4] != "2" && fields[4] != "3") {
+        throw fail(fmt::format("speed '{}' is not 1, 2 or 3", fields[4]));
+    }
+    row.order.start_speed = fields[4][0] - '0';
+
+    for (std::size_t i = 0; i < 2; ++i) {
+        if (!fields[5 + i].empty()) {
+            row.order.slow_down.at(i) =
+                parse_inches(fields[5 + i], i == 0 ? "slow1" : "slow2", file, line);
+        }
+    }
+    if (fields[7].empty()) {
+        throw fail("stop is blank (stop and check are always punched)");
+    }
+    row.order.stop = parse_inches(fields[7], "stop", file, line);
+    if (fields[8].empty()) {
+        throw fail("check is blank (stop and check are always punched)");
+    }
+    row.order.check = parse_inches(fields[8], "check", file, line);
+
+    for (char c : fields[9]) {
+        if (c < '1' || c > '5') {
+            throw fail(fmt::format("sequence position '{}' is not 1..5", c));
+        }
+        const auto bit = static_cast<SequencePattern>(1u << (c - '1'));
+        if ((row.order.sequence & bit) != 0) {
+            throw fail(fmt::format("sequence position {} is given twice", c));
+        }
+        row.order.sequence = static_cast<SequencePattern>(row.order.sequence | bit);
+    }
+    return row;
+}
+
+class ListingSource : public CardSource {
+public:
+    ListingSource(std::istream& in, std::string file, const CardLayout& layout)
+        : reader_(in, file), file_(std::move(file)), layout_(layout) {}
+
+    std::optional<Card> next() override {
+        auto listed = reader_.next();
+        if (!listed) {
+            return std::nullopt;
+        }
+        // A field the layout lacks is named at the row that asks for it.
+        for (Axis a : kAxes) {
+            const auto& order = listed->orders.axis(a);
+            if (order.slow_down[1] && !layout_.find(FieldKind::slow_down_2, a)) {
+                throw DeckError::at_line(
+                    file_, listed->axis_line.at(axis_index(a)),
+                    fmt::format("layout {} has no second slow-down field for the {} axis (only "
+                                "the table has two)",
+                                layout_.name, axis_name(a)));
+            }
+        }
+        EncodeResult encoded = encode(listed->orders, layout_);
+        if (!encoded) {
+            throw DeckError::at_line(file_, listed->first_line, *encoded.error);
+        }
+        return encoded.card;
+    }
+
+private:
+    ListingReader reader_;
+    std::string file_;
+    const CardLayout& layout_;
+};
+
+class ListingSink : public CardSink {
+public:
+    ListingSink(std::ostream& out, std::string file, const CardLayout& layout)
+        : out_(out), file_(std::move(file)), layout_(layout) {}
+
+    void write(const Card& card) override {
+        ++card_;
+        DecodeResult decoded = decode(card, layout_);
+        if (!decoded) {
+            throw DeckError::at_card_column(file_, card_, decoded.bad_punch->column,
+                                            decoded.bad_punch->what);
+        }
+        if (card_ == 1) {
+            out_ << kListingHeader << '\n';
+        }
+        for (Axis a : kAxes) {
+            out_ << listing_row(decoded.orders, a) << '\n';
+        }
+        if (!out_) {
+            throw DeckError::in_file(file_, "write error");
+        }
+    }
+
+private:
+    std::ostream& out_;
+    std::string file_;
+    const CardLayout& layout_;
+    long card_ = 0;
+};
+
+} // namespace
+
+ListingReader::ListingReader(std::istream& in, std::string file)
+    : in_(in), file_(std::move(file)) {}
+
+std::optional<std::string> ListingReader::next_data_line() {
+    std::string line;
+    while (true) {
+        line.clear();
+        int ch = 0;
+        bool any = false;
+        while ((ch = in_.get()) != std::char_traits<char>::eof() && ch != '\n') {
+            any = true;
+            if (line.size() >= kMaxLineBytes) {
+                throw DeckError::at_line(file_, line_ + 1,
+                                         fmt::format("line is longer than {} bytes", kMaxLineBytes));
+            }
+            if (ch == 0) {
+                throw DeckError::at_line(file_, line_ + 1, "NUL byte: this is not a text listing");
+            }
+            line += static_cast<char>(ch);
+        }
+        if (!any && ch == std::char_traits<char>::eof()) {
+            return std::nullopt;
+        }
+        ++line_;
+        if (!line.empty() && line.back() == '\r') {
+            line.pop_back();
+        }
+        const auto hash = line.find('#');
+        std::string_view data = trim(std::string_view(line).substr(0, hash));
+        if (data.empty()) {
+            continue;
+        }
+        if (!header_seen_) {
+            auto names = split_fields(data);
+            auto expected = split_fields(kListingHeader);
+            if (names != expected) {
+                throw DeckError::at_line(
+                    file_, line_,
+                    fmt::format("expected the header line '{}' first", kListingHeader));
+            }
+            header_seen_ = true;
+            continue;
+        }
+        return std::string(data);
+    }
+}
+
+std::optional<ListedCard> ListingReader::next() {
+    ListedCard card;
+    std::array<bool, kAxisCount> seen{};
+    int rows = 0;
+    while (rows < kAxisCount) {
+        auto text = next_data_line();
+        if (!text) {
+            if (rows == 0) {
+                return std::nullopt;
+            }
+            for (Axis a : kAxes) {
+                if (!seen.at(axis_index(a))) {
+                    throw DeckError::at_line(
+                        file_, line_,
+                        fmt::format("card {} (from line {}) ends without a row for the {} axis",
+                                    card.orders.number, card.first_line, axis_name(a)));
+                }
+            }
+        }
+        ListingRow row = parse_row(*text, file_, line_);
+        if (rows == 0) {
+            card.orders.number = row.card;
+            card.orders.spindle = row.spindle;
+            card.first_line = line_;
+        } else if (row.card != card.orders.number) {
+            auto missing = std::find(seen.begin(), seen.end(), false) - seen.begin();
+            throw DeckError::at_line(
+                file_, line_,
+                fmt::format("card {} begins, but card {} (from line {}) has no row for the {} axis",
+                            row.card, card.orders.number, card.first_line,
+                            axis_name(kAxes.at(static_cast<std::size_t>(missing)))));
+        } else if (row.spindle != card.orders.spindle) {
+            throw DeckError::at_line(
+                file_, line_,
+                fmt::format("card {}: spindle {} here but {} on line {} (one spindle column a "
+                            "card)",
+                            row.card, spindle_name(row.spindle), spindle_name(card.orders.spindle),
+                            card.first_line));
+        }
+        const auto i = axis_index(row.axis);
+        if (seen.at(i)) {
+            throw DeckError::at_line(file_, line_,
+                                     fmt::format("card {} has a second row for the {} axis (first "
+                                                 "on line {})",
+                                                 row.card, axis_name(row.axis), card.axis_line.at(i)));
+        }
+        seen.at(i) = true;
+        card.axis_line.at(i) = line_;
+        card.orders.axes.at(i) = row.order;
+        ++rows;
+    }
+    return card;
+}
+
+std::string listing_row(const CardOrders& orders, Axis axis) {
+    const AxisOrder& o = orders.axis(axis);
+    auto inches = [](const std::optional<Thousandths>& v) {
+        return v ? format_inches(*v) : std::string{};
+    };
+    std::string_view spindle = orders.spindle == Spindle::forward   ? "0"
+                               : orders.spindle == Spindle::reverse ? "1"
+                                                                    : "";
+    return fmt::format("{},{},{},{},{},{},{},{},{},{}", orders.number, spindle, axis_name(axis),
+                       o.motion == Motion::forward ? "+" : "-", o.start_speed,
+                       inches(o.slow_down[0]), inches(o.slow_down[1]), format_inches(o.stop),
+                       format_inches(o.check), format_sequence(o.sequence));
+}
+
+std::unique_ptr<CardSource> make_listing_source(std::istream& in, std::string file,
+                                                const CardLayout& layout) {
+    return std::make_unique<ListingSource>(in, std::move(file), layout);
+}
+
+std::unique_ptr<CardSink> make_listing_sink(std::ostream& out, std::string file,
+                                            const CardLayout& layout) {
+    return std::make_unique<ListingSink>(out, std::move(file), layout);
+}
+
+} // namespace parsons::cardreader

@@ -1,0 +1,70 @@
+#include "cli/deck_files.hpp"
+
+#include "cardreader/deck_error.hpp"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+namespace parsons::cli {
+
+using cardreader::DeckError;
+
+void add_input_flags(CLI::App& cmd, DeckFlags& flags) {
+    cmd.add_option("--format", flags.format,
+                   "Input deck format: cbn, bin, text or listing (default: from the extension: "
+                   ".cbn .bin .txt/.crd .csv/.lst)");
+    cmd.add_option("--code", flags.code, "Keypunch code of text card images: 029 or 026")
+        ->capture_default_str();
+    cmd.add_option("--layout", flags.layout, "Card layout (the reader's plugboard)")
+        ->capture_default_str();
+}
+
+cardreader::DeckOptions deck_options(const std::string& path, const std::string& format_flag,
+                                     const DeckFlags& flags) {
+    cardreader::DeckOptions options;
+    options.file_name = path;
+    if (!format_flag.empty()) {
+        auto f = cardreader::format_named(format_flag);
+        if (!f) {
+            throw DeckError::in_file(path, fmt::format("unknown format '{}' (cbn, bin, text or "
+                                                       "listing)",
+                                                       format_flag));
+        }
+        options.format = *f;
+    } else {
+        auto f = cardreader::format_for_path(path);
+        if (!f) {
+            throw DeckError::in_file(path, "cannot tell the deck format from the extension; "
+                                           "give --format cbn, bin, text or listing");
+        }
+        options.format = *f;
+    }
+    auto code = cardreader::code_named(flags.code);
+    if (!code) {
+        throw DeckError::in_file(path, fmt::format("unknown keypunch code '{}' (029 or 026)",
+                                                   flags.code));
+    }
+    options.code = *code;
+    options.layout = cardreader::layout_named(flags.layout);
+    if (!options.layout) {
+        throw DeckError::in_file(path, fmt::format("unknown card layout '{}' (fig8)", flags.layout));
+    }
+    return options;
+}
+
+InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
+    : options_(deck_options(path, flags.format, flags)) {
+    if (std::filesystem::is_directory(path)) {
+        throw DeckError::in_file(path, "is a directory, not a deck");
+    }
+    in_.open(path, std::ios::binary);
+    if (!in_) {
+        throw DeckError::in_file(path, std::string("cannot open: ") + std::strerror(errno));
+    }
+    source_ = cardreader::open_card_source(in_, options_);
+}
+
+} // namespace parsons::cli

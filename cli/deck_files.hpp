@@ -1,0 +1,40 @@
+// Opening deck files for the subcommands: format from the extension or a flag, clear errors.
+#pragma once
+
+#include "cardreader/deck_io.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <fstream>
+#include <memory>
+#include <string>
+
+namespace parsons::cli {
+
+// The flags every command that reads a deck shares.
+struct DeckFlags {
+    std::string format; // empty: from the extension
+    std::string code = "029";
+    std::string layout = "fig8";
+};
+
+void add_input_flags(CLI::App& cmd, DeckFlags& flags);
+
+// Resolves format (flag or extension), keypunch code and layout; throws DeckError.
+cardreader::DeckOptions deck_options(const std::string& path, const std::string& format_flag,
+                                     const DeckFlags& flags);
+
+// An open input deck: the file and its card reader.
+class InputDeck {
+public:
+    InputDeck(const std::string& path, const DeckFlags& flags);
+    cardreader::CardSource& cards() { return *source_; }
+    const cardreader::DeckOptions& options() const { return options_; }
+
+private:
+    std::ifstream in_;
+    cardreader::DeckOptions options_;
+    std::unique_ptr<cardreader::CardSource> source_;
+};
+
+} // namespace parsons::cli

@@ -1,0 +1,58 @@
+// parsons punch LISTING -o DECK: the keypunch. Reads a listing, punches one card per five rows.
+#include "cli/commands.hpp"
+#include "cli/deck_files.hpp"
+#include "cli/output_file.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+
+namespace parsons::cli {
+namespace {
+
+struct PunchFlags {
+    std::string listing;
+    std::string output;
+    std::string to;
+    DeckFlags deck;
+};
+
+ExitCode run_punch(const PunchFlags& f) {
+    DeckFlags in = f.deck;
+    in.format = "listing";
+    InputDeck listing(f.listing, in);
+    const auto out_options = deck_options(f.output, f.to, f.deck);
+    OutputFile out(f.output);
+    auto sink = cardreader::open_card_sink(out.stream(), out_options);
+    long cards = 0;
+    while (auto card = listing.cards().next()) {
+        sink->write(*card);
+        ++cards;
+    }
+    out.commit();
+    fmt::print("punched {} card{} from {} into {} ({}, layout {})\n", cards, cards == 1 ? "" : "s",
+               f.listing, f.output, cardreader::format_name(out_options.format),
+               out_options.layout->name);
+    return ExitCode::ok;
+}
+
+} // namespace
+
+void add_punch_command(CLI::App& app, Command& selected) {
+    auto flags = std::make_shared<PunchFlags>();
+    CLI::App* cmd = app.add_subcommand("punch", "Keypunch a listing into a deck of cards");
+    cmd->add_option("LISTING", flags->listing,
+                    "The listing: CSV, one row per axis per card (docs/deck-formats.md)")
+        ->required();
+    cmd->add_option("-o,--output", flags->output,
+                    "The deck to punch; format from the extension (.cbn .bin .txt .csv)")
+        ->required();
+    cmd->add_option("--to", flags->to, "Output format: cbn, bin, text or listing");
+    cmd->add_option("--code", flags->deck.code, "Keypunch code for text card images: 029 or 026")
+        ->capture_default_str();
+    cmd->add_option("--layout", flags->deck.layout, "Card layout")->capture_default_str();
+    cmd->footer("Example:\n  parsons punch decks/samples/patent-example.csv -o deck.cbn");
+    cmd->callback([&selected, flags] { selected = [flags] { return run_punch(*flags); }; });
+}
+
+} // namespace parsons::cli

@@ -1,0 +1,154 @@
+// parsons show DECK [--svg DIR]: interpret every card field by field, as the operator reads
+// the printed card, with warnings for what the machine will stop on; pictures of the cards.
+#include "cli/commands.hpp"
+#include "cli/deck_files.hpp"
+#include "cli/output_file.hpp"
+
+#include "cardreader/card_svg.hpp"
+#include "cardreader/deck_error.hpp"
+#include "cardreader/deck_review.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+namespace parsons::cli {
+namespace {
+
+using namespace parsons::cardreader;
+
+struct ShowFlags {
+    std::string input;
+    std::string svg_dir;
+    DeckFlags deck;
+};
+
+std::string axis_columns(const CardLayout& layout, Axis a) {
+    int first = kColumns;
+    int last = 1;
+    for (const LayoutField& f : layout.fields) {
+        if (f.axis == a) {
+            first = std::min(first, f.first_column);
+            last = std::max(last, f.last_column());
+        }
+    }
+    return fmt::format("{}-{}", first, last);
+}
+
+std::string sequence_text(SequencePattern p) {
+    std::string digits = format_sequence(p);
+    std::string text;
+    for (char c : digits) {
+        text += text.empty() ? "" : ",";
+        text += c;
+    }
+    return text.empty() ? "none" : text;
+}
+
+void print_card(long index, const DecodeResult& decoded, const CardLayout& layout) {
+    const CardOrders& o = decoded.orders;
+    fmt::print("card {} · card number {:04} (columns 77-80) · spindle {} (column 1)\n", index,
+               o.number, spindle_name(o.spindle));
+    fmt::print("  {:<9} {:<8} {:<12} {:<6} {:<12} {:<12} {:<6} {:<6} {}\n", "axis", "columns",
+               "motion", "speed", "slow-down 1", "slow-down 2", "stop", "check", "sequence");
+    for (Axis a : kAxes) {
+        const AxisOrder& ax = o.axis(a);
+        auto slow = [&](std::size_t i) -> std::string {
+            FieldKind kind = i == 0 ? FieldKind::slow_down_1 : FieldKind::slow_down_2;
+            if (!layout.find(kind, a)) {
+                return "(no field)";
+            }
+            const auto& v = ax.slow_down.at(i);
+            return v ? format_inches(*v) : "-";
+        };
+        fmt::print("  {:<9} {:<8} {:<12} {:<6} {:<12} {:<12} {:<6} {:<6} {}\n", axis_name(a),
+                   axis_columns(layout, a),
+                   ax.motion == Motion::forward ? "+ forward" : "- reverse", ax.start_speed, slow(0),
+                   slow(1), format_inches(ax.stop), format_inches(ax.check),
+                   sequence_text(ax.sequence));
+    }
+}
+
+ExitCode run_show(const ShowFlags& f) {
+    InputDeck deck(f.input, f.deck);
+    const CardLayout& layout = *deck.options().layout;
+    if (!f.svg_dir.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(f.svg_dir, ec);
+        if (ec || !std::filesystem::is_directory(f.svg_dir)) {
+            throw DeckError::in_file(f.svg_dir, "cannot create the picture directory: " +
+                                                    (ec ? ec.message() : "not a directory"));
+        }
+    }
+    fmt::print("deck {} ({}, layout {})\n\n", f.input, format_name(deck.options().format),
+               layout.name);
+
+    DeckReviewer reviewer;
+    long index = 0;
+    long notes = 0;
+    std::optional<std::string> first_bad;
+    long bad_cards = 0;
+    while (auto card = deck.cards().next()) {
+        ++index;
+        DecodeResult decoded = decode(*card, layout);
+        print_card(index, decoded, layout);
+        if (!decoded) {
+            ++bad_cards;
+            const std::string where = DeckError::at_card_column(f.input, index,
+                                                                decoded.bad_punch->column,
+                                                                decoded.bad_punch->what)
+                                          .what();
+            fmt::print("  BAD PUNCH: column {}: {} (the reader stops the machine here)\n",
+                       decoded.bad_punch->column, decoded.bad_punch->what);
+            first_bad = first_bad.value_or(where);
+        } else {
+            for (const ReviewNote& n : reviewer.review(decoded.orders)) {
+                ++notes;
+                fmt::print("  warning: {}{}\n",
+                           n.axis ? fmt::format("{}: ", axis_name(*n.axis)) : "", n.message);
+            }
+        }
+        fmt::print("\n");
+        if (!f.svg_dir.empty()) {
+            CardPictureNotes pic;
+            pic.caption = fmt::format("{} · card {} · card number {:04} · layout {}",
+                                      std::filesystem::path(f.input).filename().string(), index,
+                                      decoded.orders.number, layout.name);
+            pic.bad_punch = decoded.bad_punch;
+            const auto path = std::filesystem::path(f.svg_dir) / fmt::format("card-{:04}.svg", index);
+            write_file(path.string(), card_svg(*card, layout, pic, deck.options().code));
+        }
+    }
+    fmt::print("{} card{} read, {} warning{}, {} with bad punches\n", index, index == 1 ? "" : "s",
+               notes, notes == 1 ? "" : "s", bad_cards);
+    if (!f.svg_dir.empty()) {
+        fmt::print("card pictures: {}/card-0001.svg .. card-{:04}.svg\n", f.svg_dir, index);
+    }
+    if (first_bad) {
+        throw DeckError(*first_bad + (bad_cards > 1 ? fmt::format(" (and {} more cards with bad "
+                                                                  "punches)",
+                                                                  bad_cards - 1)
+                                                    : std::string{}));
+    }
+    return ExitCode::ok;
+}
+
+} // namespace
+
+void add_show_command(CLI::App& app, Command& selected) {
+    auto flags = std::make_shared<ShowFlags>();
+    CLI::App* cmd = app.add_subcommand(
+        "show", "Interpret each card field by field, with warnings; optionally draw the cards");
+    cmd->add_option("DECK", flags->input, "The deck to read")->required();
+    cmd->add_option("--svg", flags->svg_dir,
+                    "Write one picture per card, DIR/card-0001.svg, ... (created if missing)");
+    add_input_flags(*cmd, flags->deck);
+    cmd->footer("Examples:\n"
+                "  parsons show decks/samples/patent-example.csv\n"
+                "  parsons show deck.cbn --svg out/cards");
+    cmd->callback([&selected, flags] { selected = [flags] { return run_show(*flags); }; });
+}
+
+} // namespace parsons::cli
