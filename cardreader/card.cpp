@@ -12,8 +12,12 @@ std::string_view row_name(Row r) {
 }
 
 std::string punches_text(ColumnWord word) {
+    // IBM's charts name the zone (12, 11, 0) first, then the 8, then the digit: "12-8-3".
+    static constexpr std::array<Row, kRows> spoken_order = {
+        Row::r12, Row::r11, Row::r0, Row::r8, Row::r1, Row::r2,
+        Row::r3,  Row::r4,  Row::r5, Row::r6, Row::r7, Row::r9};
     std::string text;
-    for (Row r : kRowsTopToBottom) {
+    for (Row r : spoken_order) {
         if ((word & row_bit(r)) != 0) {
             if (!text.empty()) {
                 text += '-';

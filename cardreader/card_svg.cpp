@@ -103,9 +103,9 @@ void draw_fields(std::string& svg, const CardLayout& layout) {
         const double left = column_x(f.first_column) - kColumnPitch / 2;
         const bool heavy = starts_section(f);
         fmt::format_to(std::back_inserter(svg),
-                       R"(<line x1="{0:.2f}" y1="34" x2="{0:.2f}" y2="{1}" stroke="{2}" )"
+                       R"(<line x1="{0:.2f}" y1="{4}" x2="{0:.2f}" y2="{1}" stroke="{2}" )"
                        R"(stroke-width="{3}"/>)",
-                       left, kCardHeight - 4, kInk, heavy ? 1.6 : 0.4);
+                       left, kCardHeight - 4, kInk, heavy ? 1.6 : 0.4, heavy ? 34 : 52);
         const double centre = (column_x(f.first_column) + column_x(f.last_column())) / 2;
         const std::string_view label = field_short_label(f.kind);
         if (f.width == 1) {

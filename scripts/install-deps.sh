@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs what parsons needs to build and test, from Debian's packages only, and only what is
+# missing. Safe to run again: with everything present it installs nothing and asks for nothing.
+set -euo pipefail
+
+packages=(g++ cmake make libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev catch2)
+
+missing=()
+for p in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+        missing+=("$p")
+    fi
+done
+if [ ${#missing[@]} -eq 0 ]; then
+    exit 0
+fi
+
+echo "parsons: installing ${missing[*]} (Debian packages)" >&2
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+    if command -v sudo >/dev/null; then
+        sudo="sudo"
+    else
+        echo "parsons: need root (or sudo) to apt-get install: ${missing[*]}" >&2
+        exit 1
+    fi
+fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

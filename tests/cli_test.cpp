@@ -1,0 +1,181 @@
+// End to end: the parsons executable as a user types it.
+#include "tests/test_support.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <sstream>
+
+using parsons::test::read_bytes;
+using parsons::test::run_parsons;
+using parsons::test::source_path;
+using parsons::test::TempDir;
+using parsons::test::write_bytes;
+
+namespace {
+
+const std::string kSample = "decks/samples/patent-example.csv";
+
+std::string without_comments(const std::string& listing) {
+    std::istringstream in(listing);
+    std::string line;
+    std::string out;
+    while (std::getline(in, line)) {
+        if (!line.empty() && line[0] != '#') {
+            out += line + "\n";
+        }
+    }
+    return out;
+}
+
+std::string q(const std::string& s) { return "'" + s + "'"; }
+
+} // namespace
+
+TEST_CASE("CLI: punch, convert to .cbn and back to a listing gives the sample listing", "[cli]") {
+    TempDir dir;
+    auto punched = run_parsons("punch " + q(source_path(kSample)) + " -o " + q(dir.str("s.cbn")));
+    REQUIRE(punched.exit_code == 0);
+    CHECK(punched.output.find("punched 4 cards") != std::string::npos);
+    CHECK(std::filesystem::file_size(dir.path("s.cbn")) == 4 * 160);
+    REQUIRE(run_parsons("convert " + q(dir.str("s.cbn")) + " -o " + q(dir.str("s.bin"))).exit_code ==
+            0);
+    REQUIRE(run_parsons("convert " + q(dir.str("s.bin")) + " -o " + q(dir.str("s2.cbn")))
+                .exit_code == 0);
+    CHECK(read_bytes(dir.path("s2.cbn")) == read_bytes(dir.path("s.cbn")));
+    REQUIRE(run_parsons("convert " + q(dir.str("s2.cbn")) + " -o " + q(dir.str("back.csv")))
+                .exit_code == 0);
+    CHECK(read_bytes(dir.path("back.csv")) == without_comments(read_bytes(source_path(kSample))));
+}
+
+TEST_CASE("CLI: show prints every field of every card of the sample deck", "[cli]") {
+    TempDir dir;
+    auto shown = run_parsons("show " + q(source_path(kSample)) + " --svg " + q(dir.str("cards")));
+    REQUIRE(shown.exit_code == 0);
+    const std::string& out = shown.output;
+    for (const char* expected :
+         {"card 1 · card number 0001 (columns 77-80) · spindle forward (column 1)",
+          "card 3 · card number 0003 (columns 77-80) · spindle reverse (column 1)",
+          "card 4 · card number 0004 (columns 77-80) · spindle off (column 1)",
+          "  table     2-19     + forward    1      8.785        8.885        8.985  8.985  1,2",
+          "  cross     20-33    + forward    2      2.300        (no field)   2.500  2.500  1,2",
+          "  tilt      62-75    + forward    3      -            (no field)   0.125  0.125  5",
+          "  table     2-19     - reverse    1      8.585        8.485        8.385  0.600  1,2",
+          "4 cards read, 0 warnings, 0 with bad punches"}) {
+        INFO(expected);
+        CHECK(out.find(expected) != std::string::npos);
+    }
+    for (int i = 1; i <= 4; ++i) {
+        auto svg = dir.path("cards/card-000" + std::to_string(i) + ".svg");
+        REQUIRE(std::filesystem::exists(svg));
+        CHECK(read_bytes(svg).find("</svg>") != std::string::npos);
+    }
+}
+
+TEST_CASE("CLI: show warns about a wrong check and the shared-bank hazard", "[cli]") {
+    TempDir dir;
+    write_bytes(dir.path("hazard.csv"),
+                "card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq\n"
+                "1,0,table,+,1,8.850,8.950,9.050,9.000,1\n"
+                "1,0,cross,+,3,,,0.000,0.000,2\n"
+                "1,0,vertical,+,3,,,0.000,0.000,3\n"
+                "1,0,swivel,+,3,,,0.000,0.000,4\n"
+                "1,0,tilt,+,3,,,0.000,0.000,5\n");
+    auto shown = run_parsons("show " + q(dir.str("hazard.csv")));
+    CHECK(shown.exit_code == 0);
+    CHECK(shown.output.find("warning: table: check 9.000 but the stop moves 9.050") !=
+          std::string::npos);
+    CHECK(shown.output.find("warning: table: shared-bank hazard: the absolute banks 350-356 also "
+                            "compare equal at 8.050") != std::string::npos);
+}
+
+TEST_CASE("CLI: a bad punch in a deck is named by card and column, exit 2", "[cli][bad-input]") {
+    TempDir dir;
+    REQUIRE(run_parsons("punch " + q(source_path(kSample)) + " -o " + q(dir.str("s.bin")))
+                .exit_code == 0);
+    std::string bytes = read_bytes(dir.path("s.bin"));
+    // Card 2, column 13 (table stop, digit 3): add a 5 punch -> double punch.
+    const std::size_t i = 160 + 2 * 12 + 1;
+    bytes[i] = static_cast<char>(bytes[i] | 0x01); // word bit 4 = row 5
+    write_bytes(dir.path("bad.bin"), bytes);
+    auto shown = run_parsons("show " + q(dir.str("bad.bin")));
+    CHECK(shown.exit_code == 2);
+    CHECK(shown.output.find("parsons: error: " + dir.str("bad.bin") +
+                            ": card 2, column 13: double punch (rows 3 and 5) in table stop") !=
+          std::string::npos);
+    auto converted = run_parsons("convert " + q(dir.str("bad.bin")) + " -o " + q(dir.str("x.csv")));
+    CHECK(converted.exit_code == 2);
+    CHECK(converted.output.find(": card 2, column 13: double punch (rows 3 and 5) in table stop") !=
+          std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir.path("x.csv")));
+}
+
+TEST_CASE("CLI: bad input files give exit 2, a message naming where, and no output file",
+          "[cli][bad-input]") {
+    TempDir dir;
+    struct Case {
+        std::string name;
+        std::string bytes;
+        std::string message;
+    };
+    const std::string header = "card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq\n";
+    const std::vector<Case> cases = {
+        {"short.cbn", std::string("\xC0\x40\x40", 3),
+         "short.cbn: card 1, byte 4 (offset 0x3): truncated card: the file ends after 3 of its "
+         "160 bytes"},
+        {"nomark.cbn", std::string(160, '\x40'),
+         "nomark.cbn: card 1, byte 1 (offset 0x0): no card-start mark"},
+        {"long.txt", std::string(81, 'A') + "\n", "long.txt:1:81: line is longer than 80 columns"},
+        {"odd.txt", "AB{\n", "odd.txt:1:3: '{' is not a character of the IBM 029 keypunch"},
+        {"empty.cbn", "", "empty.cbn: empty file: the deck has no cards"},
+        {"axis.csv", header + "1,0,tabel,+,3,,,1.000,1.000,1\n",
+         "axis.csv:2: unknown axis 'tabel'"},
+        {"big.csv", header + "1,0,table,+,3,,,12.000,1.000,1\n",
+         "big.csv:2: stop '12.000': over 9.999 inches"},
+        {"decimals.csv", header + "1,0,table,+,3,,,1.5,1.000,1\n",
+         "decimals.csv:2: stop '1.5': needs exactly three decimals"},
+    };
+    for (const Case& c : cases) {
+        INFO(c.name);
+        write_bytes(dir.path(c.name), c.bytes);
+        auto r = run_parsons("convert " + q(dir.str(c.name)) + " --to cbn -o " +
+                             q(dir.str("out.cbn")));
+        CHECK(r.exit_code == 2);
+        CHECK(r.output.find("parsons: error: " + dir.str(c.message)) != std::string::npos);
+        CHECK_FALSE(std::filesystem::exists(dir.path("out.cbn")));
+        // No partial file left beside the output either.
+        for (const auto& entry : std::filesystem::directory_iterator(dir.path(""))) {
+            CHECK(entry.path().filename().string().find("partial") == std::string::npos);
+        }
+    }
+}
+
+TEST_CASE("CLI: a text deck that cannot hold a fig8 card is refused by card and column",
+          "[cli][bad-input]") {
+    TempDir dir;
+    auto r = run_parsons("punch " + q(source_path(kSample)) + " -o " + q(dir.str("s.txt")));
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find("s.txt: card 1, column 2: punches 12-0 are no character of the IBM 029 "
+                        "keypunch") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir.path("s.txt")));
+}
+
+TEST_CASE("CLI: usage errors exit 2, --help exits 0 with an example", "[cli]") {
+    CHECK(run_parsons("").exit_code == 2);
+    CHECK(run_parsons("frobnicate").exit_code == 2);
+    CHECK(run_parsons("punch").exit_code == 2);
+    auto missing = run_parsons("show /nonexistent/deck.cbn");
+    CHECK(missing.exit_code == 2);
+    CHECK(missing.output.find("/nonexistent/deck.cbn: cannot open") != std::string::npos);
+    auto unknown = run_parsons("show deck.xyz");
+    CHECK(unknown.exit_code == 2);
+    CHECK(unknown.output.find("deck.xyz: cannot tell the deck format from the extension") !=
+          std::string::npos);
+    for (const char* cmd : {"punch", "show", "convert"}) {
+        INFO(cmd);
+        auto help = run_parsons(std::string(cmd) + " --help");
+        CHECK(help.exit_code == 0);
+        CHECK(help.output.find(std::string("parsons ") + cmd) != std::string::npos);
+        CHECK(help.output.find("Example") != std::string::npos);
+    }
+}

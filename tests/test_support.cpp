@@ -1,0 +1,79 @@
+#include "tests/test_support.hpp"
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace parsons::test {
+
+RunResult run_parsons(const std::string& args) {
+    const std::string command = std::string("'") + PARSONS_EXE + "' " + args + " 2>&1";
+    RunResult result;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) {
+        return result;
+    }
+    std::array<char, 4096> buffer{};
+    std::size_t n = 0;
+    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
+        result.output.append(buffer.data(), n);
+    }
+    const int status = pclose(pipe);
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+TempDir::TempDir() {
+    static std::mt19937_64 rng{std::random_device{}()};
+    dir_ = std::filesystem::temp_directory_path() /
+           ("parsons-test-" + std::to_string(rng() % 1000000000));
+    std::filesystem::create_directories(dir_);
+}
+
+TempDir::~TempDir() {
+    std::error_code ignored;
+    std::filesystem::remove_all(dir_, ignored);
+}
+
+void write_bytes(const std::filesystem::path& p, const std::string& bytes) {
+    std::ofstream out(p, std::ios::binary);
+    out << bytes;
+}
+
+std::string read_bytes(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string source_path(const std::string& relative) {
+    return std::string(PARSONS_SOURCE_DIR) + "/" + relative;
+}
+
+cardreader::CardOrders random_orders(std::mt19937& rng, const cardreader::CardLayout& layout) {
+    using namespace cardreader;
+    auto pick = [&rng](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    CardOrders o;
+    o.number = pick(0, 9999);
+    o.spindle = static_cast<Spindle>(pick(0, 2));
+    for (Axis a : kAxes) {
+        AxisOrder& ax = o.axis(a);
+        ax.motion = pick(0, 1) ? Motion::forward : Motion::reverse;
+        ax.start_speed = pick(1, 3);
+        for (std::size_t i = 0; i < 2; ++i) {
+            const FieldKind kind = i == 0 ? FieldKind::slow_down_1 : FieldKind::slow_down_2;
+            if (layout.find(kind, a) && pick(0, 1)) {
+                ax.slow_down.at(i) = static_cast<Thousandths>(pick(0, 9999));
+            }
+        }
+        ax.stop = static_cast<Thousandths>(pick(0, 9999));
+        ax.check = static_cast<Thousandths>(pick(0, 9999));
+        ax.sequence = static_cast<SequencePattern>(pick(0, 31));
+    }
+    return o;
+}
+
+} // namespace parsons::test

@@ -1,0 +1,43 @@
+// Helpers shared by the tests: running the parsons executable, temporary directories, files,
+// and random valid card orders.
+#pragma once
+
+#include "cardreader/layout.hpp"
+#include "cardreader/orders.hpp"
+
+#include <filesystem>
+#include <random>
+#include <string>
+
+namespace parsons::test {
+
+struct RunResult {
+    int exit_code = -1;
+    std::string output; // stdout and stderr together
+};
+
+// Runs `parsons ARGS` through the shell; ARGS is pasted verbatim.
+RunResult run_parsons(const std::string& args);
+
+// A fresh directory under the system temp dir, removed when the object goes.
+class TempDir {
+public:
+    TempDir();
+    ~TempDir();
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    std::filesystem::path path(const std::string& name) const { return dir_ / name; }
+    std::string str(const std::string& name) const { return path(name).string(); }
+
+private:
+    std::filesystem::path dir_;
+};
+
+void write_bytes(const std::filesystem::path& p, const std::string& bytes);
+std::string read_bytes(const std::filesystem::path& p);
+std::string source_path(const std::string& relative); // a file of the source tree
+
+// Random orders a layout can hold (a second slow-down only where the layout has the field).
+cardreader::CardOrders random_orders(std::mt19937& rng, const cardreader::CardLayout& layout);
+
+} // namespace parsons::test

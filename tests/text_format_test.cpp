@@ -1,0 +1,127 @@
+#include "cardreader/deck_error.hpp"
+#include "cardreader/deck_io.hpp"
+#include "cardreader/text_format.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <sstream>
+#include <vector>
+
+using namespace parsons::cardreader;
+
+namespace {
+
+std::vector<Card> read_text(const std::string& text, KeypunchCode code = KeypunchCode::ibm029) {
+    std::istringstream in(text);
+    DeckOptions options;
+    options.format = DeckFormat::text;
+    options.file_name = "deck.txt";
+    options.code = code;
+    auto source = open_card_source(in, options);
+    std::vector<Card> cards;
+    while (auto c = source->next()) {
+        cards.push_back(*c);
+    }
+    return cards;
+}
+
+std::string read_error(const std::string& text) {
+    try {
+        read_text(text);
+    } catch (const DeckError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+ColumnWord ch(char c) { return *punches_for(c, KeypunchCode::ibm029); }
+
+} // namespace
+
+TEST_CASE("Text cards: a short line is padded with blanks, a blank line is a blank card",
+          "[text]") {
+    auto cards = read_text("AB\n\nC");
+    REQUIRE(cards.size() == 3);
+    CHECK(cards[0].column(1) == ch('A'));
+    CHECK(cards[0].column(2) == ch('B'));
+    CHECK(cards[0].column(3) == 0);
+    CHECK(cards[1].blank());
+    CHECK(cards[2].column(1) == ch('C'));
+}
+
+TEST_CASE("Text cards: a tab moves to the next multiple of 8 columns, as SIMH does", "[text]") {
+    auto cards = read_text("A\tB\t\tC\n");
+    REQUIRE(cards.size() == 1);
+    CHECK(cards[0].column(1) == ch('A'));
+    CHECK(cards[0].column(9) == ch('B'));
+    CHECK(cards[0].column(25) == ch('C'));
+    for (int c : {2, 8, 10, 24}) {
+        CHECK(cards[0].column(c) == 0);
+    }
+}
+
+TEST_CASE("Text cards: lower case is folded to upper case", "[text]") {
+    auto cards = read_text("parsons\n");
+    REQUIRE(cards.size() == 1);
+    CHECK(cards[0] == read_text("PARSONS\n")[0]);
+}
+
+TEST_CASE("Text cards: CRLF line ends read the same as LF", "[text]") {
+    CHECK(read_text("AB\r\nCD\r\n") == read_text("AB\nCD\n"));
+    CHECK(read_error("AB\rCD\n") == "deck.txt:1:3: carriage return inside a line");
+}
+
+TEST_CASE("Text cards: a line over 80 columns is an error naming file and line", "[text][bad-input]") {
+    const std::string eighty(80, 'X');
+    CHECK(read_text(eighty + "\n").size() == 1);
+    CHECK(read_error("OK\n" + eighty + "Y\n") ==
+          "deck.txt:2:81: line is longer than 80 columns (a card has 80; nothing is cut off "
+          "silently)");
+    CHECK(read_error(std::string(79, ' ') + "\tX\n") ==
+          "deck.txt:1:81: line is longer than 80 columns (a card has 80; nothing is cut off "
+          "silently)");
+}
+
+TEST_CASE("Text cards: a character outside the 029 set names line and column",
+          "[text][bad-input]") {
+    CHECK(read_error("ABC~\n") == "deck.txt:1:4: '~' is not a character of the IBM 029 keypunch");
+    CHECK(read_error("A\nB\xC3\xA9\n") ==
+          "deck.txt:2:2: byte 0xc3 is not a character of the IBM 029 keypunch");
+    CHECK(read_error(std::string("A\0B", 3)) ==
+          "deck.txt:1:2: byte 0x00 is not a character of the IBM 029 keypunch");
+}
+
+TEST_CASE("Text cards: the 026 code reads its own characters", "[text]") {
+    auto cards = read_text("+(\n", KeypunchCode::ibm026);
+    REQUIRE(cards.size() == 1);
+    CHECK(cards[0].column(1) == row_bit(Row::r12));
+    CHECK(cards[0].column(2) == (row_bit(Row::r0) | row_bit(Row::r8) | row_bit(Row::r4)));
+}
+
+TEST_CASE("Text cards: a column no key makes is refused, never altered", "[text][bad-input]") {
+    Card card;
+    card.set_column(1, ch('A'));
+    card.set_column(7, row_bit(Row::r12) | row_bit(Row::r0)); // 12-0: no 029 key
+    std::ostringstream out;
+    auto sink = make_text_sink(out, "out.txt", KeypunchCode::ibm029);
+    try {
+        sink->write(card);
+        FAIL("the text writer accepted a column no key makes");
+    } catch (const DeckError& e) {
+        CHECK(std::string(e.what()) ==
+              "out.txt: card 1, column 7: punches 12-0 are no character of the IBM 029 keypunch, "
+              "so this card cannot be written as a text card image (use .cbn or .bin)");
+    }
+}
+
+TEST_CASE("Text cards: writing then reading gives the same cards, trailing blanks trimmed",
+          "[text]") {
+    std::ostringstream out;
+    auto sink = make_text_sink(out, "out.txt", KeypunchCode::ibm029);
+    auto cards = read_text("HELLO, 1952\n\n  X  \n");
+    for (const Card& c : cards) {
+        sink->write(c);
+    }
+    CHECK(out.str() == "HELLO, 1952\n\n  X\n");
+    CHECK(read_text(out.str()) == cards);
+}
