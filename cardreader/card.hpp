@@ -25,16 +25,18 @@ inline constexpr ColumnWord kAllRowsMask = 0x0FFF;
 // The rows from the top edge of the card down.
 enum class Row : std::uint8_t { r12, r11, r0, r1, r2, r3, r4, r5, r6, r7, r8, r9 };
 
-inline constexpr std::array<Row, kRows> kRowsTopToBottom = {
-    Row::r12, Row::r11, Row::r0, Row::r1, Row::r2, Row::r3,
-    Row::r4,  Row::r5,  Row::r6, Row::r7, Row::r8, Row::r9};
+inline constexpr std::array<Row, kRows> kRowsTopToBottom = {Row::r12, Row::r11, Row::r0, Row::r1,
+                                                            Row::r2,  Row::r3,  Row::r4, Row::r5,
+                                                            Row::r6,  Row::r7,  Row::r8, Row::r9};
 
 constexpr ColumnWord row_bit(Row r) {
     return static_cast<ColumnWord>(0x800u >> static_cast<unsigned>(r));
 }
 
 // The digit row 0..9 (the rows printed on the card).
-constexpr Row digit_row(int digit) { return static_cast<Row>(static_cast<int>(Row::r0) + digit); }
+constexpr Row digit_row(int digit) {
+    return static_cast<Row>(static_cast<int>(Row::r0) + digit);
+}
 
 // Row by its printed name: 12, 11, 0 .. 9. Precondition: name is one of those.
 constexpr Row row_named(int name) {

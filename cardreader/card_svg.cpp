@@ -23,8 +23,12 @@ constexpr const char* kStock = "#f4e9c8";
 constexpr const char* kInk = "#5b4630";
 constexpr const char* kHole = "#22201c";
 
-double column_x(int col) { return kFirstColumnX + (col - 1) * kColumnPitch; }
-double row_y(int row_index) { return kFirstRowY + row_index * kRowPitch; } // 0 = row 12
+double column_x(int col) {
+    return kFirstColumnX + (col - 1) * kColumnPitch;
+}
+double row_y(int row_index) {
+    return kFirstRowY + row_index * kRowPitch;
+} // 0 = row 12
 
 std::string escape(std::string_view text) {
     std::string out;
@@ -58,7 +62,8 @@ void draw_stock(std::string& svg) {
                    R"(<path d="M 25 0 H {w} V {h} H 0 V 43 Z" fill="{stock}" stroke="#b9a67a" )"
                    R"(stroke-width="0.8"/>)"
                    "\n",
-                   fmt::arg("w", kCardWidth), fmt::arg("h", kCardHeight), fmt::arg("stock", kStock));
+                   fmt::arg("w", kCardWidth), fmt::arg("h", kCardHeight),
+                   fmt::arg("stock", kStock));
 }
 
 void draw_printing(std::string& svg) {
@@ -70,8 +75,8 @@ void draw_printing(std::string& svg) {
     for (int col = 1; col <= kColumns; ++col) {
         const double x = column_x(col);
         for (int d = 0; d <= 9; ++d) {
-            fmt::format_to(std::back_inserter(svg), R"(<text x="{:.2f}" y="{:.2f}">{}</text>)",
-                           x, row_y(2 + d) + 2.5, d);
+            fmt::format_to(std::back_inserter(svg), R"(<text x="{:.2f}" y="{:.2f}">{}</text>)", x,
+                           row_y(2 + d) + 2.5, d);
         }
         svg += '\n';
     }
@@ -109,10 +114,11 @@ void draw_fields(std::string& svg, const CardLayout& layout) {
         const double centre = (column_x(f.first_column) + column_x(f.last_column())) / 2;
         const std::string_view label = field_short_label(f.kind);
         if (f.width == 1) {
-            fmt::format_to(std::back_inserter(svg),
-                           R"~(<text font-size="4.4" transform="translate({:.2f} 66) rotate(-90)" )~"
-                           R"(text-anchor="start">{}</text>)",
-                           centre + 1.5, escape(label));
+            fmt::format_to(
+                std::back_inserter(svg),
+                R"~(<text font-size="4.4" transform="translate({:.2f} 66) rotate(-90)" )~"
+                R"(text-anchor="start">{}</text>)",
+                centre + 1.5, escape(label));
         } else {
             fmt::format_to(std::back_inserter(svg),
                            R"(<text font-size="5.2" x="{:.2f}" y="63">{}</text>)", centre,
@@ -179,8 +185,7 @@ void draw_holes(std::string& svg, const Card& card, const std::optional<BadPunch
             fmt::format_to(std::back_inserter(svg),
                            R"(<rect x="{:.2f}" y="{:.2f}" width="{}" height="{}"{}/>)",
                            column_x(col) - kHoleWidth / 2, row_y(r) - kHoleHeight / 2, kHoleWidth,
-                           kHoleHeight,
-                           flagged ? R"( stroke="#d01c1c" stroke-width="1.4")" : "");
+                           kHoleHeight, flagged ? R"( stroke="#d01c1c" stroke-width="1.4")" : "");
         }
     }
     svg += "</g>\n";

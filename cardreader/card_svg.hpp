@@ -18,7 +18,7 @@
 namespace parsons::cardreader {
 
 struct CardPictureNotes {
-    std::string caption;              // printed under the card ("sample.cbn, card 1 ...")
+    std::string caption;               // printed under the card ("sample.cbn, card 1 ...")
     std::optional<BadPunch> bad_punch; // outlined in red, and named under the card
 };
 

@@ -41,9 +41,9 @@ public:
 
 struct DeckOptions {
     DeckFormat format = DeckFormat::cbn;
-    std::string file_name;                            // for messages
-    KeypunchCode code = KeypunchCode::ibm029;         // text card images
-    const CardLayout* layout = &fig8_layout();        // listing <-> cards
+    std::string file_name;                     // for messages
+    KeypunchCode code = KeypunchCode::ibm029;  // text card images
+    const CardLayout* layout = &fig8_layout(); // listing <-> cards
 };
 
 // A reader that also refuses an empty deck ("empty file: no cards").

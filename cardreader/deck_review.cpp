@@ -91,11 +91,11 @@ std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
     if (previous_number_) {
         const int expected = (*previous_number_ + 1) % kCounterModulus;
         if (orders.number != expected) {
-            notes.push_back({std::nullopt,
-                             fmt::format("card number {:04} follows {:04} (expected {:04}): the "
-                                         "card-number check stops the machine before any axis "
-                                         "moves",
-                                         orders.number, *previous_number_, expected)});
+            notes.push_back(
+                {std::nullopt, fmt::format("card number {:04} follows {:04} (expected {:04}): the "
+                                           "card-number check stops the machine before any axis "
+                                           "moves",
+                                           orders.number, *previous_number_, expected)});
         }
     }
     previous_number_ = orders.number;
@@ -110,16 +110,16 @@ std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
             note(fmt::format("check {} but the stop moves {} from the previous stop {} (check = "
                              "|stop - previous stop|): the increment comparer will disagree with "
                              "the absolute one and the machine stops",
-                             format_inches(o.check), format_inches(static_cast<Thousandths>(travel)),
-                             format_inches(from)));
+                             format_inches(o.check),
+                             format_inches(static_cast<Thousandths>(travel)), format_inches(from)));
         }
         if ((o.motion == Motion::forward && o.stop < from) ||
             (o.motion == Motion::reverse && o.stop > from)) {
             note(fmt::format("motion {} but the stop {} is {} the previous stop {}: the counters "
                              "count the long way round through {}",
                              o.motion == Motion::forward ? "+ (forward)" : "- (reverse)",
-                             format_inches(o.stop),
-                             o.motion == Motion::forward ? "below" : "above", format_inches(from),
+                             format_inches(o.stop), o.motion == Motion::forward ? "below" : "above",
+                             format_inches(from),
                              o.motion == Motion::forward ? "9.999 to 0.000" : "0.000 to 9.999"));
         }
         const int slow_downs = static_cast<int>(o.slow_down[0].has_value()) +

@@ -104,8 +104,8 @@ std::optional<int> read_number(const Card& card, const LayoutField& f, Problems&
         }
         int d = digit_of(digits);
         if (d < 0) {
-            problems.add(c, fmt::format("double punch (rows {}) in {}", join_rows(digits),
-                                        field_label(f)));
+            problems.add(
+                c, fmt::format("double punch (rows {}) in {}", join_rows(digits), field_label(f)));
             bad = true;
             continue;
         }
@@ -115,8 +115,8 @@ std::optional<int> read_number(const Card& card, const LayoutField& f, Problems&
         return std::nullopt;
     }
     if (blanks > 0) {
-        problems.add(first_blank, fmt::format("blank digit inside the number in {}",
-                                              field_label(f)));
+        problems.add(first_blank,
+                     fmt::format("blank digit inside the number in {}", field_label(f)));
         bad = true;
     }
     return bad ? 0 : value;
@@ -125,9 +125,8 @@ std::optional<int> read_number(const Card& card, const LayoutField& f, Problems&
 } // namespace
 
 const LayoutField* CardLayout::find(FieldKind kind, std::optional<Axis> axis) const {
-    auto it = std::find_if(fields.begin(), fields.end(), [&](const LayoutField& f) {
-        return f.kind == kind && f.axis == axis;
-    });
+    auto it = std::find_if(fields.begin(), fields.end(),
+                           [&](const LayoutField& f) { return f.kind == kind && f.axis == axis; });
     return it == fields.end() ? nullptr : &*it;
 }
 
@@ -224,11 +223,11 @@ DecodeResult decode(const Card& card, const CardLayout& layout) {
         }
         ColumnWord stray = card.column(c) & static_cast<ColumnWord>(~allowed) & kAllRowsMask;
         if (stray != 0) {
-            std::string where = f ? fmt::format("in {}", field_label(*f))
-                                  : fmt::format("in column {}, which layout {} leaves unused", c,
-                                                layout.name);
-            problems.add(c, fmt::format("punch in row {} where none belongs ({})",
-                                        join_rows(stray), where));
+            std::string where =
+                f ? fmt::format("in {}", field_label(*f))
+                  : fmt::format("in column {}, which layout {} leaves unused", c, layout.name);
+            problems.add(
+                c, fmt::format("punch in row {} where none belongs ({})", join_rows(stray), where));
         }
     }
 
@@ -242,8 +241,9 @@ DecodeResult decode(const Card& card, const CardLayout& layout) {
             if ((word & (r0 | r1)) == (r0 | r1)) {
                 problems.add(c, "spindle punched both forward (row 0) and reverse (row 1)");
             }
-            o.spindle = (word & r0) ? Spindle::forward : (word & r1) ? Spindle::reverse
-                                                                      : Spindle::off;
+            o.spindle = (word & r0)   ? Spindle::forward
+                        : (word & r1) ? Spindle::reverse
+                                      : Spindle::off;
             break;
         case FieldKind::motion:
             if ((word & (r0 | r1)) == (r0 | r1)) {
@@ -274,8 +274,8 @@ DecodeResult decode(const Card& card, const CardLayout& layout) {
         }
         default: {
             std::optional<int> value = read_number(card, f, problems);
-            const bool required = f.kind != FieldKind::slow_down_1 &&
-                                  f.kind != FieldKind::slow_down_2;
+            const bool required =
+                f.kind != FieldKind::slow_down_1 && f.kind != FieldKind::slow_down_2;
             if (!value && required) {
                 problems.add(c, fmt::format("{} is blank (it is always punched)", field_label(f)));
             }
@@ -353,8 +353,8 @@ EncodeResult encode(const CardOrders& orders, const CardLayout& layout) {
         for (int i = 0; i < 2; ++i) {
             FieldKind kind = i == 0 ? FieldKind::slow_down_1 : FieldKind::slow_down_2;
             if (ax.slow_down.at(static_cast<std::size_t>(i)) && !layout.find(kind, a)) {
-                fail(fmt::format("layout {} has no {} slow-down field for the {} axis",
-                                 layout.name, i == 0 ? "first" : "second", axis_name(a)));
+                fail(fmt::format("layout {} has no {} slow-down field for the {} axis", layout.name,
+                                 i == 0 ? "first" : "second", axis_name(a)));
             }
         }
         if (ax.sequence >= (1u << kSequencePositions)) {

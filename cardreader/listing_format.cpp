@@ -39,7 +39,8 @@ std::vector<std::string_view> split_fields(std::string_view line) {
 }
 
 bool all_digits(std::string_view s) {
-    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+    return !s.empty() &&
+           std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
 // Parses a d.ddd inch value, or throws with the reason.
@@ -101,14 +102,14 @@ ListingRow parse_row(std::string_view text, const std::string& file, long line) 
     } else if (fields[1] == "1") {
         row.spindle = Spindle::reverse;
     } else {
-        throw fail(fmt::format("spindle '{}' is not 0 (forward), 1 (reverse) or blank (off)",
-                               fields[1]));
+        throw fail(
+            fmt::format("spindle '{}' is not 0 (forward), 1 (reverse) or blank (off)", fields[1]));
     }
 
     auto axis = axis_named(fields[2]);
     if (!axis) {
-        throw fail(fmt::format("unknown axis '{}' (table, cross, vertical, swivel or tilt)",
-                               fields[2]));
+        throw fail(
+            fmt::format("unknown axis '{}' (table, cross, vertical, swivel or tilt)", fields[2]));
     }
     row.axis = *axis;
 
@@ -231,8 +232,8 @@ std::optional<std::string> ListingReader::next_data_line() {
         while ((ch = in_.get()) != std::char_traits<char>::eof() && ch != '\n') {
             any = true;
             if (line.size() >= kMaxLineBytes) {
-                throw DeckError::at_line(file_, line_ + 1,
-                                         fmt::format("line is longer than {} bytes", kMaxLineBytes));
+                throw DeckError::at_line(
+                    file_, line_ + 1, fmt::format("line is longer than {} bytes", kMaxLineBytes));
             }
             if (ch == 0) {
                 throw DeckError::at_line(file_, line_ + 1, "NUL byte: this is not a text listing");
@@ -310,7 +311,8 @@ std::optional<ListedCard> ListingReader::next() {
             throw DeckError::at_line(file_, line_,
                                      fmt::format("card {} has a second row for the {} axis (first "
                                                  "on line {})",
-                                                 row.card, axis_name(row.axis), card.axis_line.at(i)));
+                                                 row.card, axis_name(row.axis),
+                                                 card.axis_line.at(i)));
         }
         seen.at(i) = true;
         card.axis_line.at(i) = line_;

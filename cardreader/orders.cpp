@@ -6,7 +6,7 @@ namespace parsons::cardreader {
 
 std::string_view axis_name(Axis axis) {
     static constexpr std::array<std::string_view, kAxisCount> names = {"table", "cross", "vertical",
-                                                                        "swivel", "tilt"};
+                                                                       "swivel", "tilt"};
     return names.at(axis_index(axis));
 }
 

@@ -21,7 +21,9 @@ inline constexpr std::array<Axis, kAxisCount> kAxes = {Axis::table, Axis::cross,
 
 std::string_view axis_name(Axis axis);
 std::optional<Axis> axis_named(std::string_view name);
-inline std::size_t axis_index(Axis axis) { return static_cast<std::size_t>(axis); }
+inline std::size_t axis_index(Axis axis) {
+    return static_cast<std::size_t>(axis);
+}
 
 // Reversing control 214: row 0 = forward (counters count up), row 1 = reverse (count down).
 enum class Motion : std::uint8_t { forward, reverse };

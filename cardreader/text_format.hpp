@@ -13,8 +13,7 @@
 
 namespace parsons::cardreader {
 
-std::unique_ptr<CardSource> make_text_source(std::istream& in, std::string file,
-                                             KeypunchCode code);
+std::unique_ptr<CardSource> make_text_source(std::istream& in, std::string file, KeypunchCode code);
 std::unique_ptr<CardSink> make_text_sink(std::ostream& out, std::string file, KeypunchCode code);
 
 } // namespace parsons::cardreader

@@ -44,13 +44,14 @@ cardreader::DeckOptions deck_options(const std::string& path, const std::string&
     }
     auto code = cardreader::code_named(flags.code);
     if (!code) {
-        throw DeckError::in_file(path, fmt::format("unknown keypunch code '{}' (029 or 026)",
-                                                   flags.code));
+        throw DeckError::in_file(
+            path, fmt::format("unknown keypunch code '{}' (029 or 026)", flags.code));
     }
     options.code = *code;
     options.layout = cardreader::layout_named(flags.layout);
     if (!options.layout) {
-        throw DeckError::in_file(path, fmt::format("unknown card layout '{}' (fig8)", flags.layout));
+        throw DeckError::in_file(path,
+                                 fmt::format("unknown card layout '{}' (fig8)", flags.layout));
     }
     return options;
 }

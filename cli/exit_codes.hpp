@@ -10,6 +10,8 @@ enum class ExitCode : int {
     machine_stop = 3, // the machine stopped itself: a check fired (a correct emulation)
 };
 
-inline int to_int(ExitCode code) { return static_cast<int>(code); }
+inline int to_int(ExitCode code) {
+    return static_cast<int>(code);
+}
 
 } // namespace parsons::cli

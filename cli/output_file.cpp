@@ -18,11 +18,12 @@ std::string temp_name_for(const std::string& path) {
 
 } // namespace
 
-OutputFile::OutputFile(std::string path) : path_(std::move(path)), temp_path_(temp_name_for(path_)) {
+OutputFile::OutputFile(std::string path)
+    : path_(std::move(path)), temp_path_(temp_name_for(path_)) {
     out_.open(temp_path_, std::ios::binary | std::ios::trunc);
     if (!out_) {
-        throw cardreader::DeckError::in_file(path_, std::string("cannot write: ") +
-                                                        std::strerror(errno));
+        throw cardreader::DeckError::in_file(path_,
+                                             std::string("cannot write: ") + std::strerror(errno));
     }
 }
 

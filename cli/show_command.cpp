@@ -65,8 +65,8 @@ void print_card(long index, const DecodeResult& decoded, const CardLayout& layou
         };
         fmt::print("  {:<9} {:<8} {:<12} {:<6} {:<12} {:<12} {:<6} {:<6} {}\n", axis_name(a),
                    axis_columns(layout, a),
-                   ax.motion == Motion::forward ? "+ forward" : "- reverse", ax.start_speed, slow(0),
-                   slow(1), format_inches(ax.stop), format_inches(ax.check),
+                   ax.motion == Motion::forward ? "+ forward" : "- reverse", ax.start_speed,
+                   slow(0), slow(1), format_inches(ax.stop), format_inches(ax.check),
                    sequence_text(ax.sequence));
     }
 }
@@ -96,10 +96,10 @@ ExitCode run_show(const ShowFlags& f) {
         print_card(index, decoded, layout);
         if (!decoded) {
             ++bad_cards;
-            const std::string where = DeckError::at_card_column(f.input, index,
-                                                                decoded.bad_punch->column,
-                                                                decoded.bad_punch->what)
-                                          .what();
+            const std::string where =
+                DeckError::at_card_column(f.input, index, decoded.bad_punch->column,
+                                          decoded.bad_punch->what)
+                    .what();
             fmt::print("  BAD PUNCH: column {}: {} (the reader stops the machine here)\n",
                        decoded.bad_punch->column, decoded.bad_punch->what);
             first_bad = first_bad.value_or(where);
@@ -117,7 +117,8 @@ ExitCode run_show(const ShowFlags& f) {
                                       std::filesystem::path(f.input).filename().string(), index,
                                       decoded.orders.number, layout.name);
             pic.bad_punch = decoded.bad_punch;
-            const auto path = std::filesystem::path(f.svg_dir) / fmt::format("card-{:04}.svg", index);
+            const auto path =
+                std::filesystem::path(f.svg_dir) / fmt::format("card-{:04}.svg", index);
             write_file(path.string(), card_svg(*card, layout, pic, deck.options().code));
         }
     }

@@ -39,8 +39,8 @@ TEST_CASE("Card picture: one rectangular hole per punch, the digits 0-9 printed 
     CHECK(count(svg, "<rect x=") == static_cast<std::size_t>(holes));
     // 800 printed digits plus the interpretation characters and labels.
     const std::regex digit(R"(<text x="[0-9.]+" y="[0-9.]+">[0-9]</text>)");
-    const auto printed = std::distance(std::sregex_iterator(svg.begin(), svg.end(), digit),
-                                       std::sregex_iterator());
+    const auto printed =
+        std::distance(std::sregex_iterator(svg.begin(), svg.end(), digit), std::sregex_iterator());
     CHECK(printed >= 800);
     CHECK(count(svg, "<svg") == 1);
     CHECK(count(svg, "</svg>") == 1);

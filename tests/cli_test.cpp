@@ -28,7 +28,9 @@ std::string without_comments(const std::string& listing) {
     return out;
 }
 
-std::string q(const std::string& s) { return "'" + s + "'"; }
+std::string q(const std::string& s) {
+    return "'" + s + "'";
+}
 
 } // namespace
 
@@ -38,10 +40,12 @@ TEST_CASE("CLI: punch, convert to .cbn and back to a listing gives the sample li
     REQUIRE(punched.exit_code == 0);
     CHECK(punched.output.find("punched 4 cards") != std::string::npos);
     CHECK(std::filesystem::file_size(dir.path("s.cbn")) == 4 * 160);
-    REQUIRE(run_parsons("convert " + q(dir.str("s.cbn")) + " -o " + q(dir.str("s.bin"))).exit_code ==
-            0);
-    REQUIRE(run_parsons("convert " + q(dir.str("s.bin")) + " -o " + q(dir.str("s2.cbn")))
-                .exit_code == 0);
+    REQUIRE(
+        run_parsons("convert " + q(dir.str("s.cbn")) + " -o " + q(dir.str("s.bin"))).exit_code ==
+        0);
+    REQUIRE(
+        run_parsons("convert " + q(dir.str("s.bin")) + " -o " + q(dir.str("s2.cbn"))).exit_code ==
+        0);
     CHECK(read_bytes(dir.path("s2.cbn")) == read_bytes(dir.path("s.cbn")));
     REQUIRE(run_parsons("convert " + q(dir.str("s2.cbn")) + " -o " + q(dir.str("back.csv")))
                 .exit_code == 0);
@@ -91,8 +95,9 @@ TEST_CASE("CLI: show warns about a wrong check and the shared-bank hazard", "[cl
 
 TEST_CASE("CLI: a bad punch in a deck is named by card and column, exit 2", "[cli][bad-input]") {
     TempDir dir;
-    REQUIRE(run_parsons("punch " + q(source_path(kSample)) + " -o " + q(dir.str("s.bin")))
-                .exit_code == 0);
+    REQUIRE(
+        run_parsons("punch " + q(source_path(kSample)) + " -o " + q(dir.str("s.bin"))).exit_code ==
+        0);
     std::string bytes = read_bytes(dir.path("s.bin"));
     // Card 2, column 13 (table stop, digit 3): add a 5 punch -> double punch.
     const std::size_t i = 160 + 2 * 12 + 1;
@@ -138,8 +143,8 @@ TEST_CASE("CLI: bad input files give exit 2, a message naming where, and no outp
     for (const Case& c : cases) {
         INFO(c.name);
         write_bytes(dir.path(c.name), c.bytes);
-        auto r = run_parsons("convert " + q(dir.str(c.name)) + " --to cbn -o " +
-                             q(dir.str("out.cbn")));
+        auto r =
+            run_parsons("convert " + q(dir.str(c.name)) + " --to cbn -o " + q(dir.str("out.cbn")));
         CHECK(r.exit_code == 2);
         CHECK(r.output.find("parsons: error: " + dir.str(c.message)) != std::string::npos);
         CHECK_FALSE(std::filesystem::exists(dir.path("out.cbn")));

@@ -58,8 +58,8 @@ TEST_CASE("Shared banks: stop 9.050 with slow-downs 8.850, 8.950 also matches 8.
 
 TEST_CASE("Review: a check that is not |stop - previous stop| is a warning", "[review]") {
     DeckReviewer reviewer;
-    CHECK(reviewer.review(card_with_table(1, order(Motion::forward, 3, {}, {}, 2000, 2000)))
-              .empty());
+    CHECK(
+        reviewer.review(card_with_table(1, order(Motion::forward, 3, {}, {}, 2000, 2000))).empty());
     auto notes = reviewer.review(card_with_table(2, order(Motion::reverse, 3, {}, {}, 1500, 600)));
     REQUIRE(notes.size() == 1);
     CHECK(notes[0].message == "check 0.600 but the stop moves 0.500 from the previous stop 2.000 "

@@ -29,10 +29,23 @@ TEST_CASE("Hollerith: a text card image of 'HELLO, 1952' decodes to the IBM 029 
     REQUIRE(card);
     // Chart: H = 12-8, E = 12-5, L = 11-3, O = 11-6, ',' = 0-8-3, digits single punches,
     // '&' = 12, '-' = 11, '/' = 0-1, '.' = 12-8-3, '$' = 11-8-3.
-    const std::vector<ColumnWord> expected = {
-        rows({12, 8}), rows({12, 5}), rows({11, 3}), rows({11, 3}), rows({11, 6}),
-        rows({0, 8, 3}), 0, rows({1}), rows({9}), rows({5}), rows({2}), 0, rows({12}),
-        rows({11}), rows({0, 1}), rows({12, 8, 3}), rows({11, 8, 3})};
+    const std::vector<ColumnWord> expected = {rows({12, 8}),
+                                              rows({12, 5}),
+                                              rows({11, 3}),
+                                              rows({11, 3}),
+                                              rows({11, 6}),
+                                              rows({0, 8, 3}),
+                                              0,
+                                              rows({1}),
+                                              rows({9}),
+                                              rows({5}),
+                                              rows({2}),
+                                              0,
+                                              rows({12}),
+                                              rows({11}),
+                                              rows({0, 1}),
+                                              rows({12, 8, 3}),
+                                              rows({11, 8, 3})};
     for (std::size_t i = 0; i < expected.size(); ++i) {
         INFO("column " << i + 1);
         CHECK(card->column(static_cast<int>(i) + 1) == expected[i]);

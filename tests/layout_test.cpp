@@ -74,7 +74,7 @@ TEST_CASE("Layout fig8: the table's 8.785 / 8.885 / 8.985 punch one digit per co
           std::vector<int>{8, 7, 8, 5});
     CHECK(std::vector<int>{digit_in(12), digit_in(13), digit_in(14), digit_in(15)} ==
           std::vector<int>{8, 9, 8, 5});
-    CHECK(card.column(1) == row_bit(Row::r0));                      // spindle forward
+    CHECK(card.column(1) == row_bit(Row::r0));                       // spindle forward
     CHECK(card.column(2) == (row_bit(Row::r0) | row_bit(Row::r12))); // motion + sequence 1
     CHECK(card.column(3) == (row_bit(Row::r0) | row_bit(Row::r12))); // speed 1 + sequence 2
     CHECK(card.punched(66, Row::r12));                               // tilt at position 5
@@ -139,8 +139,7 @@ TEST_CASE("Layout fig8: missing motion and missing speed are named", "[layout][b
     Card card = punched(patent_card());
     card.set_column(34, 0); // vertical motion
     CHECK(bad_punch_of(card).column == 34);
-    CHECK(bad_punch_of(card).what ==
-          "missing vertical motion (row 0 = forward, row 1 = reverse)");
+    CHECK(bad_punch_of(card).what == "missing vertical motion (row 0 = forward, row 1 = reverse)");
     Card speed = punched(patent_card());
     speed.set_column(49, row_bit(Row::r12)); // swivel speed: only the sequence mark left
     CHECK(bad_punch_of(speed).what ==

@@ -23,8 +23,8 @@ std::string card_rows(int number, const std::string& axis = "", const std::strin
             rows += replace;
             continue;
         }
-        rows += std::to_string(number) + ",0," + std::string(axis_name(a)) +
-                ",+,3,,,1.000,1.000,1\n";
+        rows +=
+            std::to_string(number) + ",0," + std::string(axis_name(a)) + ",+,3,,,1.000,1.000,1\n";
     }
     return rows;
 }
@@ -68,9 +68,10 @@ std::string round_trip(const std::string& listing) {
 
 } // namespace
 
-TEST_CASE("Listing: a valid listing reads; comments, blank lines and CRLF are allowed", "[listing]") {
-    const std::string text = "# a comment\n" + kHeader + "\r\n" + card_rows(1) +
-                             "  # indented comment\n" + card_rows(2);
+TEST_CASE("Listing: a valid listing reads; comments, blank lines and CRLF are allowed",
+          "[listing]") {
+    const std::string text =
+        "# a comment\n" + kHeader + "\r\n" + card_rows(1) + "  # indented comment\n" + card_rows(2);
     CHECK(read_error(text) == "no error");
 }
 
@@ -127,10 +128,10 @@ TEST_CASE("Listing: a card with an axis row repeated names both lines", "[listin
 
 TEST_CASE("Listing: a second slow-down where the layout has none names the row",
           "[listing][bad-input]") {
-    CHECK(read_error(kHeader +
-                     card_rows(1, "cross", "1,0,cross,+,1,0.800,0.900,1.000,1.000,1\n")) ==
-          "deck.csv:3: layout fig8 has no second slow-down field for the cross axis (only the "
-          "table has two)");
+    CHECK(
+        read_error(kHeader + card_rows(1, "cross", "1,0,cross,+,1,0.800,0.900,1.000,1.000,1\n")) ==
+        "deck.csv:3: layout fig8 has no second slow-down field for the cross axis (only the "
+        "table has two)");
 }
 
 TEST_CASE("Listing: other malformed rows are named by line", "[listing][bad-input]") {

@@ -34,7 +34,9 @@ std::string read_error(const std::string& text) {
     return "no error";
 }
 
-ColumnWord ch(char c) { return *punches_for(c, KeypunchCode::ibm029); }
+ColumnWord ch(char c) {
+    return *punches_for(c, KeypunchCode::ibm029);
+}
 
 } // namespace
 
@@ -71,7 +73,8 @@ TEST_CASE("Text cards: CRLF line ends read the same as LF", "[text]") {
     CHECK(read_error("AB\rCD\n") == "deck.txt:1:3: carriage return inside a line");
 }
 
-TEST_CASE("Text cards: a line over 80 columns is an error naming file and line", "[text][bad-input]") {
+TEST_CASE("Text cards: a line over 80 columns is an error naming file and line",
+          "[text][bad-input]") {
     const std::string eighty(80, 'X');
     CHECK(read_text(eighty + "\n").size() == 1);
     CHECK(read_error("OK\n" + eighty + "Y\n") ==
