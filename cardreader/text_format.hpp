@@ -1,4 +1,4 @@
-// Text card images (.txt, .crd): one line a card, one character a column, in IBM 029 (or 026)
+// Text card images (.txt, .crd, .card, .cards): one line a card, one character a column, in IBM 029 (or 026)
 // keypunch code, read as SIMH's card library reads text decks:
 //   - a short line is padded with blanks (a blank line is a blank card);
 //   - a tab advances to the next multiple of 8 columns (columns 9, 17, 25, ...);

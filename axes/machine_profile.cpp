@@ -1,0 +1,19 @@
+#include "axes/machine_profile.hpp"
+
+namespace parsons::axes {
+
+MachineProfile default_profile() {
+    MachineProfile p;
+    const std::array<const char*, kAxisCount> names = {"table", "cross", "vertical", "swivel",
+                                                       "tilt"};
+    for (std::size_t i = 0; i < p.axes.size(); ++i) {
+        p.axes.at(i).name = names.at(i);
+    }
+    // The sine plate's vertical screws 24 act 10 in from hinge 19; the swivel screw 26 acts
+    // on the end of bottom member 15, taken as 20 in from its pivot.
+    p.axes.at(3).pivot_to_screw_in = 20.0;
+    p.axes.at(4).pivot_to_screw_in = 10.0;
+    return p;
+}
+
+} // namespace parsons::axes

@@ -1,0 +1,64 @@
+// The machine profile: every duration and rate of the 1952 machine as a named parameter.
+//
+// Nothing in relaylogic/ or axes/ hard-codes a time or a speed; they read it here. The
+// built-in default ("parsons-1952") is documented, with the reasoning behind each figure, in
+// docs/machine-profile.md; a JSON file (--profile FILE) may change any of them.
+#pragma once
+
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace parsons::axes {
+
+inline constexpr int kAxisCount = 5;
+
+struct AxisProfile {
+    std::string name;
+    // Speed positions 1, 2, 3 of speed switch 236 (fastest to slowest), through the three
+    // resistance branches 242, 244, 246 of speed relay 240.
+    std::array<double, 3> speed_in_per_min{5.4, 1.8, 0.6};
+    // How fast the motor and its load change speed when the switch steps (both ways).
+    double acceleration_in_per_s2 = 0.2;
+    // Deceleration while coasting to rest once switched off: coast = v^2 / (2 a).
+    double braking_in_per_s2 = 0.2;
+    // Travel of the part; a limit switch stops the machine past either end.
+    double travel_min_in = -0.5;
+    double travel_max_in = 10.5;
+    // Lead of the screw; 1000 commutator impulses an inch whatever the lead (gear train 82-92).
+    double screw_lead_in_per_rev = 0.2;
+    // Residual screw error after compensating cam 160: (screw position, error) in inches,
+    // interpolated linearly; empty = a perfect screw.
+    std::vector<std::pair<double, double>> screw_error_in;
+    // Swivel and tilt: distance from the fixture's pivot to its screw (sine-plate geometry).
+    double pivot_to_screw_in = 10.0;
+};
+
+struct MachineProfile {
+    std::string name = "parsons-1952";
+    std::array<AxisProfile, kAxisCount> axes;
+    // Card reader 134: one card cycle, and when the two brush banks sense the card within it.
+    double reader_cycle_s = 0.6;
+    double first_bank_s = 0.15;
+    double second_bank_s = 0.30;
+    // Relays (holding relays of Fig. 13, stepping relay 256): operate and release times.
+    double relay_operate_s = 0.010;
+    double relay_release_s = 0.008;
+    // Rotary stepping switches (counters 104-110, 310-316; speed switch 236): one step, and the
+    // fastest impulse rate they follow. Impulses closer together than 1/rate are lost.
+    double stepping_switch_step_s = 0.010;
+    double max_stepping_rate_per_s = 100.0;
+    // Delay device 258: how long it holds circuit 257 open after speed switch 236 steps.
+    double delay_258_s = 0.050;
+    // Motor 278 moving stepping shaft 280 one position.
+    double sequence_shaft_step_s = 0.100;
+    // Departure from the patent, off by default: each slow-down and the stop get their own
+    // register instead of sharing banks 350-356 (no spurious matches).
+    bool separate_registers = false;
+};
+
+// The built-in profile, with the five axes named table, cross, vertical, swivel, tilt.
+MachineProfile default_profile();
+
+} // namespace parsons::axes

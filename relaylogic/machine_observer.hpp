@@ -1,0 +1,116 @@
+// The trace hook: every relay, stepping switch, lamp and motor of the cabinet is a signal; a
+// MachineObserver hears each signal defined once, then every change, in machine time.
+//
+// Components never print. They own their state and report changes through a Tracer, which
+// does nothing but a null test when no observer is attached, so the hot path pays nothing
+// for tracing it does not use. The CLI turns observers into VCD, JSON lines, CSV and plots.
+#pragma once
+
+#include "cardreader/orders.hpp"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace parsons::relaylogic {
+
+using SignalId = std::uint32_t;
+
+struct SignalInfo {
+    SignalId id = 0;
+    std::string scope;     // "table", "cabinet": one VCD scope per axis plus the shared parts
+    std::string name;      // "absolute_storage_352.relay_7", "speed_switch_236"
+    std::string component; // "absolute storage bank 352"
+    std::string numeral;   // the patent's reference numeral: "352"
+    int width = 1;         // bits: 1 for a relay, 4 for a ten-position stepping switch
+};
+
+// Why the machine stopped itself (DESIGN.md section 6; docs/stop-codes.md).
+enum class StopReason : std::uint8_t {
+    out_of_order_card,
+    check_mismatch,
+    missed_impulse,
+    sequence_stall,
+    bad_punch,
+    soft_limit,
+};
+
+std::string_view stop_reason_name(StopReason r);
+
+struct StopInfo {
+    StopReason reason = StopReason::check_mismatch;
+    long card = 0;                            // position in the deck, 1-based
+    int card_number = -1;                     // the number punched on it, if it could be read
+    std::optional<cardreader::Axis> axis;     // the axis that stopped the machine, if one did
+    std::string message;                      // one sentence an operator understands
+    std::vector<std::string> lamps;           // "lamp 270 (absolute comparer conducting)", ...
+};
+
+class MachineObserver {
+public:
+    virtual ~MachineObserver() = default;
+    // Called once per signal before the run starts, with the signal's initial value.
+    virtual void on_signal_defined(const SignalInfo& /*info*/, std::uint32_t /*initial*/) {}
+    // Called after all signals are defined; time starts at 0.
+    virtual void on_start() {}
+    virtual void on_signal(double /*seconds*/, SignalId /*id*/, std::uint32_t /*old_value*/,
+                           std::uint32_t /*new_value*/) {}
+    // The real positions of the five axes changed (at every commutator impulse and when an
+    // axis comes to rest); inches.
+    virtual void on_motion(double /*seconds*/, const std::array<double, 5>& /*real_in*/) {}
+    // A card was read and decoded (deck position 1-based).
+    virtual void on_card(double /*seconds*/, long /*index*/, const cardreader::CardOrders&) {}
+    // The machine stopped itself.
+    virtual void on_stop(double /*seconds*/, const StopInfo& /*stop*/) {}
+    // The run is over (completed or stopped and every axis at rest).
+    virtual void on_finish(double /*seconds*/) {}
+};
+
+// Sends every call to several observers, in order.
+class ObserverFanOut : public MachineObserver {
+public:
+    void add(MachineObserver* o) { observers_.push_back(o); }
+    bool empty() const { return observers_.empty(); }
+    void on_signal_defined(const SignalInfo& info, std::uint32_t initial) override {
+        for (auto* o : observers_) {
+            o->on_signal_defined(info, initial);
+        }
+    }
+    void on_start() override {
+        for (auto* o : observers_) {
+            o->on_start();
+        }
+    }
+    void on_signal(double t, SignalId id, std::uint32_t a, std::uint32_t b) override {
+        for (auto* o : observers_) {
+            o->on_signal(t, id, a, b);
+        }
+    }
+    void on_motion(double t, const std::array<double, 5>& real) override {
+        for (auto* o : observers_) {
+            o->on_motion(t, real);
+        }
+    }
+    void on_card(double t, long index, const cardreader::CardOrders& orders) override {
+        for (auto* o : observers_) {
+            o->on_card(t, index, orders);
+        }
+    }
+    void on_stop(double t, const StopInfo& stop) override {
+        for (auto* o : observers_) {
+            o->on_stop(t, stop);
+        }
+    }
+    void on_finish(double t) override {
+        for (auto* o : observers_) {
+            o->on_finish(t);
+        }
+    }
+
+private:
+    std::vector<MachineObserver*> observers_;
+};
+
+} // namespace parsons::relaylogic

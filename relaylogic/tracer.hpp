@@ -1,0 +1,43 @@
+// The signal registry and the trace hook every component reports through.
+//
+// Each component defines its signals once (name, patent numeral, width, initial value) and
+// calls set() when one changes. With no observer attached, set() is a single test of a null
+// pointer: nothing is stored, formatted or compared.
+#pragma once
+
+#include "relaylogic/machine_observer.hpp"
+
+#include <vector>
+
+namespace parsons::relaylogic {
+
+class Tracer {
+public:
+    SignalId define(std::string scope, std::string name, std::string component,
+                    std::string numeral, int width, std::uint32_t initial = 0);
+
+    // Attaches an observer (or none) and announces every signal defined so far.
+    void attach(MachineObserver* observer);
+    MachineObserver* observer() const { return observer_; }
+
+    void set_time(double seconds) { now_ = seconds; }
+    double now() const { return now_; }
+
+    void set(SignalId id, std::uint32_t value) {
+        if (observer_ != nullptr) {
+            report(id, value);
+        }
+    }
+
+    const std::vector<SignalInfo>& signals() const { return infos_; }
+
+private:
+    void report(SignalId id, std::uint32_t value);
+
+    MachineObserver* observer_ = nullptr;
+    double now_ = 0;
+    std::vector<SignalInfo> infos_;
+    std::vector<std::uint32_t> values_;
+};
+
+} // namespace parsons::relaylogic
