@@ -3,7 +3,7 @@
 //
 //   .cbn          column binary, as SIMH's sim_card.c reads and writes it     (cbn_format.hpp)
 //   .bin          IBM 1130 / bitsavers binary, 12-bit row word << 4, LE     (bin_format.hpp)
-//   .txt .crd     80-column text card images in IBM 029 (or 026) code        (text_format.hpp)
+//   .txt .crd .card .cards  80-column text card images in IBM 029 (or 026) code (text_format.hpp)
 //   .csv .lst     the listing: one row per axis per card                     (listing_format.hpp)
 #pragma once
 

@@ -86,6 +86,11 @@ std::vector<Thousandths> spurious_matches_on_path(const AxisOrder& order, Thousa
     return spurious;
 }
 
+void DeckReviewer::skip() {
+    previous_number_.reset();
+    position_.fill(std::nullopt);
+}
+
 std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
     std::vector<ReviewNote> notes;
     if (previous_number_) {
@@ -102,9 +107,17 @@ std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
 
     for (Axis a : kAxes) {
         const AxisOrder& o = orders.axis(a);
-        const Thousandths from = position_.at(axis_index(a));
-        const int travel = o.stop > from ? o.stop - from : from - o.stop;
         auto note = [&](std::string message) { notes.push_back({a, std::move(message)}); };
+        if (o.sequence == 0) {
+            note("no sequence position punched: the axis never runs (sequence stall)");
+        }
+        const std::optional<Thousandths> known_from = position_.at(axis_index(a));
+        position_.at(axis_index(a)) = o.stop;
+        if (!known_from) {
+            continue; // after an unreadable card the starting point is unknown
+        }
+        const Thousandths from = *known_from;
+        const int travel = o.stop > from ? o.stop - from : from - o.stop;
 
         if (o.check != travel) {
             note(fmt::format("check {} but the stop moves {} from the previous stop {} (check = "
@@ -146,10 +159,6 @@ std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
                              "than one digit)",
                              list_inches(spurious), format_inches(from), format_inches(o.stop)));
         }
-        if (o.sequence == 0) {
-            note("no sequence position punched: the axis never runs (sequence stall)");
-        }
-        position_.at(axis_index(a)) = o.stop;
     }
     return notes;
 }

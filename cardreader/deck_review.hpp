@@ -40,10 +40,14 @@ struct ReviewNote {
 class DeckReviewer {
 public:
     std::vector<ReviewNote> review(const CardOrders& orders);
+    // A card that could not be read in full: its numbers are unknown, so the next card's
+    // number and checks are not judged against a guess.
+    void skip();
 
 private:
     std::optional<int> previous_number_;
-    std::array<Thousandths, kAxisCount> position_{};
+    std::array<std::optional<Thousandths>, kAxisCount> position_{
+        Thousandths{0}, Thousandths{0}, Thousandths{0}, Thousandths{0}, Thousandths{0}};
 };
 
 } // namespace parsons::cardreader

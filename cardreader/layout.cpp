@@ -226,8 +226,9 @@ DecodeResult decode(const Card& card, const CardLayout& layout) {
             std::string where =
                 f ? fmt::format("in {}", field_label(*f))
                   : fmt::format("in column {}, which layout {} leaves unused", c, layout.name);
-            problems.add(
-                c, fmt::format("punch in row {} where none belongs ({})", join_rows(stray), where));
+            problems.add(c, fmt::format("punch in {} {} where none belongs ({})",
+                                        hole_count(stray) == 1 ? "row" : "rows", join_rows(stray),
+                                        where));
         }
     }
 

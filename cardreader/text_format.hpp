@@ -1,5 +1,5 @@
-// Text card images (.txt, .crd, .card, .cards): one line a card, one character a column, in IBM 029 (or 026)
-// keypunch code, read as SIMH's card library reads text decks:
+// Text card images (.txt, .crd, .card, .cards): one line a card, one character a column, in IBM 029
+// (or 026) keypunch code, read as SIMH's card library reads text decks:
 //   - a short line is padded with blanks (a blank line is a blank card);
 //   - a tab advances to the next multiple of 8 columns (columns 9, 17, 25, ...);
 //   - lower case is folded to upper case;

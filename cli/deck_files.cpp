@@ -15,7 +15,7 @@ using cardreader::DeckError;
 void add_input_flags(CLI::App& cmd, DeckFlags& flags) {
     cmd.add_option("--format", flags.format,
                    "Input deck format: cbn, bin, text or listing (default: from the extension: "
-                   ".cbn .bin .txt/.crd .csv/.lst)");
+                   ".cbn .bin .txt/.crd/.card/.cards .csv/.lst)");
     cmd.add_option("--code", flags.code, "Keypunch code of text card images: 029 or 026")
         ->capture_default_str();
     cmd.add_option("--layout", flags.layout, "Card layout (the reader's plugboard)")

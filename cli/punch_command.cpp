@@ -45,7 +45,7 @@ void add_punch_command(CLI::App& app, Command& selected) {
                     "The listing: CSV, one row per axis per card (docs/deck-formats.md)")
         ->required();
     cmd->add_option("-o,--output", flags->output,
-                    "The deck to punch; format from the extension (.cbn .bin .txt .csv)")
+                    "The deck to punch; format from the extension (.cbn .bin .txt/.crd .csv/.lst)")
         ->required();
     cmd->add_option("--to", flags->to, "Output format: cbn, bin, text or listing");
     cmd->add_option("--code", flags->deck.code, "Keypunch code for text card images: 029 or 026")

@@ -103,6 +103,7 @@ ExitCode run_show(const ShowFlags& f) {
             fmt::print("  BAD PUNCH: column {}: {} (the reader stops the machine here)\n",
                        decoded.bad_punch->column, decoded.bad_punch->what);
             first_bad = first_bad.value_or(where);
+            reviewer.skip();
         } else {
             for (const ReviewNote& n : reviewer.review(decoded.orders)) {
                 ++notes;

@@ -188,8 +188,9 @@ TEST_CASE("CLI: usage errors exit 2, --help exits 0 with an example", "[cli]") {
 TEST_CASE("CLI: show judges the card after a bad one against the bad card's numbers",
           "[cli][bad-input]") {
     TempDir dir;
-    REQUIRE(run_parsons("punch " + q(source_path(kSample)) + " -o " + q(dir.str("s.bin")))
-                .exit_code == 0);
+    REQUIRE(
+        run_parsons("punch " + q(source_path(kSample)) + " -o " + q(dir.str("s.bin"))).exit_code ==
+        0);
     std::string bytes = read_bytes(dir.path("s.bin"));
     const std::size_t i = 160 + 2 * 12 + 1; // card 2, column 13: double punch
     bytes[i] = static_cast<char>(bytes[i] | 0x01);
