@@ -106,8 +106,8 @@ TEST_CASE("Review: motion against the stop and an empty sequence pattern", "[rev
     o.sequence = 0;
     auto notes = reviewer.review(card_with_table(1, o));
     REQUIRE(notes.size() == 2);
-    CHECK(notes[0].message == "motion - (reverse) but the stop 1.000 is above the previous stop "
+    CHECK(notes[1].message == "motion - (reverse) but the stop 1.000 is above the previous stop "
                               "0.000: the counters count the long way round through 0.000 to "
                               "9.999");
-    CHECK(notes[1].message == "no sequence position punched: the axis never runs (sequence stall)");
+    CHECK(notes[0].message == "no sequence position punched: the axis never runs (sequence stall)");
 }
