@@ -49,8 +49,10 @@ struct MachineProfile {
     // fastest impulse rate they follow. Impulses closer together than 1/rate are lost.
     double stepping_switch_step_s = 0.010;
     double max_stepping_rate_per_s = 100.0;
-    // Delay device 258: how long it holds circuit 257 open after speed switch 236 steps.
-    double delay_258_s = 0.050;
+    // Delay device 258: the least time it holds channel 257 open after speed switch 236 steps
+    // (it also holds until the comparer has left the equality). Longer than the time between
+    // two impulses at speed 1 (11 ms by default) and the switch misses the next number.
+    double delay_258_s = 0.005;
     // Motor 278 moving stepping shaft 280 one position.
     double sequence_shaft_step_s = 0.100;
     // Departure from the patent, off by default: each slow-down and the stop get their own

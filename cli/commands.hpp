@@ -16,5 +16,7 @@ using Command = std::function<ExitCode()>;
 void add_punch_command(CLI::App& app, Command& selected);
 void add_convert_command(CLI::App& app, Command& selected);
 void add_show_command(CLI::App& app, Command& selected);
+void add_run_command(CLI::App& app, Command& selected);
+void add_profile_command(CLI::App& app, Command& selected);
 
 } // namespace parsons::cli

@@ -1,5 +1,6 @@
 #include "cli/deck_files.hpp"
 
+#include "axes/profile_json.hpp"
 #include "cardreader/deck_error.hpp"
 
 #include <fmt/format.h>
@@ -7,6 +8,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <sstream>
 
 namespace parsons::cli {
 
@@ -65,7 +67,34 @@ InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
     if (!in_) {
         throw DeckError::in_file(path, std::string("cannot open: ") + std::strerror(errno));
     }
+    std::error_code ec;
+    size_bytes_ = static_cast<double>(std::filesystem::file_size(path, ec));
     source_ = cardreader::open_card_source(in_, options_);
+}
+
+double InputDeck::fraction_read() {
+    if (size_bytes_ <= 0) {
+        return 0;
+    }
+    const auto pos = in_.tellg();
+    return pos < 0 ? 1.0 : std::min(1.0, static_cast<double>(pos) / size_bytes_);
+}
+
+axes::MachineProfile load_profile(const std::string& file) {
+    if (file.empty()) {
+        return axes::default_profile();
+    }
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        throw DeckError::in_file(file, std::string("cannot open: ") + std::strerror(errno));
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    try {
+        return axes::profile_from_json(text.str(), axes::default_profile());
+    } catch (const axes::ProfileError& e) {
+        throw DeckError::in_file(file, e.what());
+    }
 }
 
 } // namespace parsons::cli

@@ -1,6 +1,7 @@
 // Opening deck files for the subcommands: format from the extension or a flag, clear errors.
 #pragma once
 
+#include "axes/machine_profile.hpp"
 #include "cardreader/deck_io.hpp"
 
 #include <CLI/CLI.hpp>
@@ -24,15 +25,22 @@ void add_input_flags(CLI::App& cmd, DeckFlags& flags);
 cardreader::DeckOptions deck_options(const std::string& path, const std::string& format_flag,
                                      const DeckFlags& flags);
 
+// The built-in machine profile, or FILE applied over it; throws DeckError naming the file
+// and the key on a bad profile.
+axes::MachineProfile load_profile(const std::string& file);
+
 // An open input deck: the file and its card reader.
 class InputDeck {
 public:
     InputDeck(const std::string& path, const DeckFlags& flags);
     cardreader::CardSource& cards() { return *source_; }
     const cardreader::DeckOptions& options() const { return options_; }
+    // How far through the file the reader is, 0..1 (for a progress bar).
+    double fraction_read();
 
 private:
     std::ifstream in_;
+    double size_bytes_ = 0;
     cardreader::DeckOptions options_;
     std::unique_ptr<cardreader::CardSource> source_;
 };

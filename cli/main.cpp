@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
     add_punch_command(app, selected);
     add_show_command(app, selected);
     add_convert_command(app, selected);
+    add_run_command(app, selected);
+    add_profile_command(app, selected);
 
     try {
         app.parse(argc, argv);

@@ -41,11 +41,11 @@ std::string_view stop_reason_name(StopReason r);
 
 struct StopInfo {
     StopReason reason = StopReason::check_mismatch;
-    long card = 0;                            // position in the deck, 1-based
-    int card_number = -1;                     // the number punched on it, if it could be read
-    std::optional<cardreader::Axis> axis;     // the axis that stopped the machine, if one did
-    std::string message;                      // one sentence an operator understands
-    std::vector<std::string> lamps;           // "lamp 270 (absolute comparer conducting)", ...
+    long card = 0;                        // position in the deck, 1-based
+    int card_number = -1;                 // the number punched on it, if it could be read
+    std::optional<cardreader::Axis> axis; // the axis that stopped the machine, if one did
+    std::string message;                  // one sentence an operator understands
+    std::vector<std::string> lamps;       // "lamp 270 (absolute comparer conducting)", ...
 };
 
 class MachineObserver {

@@ -13,8 +13,8 @@ namespace parsons::relaylogic {
 
 class Tracer {
 public:
-    SignalId define(std::string scope, std::string name, std::string component,
-                    std::string numeral, int width, std::uint32_t initial = 0);
+    SignalId define(std::string scope, std::string name, std::string component, std::string numeral,
+                    int width, std::uint32_t initial = 0);
 
     // Attaches an observer (or none) and announces every signal defined so far.
     void attach(MachineObserver* observer);

@@ -3,7 +3,7 @@
 # missing. Safe to run again: with everything present it installs nothing and asks for nothing.
 set -euo pipefail
 
-packages=(g++ cmake make libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev catch2)
+packages=(g++ cmake make libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev catch2 gtkwave)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -8,9 +8,9 @@
 
 namespace parsons::test {
 
-RunResult run_parsons(const std::string& args) {
+ProcessResult run_parsons(const std::string& args) {
     const std::string command = std::string("'") + PARSONS_EXE + "' " + args + " 2>&1";
-    RunResult result;
+    ProcessResult result;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) {
         return result;

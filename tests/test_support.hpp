@@ -11,13 +11,13 @@
 
 namespace parsons::test {
 
-struct RunResult {
+struct ProcessResult {
     int exit_code = -1;
     std::string output; // stdout and stderr together
 };
 
 // Runs `parsons ARGS` through the shell; ARGS is pasted verbatim.
-RunResult run_parsons(const std::string& args);
+ProcessResult run_parsons(const std::string& args);
 
 // A fresh directory under the system temp dir, removed when the object goes.
 class TempDir {

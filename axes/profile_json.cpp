@@ -1,0 +1,181 @@
+#include "axes/profile_json.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace parsons::axes {
+namespace {
+
+using nlohmann::json;
+
+double positive(const json& j, const std::string& key) {
+    if (!j.is_number()) {
+        throw ProfileError(fmt::format("{}: expected a number", key));
+    }
+    const double v = j.get<double>();
+    if (!(v > 0) || !std::isfinite(v)) {
+        throw ProfileError(fmt::format("{}: must be a positive number, not {}", key, j.dump()));
+    }
+    return v;
+}
+
+double finite(const json& j, const std::string& key) {
+    if (!j.is_number() || !std::isfinite(j.get<double>())) {
+        throw ProfileError(fmt::format("{}: expected a number", key));
+    }
+    return j.get<double>();
+}
+
+void apply_axis(const json& j, AxisProfile& a, const std::string& where) {
+    if (!j.is_object()) {
+        throw ProfileError(fmt::format("{}: expected an object", where));
+    }
+    for (const auto& [key, value] : j.items()) {
+        const std::string k = where + "." + key;
+        if (key == "speed_in_per_min") {
+            if (!value.is_array() || value.size() != 3) {
+                throw ProfileError(fmt::format("{}: expected three speeds [1, 2, 3]", k));
+            }
+            for (std::size_t i = 0; i < 3; ++i) {
+                a.speed_in_per_min.at(i) = positive(value.at(i), fmt::format("{}[{}]", k, i));
+            }
+        } else if (key == "acceleration_in_per_s2") {
+            a.acceleration_in_per_s2 = positive(value, k);
+        } else if (key == "braking_in_per_s2") {
+            a.braking_in_per_s2 = positive(value, k);
+        } else if (key == "travel_min_in") {
+            a.travel_min_in = finite(value, k);
+        } else if (key == "travel_max_in") {
+            a.travel_max_in = finite(value, k);
+        } else if (key == "screw_lead_in_per_rev") {
+            a.screw_lead_in_per_rev = positive(value, k);
+        } else if (key == "pivot_to_screw_in") {
+            a.pivot_to_screw_in = positive(value, k);
+        } else if (key == "screw_error_in") {
+            if (!value.is_array()) {
+                throw ProfileError(fmt::format("{}: expected [[position, error], ...]", k));
+            }
+            a.screw_error_in.clear();
+            for (const auto& pair : value) {
+                if (!pair.is_array() || pair.size() != 2) {
+                    throw ProfileError(fmt::format("{}: expected [[position, error], ...]", k));
+                }
+                const double x = finite(pair.at(0), k);
+                if (!a.screw_error_in.empty() && x <= a.screw_error_in.back().first) {
+                    throw ProfileError(fmt::format("{}: positions must increase", k));
+                }
+                a.screw_error_in.emplace_back(x, finite(pair.at(1), k));
+            }
+        } else if (key != "name") {
+            throw ProfileError(fmt::format("{}: unknown key", k));
+        }
+    }
+    if (a.travel_min_in >= a.travel_max_in) {
+        throw ProfileError(fmt::format("{}: travel_min_in must be below travel_max_in", where));
+    }
+}
+
+json axis_json(const AxisProfile& a) {
+    json errors = json::array();
+    for (const auto& [x, e] : a.screw_error_in) {
+        errors.push_back({x, e});
+    }
+    return json{{"name", a.name},
+                {"speed_in_per_min", a.speed_in_per_min},
+                {"acceleration_in_per_s2", a.acceleration_in_per_s2},
+                {"braking_in_per_s2", a.braking_in_per_s2},
+                {"travel_min_in", a.travel_min_in},
+                {"travel_max_in", a.travel_max_in},
+                {"screw_lead_in_per_rev", a.screw_lead_in_per_rev},
+                {"screw_error_in", errors},
+                {"pivot_to_screw_in", a.pivot_to_screw_in}};
+}
+
+} // namespace
+
+MachineProfile profile_from_json(const std::string& json_text, MachineProfile p) {
+    json j;
+    try {
+        j = json::parse(json_text);
+    } catch (const json::parse_error& e) {
+        throw ProfileError(fmt::format("not valid JSON at byte {}", e.byte));
+    }
+    if (!j.is_object()) {
+        throw ProfileError("the profile must be a JSON object");
+    }
+    for (const auto& [key, value] : j.items()) {
+        if (key == "name") {
+            if (!value.is_string()) {
+                throw ProfileError("name: expected a string");
+            }
+            p.name = value.get<std::string>();
+        } else if (key == "axes") {
+            if (!value.is_object()) {
+                throw ProfileError("axes: expected an object keyed by axis name");
+            }
+            for (const auto& [axis, settings] : value.items()) {
+                auto it = std::find_if(p.axes.begin(), p.axes.end(),
+                                       [&](const AxisProfile& a) { return a.name == axis; });
+                if (it == p.axes.end()) {
+                    throw ProfileError(fmt::format("axes.{}: unknown axis", axis));
+                }
+                apply_axis(settings, *it, "axes." + axis);
+            }
+        } else if (key == "reader_cycle_s") {
+            p.reader_cycle_s = positive(value, key);
+        } else if (key == "first_bank_s") {
+            p.first_bank_s = positive(value, key);
+        } else if (key == "second_bank_s") {
+            p.second_bank_s = positive(value, key);
+        } else if (key == "relay_operate_s") {
+            p.relay_operate_s = positive(value, key);
+        } else if (key == "relay_release_s") {
+            p.relay_release_s = positive(value, key);
+        } else if (key == "stepping_switch_step_s") {
+            p.stepping_switch_step_s = positive(value, key);
+        } else if (key == "max_stepping_rate_per_s") {
+            p.max_stepping_rate_per_s = positive(value, key);
+        } else if (key == "delay_258_s") {
+            p.delay_258_s = positive(value, key);
+        } else if (key == "sequence_shaft_step_s") {
+            p.sequence_shaft_step_s = positive(value, key);
+        } else if (key == "separate_registers") {
+            if (!value.is_boolean()) {
+                throw ProfileError("separate_registers: expected true or false");
+            }
+            p.separate_registers = value.get<bool>();
+        } else {
+            throw ProfileError(fmt::format("{}: unknown key", key));
+        }
+    }
+    if (!(p.first_bank_s < p.second_bank_s && p.second_bank_s < p.reader_cycle_s)) {
+        throw ProfileError("first_bank_s < second_bank_s < reader_cycle_s must hold (the two "
+                           "brush banks sense the card within one card cycle)");
+    }
+    return p;
+}
+
+std::string profile_to_json(const MachineProfile& p) {
+    json axes = json::object();
+    for (const AxisProfile& a : p.axes) {
+        axes[a.name] = axis_json(a);
+    }
+    json j{{"name", p.name},
+           {"reader_cycle_s", p.reader_cycle_s},
+           {"first_bank_s", p.first_bank_s},
+           {"second_bank_s", p.second_bank_s},
+           {"relay_operate_s", p.relay_operate_s},
+           {"relay_release_s", p.relay_release_s},
+           {"stepping_switch_step_s", p.stepping_switch_step_s},
+           {"max_stepping_rate_per_s", p.max_stepping_rate_per_s},
+           {"delay_258_s", p.delay_258_s},
+           {"sequence_shaft_step_s", p.sequence_shaft_step_s},
+           {"separate_registers", p.separate_registers},
+           {"axes", axes}};
+    return j.dump(2) + "\n";
+}
+
+} // namespace parsons::axes

@@ -1,0 +1,189 @@
+// parsons run DECK: feed the deck through the emulated control cabinet and the five axes.
+//
+// Exit 0: the deck completed. Exit 3: the machine stopped itself (a check fired: a correct
+// emulation). Exit 2: the deck or a flag could not be read. Every output file is written
+// whole or not at all.
+#include "cli/commands.hpp"
+#include "cli/deck_files.hpp"
+#include "cli/output_file.hpp"
+#include "cli/plot_svg.hpp"
+#include "cli/run_report.hpp"
+#include "cli/trace_outputs.hpp"
+
+#include "cardreader/deck_error.hpp"
+#include "relaylogic/control_cabinet.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <memory>
+#include <unistd.h>
+
+namespace parsons::cli {
+namespace {
+
+using cardreader::DeckError;
+
+struct RunFlags {
+    std::string input;
+    std::string report;
+    std::string trace;
+    std::string events;
+    std::string path;
+    std::string plot;
+    std::string profile;
+    std::vector<std::string> faults;
+    bool quiet = false;
+    DeckFlags deck;
+};
+
+relaylogic::DropImpulseFault parse_fault(const std::string& spec) {
+    const std::string prefix = "drop-impulse:";
+    const auto last = spec.rfind(':');
+    if (spec.rfind(prefix, 0) != 0 || last <= prefix.size()) {
+        throw DeckError(fmt::format("--fault '{}': expected drop-impulse:AXIS:N (e.g. "
+                                    "drop-impulse:table:120)",
+                                    spec));
+    }
+    const std::string axis = spec.substr(prefix.size(), last - prefix.size());
+    const std::string n = spec.substr(last + 1);
+    auto a = cardreader::axis_named(axis);
+    if (!a) {
+        throw DeckError(fmt::format("--fault '{}': unknown axis '{}' (table, cross, vertical, "
+                                    "swivel or tilt)",
+                                    spec, axis));
+    }
+    if (n.empty() || n.size() > 12 || n.find_first_not_of("0123456789") != std::string::npos ||
+        std::stol(n) < 1) {
+        throw DeckError(fmt::format("--fault '{}': N must be an impulse count from 1", spec));
+    }
+    return {*a, std::stol(n)};
+}
+
+// A progress line on stderr, only when stderr is a terminal.
+class ProgressBar : public relaylogic::MachineObserver {
+public:
+    explicit ProgressBar(InputDeck& deck) : deck_(deck) {}
+    void on_card(double t, long index, const cardreader::CardOrders& /*orders*/) override {
+        const double f = deck_.fraction_read();
+        const int filled = static_cast<int>(f * 30);
+        fmt::print(stderr, "\r[{:<30}] {:3.0f}%  card {}  machine time {:.1f} s",
+                   std::string(static_cast<std::size_t>(filled), '#'), 100 * f, index, t);
+        std::fflush(stderr);
+        shown_ = true;
+    }
+    void on_finish(double /*t*/) override {
+        if (shown_) {
+            fmt::print(stderr, "\r{:<80}\r", "");
+        }
+    }
+
+private:
+    InputDeck& deck_;
+    bool shown_ = false;
+};
+
+ExitCode run_run(const RunFlags& f) {
+    const axes::MachineProfile profile = load_profile(f.profile);
+    std::vector<relaylogic::DropImpulseFault> faults;
+    for (const auto& spec : f.faults) {
+        faults.push_back(parse_fault(spec));
+    }
+    InputDeck deck(f.input, f.deck);
+    relaylogic::ControlCabinet cabinet(profile, *deck.options().layout);
+    for (const auto& fault : faults) {
+        cabinet.add_fault(fault);
+    }
+
+    relaylogic::ObserverFanOut observers;
+    std::unique_ptr<OutputFile> trace_file;
+    std::unique_ptr<VcdWriter> vcd;
+    if (!f.trace.empty()) {
+        trace_file = std::make_unique<OutputFile>(f.trace);
+        vcd = std::make_unique<VcdWriter>(trace_file->stream());
+        observers.add(vcd.get());
+    }
+    std::unique_ptr<OutputFile> events_file;
+    std::unique_ptr<EventsJsonlWriter> events;
+    if (!f.events.empty()) {
+        events_file = std::make_unique<OutputFile>(f.events);
+        events = std::make_unique<EventsJsonlWriter>(events_file->stream());
+        observers.add(events.get());
+    }
+    std::unique_ptr<OutputFile> path_file;
+    std::unique_ptr<PathCsvWriter> path;
+    if (!f.path.empty()) {
+        path_file = std::make_unique<OutputFile>(f.path);
+        path = std::make_unique<PathCsvWriter>(path_file->stream());
+        observers.add(path.get());
+    }
+    std::unique_ptr<PlotSvgRecorder> plot;
+    if (!f.plot.empty()) {
+        plot = std::make_unique<PlotSvgRecorder>(f.input);
+        observers.add(plot.get());
+    }
+    ProgressBar progress(deck);
+    if (!f.quiet && isatty(fileno(stderr)) != 0) {
+        observers.add(&progress);
+    }
+    if (!observers.empty()) {
+        cabinet.attach(&observers);
+    }
+
+    const relaylogic::RunResult result = cabinet.run(deck.cards());
+
+    if (vcd) {
+        trace_file->commit();
+    }
+    if (events) {
+        events_file->commit();
+    }
+    if (path) {
+        path_file->commit();
+    }
+    if (plot) {
+        write_file(f.plot, plot->svg());
+    }
+    if (!f.report.empty()) {
+        write_file(f.report, report_json(result, profile, f.input).dump(2) + "\n");
+    }
+    if (!f.quiet) {
+        fmt::print("{}", summary_text(result, f.input, profile.name));
+    }
+    if (result.stop) {
+        fmt::print(stderr, "parsons: machine stop: {}: {}\n",
+                   relaylogic::stop_reason_name(result.stop->reason), result.stop->message);
+        return ExitCode::machine_stop;
+    }
+    return ExitCode::ok;
+}
+
+} // namespace
+
+void add_run_command(CLI::App& app, Command& selected) {
+    auto flags = std::make_shared<RunFlags>();
+    CLI::App* cmd = app.add_subcommand(
+        "run", "Run a deck through the emulated control cabinet and five lead-screw axes");
+    cmd->add_option("DECK", flags->input, "The deck to run")->required();
+    cmd->add_option("--report", flags->report, "Write the run report as JSON");
+    cmd->add_option("--trace", flags->trace,
+                    "Write every relay, switch and lamp as a VCD trace "
+                    "(GTKWave)");
+    cmd->add_option("--events", flags->events, "Write one JSON object per signal change");
+    cmd->add_option("--path", flags->path, "Write machine time and the five real positions, CSV");
+    cmd->add_option("--plot", flags->plot, "Draw positions and speed positions against time, SVG");
+    cmd->add_option("--fault", flags->faults,
+                    "Inject a fault: drop-impulse:AXIS:N (one contact set misses impulse N)");
+    cmd->add_option("--profile", flags->profile, "Machine profile JSON (see 'parsons profile')");
+    cmd->add_flag("-q,--quiet", flags->quiet, "No summary and no progress bar");
+    add_input_flags(*cmd, flags->deck);
+    cmd->footer("Exit status: 0 the deck completed, 3 the machine stopped itself (a check "
+                "fired), 2 unreadable input.\n"
+                "Examples:\n"
+                "  parsons run decks/samples/patent-example.csv --report out/report.json\n"
+                "  parsons run deck.cbn --trace out/run.vcd --plot out/run.svg\n"
+                "  parsons run deck.cbn --fault drop-impulse:table:120");
+    cmd->callback([&selected, flags] { selected = [flags] { return run_run(*flags); }; });
+}
+
+} // namespace parsons::cli

@@ -1,0 +1,98 @@
+#include "cli/run_report.hpp"
+
+#include <fmt/format.h>
+
+namespace parsons::cli {
+
+using cardreader::Axis;
+using cardreader::axis_name;
+
+nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachineProfile& profile,
+                           const std::string& deck) {
+    using nlohmann::json;
+    json j;
+    j["deck"] = deck;
+    j["profile"] = profile.name;
+    j["status"] = r.completed ? "completed" : "stopped";
+    j["cards_read"] = r.cards_read;
+    j["machine_seconds"] = r.machine_seconds;
+    if (r.stop) {
+        const auto& s = *r.stop;
+        j["stop"] = json{{"reason", relaylogic::stop_reason_name(s.reason)},
+                         {"card", s.card},
+                         {"card_number", s.card_number >= 0 ? json(s.card_number) : json(nullptr)},
+                         {"axis", s.axis ? json(std::string(axis_name(*s.axis))) : json(nullptr)},
+                         {"message", s.message},
+                         {"lamps", s.lamps}};
+    } else {
+        j["stop"] = nullptr;
+    }
+    json axes = json::object();
+    for (Axis a : cardreader::kAxes) {
+        const auto& x = r.axes.at(cardreader::axis_index(a));
+        json ax{{"position", x.counter_in},
+                {"real_position", x.real_in},
+                {"position_error", x.error_in},
+                {"impulses", x.impulses},
+                {"lost_steps", x.lost_steps}};
+        if (x.fixture_angle_deg) {
+            ax["fixture_angle_deg"] = *x.fixture_angle_deg;
+        }
+        axes[std::string(axis_name(a))] = ax;
+    }
+    j["axes"] = axes;
+    json cards = json::array();
+    for (const auto& c : r.cards) {
+        cards.push_back(json{{"index", c.index},
+                             {"number", c.number >= 0 ? json(c.number) : json(nullptr)},
+                             {"start_seconds", c.start_s},
+                             {"machine_seconds", c.end_s - c.start_s}});
+    }
+    j["cards"] = cards;
+    return j;
+}
+
+std::string summary_text(const relaylogic::RunResult& r, const std::string& deck,
+                         const std::string& profile_name) {
+    std::string out;
+    auto line = [&out](const std::string& s) { out += s + "\n"; };
+    line(fmt::format("parsons run {} (profile {})", deck, profile_name));
+    line(fmt::format("  cards run      {}", r.cards_read));
+    line(fmt::format("  machine time   {:.3f} s", r.machine_seconds));
+    if (r.completed) {
+        line("  status         completed");
+    } else if (r.stop) {
+        const auto& s = *r.stop;
+        line(fmt::format("  status         STOPPED: {}", relaylogic::stop_reason_name(s.reason)));
+        line(fmt::format("  card           {}{}", s.card,
+                         s.card_number >= 0 ? fmt::format(" (number {:04})", s.card_number) : ""));
+        line(fmt::format("  axis           {}", s.axis ? std::string(axis_name(*s.axis)) : "-"));
+        line(fmt::format("  why            {}", s.message));
+        std::string lamps;
+        for (const auto& l : s.lamps) {
+            lamps += (lamps.empty() ? "" : ", ") + l;
+        }
+        line(fmt::format("  lamps lit      {}", lamps.empty() ? "-" : lamps));
+    }
+    line(fmt::format("  {:<9} {:>8} {:>10} {:>10} {:>9} {:>6}", "axis", "counter", "real in",
+                     "error in", "impulses", "lost"));
+    for (Axis a : cardreader::kAxes) {
+        const auto& x = r.axes.at(cardreader::axis_index(a));
+        std::string angle =
+            x.fixture_angle_deg ? fmt::format("  {:+.3f} deg", *x.fixture_angle_deg) : "";
+        line(fmt::format("  {:<9} {:>8.3f} {:>10.5f} {:>+10.5f} {:>9} {:>6}{}", axis_name(a),
+                         x.counter_in, x.real_in, x.error_in, x.impulses, x.lost_steps, angle));
+    }
+    for (Axis a : cardreader::kAxes) {
+        const auto& x = r.axes.at(cardreader::axis_index(a));
+        if (x.lost_steps > 0) {
+            line(fmt::format("  warning: {} lost {} stepping-switch steps (impulses came faster "
+                             "than {} can step): its counters read {:+.4f} in from where the "
+                             "part really is",
+                             axis_name(a), x.lost_steps, "the switches", -x.error_in));
+        }
+    }
+    return out;
+}
+
+} // namespace parsons::cli

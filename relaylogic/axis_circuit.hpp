@@ -1,0 +1,57 @@
+// The control circuit of one lead screw (Fig. 10 draws the table's and the cross slide's; the
+// other three are the same): reversing control 214, absolute storage 350-356 and incremental
+// storage 318-324, absolute counter 104-110 and increment counter 112, comparers 122' and
+// 122'', speed switch 236, sequence switch 224, the motor, and the duplicate contact sets of
+// commutator 102. The plant it drives is an axes::LeadScrewAxis.
+#pragma once
+
+#include "axes/lead_screw_axis.hpp"
+#include "cardreader/orders.hpp"
+#include "relaylogic/counters.hpp"
+#include "relaylogic/sequence_control.hpp"
+#include "relaylogic/speed_switch.hpp"
+#include "relaylogic/storage.hpp"
+
+namespace parsons::relaylogic {
+
+// The motor of each axis (Fig. 2): table 38, cutter-head transverse 50, cutter-head vertical
+// 46, fixture transverse 44, sine-plate vertical 40.
+std::string_view motor_numeral(cardreader::Axis axis);
+
+struct AxisCircuit {
+    AxisCircuit(Tracer& tracer, const axes::AxisProfile& profile, cardreader::Axis axis,
+                bool separate_registers);
+
+    // Reversing control 214 (row 0 forward, row 1 reverse), also setting the counters' sense.
+    void set_direction(cardreader::Motion motion);
+    // Comparers 122' and 122'': re-read the circuits through storage and counters.
+    void compare();
+    void set_powered(bool on);
+
+    Tracer& tracer;
+    cardreader::Axis axis;
+    axes::LeadScrewAxis plant;
+    AbsoluteStorage absolute_storage;
+    IncrementalStorage incremental_storage;
+    AbsoluteCounter absolute_counter;
+    IncrementCounter increment_counter;
+    SpeedSwitch speed_switch;
+    SequenceSwitch sequence_switch;
+
+    int direction = +1;                  // reversing control 214
+    bool absolute_conducting = false;    // comparer 122'
+    bool incremental_conducting = false; // comparer 122''
+    bool powered = false;                // current through cable 248 to the motor
+    bool stopped = false;                // reached its stop on this card
+    long contact_set_a = 0;              // impulses seen by each contact set of commutator 102
+    long contact_set_b = 0;
+    cardreader::AxisOrder order;
+
+private:
+    SignalId reversing_214_;
+    SignalId comparer_absolute_;
+    SignalId comparer_incremental_;
+    SignalId motor_;
+};
+
+} // namespace parsons::relaylogic

@@ -1,0 +1,451 @@
+#include "relaylogic/control_cabinet.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace parsons::relaylogic {
+
+using cardreader::Axis;
+using cardreader::axis_name;
+using cardreader::format_inches;
+
+namespace {
+
+std::string inches(int thousandths) {
+    return format_inches(
+        static_cast<cardreader::Thousandths>(((thousandths % 10000) + 10000) % 10000));
+}
+
+} // namespace
+
+ControlCabinet::ControlCabinet(axes::MachineProfile profile, const cardreader::CardLayout& layout)
+    : profile_(std::move(profile)), layout_(layout), shaft_(tracer_), balancing_(tracer_) {
+    reader_card_ = tracer_.define("cabinet", "card_reader_134.card",
+                                  "card in the reader (deck "
+                                  "position)",
+                                  "134", 32);
+    reader_feeding_ =
+        tracer_.define("cabinet", "card_reader_134.reading", "card reader cycle", "134", 1);
+    card_number_136_ =
+        tracer_.define("cabinet", "card_number_storage_136", "card-number storage", "136", 14);
+    spindle_165_ = tracer_.define("cabinet", "spindle_control_165",
+                                  "spindle (0 off, 1 forward, 2 "
+                                  "reverse)",
+                                  "165", 2);
+    cutting_ = tracer_.define("cabinet", "spindle_control_165.cutting",
+                              "cutting: last axis of the "
+                              "sequence running",
+                              "165", 1);
+    zeroizing_ =
+        tracer_.define("cabinet", "zeroizing_circuit_292", "zeroizing circuit 292-304", "292", 1);
+    for (Axis a : cardreader::kAxes) {
+        circuits_.push_back(std::make_unique<AxisCircuit>(
+            tracer_, profile_.axes.at(cardreader::axis_index(a)), a, profile_.separate_registers));
+    }
+}
+
+void ControlCabinet::attach(MachineObserver* observer) {
+    tracer_.attach(observer);
+}
+
+void ControlCabinet::schedule(double t, EventKind kind, int axis) {
+    queue_.push(Event{t, seq_++, kind, axis});
+}
+
+std::string ControlCabinet::card_name() const {
+    return orders_.number >= 0 && card_
+               ? fmt::format("card {} (number {:04})", cards_read_, orders_.number)
+               : fmt::format("card {}", cards_read_);
+}
+
+RunResult ControlCabinet::run(cardreader::CardSource& deck) {
+    deck_ = &deck;
+    schedule(0, EventKind::feed);
+    while (true) {
+        double t = queue_.empty() ? axes::kNever : queue_.top().t;
+        for (const auto& c : circuits_) {
+            t = std::min(t, c->plant.next_event_time());
+        }
+        if (t == axes::kNever) {
+            if (!deck_finished_ && !stop_) {
+                sequence_stall();
+                continue;
+            }
+            break;
+        }
+        now_ = t;
+        tracer_.set_time(t);
+        bool moved = false;
+        for (const auto& c : circuits_) {
+            if (c->plant.next_event_time() <= t) {
+                auto impulse = c->plant.advance_to(t);
+                moved = true;
+                if (impulse) {
+                    on_impulse(*c, *impulse);
+                }
+            }
+        }
+        if (moved && tracer_.observer() != nullptr) {
+            std::array<double, 5> real{};
+            for (std::size_t i = 0; i < circuits_.size(); ++i) {
+                real.at(i) = circuits_[i]->plant.real_in_at(t);
+            }
+            tracer_.observer()->on_motion(t, real);
+        }
+        while (!queue_.empty() && queue_.top().t <= t) {
+            const Event e = queue_.top();
+            queue_.pop();
+            handle(e);
+        }
+    }
+    for (const auto& c : circuits_) {
+        c->plant.advance_to(now_);
+    }
+    if (tracer_.observer() != nullptr) {
+        tracer_.observer()->on_finish(now_);
+    }
+    return result();
+}
+
+void ControlCabinet::handle(const Event& e) {
+    if (stop_ && e.kind != EventKind::feed) {
+        return; // master switch open: the cabinet is dead
+    }
+    switch (e.kind) {
+    case EventKind::feed:
+        feed();
+        break;
+    case EventKind::first_bank:
+        first_bank();
+        break;
+    case EventKind::second_bank:
+        for (std::size_t i = 0; i < circuits_.size(); ++i) {
+            for (int k = 0; k < circuits_[i]->order.start_speed; ++k) {
+                schedule(now_ + k * profile_.stepping_switch_step_s, EventKind::speed_step_252,
+                         static_cast<int>(i));
+            }
+        }
+        break;
+    case EventKind::speed_step_252:
+        circuits_.at(static_cast<std::size_t>(e.axis))->speed_switch.step_from_card();
+        break;
+    case EventKind::read_complete:
+        read_complete();
+        break;
+    case EventKind::delay_258_release: {
+        AxisCircuit& c = *circuits_.at(static_cast<std::size_t>(e.axis));
+        c.speed_switch.hold_expired(now_);
+        evaluate(c);
+        break;
+    }
+    case EventKind::shaft_step:
+        shaft_step();
+        break;
+    }
+}
+
+void ControlCabinet::feed() {
+    if (stop_) {
+        return;
+    }
+    tracer_.set(zeroizing_, 0);
+    card_ = deck_->next();
+    if (!card_) {
+        deck_finished_ = true;
+        tracer_.set(reader_feeding_, 0);
+        return;
+    }
+    ++cards_read_;
+    orders_ = cardreader::CardOrders{};
+    orders_.number = -1;
+    timings_.push_back(CardTiming{cards_read_, -1, now_, now_});
+    tracer_.set(reader_card_, static_cast<std::uint32_t>(cards_read_));
+    tracer_.set(reader_feeding_, 1);
+    schedule(now_ + profile_.first_bank_s, EventKind::first_bank);
+    schedule(now_ + profile_.second_bank_s, EventKind::second_bank);
+    schedule(now_ + profile_.reader_cycle_s, EventKind::read_complete);
+}
+
+void ControlCabinet::first_bank() {
+    cardreader::DecodeResult decoded = cardreader::decode(*card_, layout_);
+    if (!decoded) {
+        const auto& bad = *decoded.bad_punch;
+        machine_stop(StopReason::bad_punch, std::nullopt,
+                     fmt::format("card {}, column {}: {}: the reader stops the machine",
+                                 cards_read_, bad.column, bad.what),
+                     "card reader 134 check lamp");
+        return;
+    }
+    orders_ = decoded.orders;
+    timings_.back().number = orders_.number;
+    if (tracer_.observer() != nullptr) {
+        tracer_.observer()->on_card(now_, cards_read_, orders_);
+    }
+    // Card-number storage 136: each card must be the previous one + 1 (0000 follows 9999).
+    if (previous_number_ && orders_.number != (*previous_number_ + 1) % 10000) {
+        machine_stop(StopReason::out_of_order_card, std::nullopt,
+                     fmt::format("{}: card number {:04} follows {:04} (expected {:04}); stopped "
+                                 "before any axis moved",
+                                 card_name(), orders_.number, *previous_number_,
+                                 (*previous_number_ + 1) % 10000),
+                     "card-number lamp (storage 136)");
+        return;
+    }
+    previous_number_ = orders_.number;
+    tracer_.set(card_number_136_, static_cast<std::uint32_t>(orders_.number));
+    tracer_.set(spindle_165_, static_cast<std::uint32_t>(orders_.spindle));
+    last_sequence_position_ = 0;
+    for (auto& c : circuits_) {
+        c->order = orders_.axis(c->axis);
+        c->set_direction(c->order.motion);
+        std::vector<int> numbers;
+        for (const auto& sd : c->order.slow_down) {
+            if (sd) {
+                numbers.push_back(*sd);
+            }
+        }
+        numbers.push_back(c->order.stop);
+        c->absolute_storage.store(numbers);
+        c->incremental_storage.store(c->order.check);
+        c->sequence_switch.close_pattern(c->order.sequence);
+        for (int p = 5; p >= 1; --p) {
+            if (c->sequence_switch.closed(p)) {
+                last_sequence_position_ = std::max(last_sequence_position_, p);
+                break;
+            }
+        }
+        c->compare();
+    }
+}
+
+void ControlCabinet::read_complete() {
+    reading_complete_ = true;
+    tracer_.set(reader_feeding_, 0);
+    update_motors();
+    for (auto& c : circuits_) {
+        evaluate(*c);
+    }
+}
+
+bool ControlCabinet::live(const AxisCircuit& c) const {
+    return balancing_.master_switch_closed() && reading_complete_ && !c.stopped &&
+           !c.speed_switch.off() && c.sequence_switch.closed(shaft_.position());
+}
+
+void ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
+    // Duplicate contact sets on commutator 102: both must see every impulse.
+    ++c.contact_set_a;
+    bool dropped = false;
+    for (const DropImpulseFault& f : faults_) {
+        dropped = dropped || (f.axis == c.axis && f.impulse == c.contact_set_a);
+    }
+    if (!dropped) {
+        ++c.contact_set_b;
+    }
+    const double min_interval = 1.0 / profile_.max_stepping_rate_per_s;
+    const int before = c.absolute_counter.value();
+    c.absolute_counter.impulse(impulse.direction, impulse.hundredths, impulse.tenths,
+                               impulse.inches, now_, min_interval);
+    c.increment_counter.impulse(now_, min_interval);
+    if (c.absolute_counter.value() != before) {
+        c.speed_switch.equality_left(now_); // the wipers break contact as they step
+    }
+    if (stop_) {
+        c.compare();
+        return; // coasting after a stop: the counters still count
+    }
+    if (c.contact_set_a != c.contact_set_b) {
+        machine_stop(StopReason::missed_impulse, c.axis,
+                     fmt::format("{}, {}: impulse {} of commutator 102 was seen by contact set A "
+                                 "but not by its duplicate set B",
+                                 card_name(), axis_name(c.axis), c.contact_set_a),
+                     fmt::format("duplicate-contact lamp ({} commutator 102)", axis_name(c.axis)));
+        c.compare();
+        return;
+    }
+    if (c.plant.beyond_limits()) {
+        const auto& p = c.plant.profile();
+        machine_stop(StopReason::soft_limit, c.axis,
+                     fmt::format("{}, {}: the part reached its travel limit at {:.4f} in (limits "
+                                 "{:.3f} .. {:.3f} in)",
+                                 card_name(), axis_name(c.axis), c.plant.real_in(), p.travel_min_in,
+                                 p.travel_max_in),
+                     fmt::format("limit-switch lamp ({})", axis_name(c.axis)));
+        c.compare();
+        return;
+    }
+    evaluate(c);
+}
+
+void ControlCabinet::evaluate(AxisCircuit& c) {
+    c.compare();
+    const bool any = c.absolute_conducting || c.incremental_conducting;
+    if (!any) {
+        c.speed_switch.equality_left(now_);
+    }
+    if (!any || !live(c)) {
+        return;
+    }
+    if (!c.speed_switch.channel_257_open(now_)) {
+        if (now_ < c.speed_switch.hold_until()) {
+            schedule(c.speed_switch.hold_until(), EventKind::delay_258_release,
+                     static_cast<int>(cardreader::axis_index(c.axis)));
+        }
+        return;
+    }
+    if (c.incremental_conducting || c.speed_switch.position() == 3) {
+        stop_axis(c);
+        return;
+    }
+    c.speed_switch.step_slower(now_, profile_.delay_258_s); // stepping relay 256, channel 257
+    update_motor(c);
+}
+
+void ControlCabinet::stop_axis(AxisCircuit& c) {
+    const bool absolute = c.absolute_conducting;
+    const bool incremental = c.incremental_conducting;
+    c.speed_switch.to_off(now_, profile_.delay_258_s); // contact 238
+    c.stopped = true;
+    update_motor(c);
+    if (!balancing_.check_at_stop(absolute, incremental)) {
+        const std::string which = absolute ? "only the absolute comparer 122' conducted"
+                                           : "only the incremental "
+                                             "comparer 122'' conducted";
+        machine_stop(StopReason::check_mismatch, c.axis,
+                     fmt::format("{}, {}: at the stop {}: absolute counter {} (stop {}), "
+                                 "increment counter {} (check {}); balancing circuit 266 opened "
+                                 "master switch 204",
+                                 card_name(), axis_name(c.axis), which,
+                                 inches(c.absolute_counter.value()), inches(c.order.stop),
+                                 inches(c.increment_counter.value()), inches(c.order.check)),
+                     "");
+        return;
+    }
+    shaft_.impulse(now_); // through contact 238, channel 274, circuit 276 to motor 278
+    if (!shaft_.busy()) {
+        shaft_.begin_step();
+        schedule(now_ + profile_.sequence_shaft_step_s, EventKind::shaft_step);
+    }
+}
+
+void ControlCabinet::shaft_step() {
+    if (shaft_.finish_step()) {
+        zeroize();
+        return;
+    }
+    if (shaft_.pending() > 0) {
+        shaft_.begin_step();
+        schedule(now_ + profile_.sequence_shaft_step_s, EventKind::shaft_step);
+    }
+    update_motors();
+    for (auto& c : circuits_) {
+        evaluate(*c);
+    }
+}
+
+void ControlCabinet::zeroize() {
+    tracer_.set(zeroizing_, 1);
+    for (auto& c : circuits_) {
+        c->absolute_storage.clear();    // clearing channel 294
+        c->incremental_storage.clear(); // channel 298
+        c->increment_counter.clear();   // channel 298
+        c->sequence_switch.open_all();  // channel 300
+        c->speed_switch.reset();
+        c->stopped = false;
+        c->compare();
+    }
+    shaft_.reset(); // device 288, channel 302
+    reading_complete_ = false;
+    update_motors();
+    timings_.back().end_s = now_;
+    schedule(now_ + profile_.relay_release_s, EventKind::feed); // channel 304
+}
+
+void ControlCabinet::update_motor(AxisCircuit& c) {
+    const bool on = live(c);
+    if (auto impulse = c.plant.advance_to(now_)) {
+        on_impulse(c, *impulse); // never let an impulse due now go uncounted
+    }
+    c.plant.command(c.direction, on ? c.speed_switch.position() : 0);
+    c.set_powered(on);
+}
+
+void ControlCabinet::update_motors() {
+    bool cutting = false;
+    for (auto& c : circuits_) {
+        update_motor(*c);
+        cutting = cutting || (c->powered && shaft_.position() == last_sequence_position_);
+    }
+    tracer_.set(cutting_, cutting && orders_.spindle != cardreader::Spindle::off ? 1 : 0);
+}
+
+void ControlCabinet::machine_stop(StopReason reason, std::optional<Axis> axis,
+                                  const std::string& message, const std::string& lamp) {
+    if (stop_) {
+        return;
+    }
+    balancing_.trip();
+    if (!lamp.empty()) {
+        balancing_.light(lamp);
+    }
+    StopInfo info;
+    info.reason = reason;
+    info.card = cards_read_;
+    info.card_number = orders_.number;
+    info.axis = axis;
+    info.message = message;
+    info.lamps = balancing_.lamps();
+    stop_ = info;
+    if (!timings_.empty()) {
+        timings_.back().end_s = now_;
+    }
+    queue_ = {};
+    update_motors();
+    if (tracer_.observer() != nullptr) {
+        tracer_.observer()->on_stop(now_, info);
+    }
+}
+
+void ControlCabinet::sequence_stall() {
+    std::string waiting;
+    for (const auto& c : circuits_) {
+        if (!c->stopped) {
+            waiting +=
+                fmt::format("{}{} (pattern {})", waiting.empty() ? "" : ", ", axis_name(c->axis),
+                            cardreader::format_sequence(c->sequence_switch.pattern()).empty()
+                                ? std::string("none")
+                                : cardreader::format_sequence(c->sequence_switch.pattern()));
+        }
+    }
+    machine_stop(StopReason::sequence_stall, std::nullopt,
+                 fmt::format("{}: stepping shaft 280 stands at position {} and no axis that has "
+                             "not stopped is enabled there; waiting: {}",
+                             card_name(), shaft_.position(), waiting),
+                 "sequence lamp (stepping shaft 280)");
+}
+
+RunResult ControlCabinet::result() const {
+    RunResult r;
+    r.completed = deck_finished_ && !stop_;
+    r.cards_read = cards_read_;
+    r.machine_seconds = now_;
+    r.stop = stop_;
+    r.cards = timings_;
+    for (std::size_t i = 0; i < circuits_.size(); ++i) {
+        const AxisCircuit& c = *circuits_[i];
+        AxisResult& a = r.axes.at(i);
+        a.counter_in = c.absolute_counter.value() / 1000.0;
+        a.real_in = c.plant.real_in();
+        a.error_in = std::remainder(a.real_in - a.counter_in, 10.0);
+        a.impulses = c.plant.impulses();
+        a.lost_steps = c.absolute_counter.lost() + c.increment_counter.lost();
+        if (c.axis == Axis::swivel || c.axis == Axis::tilt) {
+            a.fixture_angle_deg = c.plant.fixture_angle_deg(c.axis == Axis::tilt);
+        }
+    }
+    return r;
+}
+
+} // namespace parsons::relaylogic

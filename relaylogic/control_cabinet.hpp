@@ -1,0 +1,147 @@
+// Control cabinet 52: five axis circuits wired to card reader 134, card-number storage 136,
+// the stepping shaft 280 of the sequence control, balancing circuit 266 and the zeroizing
+// circuit 290-304, run event by event in machine time.
+//
+// A card cycle, as the cabinet runs it:
+//   feed ........ reader 134 takes the next card (zeroizing, channel 304, indexed it)
+//   first bank .. spindle 165, motion -> reversing control 214, slow-downs and stop -> banks
+//                 350-356, check -> banks 318-324, sequence pattern 222 -> switches 224; the
+//                 card number is compared with storage 136; a bad punch stops the reader
+//   second bank . speed columns -> sensing circuit 250 -> stepping device 252 steps each
+//                 speed switch 236 one, two or three times
+//   cycle end ... every axis whose contact is closed under rotary member 282 runs; each stop
+//                 impulse steps shaft 280; after the fifth the members come home past
+//                 contact 290 and the zeroizing circuit clears storage and the increment
+//                 counters, opens the sequence contacts, resets device 288 and feeds a card.
+//
+// Time jumps from event to event: the next commutator impulse of an axis (solved exactly from
+// its motion), or the next relay operation in the queue. Nothing polls a clock.
+#pragma once
+
+#include "axes/machine_profile.hpp"
+#include "cardreader/deck_io.hpp"
+#include "cardreader/layout.hpp"
+#include "relaylogic/axis_circuit.hpp"
+#include "relaylogic/balancing_circuit.hpp"
+
+#include <memory>
+#include <optional>
+#include <queue>
+#include <vector>
+
+namespace parsons::relaylogic {
+
+// --fault drop-impulse:AXIS:N: one contact set of the axis's commutator 102 misses its Nth
+// impulse of the run (counted from 1).
+struct DropImpulseFault {
+    cardreader::Axis axis = cardreader::Axis::table;
+    long impulse = 1;
+};
+
+struct AxisResult {
+    double counter_in = 0;                   // what absolute counter 104-110 reads
+    double real_in = 0;                      // where the part really is
+    double error_in = 0;                     // real - counter (modulo the counters' 10 inches)
+    long impulses = 0;                       // commutator 102 impulses the screw produced
+    long lost_steps = 0;                     // impulses the stepping switches could not follow
+    std::optional<double> fixture_angle_deg; // swivel and tilt
+};
+
+struct CardTiming {
+    long index = 0;
+    int number = -1;
+    double start_s = 0;
+    double end_s = 0;
+};
+
+struct RunResult {
+    bool completed = false;
+    long cards_read = 0;
+    double machine_seconds = 0;
+    std::optional<StopInfo> stop;
+    std::array<AxisResult, cardreader::kAxisCount> axes{};
+    std::vector<CardTiming> cards;
+};
+
+class ControlCabinet {
+public:
+    ControlCabinet(axes::MachineProfile profile, const cardreader::CardLayout& layout);
+
+    // Attach before run(); announces every signal to the observer.
+    void attach(MachineObserver* observer);
+    void add_fault(DropImpulseFault fault) { faults_.push_back(fault); }
+
+    // Runs the deck to the end or to a stop, then lets every axis coast to rest. A deck file
+    // that cannot be read throws cardreader::DeckError.
+    RunResult run(cardreader::CardSource& deck);
+
+    const Tracer& tracer() const { return tracer_; }
+
+private:
+    enum class EventKind : std::uint8_t {
+        feed,
+        first_bank,
+        second_bank,
+        speed_step_252,
+        read_complete,
+        delay_258_release,
+        shaft_step,
+    };
+    struct Event {
+        double t;
+        std::uint64_t seq;
+        EventKind kind;
+        int axis;
+        bool operator>(const Event& o) const { return t != o.t ? t > o.t : seq > o.seq; }
+    };
+
+    void schedule(double t, EventKind kind, int axis = -1);
+    void handle(const Event& e);
+    void feed();
+    void first_bank();
+    void read_complete();
+    void on_impulse(AxisCircuit& c, const axes::Impulse& impulse);
+    void evaluate(AxisCircuit& c);
+    bool live(const AxisCircuit& c) const;
+    void stop_axis(AxisCircuit& c);
+    void shaft_step();
+    void zeroize();
+    void update_motors();
+    void update_motor(AxisCircuit& c);
+    void machine_stop(StopReason reason, std::optional<cardreader::Axis> axis,
+                      const std::string& message, const std::string& lamp);
+    void sequence_stall();
+    RunResult result() const;
+    std::string card_name() const;
+
+    axes::MachineProfile profile_;
+    const cardreader::CardLayout& layout_;
+    Tracer tracer_;
+    std::vector<std::unique_ptr<AxisCircuit>> circuits_;
+    SteppingShaft shaft_;
+    BalancingCircuit balancing_;
+    std::vector<DropImpulseFault> faults_;
+
+    std::priority_queue<Event, std::vector<Event>, std::greater<>> queue_;
+    std::uint64_t seq_ = 0;
+    double now_ = 0;
+    cardreader::CardSource* deck_ = nullptr;
+    std::optional<cardreader::Card> card_;
+    cardreader::CardOrders orders_;
+    std::optional<int> previous_number_; // card-number storage 136
+    bool reading_complete_ = false;
+    bool deck_finished_ = false;
+    int last_sequence_position_ = 5;
+    long cards_read_ = 0;
+    std::vector<CardTiming> timings_;
+    std::optional<StopInfo> stop_;
+
+    SignalId reader_card_;
+    SignalId reader_feeding_;
+    SignalId card_number_136_;
+    SignalId spindle_165_;
+    SignalId cutting_;
+    SignalId zeroizing_;
+};
+
+} // namespace parsons::relaylogic

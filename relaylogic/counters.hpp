@@ -1,0 +1,66 @@
+// The two counters of each axis (Fig. 3, Figs. 11 and 12).
+//
+// Absolute counter 104-110: four stepping switches, each driven by its own geared commutator
+// (96 inches, 98 tenths, 100 hundredths, 102 thousandths), stepping up or down as reversing
+// control 214 set them. They do not carry into each other: the gearing does that. Its reading
+// is the position from the reference zero.
+//
+// Increment counter 112: four stepping switches 310 (thousandths) .. 316 (inches) in series,
+// fed by commutator 102 over channel 120, each stepping once per ten steps of the one before
+// over channel 333. It counts travel since this card began, up whichever way the screw turns,
+// and the zeroizing circuit homes it before each card.
+#pragma once
+
+#include "relaylogic/stepping_switch.hpp"
+#include "relaylogic/tracer.hpp"
+
+#include <array>
+
+namespace parsons::relaylogic {
+
+// Digits from the inch down: {inches, tenths, hundredths, thousandths}.
+using Digits = std::array<int, 4>;
+
+int digits_value(const Digits& d); // thousandths
+Digits value_digits(int thousandths);
+
+class AbsoluteCounter {
+public:
+    AbsoluteCounter(Tracer& tracer, const std::string& scope);
+
+    // One crossing of the commutators: 102 always, 100 / 98 / 96 when they close too.
+    void impulse(int direction, bool hundredths, bool tenths, bool inches, double t,
+                 double min_interval_s);
+
+    Digits digits() const;
+    int value() const { return digits_value(digits()); }
+    long lost() const;
+
+private:
+    void step(std::size_t i, int direction, double t, double min_interval_s);
+
+    Tracer& tracer_;
+    std::array<SteppingSwitch, 4> switches_; // 104, 106, 108, 110
+    std::array<SignalId, 4> signals_{};
+};
+
+class IncrementCounter {
+public:
+    IncrementCounter(Tracer& tracer, const std::string& scope);
+
+    // One impulse from commutator 102 (channel 120): 310 steps, carries ripple over 333.
+    void impulse(double t, double min_interval_s);
+    // Zeroizing circuit, channel 298: every switch homes.
+    void clear();
+
+    Digits digits() const; // {316, 314, 312, 310}
+    int value() const { return digits_value(digits()); }
+    long lost() const;
+
+private:
+    Tracer& tracer_;
+    std::array<SteppingSwitch, 4> switches_; // 310, 312, 314, 316 (thousandths first)
+    std::array<SignalId, 4> signals_{};
+};
+
+} // namespace parsons::relaylogic

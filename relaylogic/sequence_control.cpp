@@ -1,0 +1,97 @@
+#include "relaylogic/sequence_control.hpp"
+
+namespace parsons::relaylogic {
+
+SequenceSwitch::SequenceSwitch(Tracer& tracer, const std::string& scope) : tracer_(tracer) {
+    const std::array<const char*, 5> numerals = {"226", "228", "230", "232", "234"};
+    for (std::size_t i = 0; i < 5; ++i) {
+        signals_.at(i) = tracer.define(
+            scope, std::string("sequence_switch_224.contact_") + numerals.at(i),
+            "sequence switch 224 contact for position " + std::to_string(i + 1), numerals.at(i), 1);
+    }
+}
+
+void SequenceSwitch::close_pattern(cardreader::SequencePattern pattern) {
+    for (std::size_t i = 0; i < 5; ++i) {
+        if ((pattern & (1u << i)) != 0) {
+            closed_.at(i) = true;
+            tracer_.set(signals_.at(i), 1);
+        }
+    }
+}
+
+void SequenceSwitch::open_all() {
+    for (std::size_t i = 0; i < 5; ++i) {
+        closed_.at(i) = false;
+        tracer_.set(signals_.at(i), 0);
+    }
+}
+
+cardreader::SequencePattern SequenceSwitch::pattern() const {
+    cardreader::SequencePattern p = 0;
+    for (std::size_t i = 0; i < 5; ++i) {
+        if (closed_.at(i)) {
+            p = static_cast<cardreader::SequencePattern>(p | (1u << i));
+        }
+    }
+    return p;
+}
+
+SteppingShaft::SteppingShaft(Tracer& tracer)
+    : tracer_(tracer), shaft_signal_(tracer.define("cabinet", "stepping_shaft_280",
+                                                   "stepping shaft and rotary "
+                                                   "members 282 (position 1-5)",
+                                                   "280", 3, 1)),
+      unit_284_(tracer.define("cabinet", "unit_284",
+                              "unit 284: added an impulse for a "
+                              "simultaneous stop",
+                              "284", 1)),
+      device_288_(tracer.define("cabinet", "device_288",
+                                "device 288: circuit 276 broken after "
+                                "an impulse",
+                                "288", 1)),
+      contact_290_(tracer.define("cabinet", "zeroizing_contact_290",
+                                 "contact 290: zeroizing "
+                                 "circuit 292-304",
+                                 "290", 1)) {}
+
+bool SteppingShaft::impulse(double t) {
+    const bool together = pending_ > 0 && t == last_impulse_t_;
+    last_impulse_t_ = t;
+    ++pending_;
+    if (together) {
+        tracer_.set(unit_284_, 1);
+    }
+    return together;
+}
+
+void SteppingShaft::begin_step() {
+    busy_ = true;
+    tracer_.set(device_288_, 1);
+}
+
+bool SteppingShaft::finish_step() {
+    busy_ = false;
+    --pending_;
+    tracer_.set(device_288_, 0);
+    if (pending_ == 0) {
+        tracer_.set(unit_284_, 0);
+    }
+    position_ = position_ == 5 ? 1 : position_ + 1;
+    tracer_.set(shaft_signal_, static_cast<std::uint32_t>(position_));
+    const bool home = position_ == 1;
+    if (home) {
+        tracer_.set(contact_290_, 1);
+    }
+    return home;
+}
+
+void SteppingShaft::reset() {
+    pending_ = 0;
+    busy_ = false;
+    tracer_.set(contact_290_, 0);
+    tracer_.set(unit_284_, 0);
+    tracer_.set(device_288_, 0);
+}
+
+} // namespace parsons::relaylogic

@@ -1,0 +1,70 @@
+// Sequence control (Fig. 10): sequence switches 224, one per axis, and the stepping shaft 280
+// common to all of them.
+//
+// Each switch 224 has five contacts 226, 228, 230, 232, 234, closed by electromagnets from the
+// punches of the axis's sequence pattern 222 (the row of cross marks). Rotary member 282 of
+// every switch sits on shaft 280, driven by motor 278: it sweeps positions 1 -> 5, and an axis
+// runs while the contact under the member is closed and it has not yet stopped.
+//
+// Each axis that stops sends one impulse through contact 238, channel 274 and circuit 276 to
+// motor 278. Unit 284 senses two impulses arriving together and adds one, so simultaneous
+// stops count as separate impulses; device 288 breaks circuit 276 after each impulse, so each
+// stop steps the shaft exactly once. After the fifth impulse the members return to position
+// 1, engaging contact 290: the zeroizing circuit 292-304 fires.
+#pragma once
+
+#include "cardreader/orders.hpp"
+#include "relaylogic/tracer.hpp"
+
+#include <array>
+
+namespace parsons::relaylogic {
+
+class SequenceSwitch {
+public:
+    SequenceSwitch(Tracer& tracer, const std::string& scope);
+    // The reader's first brush bank, over cable 223.
+    void close_pattern(cardreader::SequencePattern pattern);
+    // Zeroizing, channel 300.
+    void open_all();
+    bool closed(int position) const { return closed_.at(static_cast<std::size_t>(position - 1)); }
+    cardreader::SequencePattern pattern() const;
+
+private:
+    Tracer& tracer_;
+    std::array<bool, 5> closed_{};
+    std::array<SignalId, 5> signals_{}; // contacts 226, 228, 230, 232, 234
+};
+
+class SteppingShaft {
+public:
+    explicit SteppingShaft(Tracer& tracer);
+
+    int position() const { return position_; } // 1..5, the contact under rotary member 282
+    bool busy() const { return busy_; }
+    int pending() const { return pending_; }
+
+    // An axis stopped: one impulse to motor 278. Returns true if unit 284 had to count it as
+    // an extra impulse (it arrived together with another).
+    bool impulse(double t);
+    // Motor 278 begins one step (device 288 makes it a single one).
+    void begin_step();
+    // The step is done. Returns true when the members came round to position 1 past contact
+    // 290 (the fifth impulse): the zeroizing circuit fires.
+    bool finish_step();
+    // Zeroizing: device 288 reset (channel 302).
+    void reset();
+
+private:
+    Tracer& tracer_;
+    int position_ = 1;
+    int pending_ = 0;
+    bool busy_ = false;
+    double last_impulse_t_ = -1;
+    SignalId shaft_signal_;
+    SignalId unit_284_;
+    SignalId device_288_;
+    SignalId contact_290_;
+};
+
+} // namespace parsons::relaylogic

@@ -1,0 +1,104 @@
+#include "relaylogic/storage.hpp"
+
+#include <algorithm>
+
+namespace parsons::relaylogic {
+
+HoldingRelayBank::HoldingRelayBank(Tracer& tracer, const std::string& scope,
+                                   const std::string& numeral, const std::string& what)
+    : tracer_(tracer) {
+    for (int d = 0; d < 10; ++d) {
+        signals_.at(static_cast<std::size_t>(d)) =
+            tracer.define(scope, what + "_" + numeral + ".relay_" + std::to_string(d),
+                          "holding relay " + std::to_string(d) + " of bank " + numeral, numeral, 1);
+    }
+}
+
+void HoldingRelayBank::pick(int digit) {
+    const auto i = static_cast<std::size_t>(digit);
+    closed_.at(i) = true;
+    tracer_.set(signals_.at(i), 1);
+}
+
+void HoldingRelayBank::release_all() {
+    for (std::size_t i = 0; i < 10; ++i) {
+        closed_.at(i) = false;
+        tracer_.set(signals_.at(i), 0);
+    }
+}
+
+std::vector<int> HoldingRelayBank::closed_relays() const {
+    std::vector<int> out;
+    for (int d = 0; d < 10; ++d) {
+        if (closed(d)) {
+            out.push_back(d);
+        }
+    }
+    return out;
+}
+
+AbsoluteStorage::AbsoluteStorage(Tracer& tracer, const std::string& scope, bool separate)
+    : banks_{HoldingRelayBank(tracer, scope, "350", "absolute_storage"),
+             HoldingRelayBank(tracer, scope, "352", "absolute_storage"),
+             HoldingRelayBank(tracer, scope, "354", "absolute_storage"),
+             HoldingRelayBank(tracer, scope, "356", "absolute_storage")},
+      separate_registers_(separate) {}
+
+void AbsoluteStorage::store(const std::vector<int>& numbers) {
+    numbers_ = numbers;
+    for (int n : numbers) {
+        const Digits d = value_digits(n);
+        for (std::size_t i = 0; i < 4; ++i) {
+            banks_.at(i).pick(d.at(i));
+        }
+    }
+}
+
+void AbsoluteStorage::clear() {
+    numbers_.clear();
+    for (auto& b : banks_) {
+        b.release_all();
+    }
+}
+
+bool AbsoluteStorage::conducts(const Digits& counter) const {
+    if (separate_registers_) {
+        return std::find(numbers_.begin(), numbers_.end(), digits_value(counter)) != numbers_.end();
+    }
+    for (std::size_t i = 0; i < 4; ++i) {
+        if (!banks_.at(i).closed(counter.at(i))) {
+            return false;
+        }
+    }
+    return true;
+}
+
+IncrementalStorage::IncrementalStorage(Tracer& tracer, const std::string& scope)
+    : banks_{HoldingRelayBank(tracer, scope, "324", "incremental_storage"),
+             HoldingRelayBank(tracer, scope, "322", "incremental_storage"),
+             HoldingRelayBank(tracer, scope, "320", "incremental_storage"),
+             HoldingRelayBank(tracer, scope, "318", "incremental_storage")} {}
+
+void IncrementalStorage::store(int check) {
+    const Digits d = value_digits(check);
+    for (std::size_t i = 0; i < 4; ++i) {
+        banks_.at(i).pick(d.at(i));
+    }
+}
+
+void IncrementalStorage::clear() {
+    for (auto& b : banks_) {
+        b.release_all();
+    }
+}
+
+bool IncrementalStorage::conducts(const Digits& increment) const {
+    for (std::size_t i = 0; i < 4; ++i) {
+        if (!banks_.at(i).closed(increment.at(i))) {
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace parsons::relaylogic

@@ -1,0 +1,68 @@
+// Storage: banks of holding relays (Fig. 13) set by the card reader, one bank per digit.
+//
+// A holding relay (coil 368) closes on an impulse from the reader's brushes and holds until
+// the zeroizing circuit's clearing channel 294 momentarily de-energizes the coils.
+//
+// Absolute storage, banks 350 (inches), 352, 354, 356 (thousandths), channel 218: the
+// slow-downs and the stop SHARE the banks, as the patent describes: 8.785 / 8.885 / 8.985
+// close relay 8 of 350, relays 7, 8, 9 of 352, relay 8 of 354 and relay 5 of 356. The
+// absolute comparer 122' conducts whenever every counter switch stands on a closed relay, so
+// numbers that differ in more than one digit also match at spurious positions (DESIGN.md 4.2).
+// The profile option separate_registers gives each number its own register instead (a
+// departure from the patent, off by default).
+//
+// Incremental storage, banks 318 (thousandths), 320, 322, 324 (inches), channel 220: the check.
+#pragma once
+
+#include "relaylogic/counters.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace parsons::relaylogic {
+
+class HoldingRelayBank {
+public:
+    HoldingRelayBank(Tracer& tracer, const std::string& scope, const std::string& numeral,
+                     const std::string& what);
+    void pick(int digit);
+    void release_all();
+    bool closed(int digit) const { return closed_.at(static_cast<std::size_t>(digit)); }
+    std::vector<int> closed_relays() const;
+
+private:
+    Tracer& tracer_;
+    std::array<bool, 10> closed_{};
+    std::array<SignalId, 10> signals_{};
+};
+
+class AbsoluteStorage {
+public:
+    AbsoluteStorage(Tracer& tracer, const std::string& scope, bool separate_registers);
+    // The reader's first brush bank: slow-downs and stop into banks 350-356.
+    void store(const std::vector<int>& numbers);
+    void clear();
+    // Comparer 122': does the circuit through the banks close for these counter digits?
+    bool conducts(const Digits& counter) const;
+    const HoldingRelayBank& bank(int i) const { return banks_.at(static_cast<std::size_t>(i)); }
+
+private:
+    std::array<HoldingRelayBank, 4> banks_; // 350, 352, 354, 356
+    bool separate_registers_;
+    std::vector<int> numbers_;
+};
+
+class IncrementalStorage {
+public:
+    IncrementalStorage(Tracer& tracer, const std::string& scope);
+    void store(int check);
+    void clear();
+    // Comparer 122'': does the circuit through banks 318-324 close for counter 112?
+    bool conducts(const Digits& increment) const;
+    const HoldingRelayBank& bank(int i) const { return banks_.at(static_cast<std::size_t>(i)); }
+
+private:
+    std::array<HoldingRelayBank, 4> banks_; // 324 (inches), 322, 320, 318 (thousandths)
+};
+
+} // namespace parsons::relaylogic

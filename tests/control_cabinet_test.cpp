@@ -1,0 +1,326 @@
+// The control cabinet running decks: the behaviours of DESIGN.md section 4, end to end.
+#include "tests/machine_support.hpp"
+#include "tests/test_support.hpp"
+
+#include "cardreader/deck_io.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+
+using namespace parsons::cardreader;
+using namespace parsons::relaylogic;
+using namespace parsons::test;
+
+namespace {
+
+// The table counter reading at the moment of each change of `signal` to `to`.
+std::vector<int> counter_when(const Recorder& r, const std::string& signal, std::uint32_t to) {
+    std::map<std::string, std::uint32_t> v;
+    std::vector<int> readings;
+    for (const auto& c : r.changes) {
+        v[c.signal] = c.new_value;
+        if (c.signal == signal && c.new_value == to) {
+            readings.push_back(static_cast<int>(
+                v["table.absolute_counter_104"] * 1000 + v["table.absolute_counter_106"] * 100 +
+                v["table.absolute_counter_108"] * 10 + v["table.absolute_counter_110"]));
+        }
+    }
+    return readings;
+}
+
+double first_time(const Recorder& r, const std::string& signal, std::uint32_t to) {
+    for (const auto& c : r.of(signal)) {
+        if (c.new_value == to) {
+            return c.t;
+        }
+    }
+    return -1;
+}
+
+double last_time(const Recorder& r, const std::string& signal, std::uint32_t to) {
+    double t = -1;
+    for (const auto& c : r.of(signal)) {
+        if (c.new_value == to) {
+            t = c.t;
+        }
+    }
+    return t;
+}
+
+} // namespace
+
+TEST_CASE("Cabinet: the sample deck completes and every axis ends on the last card's stop",
+          "[cabinet]") {
+    std::ifstream in(source_path("decks/samples/patent-example.csv"));
+    DeckOptions options;
+    options.format = DeckFormat::listing;
+    options.file_name = "patent-example.csv";
+    auto deck = open_card_source(in, options);
+    ControlCabinet cabinet(parsons::axes::default_profile(), fig8_layout());
+    RunResult r = cabinet.run(*deck);
+    CHECK(r.completed);
+    CHECK_FALSE(r.stop);
+    CHECK(r.cards_read == 4);
+    const std::array<double, 5> last_stops = {0.100, 0.000, 0.000, 0.000, 0.000};
+    for (std::size_t i = 0; i < 5; ++i) {
+        INFO(axis_name(kAxes.at(i)));
+        CHECK(r.axes.at(i).counter_in == Approx(last_stops.at(i)).margin(1e-9));
+        CHECK(std::abs(r.axes.at(i).error_in) < 0.0005);
+        CHECK(r.axes.at(i).lost_steps == 0);
+    }
+}
+
+TEST_CASE("Sequence: table and cross run first, then vertical and swivel, then tilt (Fig. 10)",
+          "[cabinet][sequence][fig10]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 300, 3, {}, {}, 0b00011);
+    c.axis(Axis::cross) = order(0, 200, 3, {}, {}, 0b00011);
+    c.axis(Axis::vertical) = order(0, 100, 3, {}, {}, 0b01100);
+    c.axis(Axis::swivel) = order(0, 150, 3, {}, {}, 0b01100);
+    c.axis(Axis::tilt) = order(0, 50, 3, {}, {}, 0b10000);
+    Recorder rec;
+    RunResult r = run_orders({c}, parsons::axes::default_profile(), &rec);
+    REQUIRE(r.completed);
+    const double table_on = first_time(rec, "table.motor_38", 1);
+    const double cross_on = first_time(rec, "cross.motor_50", 1);
+    const double vertical_on = first_time(rec, "vertical.motor_46", 1);
+    const double swivel_on = first_time(rec, "swivel.motor_44", 1);
+    const double tilt_on = first_time(rec, "tilt.motor_40", 1);
+    CHECK(table_on == cross_on);
+    CHECK(vertical_on == swivel_on);
+    CHECK(vertical_on > last_time(rec, "table.motor_38", 0));
+    CHECK(vertical_on > last_time(rec, "cross.motor_50", 0));
+    CHECK(tilt_on > last_time(rec, "vertical.motor_46", 0));
+    CHECK(tilt_on > last_time(rec, "swivel.motor_44", 0));
+    // Each motor starts exactly once.
+    for (const char* m : {"table.motor_38", "cross.motor_50", "vertical.motor_46",
+                          "swivel.motor_44", "tilt.motor_40"}) {
+        int starts = 0;
+        for (const auto& ch : rec.of(m)) {
+            starts += ch.new_value == 1 ? 1 : 0;
+        }
+        CHECK(starts == 1);
+    }
+}
+
+TEST_CASE("Sequence: simultaneous stops are counted as separate impulses by unit 284",
+          "[cabinet][sequence][fig10]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table).sequence = 0b00001; // table and cross both at 1, both with check 0:
+    c.axis(Axis::cross).sequence = 0b00001; // they stop at the same instant
+    c.axis(Axis::vertical).sequence = 0b00100;
+    c.axis(Axis::swivel).sequence = 0b01000;
+    c.axis(Axis::tilt).sequence = 0b10000;
+    Recorder rec;
+    RunResult r = run_orders({c}, parsons::axes::default_profile(), &rec);
+    CHECK(r.completed);
+    const auto unit = rec.of("cabinet.unit_284");
+    REQUIRE_FALSE(unit.empty());
+    CHECK(unit.front().new_value == 1);
+    // Two impulses: the shaft goes 1 -> 2 -> 3 without an axis stopping at 2.
+    const auto shaft = rec.of("cabinet.stepping_shaft_280");
+    REQUIRE(shaft.size() >= 2);
+    CHECK(shaft[0].new_value == 2);
+    CHECK(shaft[1].new_value == 3);
+    CHECK(first_time(rec, "vertical.speed_switch_236", 0) >= shaft[1].t);
+}
+
+TEST_CASE("Sequence: a pattern that can never enable an axis stops with sequence_stall",
+          "[cabinet][sequence]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table).sequence = 0; // never enabled
+    c.axis(Axis::cross).sequence = 0b00001;
+    c.axis(Axis::vertical).sequence = 0b00010;
+    c.axis(Axis::swivel).sequence = 0b00100;
+    c.axis(Axis::tilt).sequence = 0b01000;
+    RunResult r = run_orders({c});
+    REQUIRE(r.stop);
+    CHECK(r.stop->reason == StopReason::sequence_stall);
+    CHECK(r.stop->message.find("position 5") != std::string::npos);
+    CHECK(r.stop->message.find("table (pattern none)") != std::string::npos);
+    CHECK_FALSE(r.completed);
+}
+
+TEST_CASE("Card order: a card out of numerical order stops the machine before any axis moves",
+          "[cabinet][card-number]") {
+    CardOrders first = idle_card(1, {0, 0, 0, 0, 0});
+    CardOrders second = idle_card(3, {0, 0, 0, 0, 0});
+    second.axis(Axis::table) = order(0, 500, 3, {}, {}, 1);
+    RunResult r = run_orders({first, second});
+    REQUIRE(r.stop);
+    CHECK(r.stop->reason == StopReason::out_of_order_card);
+    CHECK(r.stop->card == 2);
+    CHECK(r.stop->message.find("card number 0003 follows 0001 (expected 0002)") !=
+          std::string::npos);
+    CHECK(r.axes.at(0).impulses == 0);
+}
+
+TEST_CASE("Checks: a check too large stops with only the absolute comparer conducting: lamp 270",
+          "[cabinet][check][fig10]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 100, 3, {}, {}, 1);
+    c.axis(Axis::table).check = 110;
+    RunResult r = run_orders({c});
+    REQUIRE(r.stop);
+    CHECK(r.stop->reason == StopReason::check_mismatch);
+    CHECK(r.stop->axis == Axis::table);
+    CHECK(r.stop->lamps == std::vector<std::string>{"indicator 268", "lamp 270 (absolute "
+                                                                     "comparer 122' conducting)"});
+    CHECK(r.axes.at(0).counter_in == Approx(0.100));
+}
+
+TEST_CASE("Checks: a check too small stops early with only the incremental comparer: lamp 272",
+          "[cabinet][check][fig10]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 100, 3, {}, {}, 1);
+    c.axis(Axis::table).check = 90;
+    RunResult r = run_orders({c});
+    REQUIRE(r.stop);
+    CHECK(r.stop->reason == StopReason::check_mismatch);
+    CHECK(r.stop->lamps == std::vector<std::string>{"indicator 268",
+                                                    "lamp 272 (incremental comparer 122'' "
+                                                    "conducting)"});
+    CHECK(r.axes.at(0).counter_in == Approx(0.090));
+}
+
+TEST_CASE("Duplicate contacts: an impulse missed by one contact set stops with missed_impulse",
+          "[cabinet][faults]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::cross) = order(0, 300, 3, {}, {}, 0b00010);
+    RunResult r = run_orders({c}, parsons::axes::default_profile(), nullptr,
+                             {DropImpulseFault{Axis::cross, 120}});
+    REQUIRE(r.stop);
+    CHECK(r.stop->reason == StopReason::missed_impulse);
+    CHECK(r.stop->axis == Axis::cross);
+    CHECK(r.stop->message.find("impulse 120 of commutator 102") != std::string::npos);
+    CHECK(r.axes.at(1).counter_in == Approx(0.120).margin(0.0015));
+}
+
+TEST_CASE("Shared banks: a spurious match at 8.050 slows the table early (9.050 with slow-downs "
+          "8.850, 8.950)",
+          "[cabinet][fig12]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 9050, 1, 8850, 8950, 1);
+    Recorder rec;
+    RunResult r = run_orders({c}, parsons::axes::default_profile(), &rec);
+    const auto to_speed_2 = counter_when(rec, "table.speed_switch_236", 2);
+    REQUIRE_FALSE(to_speed_2.empty());
+    CHECK(to_speed_2.front() == 8050);
+    // It then reaches speed 3 at 8.850 and takes 8.950 for its stop: the check disagrees.
+    CHECK(counter_when(rec, "table.speed_switch_236", 3).front() == 8850);
+    REQUIRE(r.stop);
+    CHECK(r.stop->reason == StopReason::check_mismatch);
+    CHECK(r.axes.at(0).counter_in == Approx(8.950));
+}
+
+TEST_CASE("Shared banks: with separate registers (a departure) the same card completes",
+          "[cabinet][fig12]") {
+    auto profile = parsons::axes::default_profile();
+    profile.separate_registers = true;
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 9050, 1, 8850, 8950, 1);
+    RunResult r = run_orders({c}, profile);
+    CHECK(r.completed);
+    CHECK(r.axes.at(0).counter_in == Approx(9.050));
+}
+
+TEST_CASE("Coast: slow-downs 0.002 and 0.001 before the stop overshoot and the next card stops "
+          "with check_mismatch; 0.200 and 0.100 before complete",
+          "[cabinet][coast]") {
+    auto deck = [](int slow1, int slow2) {
+        CardOrders one = idle_card(1, {0, 0, 0, 0, 0});
+        one.axis(Axis::table) = order(0, 2985, 1, slow1, slow2, 1);
+        CardOrders two = idle_card(2, {2985, 0, 0, 0, 0});
+        two.axis(Axis::table) = order(2985, 3985, 3, {}, {}, 1);
+        return std::vector<CardOrders>{one, two};
+    };
+    RunResult close = run_orders(deck(2983, 2984));
+    REQUIRE(close.stop);
+    CHECK(close.stop->reason == StopReason::check_mismatch);
+    CHECK(close.stop->card == 2);
+    CHECK(close.stop->axis == Axis::table);
+    RunResult proper = run_orders(deck(2785, 2885));
+    CHECK(proper.completed);
+    CHECK(proper.axes.at(0).counter_in == Approx(3.985));
+    CHECK(std::abs(proper.axes.at(0).error_in) < 0.0005);
+}
+
+TEST_CASE("Speed switch: speed column 0 / 0-1 / 0-1-2 steps it one, two, three times from off, "
+          "and then three, two, one steps reach off (Fig. 10)",
+          "[cabinet][speed-switch][fig10]") {
+    auto [speed, slow1, slow2, steps_to_off] = GENERATE(table<int, int, int, int>({
+        {1, 2785, 2885, 3},
+        {2, 2885, -1, 2},
+        {3, -1, -1, 1},
+    }));
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) =
+        order(0, 2985, speed, slow1 < 0 ? std::nullopt : std::optional<int>(slow1),
+              slow2 < 0 ? std::nullopt : std::optional<int>(slow2), 1);
+    Recorder rec;
+    RunResult r = run_orders({c}, parsons::axes::default_profile(), &rec);
+    REQUIRE(r.completed);
+    const double motor_on = first_time(rec, "table.motor_38", 1);
+    int from_card = 0;
+    int from_comparer = 0;
+    for (const auto& ch : rec.of("table.speed_switch_236")) {
+        (ch.t < motor_on ? from_card : from_comparer) += 1;
+    }
+    CHECK(from_card == speed);
+    CHECK(from_comparer == steps_to_off);
+}
+
+TEST_CASE("Stepping rate: impulses faster than the switches can step are lost and show up as "
+          "position error",
+          "[cabinet][counters]") {
+    auto fast = parsons::axes::default_profile();
+    fast.axes.at(0).speed_in_per_min = {15.0, 1.8, 0.6}; // 250 impulses/s, switches take 100/s
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 2985, 1, 2785, 2885, 1);
+    RunResult r = run_orders({c}, fast);
+    CHECK(r.axes.at(0).lost_steps > 0);
+    CHECK(std::abs(r.axes.at(0).error_in) > 0.002);
+    RunResult normal = run_orders({c});
+    CHECK(normal.axes.at(0).lost_steps == 0);
+    CHECK(std::abs(normal.axes.at(0).error_in) < 0.0005);
+}
+
+TEST_CASE("Travel limits: an axis that runs past its limit stops the machine", "[cabinet]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 100, 3, {}, {}, 1);
+    c.axis(Axis::table).motion = Motion::reverse; // counts down from 0.000 through 9.999
+    c.axis(Axis::table).check = 9900;             // what the counters would count
+    RunResult r = run_orders({c});
+    REQUIRE(r.stop);
+    CHECK(r.stop->reason == StopReason::soft_limit);
+    CHECK(r.axes.at(0).real_in <= -0.5);
+}
+
+TEST_CASE("Bad punch: a card the reader cannot read stops the machine naming card and column",
+          "[cabinet]") {
+    Card card = encode(idle_card(1, {0, 0, 0, 0, 0}), fig8_layout()).card;
+    card.punch(13, Row::r5);
+    card.punch(13, Row::r7);
+    VectorDeck deck({card});
+    ControlCabinet cabinet(parsons::axes::default_profile(), fig8_layout());
+    RunResult r = cabinet.run(deck);
+    REQUIRE(r.stop);
+    CHECK(r.stop->reason == StopReason::bad_punch);
+    CHECK(r.stop->message.find("card 1, column 13: double punch") != std::string::npos);
+}
+
+TEST_CASE("Delay 258: held longer than the time between impulses, the switch misses the next "
+          "number and the table runs on past its stop",
+          "[cabinet][speed-switch]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 2985, 1, 2983, 2984, 1);
+    RunResult normal = run_orders({c});
+    CHECK(normal.completed); // 5 ms hold: each equality is served as it comes
+    auto slow_delay = parsons::axes::default_profile();
+    slow_delay.delay_258_s = 0.050; // 50 ms; impulses come every 11 ms at speed 1
+    RunResult r = run_orders({c}, slow_delay);
+    REQUIRE(r.stop);
+    CHECK(r.stop->reason == StopReason::soft_limit);
+    CHECK(r.axes.at(0).real_in > 10.0);
+}
