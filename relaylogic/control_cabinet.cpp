@@ -301,6 +301,10 @@ void ControlCabinet::evaluate(AxisCircuit& c) {
     }
     c.speed_switch.step_slower(now_, profile_.delay_258_s); // stepping relay 256, channel 257
     update_motor(c);
+    // When delay 258 closes channel 257 again, the comparer is read again: an equality that
+    // still stands then must not step the switch a second time (it has not been left).
+    schedule(c.speed_switch.hold_until(), EventKind::delay_258_release,
+             static_cast<int>(cardreader::axis_index(c.axis)));
 }
 
 void ControlCabinet::stop_axis(AxisCircuit& c) {

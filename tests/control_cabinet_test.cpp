@@ -184,6 +184,23 @@ TEST_CASE("Checks: a check too small stops early with only the incremental compa
     CHECK(r.axes.at(0).counter_in == Approx(0.090));
 }
 
+TEST_CASE("Checks: an incremental equality stops the axis at any speed, here still on speed 1",
+          "[cabinet][check][fig10]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 2985, 1, 2785, 2885, 1);
+    c.axis(Axis::table).check = 1000;
+    Recorder rec;
+    RunResult r = run_orders({c}, parsons::axes::default_profile(), &rec);
+    REQUIRE(r.stop);
+    CHECK(r.stop->reason == StopReason::check_mismatch);
+    CHECK(r.stop->lamps.back() == "lamp 272 (incremental comparer 122'' conducting)");
+    const auto steps = rec.of("table.speed_switch_236");
+    REQUIRE(steps.size() == 2);
+    CHECK(steps[1].old_value == 1); // straight from speed 1 to off
+    CHECK(steps[1].new_value == 0);
+    CHECK(counter_when(rec, "table.speed_switch_236", 0).front() == 1000);
+}
+
 TEST_CASE("Duplicate contacts: an impulse missed by one contact set stops with missed_impulse",
           "[cabinet][faults]") {
     CardOrders c = idle_card(1, {0, 0, 0, 0, 0});

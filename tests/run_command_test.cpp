@@ -1,0 +1,152 @@
+// parsons run as a user types it: exit codes, the summary, the report, the output files.
+#include "tests/test_support.hpp"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+
+using parsons::test::read_bytes;
+using parsons::test::run_parsons;
+using parsons::test::source_path;
+using parsons::test::TempDir;
+using parsons::test::write_bytes;
+
+namespace {
+
+const std::string kSample = "decks/samples/patent-example.csv";
+std::string q(const std::string& s) {
+    return "'" + s + "'";
+}
+
+std::string sample_with(const std::string& from, const std::string& to) {
+    std::string text = read_bytes(source_path(kSample));
+    const auto at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    return text.replace(at, from.size(), to);
+}
+
+} // namespace
+
+TEST_CASE("Run: the sample deck completes, exit 0, every axis on the last card's stop",
+          "[run][cli]") {
+    TempDir dir;
+    auto r = run_parsons("run " + q(source_path(kSample)) + " --report " + q(dir.str("r.json")) +
+                         " --trace " + q(dir.str("t.vcd")) + " --events " + q(dir.str("e.jsonl")) +
+                         " --path " + q(dir.str("p.csv")) + " --plot " + q(dir.str("p.svg")));
+    CHECK(r.exit_code == 0);
+    CHECK(r.output.find("status         completed") != std::string::npos);
+    const auto report = nlohmann::json::parse(read_bytes(dir.path("r.json")));
+    CHECK(report["status"] == "completed");
+    CHECK(report["cards_read"] == 4);
+    CHECK(report["stop"].is_null());
+    CHECK(report["machine_seconds"].get<double>() > 0);
+    const std::map<std::string, double> last_stops = {
+        {"table", 0.100}, {"cross", 0.0}, {"vertical", 0.0}, {"swivel", 0.0}, {"tilt", 0.0}};
+    for (const auto& [axis, stop] : last_stops) {
+        INFO(axis);
+        CHECK(report["axes"][axis]["position"].get<double>() == Approx(stop).margin(1e-9));
+        CHECK(std::abs(report["axes"][axis]["position_error"].get<double>()) < 0.0005);
+    }
+    CHECK(report["cards"].size() == 4);
+    for (const char* f : {"t.vcd", "e.jsonl", "p.csv", "p.svg"}) {
+        INFO(f);
+        CHECK(std::filesystem::file_size(dir.path(f)) > 100);
+    }
+}
+
+TEST_CASE("Run: a wrong check exits 3 with a summary naming card, axis, reason and lamps",
+          "[run][cli]") {
+    TempDir dir;
+    write_bytes(dir.path("bad.csv"), sample_with("2,0,table,-,1,8.585,8.485,8.385,0.600,12",
+                                                 "2,0,table,-,1,8.585,8.485,8.385,0.610,12"));
+    auto r = run_parsons("run " + q(dir.str("bad.csv")) + " --report " + q(dir.str("r.json")));
+    CHECK(r.exit_code == 3);
+    CHECK(r.output.find("status         STOPPED: check_mismatch") != std::string::npos);
+    CHECK(r.output.find("card           2 (number 0002)") != std::string::npos);
+    CHECK(r.output.find("axis           table") != std::string::npos);
+    CHECK(r.output.find("lamps lit      indicator 268, lamp 270 (absolute comparer 122' "
+                        "conducting)") != std::string::npos);
+    const auto report = nlohmann::json::parse(read_bytes(dir.path("r.json")));
+    CHECK(report["status"] == "stopped");
+    CHECK(report["stop"]["reason"] == "check_mismatch");
+    CHECK(report["stop"]["card"] == 2);
+    CHECK(report["stop"]["axis"] == "table");
+}
+
+TEST_CASE("Run: cards out of order exit 3 with out_of_order_card", "[run][cli]") {
+    TempDir dir;
+    std::string text = read_bytes(source_path(kSample));
+    for (std::size_t at = text.find("\n3,"); at != std::string::npos; at = text.find("\n3,")) {
+        text.replace(at, 3, "\n7,");
+    }
+    write_bytes(dir.path("order.csv"), text);
+    auto r = run_parsons("run " + q(dir.str("order.csv")));
+    CHECK(r.exit_code == 3);
+    CHECK(r.output.find("STOPPED: out_of_order_card") != std::string::npos);
+    CHECK(r.output.find("card number 0007 follows 0002") != std::string::npos);
+}
+
+TEST_CASE("Run: a dropped impulse exits 3 with missed_impulse", "[run][cli]") {
+    auto r = run_parsons("run " + q(source_path(kSample)) + " --fault drop-impulse:cross:500");
+    CHECK(r.exit_code == 3);
+    CHECK(r.output.find("STOPPED: missed_impulse") != std::string::npos);
+    CHECK(r.output.find("axis           cross") != std::string::npos);
+}
+
+TEST_CASE("Run: an unreadable deck, a bad fault or a bad profile exit 2 naming where",
+          "[run][cli][bad-input]") {
+    TempDir dir;
+    write_bytes(dir.path("short.cbn"), std::string("\xC0\x40", 2));
+    auto unreadable = run_parsons("run " + q(dir.str("short.cbn")) + " --report " +
+                                  q(dir.str("r.json")) + " --trace " + q(dir.str("t.vcd")));
+    CHECK(unreadable.exit_code == 2);
+    CHECK(unreadable.output.find("short.cbn: card 1, byte 3 (offset 0x2): truncated card") !=
+          std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir.path("r.json")));
+    CHECK_FALSE(std::filesystem::exists(dir.path("t.vcd")));
+
+    auto fault = run_parsons("run " + q(source_path(kSample)) + " --fault drop-impulse:tabel:3");
+    CHECK(fault.exit_code == 2);
+    CHECK(fault.output.find("unknown axis 'tabel'") != std::string::npos);
+
+    write_bytes(dir.path("p.json"), R"({"axes": {"table": {"sped_in_per_min": [1, 2, 3]}}})");
+    auto profile =
+        run_parsons("run " + q(source_path(kSample)) + " --profile " + q(dir.str("p.json")));
+    CHECK(profile.exit_code == 2);
+    CHECK(profile.output.find("p.json: axes.table.sped_in_per_min: unknown key") !=
+          std::string::npos);
+    write_bytes(dir.path("broken.json"), "{\"delay_258_s\": ");
+    auto broken =
+        run_parsons("run " + q(source_path(kSample)) + " --profile " + q(dir.str("broken.json")));
+    CHECK(broken.exit_code == 2);
+    CHECK(broken.output.find("broken.json: not valid JSON at byte") != std::string::npos);
+}
+
+TEST_CASE("Profile: the printed default reads back, and a partial file changes only its keys",
+          "[run][cli][profile]") {
+    TempDir dir;
+    auto printed = run_parsons("profile");
+    REQUIRE(printed.exit_code == 0);
+    const auto j = nlohmann::json::parse(printed.output);
+    CHECK(j["name"] == "parsons-1952");
+    CHECK(j["axes"]["table"]["speed_in_per_min"][0] == 5.4);
+    write_bytes(dir.path("default.json"), printed.output);
+    CHECK(run_parsons("profile --profile " + q(dir.str("default.json"))).output == printed.output);
+    write_bytes(dir.path("fast.json"), R"({"max_stepping_rate_per_s": 50})");
+    const auto fast =
+        nlohmann::json::parse(run_parsons("profile --profile " + q(dir.str("fast.json"))).output);
+    CHECK(fast["max_stepping_rate_per_s"] == 50);
+    CHECK(fast["delay_258_s"] == j["delay_258_s"]);
+}
+
+TEST_CASE("Run: lost stepping-switch steps are reported as position error", "[run][cli]") {
+    TempDir dir;
+    write_bytes(dir.path("fast.json"),
+                R"({"axes": {"table": {"speed_in_per_min": [15, 1.8, 0.6]}}})");
+    auto r = run_parsons("run " + q(source_path(kSample)) + " --profile " +
+                         q(dir.str("fast.json")) + " --report " + q(dir.str("r.json")));
+    const auto report = nlohmann::json::parse(read_bytes(dir.path("r.json")));
+    CHECK(report["axes"]["table"]["lost_steps"].get<long>() > 0);
+    CHECK(r.output.find("warning: table lost") != std::string::npos);
+}
