@@ -325,17 +325,19 @@ double step_value_at(const std::vector<Point>& steps, double t) {
 // The intervals in which a 0/1 step signal is 1, up to t_end.
 std::vector<std::pair<double, double>> on_intervals(const std::vector<Point>& steps, double t_end) {
     std::vector<std::pair<double, double>> out;
-    std::optional<double> since;
+    bool on = false;
+    double since = 0;
     for (const Point& s : steps) {
-        if (s.x != 0 && !since) {
+        if (s.x != 0 && !on) {
+            on = true;
             since = s.t;
-        } else if (s.x == 0 && since) {
-            out.emplace_back(*since, s.t);
-            since.reset();
+        } else if (s.x == 0 && on) {
+            out.emplace_back(since, s.t);
+            on = false;
         }
     }
-    if (since) {
-        out.emplace_back(*since, t_end);
+    if (on) {
+        out.emplace_back(since, t_end);
     }
     return out;
 }
