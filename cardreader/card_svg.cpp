@@ -30,32 +30,6 @@ double row_y(int row_index) {
     return kFirstRowY + row_index * kRowPitch;
 } // 0 = row 12
 
-std::string escape(std::string_view text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '&':
-            out += "&amp;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        case '\'':
-            out += "&apos;";
-            break;
-        default:
-            out += c;
-        }
-    }
-    return out;
-}
-
 void draw_stock(std::string& svg) {
     // Clipped upper-left corner, as on the real card.
     fmt::format_to(std::back_inserter(svg),
@@ -118,11 +92,11 @@ void draw_fields(std::string& svg, const CardLayout& layout) {
                 std::back_inserter(svg),
                 R"~(<text font-size="4.4" transform="translate({:.2f} 66) rotate(-90)" )~"
                 R"(text-anchor="start">{}</text>)",
-                centre + 1.5, escape(label));
+                centre + 1.5, xml_escape(label));
         } else {
             fmt::format_to(std::back_inserter(svg),
                            R"(<text font-size="5.2" x="{:.2f}" y="63">{}</text>)", centre,
-                           escape(label));
+                           xml_escape(label));
         }
         svg += '\n';
     }
@@ -168,7 +142,7 @@ void draw_interpretation(std::string& svg, const Card& card, KeypunchCode code) 
         const CodeEntry* e = entry_for_punches(card.column(col), code);
         if (e && e->ascii != ' ') {
             fmt::format_to(std::back_inserter(svg), R"(<text x="{:.2f}" y="11">{}</text>)",
-                           column_x(col), escape(e->printed));
+                           column_x(col), xml_escape(e->printed));
         }
     }
     svg += "</g>\n";
@@ -193,6 +167,32 @@ void draw_holes(std::string& svg, const Card& card, const std::optional<BadPunch
 
 } // namespace
 
+std::string xml_escape(std::string_view text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '&':
+            out += "&amp;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        case '\'':
+            out += "&apos;";
+            break;
+        default:
+            out += c;
+        }
+    }
+    return out;
+}
+
 std::string card_svg(const Card& card, const CardLayout& layout, const CardPictureNotes& notes,
                      KeypunchCode code) {
     std::string svg;
@@ -208,7 +208,8 @@ std::string card_svg(const Card& card, const CardLayout& layout, const CardPictu
         "\n"
         R"~(<g transform="translate({5} {5})">)~"
         "\n",
-        width * 0.254 * 1.4, height * 0.254 * 1.4, width, height, escape(notes.caption), kMargin);
+        width * 0.254 * 1.4, height * 0.254 * 1.4, width, height, xml_escape(notes.caption),
+        kMargin);
     draw_stock(svg);
     draw_printing(svg);
     draw_fields(svg, layout);
@@ -219,14 +220,14 @@ std::string card_svg(const Card& card, const CardLayout& layout, const CardPictu
                    R"(<text x="{}" y="{:.1f}" font-family="DejaVu Sans, Arial, sans-serif" )"
                    R"(font-size="9" fill="#333">{}</text>)"
                    "\n",
-                   kMargin, kMargin + kCardHeight + 14, escape(notes.caption));
+                   kMargin, kMargin + kCardHeight + 14, xml_escape(notes.caption));
     if (notes.bad_punch) {
         fmt::format_to(std::back_inserter(svg),
                        R"(<text x="{}" y="{:.1f}" font-family="DejaVu Sans, Arial, sans-serif" )"
                        R"(font-size="9" fill="#d01c1c">bad punch, column {}: {}</text>)"
                        "\n",
                        kMargin, kMargin + kCardHeight + 27, notes.bad_punch->column,
-                       escape(notes.bad_punch->what));
+                       xml_escape(notes.bad_punch->what));
     }
     svg += "</svg>\n";
     return svg;

@@ -22,6 +22,9 @@ struct CardPictureNotes {
     std::optional<BadPunch> bad_punch; // outlined in red, and named under the card
 };
 
+// Text made safe for SVG/XML character data and attribute values.
+std::string xml_escape(std::string_view text);
+
 std::string card_svg(const Card& card, const CardLayout& layout, const CardPictureNotes& notes,
                      KeypunchCode code = KeypunchCode::ibm029);
 

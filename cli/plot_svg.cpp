@@ -1,5 +1,7 @@
 #include "cli/plot_svg.hpp"
 
+#include "cardreader/card_svg.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -245,30 +247,6 @@ Ticks nice_ticks(double lo, double hi, int target) {
     return ticks;
 }
 
-std::string escape(std::string_view s) {
-    std::string out;
-    out.reserve(s.size());
-    for (char c : s) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        default:
-            out += c;
-        }
-    }
-    return out;
-}
-
 // Word-wraps text into at most max_lines lines of about width characters ("..." if cut).
 std::vector<std::string> wrap(std::string_view text, std::size_t width, std::size_t max_lines) {
     std::vector<std::string> lines;
@@ -435,12 +413,13 @@ void ChartWriter::titles(const std::string& title, const std::string& outcome,
         "\n"
         R"(<text x="{:.1f}" y="52" font-size="12.5" fill="#444">{}</text>)"
         "\n",
-        kLeft, kTextColour, escape(title), kLeft, escape(outcome));
+        kLeft, kTextColour, cardreader::xml_escape(title), kLeft, cardreader::xml_escape(outcome));
     for (std::size_t k = 0; k < message.size(); ++k) {
         fmt::format_to(out(),
                        R"(<text x="{:.1f}" y="{:.1f}" font-size="11.5" fill="{}">{}</text>)"
                        "\n",
-                       kLeft, 71 + 16 * static_cast<double>(k), kStopColour, escape(message[k]));
+                       kLeft, 71 + 16 * static_cast<double>(k), kStopColour,
+                       cardreader::xml_escape(message[k]));
     }
 }
 
@@ -628,8 +607,8 @@ void ChartWriter::panel(std::size_t i, const Panel& p, const std::vector<CardLin
         R"(<rect x="{1:.1f}" y="{5:.1f}" width="{6:.1f}" height="{7:.1f}" )"
         R"(fill="#fdfdfd" stroke="#b8b8b8"/>)"
         "\n",
-        p.name, kLeft, panel_top - 9, kTextColour, escape(p.motor), panel_top, kRight - kLeft,
-        kPanelHeight);
+        p.name, kLeft, panel_top - 9, kTextColour, cardreader::xml_escape(p.motor), panel_top,
+        kRight - kLeft, kPanelHeight);
     for (double v : y_ticks.values) {
         const double y = ty(v);
         fmt::format_to(out(),

@@ -60,6 +60,31 @@ relaylogic::DropImpulseFault parse_fault(const std::string& spec) {
     return {*a, std::stol(n)};
 }
 
+// A trace written to a file while the machine runs; the file takes its name only when
+// complete (OutputFile), so a failed run leaves none.
+template <typename Writer>
+class TraceFile {
+public:
+    void open(const std::string& path, relaylogic::ObserverFanOut& observers) {
+        if (path.empty()) {
+            return;
+        }
+        file_ = std::make_unique<OutputFile>(path);
+        writer_ = std::make_unique<Writer>(file_->stream());
+        observers.add(writer_.get());
+    }
+    void commit() {
+        if (file_) {
+            writer_.reset(); // flushes what is buffered
+            file_->commit();
+        }
+    }
+
+private:
+    std::unique_ptr<OutputFile> file_;
+    std::unique_ptr<Writer> writer_;
+};
+
 // A progress line on stderr, only when stderr is a terminal.
 class ProgressBar : public relaylogic::MachineObserver {
 public:
@@ -96,27 +121,12 @@ ExitCode run_run(const RunFlags& f) {
     }
 
     relaylogic::ObserverFanOut observers;
-    std::unique_ptr<OutputFile> trace_file;
-    std::unique_ptr<VcdWriter> vcd;
-    if (!f.trace.empty()) {
-        trace_file = std::make_unique<OutputFile>(f.trace);
-        vcd = std::make_unique<VcdWriter>(trace_file->stream());
-        observers.add(vcd.get());
-    }
-    std::unique_ptr<OutputFile> events_file;
-    std::unique_ptr<EventsJsonlWriter> events;
-    if (!f.events.empty()) {
-        events_file = std::make_unique<OutputFile>(f.events);
-        events = std::make_unique<EventsJsonlWriter>(events_file->stream());
-        observers.add(events.get());
-    }
-    std::unique_ptr<OutputFile> path_file;
-    std::unique_ptr<PathCsvWriter> path;
-    if (!f.path.empty()) {
-        path_file = std::make_unique<OutputFile>(f.path);
-        path = std::make_unique<PathCsvWriter>(path_file->stream());
-        observers.add(path.get());
-    }
+    TraceFile<VcdWriter> vcd;
+    TraceFile<EventsJsonlWriter> events;
+    TraceFile<PathCsvWriter> path;
+    vcd.open(f.trace, observers);
+    events.open(f.events, observers);
+    path.open(f.path, observers);
     std::unique_ptr<PlotSvgRecorder> plot;
     if (!f.plot.empty()) {
         plot = std::make_unique<PlotSvgRecorder>(f.input);
@@ -132,15 +142,9 @@ ExitCode run_run(const RunFlags& f) {
 
     const relaylogic::RunResult result = cabinet.run(deck.cards());
 
-    if (vcd) {
-        trace_file->commit();
-    }
-    if (events) {
-        events_file->commit();
-    }
-    if (path) {
-        path_file->commit();
-    }
+    vcd.commit();
+    events.commit();
+    path.commit();
     if (plot) {
         write_file(f.plot, plot->svg());
     }

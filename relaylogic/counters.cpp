@@ -1,6 +1,17 @@
 #include "relaylogic/counters.hpp"
 
 namespace parsons::relaylogic {
+namespace {
+
+long total_lost(const std::array<SteppingSwitch, 4>& switches) {
+    long n = 0;
+    for (const auto& s : switches) {
+        n += s.lost();
+    }
+    return n;
+}
+
+} // namespace
 
 int digits_value(const Digits& d) {
     return ((d[0] * 10 + d[1]) * 10 + d[2]) * 10 + d[3];
@@ -48,11 +59,7 @@ Digits AbsoluteCounter::digits() const {
 }
 
 long AbsoluteCounter::lost() const {
-    long n = 0;
-    for (const auto& s : switches_) {
-        n += s.lost();
-    }
-    return n;
+    return total_lost(switches_);
 }
 
 IncrementCounter::IncrementCounter(Tracer& tracer, const std::string& scope) : tracer_(tracer) {
@@ -92,11 +99,7 @@ Digits IncrementCounter::digits() const {
 }
 
 long IncrementCounter::lost() const {
-    long n = 0;
-    for (const auto& s : switches_) {
-        n += s.lost();
-    }
-    return n;
+    return total_lost(switches_);
 }
 
 } // namespace parsons::relaylogic

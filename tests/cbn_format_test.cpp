@@ -1,6 +1,8 @@
 #include "cardreader/cbn_format.hpp"
 #include "cardreader/deck_error.hpp"
 
+#include "tests/test_support.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <random>
@@ -56,18 +58,7 @@ std::string write_deck(const std::vector<Card>& cards) {
 }
 
 std::string read_error(const std::string& bytes) {
-    std::istringstream in(bytes);
-    DeckOptions options;
-    options.format = DeckFormat::cbn;
-    options.file_name = "deck.cbn";
-    auto source = open_card_source(in, options);
-    try {
-        while (source->next()) {
-        }
-    } catch (const DeckError& e) {
-        return e.what();
-    }
-    return "no error";
+    return parsons::test::read_error(bytes, DeckFormat::cbn, "deck.cbn");
 }
 
 } // namespace

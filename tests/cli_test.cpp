@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <sstream>
 
+using parsons::test::q;
 using parsons::test::read_bytes;
 using parsons::test::run_parsons;
 using parsons::test::source_path;
@@ -26,10 +27,6 @@ std::string without_comments(const std::string& listing) {
         }
     }
     return out;
-}
-
-std::string q(const std::string& s) {
-    return "'" + s + "'";
 }
 
 } // namespace

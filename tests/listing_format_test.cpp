@@ -29,19 +29,8 @@ std::string card_rows(int number, const std::string& axis = "", const std::strin
     return rows;
 }
 
-std::string read_error(const std::string& text) {
-    std::istringstream in(text);
-    DeckOptions options;
-    options.format = DeckFormat::listing;
-    options.file_name = "deck.csv";
-    auto source = open_card_source(in, options);
-    try {
-        while (source->next()) {
-        }
-    } catch (const DeckError& e) {
-        return e.what();
-    }
-    return "no error";
+std::string read_error(const std::string& bytes) {
+    return parsons::test::read_error(bytes, DeckFormat::listing, "deck.csv");
 }
 
 // Listing -> cards (.cbn bytes) -> listing text.

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+using parsons::test::q;
 using parsons::test::read_bytes;
 using parsons::test::run_parsons;
 using parsons::test::source_path;
@@ -15,10 +16,6 @@ using parsons::test::write_bytes;
 namespace {
 
 const std::string kSample = "decks/samples/patent-example.csv";
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
-
 std::string sample_with(const std::string& from, const std::string& to) {
     std::string text = read_bytes(source_path(kSample));
     const auto at = text.find(from);

@@ -1,5 +1,7 @@
 #include "tests/test_support.hpp"
 
+#include "cardreader/deck_error.hpp"
+
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -7,6 +9,26 @@
 #include <sys/wait.h>
 
 namespace parsons::test {
+
+std::string q(const std::string& text) {
+    return "'" + text + "'";
+}
+
+std::string read_error(const std::string& bytes, cardreader::DeckFormat format,
+                       const std::string& file_name) {
+    std::istringstream in(bytes);
+    cardreader::DeckOptions options;
+    options.format = format;
+    options.file_name = file_name;
+    auto source = cardreader::open_card_source(in, options);
+    try {
+        while (source->next()) {
+        }
+    } catch (const cardreader::DeckError& e) {
+        return e.what();
+    }
+    return "no error";
+}
 
 ProcessResult run_parsons(const std::string& args) {
     const std::string command = std::string("'") + PARSONS_EXE + "' " + args + " 2>&1";

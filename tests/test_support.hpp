@@ -2,6 +2,7 @@
 // and random valid card orders.
 #pragma once
 
+#include "cardreader/deck_io.hpp"
 #include "cardreader/layout.hpp"
 #include "cardreader/orders.hpp"
 
@@ -15,6 +16,14 @@ struct ProcessResult {
     int exit_code = -1;
     std::string output; // stdout and stderr together
 };
+
+// 'text' quoted for the shell.
+std::string q(const std::string& text);
+
+// Reads a whole deck of the given format from bytes; returns the DeckError's message, or
+// "no error".
+std::string read_error(const std::string& bytes, cardreader::DeckFormat format,
+                       const std::string& file_name);
 
 // Runs `parsons ARGS` through the shell; ARGS is pasted verbatim.
 ProcessResult run_parsons(const std::string& args);

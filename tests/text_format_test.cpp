@@ -2,6 +2,8 @@
 #include "cardreader/deck_io.hpp"
 #include "cardreader/text_format.hpp"
 
+#include "tests/test_support.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <sstream>
@@ -26,12 +28,7 @@ std::vector<Card> read_text(const std::string& text, KeypunchCode code = Keypunc
 }
 
 std::string read_error(const std::string& text) {
-    try {
-        read_text(text);
-    } catch (const DeckError& e) {
-        return e.what();
-    }
-    return "no error";
+    return parsons::test::read_error(text, DeckFormat::text, "deck.txt");
 }
 
 ColumnWord ch(char c) {
