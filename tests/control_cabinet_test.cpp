@@ -341,3 +341,30 @@ TEST_CASE("Delay 258: held longer than the time between impulses, the switch mis
     CHECK(r.stop->reason == StopReason::soft_limit);
     CHECK(r.axes.at(0).real_in > 10.0);
 }
+
+TEST_CASE("Screw error: the part is where the screw plus the residual error of cam 160 puts it; "
+          "the counters cannot see it, the report can",
+          "[cabinet][axes]") {
+    auto profile = parsons::axes::default_profile();
+    profile.axes.at(0).screw_error_in = {{0.0, 0.0}, {5.0, 0.004}}; // 0.8 thousandths an inch
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 2500, 3, {}, {}, 1);
+    RunResult r = run_orders({c}, profile);
+    REQUIRE(r.completed);
+    CHECK(r.axes.at(0).counter_in == Approx(2.500));
+    // The stop impulse comes at screw 2.4995, the coast adds 0.00025: screw 2.49975, and the
+    // error there is 0.004 * 2.49975 / 5.
+    const double screw = 2.49975;
+    CHECK(r.axes.at(0).real_in == Approx(screw + 0.004 * screw / 5).margin(1e-7));
+    CHECK(r.axes.at(0).error_in == Approx(screw + 0.004 * screw / 5 - 2.5).margin(1e-7));
+}
+
+TEST_CASE("Sine plate: the report gives the fixture angles of swivel and tilt", "[cabinet][axes]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::tilt) = order(0, 1000, 3, {}, {}, 0b10000);
+    RunResult r = run_orders({c});
+    REQUIRE(r.completed);
+    // tilt: sin(angle) = 0.99975 / 10 (the stop plus a quarter-thousandth short of it)
+    CHECK(*r.axes.at(4).fixture_angle_deg == Approx(5.73773).margin(1e-4));
+    CHECK_FALSE(r.axes.at(0).fixture_angle_deg);
+}
