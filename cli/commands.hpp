@@ -3,7 +3,11 @@
 // cardreader::DeckError for bad input (exit 2); the function returns the exit code otherwise.
 #pragma once
 
+#include "cli/deck_files.hpp"
 #include "cli/exit_codes.hpp"
+
+#include "axes/machine_profile.hpp"
+#include "decks/job_file.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -18,5 +22,33 @@ void add_convert_command(CLI::App& app, Command& selected);
 void add_show_command(CLI::App& app, Command& selected);
 void add_run_command(CLI::App& app, Command& selected);
 void add_profile_command(CLI::App& app, Command& selected);
+void add_gen_command(CLI::App& app, Command& selected);
+void add_demo_command(CLI::App& app, Command& selected);
+
+// What `parsons run` is asked to do (the flags of DESIGN.md section 6).
+struct RunRequest {
+    std::string input;
+    std::string report;
+    std::string trace;
+    std::string events;
+    std::string path;
+    std::string plot;
+    std::string cut;
+    std::string job;
+    std::string profile;
+    std::vector<std::string> faults;
+    bool quiet = false;
+    DeckFlags deck;
+};
+ExitCode run_deck(const RunRequest& request);
+
+// A template deck generated and written: DECK, DECK.job.json and (if named) the centres CSV.
+struct GeneratedJob {
+    decks::JobDescription description;
+    decks::TemplateDeck deck;
+};
+GeneratedJob generate_template(const decks::JobDescription& description,
+                               const axes::MachineProfile& profile, const std::string& output,
+                               const std::string& to, const std::string& centres);
 
 } // namespace parsons::cli

@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
     add_convert_command(app, selected);
     add_run_command(app, selected);
     add_profile_command(app, selected);
+    add_gen_command(app, selected);
+    add_demo_command(app, selected);
 
     try {
         app.parse(argc, argv);

@@ -11,31 +11,23 @@
 #include "cli/trace_outputs.hpp"
 
 #include "cardreader/deck_error.hpp"
+#include "decks/cut_proof.hpp"
+#include "decks/cut_svg.hpp"
+#include "decks/job_file.hpp"
 #include "relaylogic/control_cabinet.hpp"
 
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <unistd.h>
 
 namespace parsons::cli {
 namespace {
 
 using cardreader::DeckError;
-
-struct RunFlags {
-    std::string input;
-    std::string report;
-    std::string trace;
-    std::string events;
-    std::string path;
-    std::string plot;
-    std::string profile;
-    std::vector<std::string> faults;
-    bool quiet = false;
-    DeckFlags deck;
-};
 
 relaylogic::DropImpulseFault parse_fault(const std::string& spec) {
     const std::string prefix = "drop-impulse:";
@@ -85,6 +77,34 @@ private:
     std::unique_ptr<Writer> writer_;
 };
 
+// Records where the cutter centre really went: the table and cross-slide positions at every
+// impulse (the template job's two moving axes).
+class CutterPath : public relaylogic::MachineObserver {
+public:
+    void on_motion(double /*t*/, const std::array<double, 5>& real) override {
+        const Eigen::Vector2d p(real[0], real[1]);
+        if (path.empty() || p != path.back()) {
+            path.push_back(p);
+        }
+    }
+    std::vector<Eigen::Vector2d> path;
+};
+
+decks::JobDescription read_job(const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        throw DeckError::in_file(file, "cannot open the job description (written by 'parsons gen "
+                                       "airfoil' beside the deck; or give --job FILE)");
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    try {
+        return decks::job_from_json(text.str());
+    } catch (const decks::JobError& e) {
+        throw DeckError::in_file(file, e.what());
+    }
+}
+
 // A progress line on stderr, only when stderr is a terminal.
 class ProgressBar : public relaylogic::MachineObserver {
 public:
@@ -108,7 +128,9 @@ private:
     bool shown_ = false;
 };
 
-ExitCode run_run(const RunFlags& f) {
+} // namespace
+
+ExitCode run_deck(const RunRequest& f) {
     const axes::MachineProfile profile = load_profile(f.profile);
     std::vector<relaylogic::DropImpulseFault> faults;
     for (const auto& spec : f.faults) {
@@ -132,6 +154,12 @@ ExitCode run_run(const RunFlags& f) {
         plot = std::make_unique<PlotSvgRecorder>(f.input);
         observers.add(plot.get());
     }
+    CutterPath cutter;
+    decks::JobDescription job;
+    if (!f.cut.empty()) {
+        job = read_job(f.job.empty() ? f.input + ".job.json" : f.job);
+        observers.add(&cutter);
+    }
     ProgressBar progress(deck);
     if (!f.quiet && isatty(fileno(stderr)) != 0) {
         observers.add(&progress);
@@ -148,11 +176,34 @@ ExitCode run_run(const RunFlags& f) {
     if (plot) {
         write_file(f.plot, plot->svg());
     }
+    nlohmann::json report = report_json(result, profile, f.input);
+    std::string cut_summary;
+    if (!f.cut.empty()) {
+        const auto airfoil = decks::open_airfoil(job);
+        const auto samples = decks::design_samples(*airfoil, job.options, job.work_zero_in);
+        const decks::DesignContour design{samples.points, samples.toward_cutter};
+        const double radius = job.options.cutter_radius_in;
+        const auto path = decks::simplify_path(cutter.path, 1e-7);
+        const decks::CutProof proof = decks::prove_cut(path, radius, design, 1.5 * radius);
+        write_file(f.cut,
+                   decks::cut_svg(proof, path, design, radius,
+                                  fmt::format("{}: the cut, from the emulated path", job.airfoil)));
+        report["cut"] = {{"max_gouge_in", proof.max_gouge_in},
+                         {"max_leftover_in", proof.max_leftover_in},
+                         {"max_scallop_in", proof.max_scallop_in},
+                         {"machined_points", proof.machined_points},
+                         {"design_points", design.points.size()}};
+        cut_summary = fmt::format("  cut            deepest gouge {:.5f} in, most left standing "
+                                  "{:.5f} in, largest scallop {:.5f} in ({} of {} design points "
+                                  "machined)\n",
+                                  proof.max_gouge_in, proof.max_leftover_in, proof.max_scallop_in,
+                                  proof.machined_points, design.points.size());
+    }
     if (!f.report.empty()) {
-        write_file(f.report, report_json(result, profile, f.input).dump(2) + "\n");
+        write_file(f.report, report.dump(2) + "\n");
     }
     if (!f.quiet) {
-        fmt::print("{}", summary_text(result, f.input, profile.name));
+        fmt::print("{}{}", summary_text(result, f.input, profile.name), cut_summary);
     }
     if (result.stop) {
         fmt::print(stderr, "parsons: machine stop: {}: {}\n",
@@ -162,10 +213,8 @@ ExitCode run_run(const RunFlags& f) {
     return ExitCode::ok;
 }
 
-} // namespace
-
 void add_run_command(CLI::App& app, Command& selected) {
-    auto flags = std::make_shared<RunFlags>();
+    auto flags = std::make_shared<RunRequest>();
     CLI::App* cmd = app.add_subcommand(
         "run", "Run a deck through the emulated control cabinet and five lead-screw axes");
     cmd->add_option("DECK", flags->input, "The deck to run")->required();
@@ -176,6 +225,10 @@ void add_run_command(CLI::App& app, Command& selected) {
     cmd->add_option("--events", flags->events, "Write one JSON object per signal change");
     cmd->add_option("--path", flags->path, "Write machine time and the five real positions, CSV");
     cmd->add_option("--plot", flags->plot, "Draw positions and speed positions against time, SVG");
+    cmd->add_option("--cut", flags->cut,
+                    "Sweep the cutter along the path the axes really took and draw the cut "
+                    "against the design, SVG (generated decks)");
+    cmd->add_option("--job", flags->job, "The job description for --cut (default DECK.job.json)");
     cmd->add_option("--fault", flags->faults,
                     "Inject a fault: drop-impulse:AXIS:N (one contact set misses impulse N)");
     cmd->add_option("--profile", flags->profile, "Machine profile JSON (see 'parsons profile')");
@@ -187,7 +240,7 @@ void add_run_command(CLI::App& app, Command& selected) {
                 "  parsons run decks/samples/patent-example.csv --report out/report.json\n"
                 "  parsons run deck.cbn --trace out/run.vcd --plot out/run.svg\n"
                 "  parsons run deck.cbn --fault drop-impulse:table:120");
-    cmd->callback([&selected, flags] { selected = [flags] { return run_run(*flags); }; });
+    cmd->callback([&selected, flags] { selected = [flags] { return run_deck(*flags); }; });
 }
 
 } // namespace parsons::cli

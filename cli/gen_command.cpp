@@ -1,0 +1,162 @@
+// parsons gen airfoil: the 1952 arithmetic. Compute closely spaced points on an airfoil,
+// offset each by the cutter radius to the cutter-centre locus, and punch one card per station.
+#include "cli/commands.hpp"
+#include "cli/deck_files.hpp"
+#include "cli/output_file.hpp"
+
+#include "cardreader/deck_error.hpp"
+#include "cardreader/layout.hpp"
+#include "decks/job_file.hpp"
+#include "decks/move_planner.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+
+namespace parsons::cli {
+namespace {
+
+using cardreader::DeckError;
+
+struct GenFlags {
+    std::string naca;
+    std::string dat;
+    bool closed_te = false;
+    double chord_in = 6.0;
+    double radius_in = 0.25;
+    int stations = 60;
+    std::string spacing = "cosine";
+    double scallop_in = 0;
+    std::string surface = "upper";
+    bool female = false;
+    bool no_corner_slowdown = false;
+    std::string output;
+    std::string to;
+    std::string centres;
+    std::string profile;
+};
+
+decks::TemplateOptions options_from(const GenFlags& f) {
+    decks::TemplateOptions o;
+    o.chord_in = f.chord_in;
+    o.cutter_radius_in = f.radius_in;
+    o.stations = f.stations;
+    o.spacing = f.spacing == "uniform" ? decks::Spacing::uniform : decks::Spacing::cosine;
+    o.scallop_in = f.scallop_in;
+    o.surface = f.surface == "lower"  ? decks::Surface::lower
+                : f.surface == "both" ? decks::Surface::both
+                                      : decks::Surface::upper;
+    o.female = f.female;
+    o.corner_slowdown = !f.no_corner_slowdown;
+    return o;
+}
+
+} // namespace
+
+GeneratedJob generate_template(const decks::JobDescription& description,
+                               const axes::MachineProfile& profile, const std::string& output,
+                               const std::string& to, const std::string& centres) {
+    GeneratedJob job{description, {}};
+    std::unique_ptr<decks::Airfoil> airfoil;
+    try {
+        airfoil = decks::open_airfoil(description);
+        job.deck = decks::make_template_deck(*airfoil, description.options, profile);
+    } catch (const decks::JobError& e) {
+        throw DeckError(fmt::format("gen airfoil: {}", e.what()));
+    } catch (const decks::PlanError& e) {
+        throw DeckError(fmt::format("gen airfoil: {}", e.what()));
+    }
+    job.description.work_zero_in = job.deck.work_zero_in;
+
+    DeckFlags flags;
+    const auto options = deck_options(output, to, flags);
+    OutputFile deck_file(output);
+    auto sink = cardreader::open_card_sink(deck_file.stream(), options);
+    for (const auto& card : job.deck.cards) {
+        auto punched = cardreader::encode(card, cardreader::fig8_layout());
+        if (!punched) {
+            throw DeckError(fmt::format("gen airfoil: card {}: {}", card.number, *punched.error));
+        }
+        sink->write(punched.card);
+    }
+    deck_file.commit();
+    write_file(output + ".job.json", decks::job_to_json(job.description));
+    if (!centres.empty()) {
+        std::string csv = "x,y,cx,cy\n";
+        for (const auto& s : job.deck.stations) {
+            csv += fmt::format("{:.6f},{:.6f},{:.6f},{:.6f}\n", s.work.x(), s.work.y(),
+                               s.centre.x(), s.centre.y());
+        }
+        write_file(centres, csv);
+    }
+    return job;
+}
+
+namespace {
+
+ExitCode run_gen(const GenFlags& f) {
+    if (f.naca.empty() == f.dat.empty()) {
+        throw DeckError("gen airfoil: give exactly one of --naca DIGITS or --dat FILE");
+    }
+    decks::JobDescription description;
+    description.airfoil = f.naca.empty() ? "dat " + f.dat : "naca " + f.naca;
+    description.closed_trailing_edge = f.closed_te;
+    description.options = options_from(f);
+    const auto profile = load_profile(f.profile);
+    const GeneratedJob job = generate_template(description, profile, f.output, f.to, f.centres);
+    const auto& d = job.deck;
+    fmt::print("{} template, chord {:.3f} in, cutter radius {:.3f} in, {} surface{}\n",
+               description.airfoil, f.chord_in, f.radius_in, f.surface, f.female ? ", female" : "");
+    fmt::print("  stations         {}\n", d.stations.size());
+    fmt::print("  cards            {} ({} to approach, {} slowed for a corner)\n", d.cards.size(),
+               d.cards.size() + 1 - d.stations.size(), d.corner_cards);
+    fmt::print("  largest scallop  {:.5f} in (planned, before quantising to 0.001 in)\n",
+               d.planned_leftover_in);
+    fmt::print("  largest dip      {:.5f} in (staircase traverse into the design)\n",
+               d.planned_gouge_in);
+    fmt::print("  work zero        table {:.3f} in, cross slide {:.3f} in (the leading edge)\n",
+               d.work_zero_in.x(), d.work_zero_in.y());
+    fmt::print("  wrote            {} and {}.job.json{}\n", f.output, f.output,
+               f.centres.empty() ? "" : " and " + f.centres);
+    return ExitCode::ok;
+}
+
+} // namespace
+
+void add_gen_command(CLI::App& app, Command& selected) {
+    auto flags = std::make_shared<GenFlags>();
+    CLI::App* gen = app.add_subcommand("gen", "Generate a deck by the 1952 arithmetic");
+    gen->require_subcommand(1);
+    CLI::App* cmd = gen->add_subcommand(
+        "airfoil", "A template deck for an airfoil: stations, cutter offset, one card a station");
+    cmd->add_option("--naca", flags->naca, "NACA 4-digit section, e.g. 2412");
+    cmd->add_option("--dat", flags->dat, "Airfoil coordinate file (Selig or Lednicer .dat)");
+    cmd->add_flag("--closed-te", flags->closed_te, "NACA: closed trailing edge (a4 = 0.1036)");
+    cmd->add_option("--chord", flags->chord_in, "Chord, inches")->capture_default_str();
+    cmd->add_option("--cutter-radius", flags->radius_in, "Cutter radius, inches")
+        ->capture_default_str();
+    cmd->add_option("--stations", flags->stations, "Stations per surface")->capture_default_str();
+    cmd->add_option("--spacing", flags->spacing, "Station spacing along the chord")
+        ->check(CLI::IsMember({"cosine", "uniform"}))
+        ->capture_default_str();
+    cmd->add_option("--scallop", flags->scallop_in,
+                    "Instead of --stations: keep the scallop under this many inches");
+    cmd->add_option("--surface", flags->surface, "Which surface to cut")
+        ->check(CLI::IsMember({"upper", "lower", "both"}))
+        ->capture_default_str();
+    cmd->add_flag("--female", flags->female, "The patent's Fig. 4 female template (other side)");
+    cmd->add_flag("--no-corner-slowdown", flags->no_corner_slowdown,
+                  "Do not slow down at sharp turns of the path (to see why one should)");
+    cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")->required();
+    cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing");
+    cmd->add_option("--centres", flags->centres,
+                    "Write x,y,cx,cy per station (work point and cutter centre, inches)");
+    cmd->add_option("--profile", flags->profile, "Machine profile JSON");
+    cmd->footer("Examples:\n"
+                "  parsons gen airfoil --naca 2412 --chord 6 --cutter-radius 0.25 -o naca2412.cbn\n"
+                "  parsons gen airfoil --dat clarky.dat --scallop 0.002 --surface both -o y.cbn\n"
+                "  parsons run naca2412.cbn --cut cut.svg");
+    cmd->callback([&selected, flags] { selected = [flags] { return run_gen(*flags); }; });
+}
+
+} // namespace parsons::cli

@@ -1,0 +1,72 @@
+#include "decks/job_file.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace parsons::decks {
+
+using nlohmann::json;
+
+namespace {
+
+std::string surface_name(Surface s) {
+    return s == Surface::upper ? "upper" : s == Surface::lower ? "lower" : "both";
+}
+
+} // namespace
+
+std::string job_to_json(const JobDescription& job) {
+    const TemplateOptions& o = job.options;
+    json j{{"job", "template"},
+           {"airfoil", job.airfoil},
+           {"closed_trailing_edge", job.closed_trailing_edge},
+           {"chord_in", o.chord_in},
+           {"cutter_radius_in", o.cutter_radius_in},
+           {"surface", surface_name(o.surface)},
+           {"female", o.female},
+           {"work_zero_in", {job.work_zero_in.x(), job.work_zero_in.y()}}};
+    return j.dump(2) + "\n";
+}
+
+JobDescription job_from_json(const std::string& text) {
+    JobDescription job;
+    try {
+        const json j = json::parse(text);
+        if (j.at("job") != "template") {
+            throw JobError("job: only template jobs can be proved");
+        }
+        job.airfoil = j.at("airfoil").get<std::string>();
+        job.closed_trailing_edge = j.at("closed_trailing_edge").get<bool>();
+        job.options.chord_in = j.at("chord_in").get<double>();
+        job.options.cutter_radius_in = j.at("cutter_radius_in").get<double>();
+        const std::string surface = j.at("surface").get<std::string>();
+        if (surface != "upper" && surface != "lower" && surface != "both") {
+            throw JobError(fmt::format("surface: '{}' is not upper, lower or both", surface));
+        }
+        job.options.surface = surface == "upper"   ? Surface::upper
+                              : surface == "lower" ? Surface::lower
+                                                   : Surface::both;
+        job.options.female = j.at("female").get<bool>();
+        const auto& zero = j.at("work_zero_in");
+        job.work_zero_in = Eigen::Vector2d(zero.at(0).get<double>(), zero.at(1).get<double>());
+    } catch (const json::exception& e) {
+        throw JobError(fmt::format("not a parsons job description: {}", e.what()));
+    }
+    return job;
+}
+
+std::unique_ptr<Airfoil> open_airfoil(const JobDescription& job) {
+    if (job.airfoil.rfind("naca ", 0) == 0) {
+        try {
+            return naca4(job.airfoil.substr(5), job.closed_trailing_edge);
+        } catch (const std::invalid_argument& e) {
+            throw JobError(e.what());
+        }
+    }
+    if (job.airfoil.rfind("dat ", 0) == 0) {
+        return read_dat(job.airfoil.substr(4));
+    }
+    throw JobError(fmt::format("airfoil: '{}' is neither 'naca NNNN' nor 'dat PATH'", job.airfoil));
+}
+
+} // namespace parsons::decks

@@ -1,0 +1,27 @@
+// What a generated deck was computed to cut, written beside it (DECK.job.json) so that
+// `parsons run DECK --cut SVG` can compare the cut with the design: the airfoil source, the
+// job options and where the work's origin lies in the counters' range.
+#pragma once
+
+#include "decks/airfoil.hpp"
+#include "decks/template_job.hpp"
+
+#include <memory>
+#include <string>
+
+namespace parsons::decks {
+
+struct JobDescription {
+    std::string airfoil; // "naca 2412" or "dat PATH"
+    bool closed_trailing_edge = false;
+    TemplateOptions options;
+    Eigen::Vector2d work_zero_in = Eigen::Vector2d::Zero();
+};
+
+std::string job_to_json(const JobDescription& job);
+// Throws JobError("KEY: what is wrong").
+JobDescription job_from_json(const std::string& text);
+// The airfoil a job names. Throws JobError, or cardreader::DeckError for a bad .dat file.
+std::unique_ptr<Airfoil> open_airfoil(const JobDescription& job);
+
+} // namespace parsons::decks

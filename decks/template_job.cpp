@@ -1,0 +1,340 @@
+#include "decks/template_job.hpp"
+
+#include "decks/move_planner.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace parsons::decks {
+namespace {
+
+using Eigen::Vector2d;
+constexpr double kPi = 3.14159265358979323846;
+
+// The stations run along a track: one surface LE -> TE, or both surfaces as one loop, the
+// upper from TE to LE and on round the leading edge along the lower back to the TE.
+struct Track {
+    Surface surface;
+    double end() const { return surface == Surface::both ? 2.0 : 1.0; }
+    std::pair<Side, double> at(double w) const {
+        switch (surface) {
+        case Surface::upper:
+            return {Side::upper, w};
+        case Surface::lower:
+            return {Side::lower, w};
+        case Surface::both:
+            break;
+        }
+        return w < 1.0 ? std::pair{Side::upper, 1.0 - w} : std::pair{Side::lower, w - 1.0};
+    }
+};
+
+Vector2d outward(Side side, const Vector2d& t) {
+    return side == Side::upper ? Vector2d(-t.y(), t.x()) : Vector2d(t.y(), -t.x());
+}
+
+Station station_at(const Airfoil& airfoil, const TemplateOptions& o, const Track& track, double w) {
+    const auto [side, u] = track.at(w);
+    const SurfaceSample s = airfoil.sample(side, u);
+    Station st;
+    st.side = side;
+    st.u = u;
+    st.work = s.point * o.chord_in;
+    const Vector2d n = outward(side, s.tangent);
+    st.toward_cutter = o.female ? Vector2d(-n) : n;
+    st.centre = st.work + o.cutter_radius_in * st.toward_cutter;
+    return st;
+}
+
+double segment_distance(const Vector2d& p, const Vector2d& a, const Vector2d& b) {
+    const Vector2d ab = b - a;
+    const double len2 = ab.squaredNorm();
+    const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+    return (a + t * ab - p).norm();
+}
+
+// The staircase corner on the cutter's side of the line between two centres.
+Vector2d corner_between(const Station& a, const Station& b) {
+    const Vector2d m = a.toward_cutter + b.toward_cutter;
+    const double dx = b.centre.x() - a.centre.x();
+    const double dy = b.centre.y() - a.centre.y();
+    const bool cross_first = -dx * m.x() + dy * m.y() > 0;
+    return cross_first ? Vector2d(a.centre.x(), b.centre.y())
+                       : Vector2d(b.centre.x(), a.centre.y());
+}
+
+struct Deviation {
+    double leftover = 0;
+    double gouge = 0;
+};
+
+// How far the surface between two stations ends up from the staircase cut between them.
+Deviation span_deviation(const Airfoil& airfoil, const TemplateOptions& o, const Track& track,
+                         double wa, double wb, const Station& a, const Station& b) {
+    const Vector2d corner = corner_between(a, b);
+    Deviation d;
+    constexpr int kSamples = 16;
+    for (int k = 0; k <= kSamples; ++k) {
+        const double w = wa + (wb - wa) * k / kSamples;
+        const Vector2d p = station_at(airfoil, o, track, w).work;
+        const double dist =
+            std::min(segment_distance(p, a.centre, corner), segment_distance(p, corner, b.centre));
+        const double dev = dist - o.cutter_radius_in;
+        d.leftover = std::max(d.leftover, dev);
+        d.gouge = std::max(d.gouge, -dev);
+    }
+    return d;
+}
+
+std::vector<double> stations_by_count(const TemplateOptions& o, const Track& track) {
+    if (o.stations < 2) {
+        throw JobError(fmt::format("--stations {}: need at least 2", o.stations));
+    }
+    std::vector<double> per_surface;
+    for (int k = 0; k < o.stations; ++k) {
+        const double f = static_cast<double>(k) / (o.stations - 1);
+        per_surface.push_back(o.spacing == Spacing::uniform ? f : (1 - std::cos(kPi * f)) / 2);
+    }
+    if (track.surface != Surface::both) {
+        return per_surface;
+    }
+    // Both: the upper surface from TE to LE (w = 1 - u), then the lower without the LE again.
+    std::vector<double> ws;
+    for (auto it = per_surface.rbegin(); it != per_surface.rend(); ++it) {
+        ws.push_back(1.0 - *it);
+    }
+    for (std::size_t k = 1; k < per_surface.size(); ++k) {
+        ws.push_back(1.0 + per_surface[k]);
+    }
+    return ws;
+}
+
+// Stations as far apart as the scallop target allows, span by span.
+std::vector<double> stations_by_scallop(const Airfoil& airfoil, const TemplateOptions& o,
+                                        const Track& track) {
+    constexpr double kMaxStep = 0.05;
+    constexpr double kMinStep = 1e-4;
+    std::vector<double> ws{0.0};
+    double w = 0;
+    Station a = station_at(airfoil, o, track, w);
+    auto fits = [&](double step) {
+        const double wb = std::min(track.end(), w + step);
+        const Station b = station_at(airfoil, o, track, wb);
+        const Deviation d = span_deviation(airfoil, o, track, w, wb, a, b);
+        return std::max(d.leftover, d.gouge) <= o.scallop_in;
+    };
+    while (w < track.end()) {
+        double step = kMaxStep;
+        if (!fits(step)) {
+            double lo = kMinStep;
+            double hi = kMaxStep;
+            for (int i = 0; i < 30; ++i) {
+                const double mid = (lo + hi) / 2;
+                (fits(mid) ? lo : hi) = mid;
+            }
+            step = lo;
+        }
+        w = std::min(track.end(), w + step);
+        if (track.end() - w < kMinStep) {
+            w = track.end();
+        }
+        ws.push_back(w);
+        a = station_at(airfoil, o, track, w);
+    }
+    return ws;
+}
+
+int thousandths(double inches) {
+    return static_cast<int>(std::lround(inches * 1000));
+}
+
+cardreader::CardOrders idle_card(int number) {
+    cardreader::CardOrders c;
+    c.number = number % 10000;
+    c.spindle = cardreader::Spindle::forward;
+    for (cardreader::Axis a : cardreader::kAxes) {
+        cardreader::AxisOrder& o = c.axis(a);
+        o.start_speed = 3;
+        o.stop = 0;
+        o.check = 0;
+    }
+    c.axis(cardreader::Axis::vertical).sequence = 0b00001;
+    c.axis(cardreader::Axis::swivel).sequence = 0b00010;
+    c.axis(cardreader::Axis::tilt).sequence = 0b00100;
+    return c;
+}
+
+struct CardMaker {
+    const axes::MachineProfile& profile;
+    std::vector<cardreader::CardOrders>& cards;
+    int x = 0; // where the table and the cross slide stand, thousandths
+    int y = 0;
+
+    void move(int to_x, int to_y, bool table_first, bool corner) {
+        cardreader::CardOrders c = idle_card(static_cast<int>(cards.size()) + 1);
+        const cardreader::SequencePattern first = 0b01000;
+        const cardreader::SequencePattern last = 0b10000;
+        c.axis(cardreader::Axis::table) = plan_move(
+            {x, to_x, 2, corner, table_first ? first : last}, profile.axes.at(0), profile);
+        c.axis(cardreader::Axis::cross) = plan_move(
+            {y, to_y, 1, corner, table_first ? last : first}, profile.axes.at(1), profile);
+        cards.push_back(c);
+        x = to_x;
+        y = to_y;
+    }
+};
+
+// The cutter cannot reach into a hollow tighter than itself: where the surface curves toward
+// the cutter (concave, seen from the cutter) with a radius smaller than the cutter's, any deck
+// would gouge. Refuse such a job, naming where and how tight.
+void check_cutter_fits(const Airfoil& airfoil, const TemplateOptions& o, const Track& track) {
+    constexpr int kSamples = 4000;
+    constexpr int kGap = 3; // points between the three used for each circle, against noise
+    std::vector<Station> pts;
+    for (int k = 0; k <= kSamples; ++k) {
+        const double f = static_cast<double>(k) / kSamples * track.end();
+        const double whole = std::floor(std::min(f, track.end() - 1e-12));
+        pts.push_back(station_at(airfoil, o, track, whole + (1 - std::cos(kPi * (f - whole))) / 2));
+    }
+    double tightest = 1e9;
+    Vector2d where = Vector2d::Zero();
+    for (std::size_t i = kGap; i + kGap < pts.size(); ++i) {
+        const Vector2d& p0 = pts[i - kGap].work;
+        const Vector2d& p1 = pts[i].work;
+        const Vector2d& p2 = pts[i + kGap].work;
+        const Vector2d a = p1 - p0;
+        const Vector2d b = p2 - p1;
+        const double cross = a.x() * b.y() - a.y() * b.x();
+        if (std::abs(cross) < 1e-15) {
+            continue;
+        }
+        const bool concave = ((p0 + p2) / 2 - p1).dot(pts[i].toward_cutter) > 0;
+        const double radius = a.norm() * b.norm() * (p2 - p0).norm() / (2 * std::abs(cross));
+        if (concave && radius < tightest) {
+            tightest = radius;
+            where = p1;
+        }
+    }
+    if (tightest < o.cutter_radius_in) {
+        throw JobError(fmt::format("the cutter (radius {:.4f} in) cannot reach into the surface "
+                                   "where it curves round toward the cutter with a radius of "
+                                   "{:.4f} in (at x = {:.3f} in from the leading edge): every "
+                                   "deck would gouge there; use a cutter of radius under "
+                                   "{:.4f} in",
+                                   o.cutter_radius_in, tightest, where.x(), tightest));
+    }
+}
+
+} // namespace
+
+TemplateDeck make_template_deck(const Airfoil& airfoil, const TemplateOptions& o,
+                                const axes::MachineProfile& profile) {
+    if (o.female && o.surface == Surface::both) {
+        throw JobError("a female template is the edge of a plate: cut one surface at a time "
+                       "(--surface upper or lower)");
+    }
+    if (!(o.chord_in > 0) || !(o.cutter_radius_in > 0)) {
+        throw JobError("chord and cutter radius must be positive");
+    }
+    const Track track{o.surface};
+    check_cutter_fits(airfoil, o, track);
+    const std::vector<double> ws =
+        o.scallop_in > 0 ? stations_by_scallop(airfoil, o, track) : stations_by_count(o, track);
+
+    TemplateDeck deck;
+    for (double w : ws) {
+        deck.stations.push_back(station_at(airfoil, o, track, w));
+    }
+    for (std::size_t i = 0; i + 1 < ws.size(); ++i) {
+        const Deviation d = span_deviation(airfoil, o, track, ws[i], ws[i + 1], deck.stations[i],
+                                           deck.stations[i + 1]);
+        deck.planned_leftover_in = std::max(deck.planned_leftover_in, d.leftover);
+        deck.planned_gouge_in = std::max(deck.planned_gouge_in, d.gouge);
+    }
+
+    // Work zero: the job margin_in inside the counters' 0 .. 9.999 in.
+    Vector2d lo(1e9, 1e9);
+    Vector2d hi(-1e9, -1e9);
+    for (const Station& s : deck.stations) {
+        lo = lo.cwiseMin(s.centre);
+        hi = hi.cwiseMax(s.centre);
+    }
+    deck.work_zero_in = Vector2d(o.margin_in, o.margin_in) - lo;
+    const Vector2d extent = hi - lo;
+    const double room = 9.999 - 2 * o.margin_in;
+    if (extent.x() > room || extent.y() > room) {
+        throw JobError(fmt::format("the cutter path spans {:.3f} x {:.3f} in, more than the {:.3f} "
+                                   "in the four-digit counters leave inside a {:.3f} in margin: "
+                                   "use a shorter chord",
+                                   extent.x(), extent.y(), room, o.margin_in));
+    }
+    auto machine = [&](const Vector2d& p) {
+        const Vector2d m = p + deck.work_zero_in;
+        return std::pair{thousandths(m.x()), thousandths(m.y())};
+    };
+
+    CardMaker maker{profile, deck.cards};
+    // Approach from the reference zero (below and left of the whole job) on the cutter's side
+    // of the surface: from above when the cutter works above it (male upper, and both
+    // surfaces, which start at the upper trailing edge), from below otherwise. The first
+    // station alone cannot say: at the leading edge its normal is horizontal.
+    const Station& first = deck.stations.front();
+    const auto [fx, fy] = machine(first.centre);
+    double side = 0;
+    for (const Station& s : deck.stations) {
+        side += s.toward_cutter.y();
+    }
+    const bool from_above = o.surface == Surface::both || side >= 0;
+    if (from_above) {
+        const int top = thousandths(hi.y() + deck.work_zero_in.y() + o.margin_in / 2);
+        maker.move(0, top, false, false);
+        maker.move(fx, top, true, false);
+        maker.move(fx, fy, false, false);
+    } else {
+        maker.move(fx, 0, true, false);
+        maker.move(fx, fy, false, false);
+    }
+    const double limit = o.corner_limit_deg * kPi / 180;
+    for (std::size_t i = 1; i < deck.stations.size(); ++i) {
+        const Station& a = deck.stations[i - 1];
+        const Station& b = deck.stations[i];
+        bool corner = false;
+        if (o.corner_slowdown && i + 1 < deck.stations.size()) {
+            const Vector2d d1 = b.centre - a.centre;
+            const Vector2d d2 = deck.stations[i + 1].centre - b.centre;
+            if (d1.norm() > 0 && d2.norm() > 0) {
+                const double turn =
+                    std::acos(std::clamp(d1.dot(d2) / (d1.norm() * d2.norm()), -1.0, 1.0));
+                corner = turn > limit;
+            }
+        }
+        deck.corner_cards += corner ? 1 : 0;
+        const Vector2d c = corner_between(a, b);
+        const bool table_first = c.y() == a.centre.y();
+        const auto [bx, by] = machine(b.centre);
+        maker.move(bx, by, table_first, corner);
+    }
+    return deck;
+}
+
+DesignSamples design_samples(const Airfoil& airfoil, const TemplateOptions& o,
+                             const Eigen::Vector2d& work_zero_in, int per_surface) {
+    const Track track{o.surface};
+    DesignSamples out;
+    const int n = per_surface * static_cast<int>(track.end());
+    for (int k = 0; k <= n; ++k) {
+        // Cosine spacing within each surface: dense at both ends, where the surface bends most.
+        const double f = static_cast<double>(k) / per_surface;
+        const double whole = std::floor(std::min(f, track.end() - 1e-12));
+        const double frac = f - whole;
+        const double w = whole + (1 - std::cos(kPi * frac)) / 2;
+        const Station s = station_at(airfoil, o, track, std::min(w, track.end()));
+        out.points.push_back(s.work + work_zero_in);
+        out.toward_cutter.push_back(s.toward_cutter);
+    }
+    return out;
+}
+
+} // namespace parsons::decks

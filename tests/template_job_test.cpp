@@ -1,0 +1,206 @@
+// Generated decks prove themselves on the emulator: they run to completion with no check stop
+// and no silent position error, and the cut they leave stays within the planned scallop plus
+// quantisation of the design.
+#include "tests/machine_support.hpp"
+
+#include "cardreader/deck_review.hpp"
+#include "decks/cut_proof.hpp"
+#include "decks/move_planner.hpp"
+#include "decks/template_job.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace parsons;
+using namespace parsons::decks;
+using parsons::test::run_orders;
+
+namespace {
+
+std::string data_file(const std::string& name) {
+    return std::string(PARSONS_SOURCE_DIR) + "/tests/data/" + name;
+}
+
+class CutterPath : public relaylogic::MachineObserver {
+public:
+    void on_motion(double, const std::array<double, 5>& real) override {
+        const Eigen::Vector2d p(real[0], real[1]);
+        if (path.empty() || p != path.back()) {
+            path.push_back(p);
+        }
+    }
+    std::vector<Eigen::Vector2d> path;
+};
+
+// Quantising each centre to 0.001 in on both axes moves it up to 0.0007 in; the coast leaves
+// each axis a quarter of a thousandth from its number.
+constexpr double kQuantisation = 0.0007 + 0.00025;
+
+struct Proved {
+    TemplateDeck deck;
+    relaylogic::RunResult run;
+    CutProof cut;
+};
+
+Proved generate_and_run(const Airfoil& airfoil, const TemplateOptions& options) {
+    Proved p;
+    const auto profile = axes::default_profile();
+    p.deck = make_template_deck(airfoil, options, profile);
+    CutterPath cutter;
+    p.run = run_orders(p.deck.cards, profile, &cutter);
+    const auto samples = design_samples(airfoil, options, p.deck.work_zero_in, 800);
+    const DesignContour design{samples.points, samples.toward_cutter};
+    p.cut = prove_cut(simplify_path(cutter.path, 1e-7), options.cutter_radius_in, design,
+                      1.5 * options.cutter_radius_in);
+    return p;
+}
+
+void check_proved(const Proved& p) {
+    INFO("planned leftover " << p.deck.planned_leftover_in << " gouge " << p.deck.planned_gouge_in);
+    INFO("cut gouge " << p.cut.max_gouge_in << " leftover " << p.cut.max_leftover_in);
+    REQUIRE(p.run.completed);
+    CHECK_FALSE(p.run.stop);
+    for (const auto& axis : p.run.axes) {
+        CHECK(axis.lost_steps == 0);
+        CHECK(std::abs(axis.error_in) < 0.0005);
+    }
+    CHECK(p.cut.machined_points > 100);
+    CHECK(p.cut.max_gouge_in <= p.deck.planned_gouge_in + kQuantisation);
+    CHECK(p.cut.max_leftover_in <= p.deck.planned_leftover_in + kQuantisation);
+}
+
+} // namespace
+
+TEST_CASE("Template: NACA 2412 and 0012 decks run to completion and cut within tolerance",
+          "[template][decks]") {
+    auto [digits, radius, surface] = GENERATE(table<std::string, double, Surface>({
+        {"2412", 0.25, Surface::upper},
+        {"2412", 0.125, Surface::lower},
+        {"0012", 0.375, Surface::both},
+        {"2412", 0.5, Surface::both},
+    }));
+    TemplateOptions o;
+    o.chord_in = 6.0;
+    o.cutter_radius_in = radius;
+    o.surface = surface;
+    o.scallop_in = 0.002;
+    INFO("NACA " << digits << " radius " << radius);
+    const auto airfoil = naca4(digits);
+    check_proved(generate_and_run(*airfoil, o));
+}
+
+TEST_CASE("Template: Clark Y and E387 from coordinate files, by count and by scallop",
+          "[template][decks]") {
+    auto [file, radius, stations] = GENERATE(table<std::string, double, int>({
+        {"clarky.dat", 0.25, 0},
+        {"e387.dat", 0.1875, 80},
+    }));
+    TemplateOptions o;
+    o.chord_in = 5.0;
+    o.cutter_radius_in = radius;
+    o.surface = Surface::both;
+    o.stations = stations > 0 ? stations : 60;
+    o.scallop_in = stations > 0 ? 0.0 : 0.002;
+    INFO(file);
+    const auto airfoil = read_dat(data_file(file));
+    check_proved(generate_and_run(*airfoil, o));
+}
+
+TEST_CASE("Template: the patent's female template (Fig. 4) cuts from the other side",
+          "[template][decks][fig4]") {
+    TemplateOptions o;
+    o.chord_in = 6.0;
+    o.cutter_radius_in = 0.0625; // inside the leading-edge radius, 0.0953 in on a 6 in chord
+    o.female = true;
+    o.scallop_in = 0.002;
+    const auto airfoil = naca4("2412");
+    const Proved p = generate_and_run(*airfoil, o);
+    check_proved(p);
+    // Centre = work + (R sin theta, -R cos theta): below the upper surface, by R.
+    const Station& mid = p.deck.stations.at(p.deck.stations.size() / 2);
+    CHECK(mid.centre.y() < mid.work.y());
+    const SurfaceSample s = airfoil->sample(Side::upper, mid.u);
+    const double theta = std::atan2(s.tangent.y(), s.tangent.x());
+    CHECK(mid.centre.x() == Approx(mid.work.x() + 0.0625 * std::sin(theta)));
+    CHECK(mid.centre.y() == Approx(mid.work.y() - 0.0625 * std::cos(theta)));
+}
+
+TEST_CASE("Template: a cutter larger than a hollow of the surface is refused, not gouged",
+          "[template][decks][fig4]") {
+    TemplateOptions o;
+    o.chord_in = 6.0;
+    o.cutter_radius_in = 0.25; // the female leading edge is a hollow of radius 0.095 in
+    o.female = true;
+    try {
+        make_template_deck(*naca4("2412"), o, axes::default_profile());
+        FAIL("a 0.25 in cutter was accepted for a 0.095 in hollow");
+    } catch (const JobError& e) {
+        CHECK(std::string(e.what()).find("the cutter (radius 0.2500 in) cannot reach into the "
+                                         "surface where it curves round toward the cutter with "
+                                         "a radius of 0.09") != std::string::npos);
+    }
+}
+
+TEST_CASE("Template: no generated card has the shared-bank hazard", "[template][decks]") {
+    TemplateOptions o;
+    o.scallop_in = 0.002;
+    o.surface = Surface::both;
+    const auto deck = make_template_deck(*naca4("2412"), o, axes::default_profile());
+    std::array<int, 5> at{};
+    for (const auto& card : deck.cards) {
+        for (cardreader::Axis a : cardreader::kAxes) {
+            const auto& order = card.axis(a);
+            INFO("card " << card.number);
+            CHECK(cardreader::spurious_matches_on_path(
+                      order, static_cast<cardreader::Thousandths>(at.at(cardreader::axis_index(a))))
+                      .empty());
+            at.at(cardreader::axis_index(a)) = order.stop;
+        }
+    }
+}
+
+TEST_CASE("Template: the same deck with its slow-downs stripped stops with check_mismatch: the "
+          "physics is doing the work",
+          "[template][decks][coast]") {
+    TemplateOptions o;
+    o.scallop_in = 0.002;
+    auto deck = make_template_deck(*naca4("2412"), o, axes::default_profile());
+    int stripped = 0;
+    for (auto& card : deck.cards) {
+        for (auto& axis : card.axes) {
+            stripped += axis.slow_down[0] ? 1 : 0;
+            axis.slow_down = {};
+        }
+    }
+    REQUIRE(stripped > 0);
+    const auto run = run_orders(deck.cards);
+    REQUIRE(run.stop);
+    CHECK(run.stop->reason == relaylogic::StopReason::check_mismatch);
+}
+
+TEST_CASE("Move planner: speeds and slow-downs follow the profile's physics", "[decks]") {
+    const auto profile = axes::default_profile();
+    const auto& table = profile.axes.at(0);
+    // A long table move starts on speed 1 with two slow-downs, both before the stop with room.
+    auto o = plan_move({0, 4985, 2, false, 1}, table, profile);
+    CHECK(o.start_speed == 1);
+    REQUIRE(o.slow_down[0]);
+    REQUIRE(o.slow_down[1]);
+    CHECK(4985 - *o.slow_down[1] >= slow_down_room(table, 2, 3));
+    CHECK(*o.slow_down[1] - *o.slow_down[0] >= slow_down_room(table, 1, 2));
+    // A corner is approached at the lowest speed; a short move too.
+    CHECK(plan_move({0, 4985, 2, true, 1}, table, profile).start_speed == 3);
+    // Stop 5.000 from 0: every slow-down on the way (4.9xx) would also match 4.000 in the
+    // shared banks, so the move starts on speed 3 rather than punch a hazard.
+    CHECK(plan_move({0, 5000, 2, false, 1}, table, profile).start_speed == 3);
+    CHECK(plan_move({0, 4, 2, false, 1}, table, profile).start_speed == 3);
+    // An axis with one slow-down field starts at most on speed 2.
+    CHECK(plan_move({0, 4985, 1, false, 1}, profile.axes.at(1), profile).start_speed == 2);
+    // A speed the stepping switches cannot follow is never used.
+    auto slow_switches = profile;
+    slow_switches.max_stepping_rate_per_s = 50; // speed 1 is 90 impulses/s
+    CHECK(plan_move({0, 4985, 2, false, 1}, table, slow_switches).start_speed == 2);
+    // A profile whose speed 3 coasts past half a thousandth cannot make an exact deck.
+    auto coasting = profile;
+    coasting.axes.at(0).speed_in_per_min = {5.4, 1.8, 1.2};
+    CHECK_THROWS_AS(plan_move({0, 4985, 2, false, 1}, coasting.axes.at(0), coasting), PlanError);
+}
