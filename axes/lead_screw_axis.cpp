@@ -153,7 +153,7 @@ bool LeadScrewAxis::beyond_limits() const {
 }
 
 double LeadScrewAxis::fixture_angle_deg(bool sine_plate) const {
-    const double ratio = real_in() / profile_.pivot_to_screw_in;
+    const double ratio = (real_in() - profile_.level_in) / profile_.pivot_to_screw_in;
     const double radians = sine_plate ? std::asin(std::clamp(ratio, -1.0, 1.0)) : std::atan(ratio);
     return radians * 180.0 / kPi;
 }

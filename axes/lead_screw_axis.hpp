@@ -70,8 +70,9 @@ public:
     long commutator_index() const { return k_; } // thousandths the commutator has passed
     const AxisProfile& profile() const { return profile_; }
 
-    // Sine-plate geometry for swivel and tilt: the fixture angle this screw travel makes,
-    // degrees (tilt: sin = travel / arm, the sine plate; swivel: tan = travel / arm).
+    // Sine-plate geometry for swivel and tilt: the fixture angle this screw position makes,
+    // degrees, from its level position (tilt: sin = (screw - level) / arm, the sine plate;
+    // swivel: tan = (screw - level) / arm).
     double fixture_angle_deg(bool sine_plate) const;
 
 private:

@@ -13,6 +13,9 @@ MachineProfile default_profile() {
     // on the end of bottom member 15, taken as 20 in from its pivot.
     p.axes.at(3).pivot_to_screw_in = 20.0;
     p.axes.at(4).pivot_to_screw_in = 10.0;
+    // Both stand level at mid-travel, so the fixture turns either way.
+    p.axes.at(3).level_in = 5.0;
+    p.axes.at(4).level_in = 5.0;
     return p;
 }
 

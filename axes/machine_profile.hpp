@@ -31,8 +31,11 @@ struct AxisProfile {
     // Residual screw error after compensating cam 160: (screw position, error) in inches,
     // interpolated linearly; empty = a perfect screw.
     std::vector<std::pair<double, double>> screw_error_in;
-    // Swivel and tilt: distance from the fixture's pivot to its screw (sine-plate geometry).
+    // Swivel and tilt: distance from the fixture's pivot to its screw (sine-plate geometry),
+    // and the screw position at which the fixture stands level (angle 0), so that it can be
+    // turned both ways within the counters' 0 .. 9.999 in.
     double pivot_to_screw_in = 10.0;
+    double level_in = 0.0;
 };
 
 struct MachineProfile {

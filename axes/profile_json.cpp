@@ -54,6 +54,8 @@ void apply_axis(const json& j, AxisProfile& a, const std::string& where) {
             a.screw_lead_in_per_rev = positive(value, k);
         } else if (key == "pivot_to_screw_in") {
             a.pivot_to_screw_in = positive(value, k);
+        } else if (key == "level_in") {
+            a.level_in = finite(value, k);
         } else if (key == "screw_error_in") {
             if (!value.is_array()) {
                 throw ProfileError(fmt::format("{}: expected [[position, error], ...]", k));
@@ -91,7 +93,8 @@ json axis_json(const AxisProfile& a) {
                 {"travel_max_in", a.travel_max_in},
                 {"screw_lead_in_per_rev", a.screw_lead_in_per_rev},
                 {"screw_error_in", errors},
-                {"pivot_to_screw_in", a.pivot_to_screw_in}};
+                {"pivot_to_screw_in", a.pivot_to_screw_in},
+                {"level_in", a.level_in}};
 }
 
 } // namespace

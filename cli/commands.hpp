@@ -42,13 +42,15 @@ struct RunRequest {
 };
 ExitCode run_deck(const RunRequest& request);
 
-// A template deck generated and written: DECK, DECK.job.json and (if named) the centres CSV.
+// A deck generated and written: DECK, DECK.job.json and (if named) the centres CSV.
 struct GeneratedJob {
     decks::JobDescription description;
-    decks::TemplateDeck deck;
+    decks::TemplateDeck deck; // the template job
+    decks::WingDeck wing;     // the wing job
+    std::size_t cards = 0;
 };
-GeneratedJob generate_template(const decks::JobDescription& description,
-                               const axes::MachineProfile& profile, const std::string& output,
-                               const std::string& to, const std::string& centres);
+GeneratedJob generate_job(const decks::JobDescription& description,
+                          const axes::MachineProfile& profile, const std::string& output,
+                          const std::string& to, const std::string& centres);
 
 } // namespace parsons::cli

@@ -24,7 +24,7 @@ ExitCode run_demo(const std::string& dir) {
     description.options.scallop_in = 0.002;
     const std::string deck = dir + "/naca2412.cbn";
     const GeneratedJob job =
-        generate_template(description, axes::default_profile(), deck, "", dir + "/centres.csv");
+        generate_job(description, axes::default_profile(), deck, "", dir + "/centres.csv");
     fmt::print("generated {}: NACA 2412 upper surface, 6 in chord, cutter radius 0.25 in, {} "
                "stations (scallop target 0.002 in), {} cards\n",
                deck, job.deck.stations.size(), job.deck.cards.size());

@@ -30,6 +30,10 @@ struct GenFlags {
     std::string surface = "upper";
     bool female = false;
     bool no_corner_slowdown = false;
+    std::string job = "template";
+    double span_in = 5.0;
+    double taper = 0.8;
+    double sweep_deg = 5.0;
     std::string output;
     std::string to;
     std::string centres;
@@ -53,26 +57,15 @@ decks::TemplateOptions options_from(const GenFlags& f) {
 
 } // namespace
 
-GeneratedJob generate_template(const decks::JobDescription& description,
-                               const axes::MachineProfile& profile, const std::string& output,
-                               const std::string& to, const std::string& centres) {
-    GeneratedJob job{description, {}};
-    std::unique_ptr<decks::Airfoil> airfoil;
-    try {
-        airfoil = decks::open_airfoil(description);
-        job.deck = decks::make_template_deck(*airfoil, description.options, profile);
-    } catch (const decks::JobError& e) {
-        throw DeckError(fmt::format("gen airfoil: {}", e.what()));
-    } catch (const decks::PlanError& e) {
-        throw DeckError(fmt::format("gen airfoil: {}", e.what()));
-    }
-    job.description.work_zero_in = job.deck.work_zero_in;
+namespace {
 
+void write_cards(const std::vector<cardreader::CardOrders>& cards, const std::string& output,
+                 const std::string& to) {
     DeckFlags flags;
     const auto options = deck_options(output, to, flags);
     OutputFile deck_file(output);
     auto sink = cardreader::open_card_sink(deck_file.stream(), options);
-    for (const auto& card : job.deck.cards) {
+    for (const auto& card : cards) {
         auto punched = cardreader::encode(card, cardreader::fig8_layout());
         if (!punched) {
             throw DeckError(fmt::format("gen airfoil: card {}: {}", card.number, *punched.error));
@@ -80,13 +73,47 @@ GeneratedJob generate_template(const decks::JobDescription& description,
         sink->write(punched.card);
     }
     deck_file.commit();
+}
+
+} // namespace
+
+GeneratedJob generate_job(const decks::JobDescription& description,
+                          const axes::MachineProfile& profile, const std::string& output,
+                          const std::string& to, const std::string& centres) {
+    GeneratedJob job{description, {}, {}, 0};
+    std::string csv = "x,y,cx,cy\n";
+    try {
+        const auto airfoil = decks::open_airfoil(description);
+        if (description.kind == decks::JobKind::wing) {
+            job.wing = decks::make_wing_deck(*airfoil, description.wing, profile);
+            job.description.wing_zero_in = job.wing.zero;
+            write_cards(job.wing.cards, output, to);
+            job.cards = job.wing.cards.size();
+            csv = "u,root_cx,root_cy,root_cz,tip_cx,tip_cy,tip_cz,tilt_deg,swivel_deg\n";
+            for (const auto& s : job.wing.stations) {
+                csv += fmt::format(
+                    "{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.5f},{:.5f}\n", s.u,
+                    s.root_centre.x(), s.root_centre.y(), s.root_centre.z(), s.tip_centre.x(),
+                    s.tip_centre.y(), s.tip_centre.z(), s.tilt_rad * 180 / 3.14159265358979,
+                    s.swivel_rad * 180 / 3.14159265358979);
+            }
+        } else {
+            job.deck = decks::make_template_deck(*airfoil, description.options, profile);
+            job.description.work_zero_in = job.deck.work_zero_in;
+            write_cards(job.deck.cards, output, to);
+            job.cards = job.deck.cards.size();
+            for (const auto& s : job.deck.stations) {
+                csv += fmt::format("{:.6f},{:.6f},{:.6f},{:.6f}\n", s.work.x(), s.work.y(),
+                                   s.centre.x(), s.centre.y());
+            }
+        }
+    } catch (const decks::JobError& e) {
+        throw DeckError(fmt::format("gen airfoil: {}", e.what()));
+    } catch (const decks::PlanError& e) {
+        throw DeckError(fmt::format("gen airfoil: {}", e.what()));
+    }
     write_file(output + ".job.json", decks::job_to_json(job.description));
     if (!centres.empty()) {
-        std::string csv = "x,y,cx,cy\n";
-        for (const auto& s : job.deck.stations) {
-            csv += fmt::format("{:.6f},{:.6f},{:.6f},{:.6f}\n", s.work.x(), s.work.y(),
-                               s.centre.x(), s.centre.y());
-        }
         write_file(centres, csv);
     }
     return job;
@@ -102,20 +129,50 @@ ExitCode run_gen(const GenFlags& f) {
     description.airfoil = f.naca.empty() ? "dat " + f.dat : "naca " + f.naca;
     description.closed_trailing_edge = f.closed_te;
     description.options = options_from(f);
+    if (f.job == "wing") {
+        if (f.surface != "upper" || f.female) {
+            throw DeckError("gen airfoil: the wing job cuts the upper surface of a male wing (Fig. "
+                            "5); turn the wing over for the lower surface");
+        }
+        description.kind = decks::JobKind::wing;
+        description.wing.root_chord_in = f.chord_in;
+        description.wing.span_in = f.span_in;
+        description.wing.taper = f.taper;
+        description.wing.sweep_deg = f.sweep_deg;
+        description.wing.cutter_radius_in = f.radius_in;
+        description.wing.stations = f.stations;
+        description.wing.spacing = description.options.spacing;
+        description.wing.scallop_in = f.scallop_in;
+    }
     const auto profile = load_profile(f.profile);
-    const GeneratedJob job = generate_template(description, profile, f.output, f.to, f.centres);
-    const auto& d = job.deck;
-    fmt::print("{} template, chord {:.3f} in, cutter radius {:.3f} in, {} surface{}\n",
-               description.airfoil, f.chord_in, f.radius_in, f.surface, f.female ? ", female" : "");
-    fmt::print("  stations         {}\n", d.stations.size());
-    fmt::print("  cards            {} ({} to approach, {} slowed for a corner)\n", d.cards.size(),
-               d.cards.size() + 1 - d.stations.size(), d.corner_cards);
-    fmt::print("  largest scallop  {:.5f} in (planned, before quantising to 0.001 in)\n",
-               d.planned_leftover_in);
-    fmt::print("  largest dip      {:.5f} in (staircase traverse into the design)\n",
-               d.planned_gouge_in);
-    fmt::print("  work zero        table {:.3f} in, cross slide {:.3f} in (the leading edge)\n",
-               d.work_zero_in.x(), d.work_zero_in.y());
+    const GeneratedJob job = generate_job(description, profile, f.output, f.to, f.centres);
+    if (description.kind == decks::JobKind::wing) {
+        const auto& w = job.wing;
+        fmt::print("{} tapered wing, root chord {:.3f} in, span {:.3f} in, taper {:.3f}, sweep "
+                   "{:.1f} deg, cutter radius {:.3f} in\n",
+                   description.airfoil, f.chord_in, f.span_in, f.taper, f.sweep_deg, f.radius_in);
+        fmt::print("  stations         {} (one cut along the span each)\n", w.stations.size());
+        fmt::print("  cards            {} (set the section, then plunge and traverse)\n",
+                   w.cards.size());
+        fmt::print("  largest scallop  {:.5f} in (planned, root and tip sections)\n",
+                   w.planned_leftover_in);
+        fmt::print("  zero             cross {:.3f}, table {:.3f}, vertical {:.3f} in\n",
+                   w.zero.x(), w.zero.y(), w.zero.z());
+    } else {
+        const auto& d = job.deck;
+        fmt::print("{} template, chord {:.3f} in, cutter radius {:.3f} in, {} surface{}\n",
+                   description.airfoil, f.chord_in, f.radius_in, f.surface,
+                   f.female ? ", female" : "");
+        fmt::print("  stations         {}\n", d.stations.size());
+        fmt::print("  cards            {} ({} to approach, {} slowed for a corner)\n",
+                   d.cards.size(), d.cards.size() + 1 - d.stations.size(), d.corner_cards);
+        fmt::print("  largest scallop  {:.5f} in (planned, before quantising to 0.001 in)\n",
+                   d.planned_leftover_in);
+        fmt::print("  largest dip      {:.5f} in (staircase traverse into the design)\n",
+                   d.planned_gouge_in);
+        fmt::print("  work zero        table {:.3f} in, cross slide {:.3f} in (the leading edge)\n",
+                   d.work_zero_in.x(), d.work_zero_in.y());
+    }
     fmt::print("  wrote            {} and {}.job.json{}\n", f.output, f.output,
                f.centres.empty() ? "" : " and " + f.centres);
     return ExitCode::ok;
@@ -132,7 +189,8 @@ void add_gen_command(CLI::App& app, Command& selected) {
     cmd->add_option("--naca", flags->naca, "NACA 4-digit section, e.g. 2412");
     cmd->add_option("--dat", flags->dat, "Airfoil coordinate file (Selig or Lednicer .dat)");
     cmd->add_flag("--closed-te", flags->closed_te, "NACA: closed trailing edge (a4 = 0.1036)");
-    cmd->add_option("--chord", flags->chord_in, "Chord, inches")->capture_default_str();
+    cmd->add_option("--chord", flags->chord_in, "Chord (the wing's root chord), inches")
+        ->capture_default_str();
     cmd->add_option("--cutter-radius", flags->radius_in, "Cutter radius, inches")
         ->capture_default_str();
     cmd->add_option("--stations", flags->stations, "Stations per surface")->capture_default_str();
@@ -145,6 +203,13 @@ void add_gen_command(CLI::App& app, Command& selected) {
         ->check(CLI::IsMember({"upper", "lower", "both"}))
         ->capture_default_str();
     cmd->add_flag("--female", flags->female, "The patent's Fig. 4 female template (other side)");
+    cmd->add_option("--job", flags->job, "template (Fig. 4) or wing (Fig. 5, tapered)")
+        ->check(CLI::IsMember({"template", "wing"}))
+        ->capture_default_str();
+    cmd->add_option("--span", flags->span_in, "Wing: span, inches")->capture_default_str();
+    cmd->add_option("--taper", flags->taper, "Wing: tip chord / root chord")->capture_default_str();
+    cmd->add_option("--sweep", flags->sweep_deg, "Wing: leading-edge sweep, degrees")
+        ->capture_default_str();
     cmd->add_flag("--no-corner-slowdown", flags->no_corner_slowdown,
                   "Do not slow down at sharp turns of the path (to see why one should)");
     cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")->required();
@@ -155,6 +220,8 @@ void add_gen_command(CLI::App& app, Command& selected) {
     cmd->footer("Examples:\n"
                 "  parsons gen airfoil --naca 2412 --chord 6 --cutter-radius 0.25 -o naca2412.cbn\n"
                 "  parsons gen airfoil --dat clarky.dat --scallop 0.002 --surface both -o y.cbn\n"
+                "  parsons gen airfoil --naca 0012 --job wing --chord 4 --span 5 --taper 0.6 "
+                "--sweep 10 --scallop 0.002 -o wing.cbn\n"
                 "  parsons run naca2412.cbn --cut cut.svg");
     cmd->callback([&selected, flags] { selected = [flags] { return run_gen(*flags); }; });
 }

@@ -90,6 +90,22 @@ public:
     std::vector<Eigen::Vector2d> path;
 };
 
+// Records where the cutter centre really went relative to the wing (the work frame), turning
+// the five real positions back through the fixture's real angles.
+class WingPath : public relaylogic::MachineObserver {
+public:
+    WingPath(const Eigen::Vector3d& zero, const axes::MachineProfile& profile)
+        : zero_(zero), profile_(profile) {}
+    void on_motion(double /*t*/, const std::array<double, 5>& real) override {
+        path.push_back(decks::work_point(real, zero_, profile_));
+    }
+    std::vector<Eigen::Vector3d> path;
+
+private:
+    Eigen::Vector3d zero_;
+    const axes::MachineProfile& profile_;
+};
+
 decks::JobDescription read_job(const std::string& file) {
     std::ifstream in(file, std::ios::binary);
     if (!in) {
@@ -156,9 +172,15 @@ ExitCode run_deck(const RunRequest& f) {
     }
     CutterPath cutter;
     decks::JobDescription job;
+    std::unique_ptr<WingPath> wing_path;
     if (!f.cut.empty()) {
         job = read_job(f.job.empty() ? f.input + ".job.json" : f.job);
-        observers.add(&cutter);
+        if (job.kind == decks::JobKind::wing) {
+            wing_path = std::make_unique<WingPath>(job.wing_zero_in, profile);
+            observers.add(wing_path.get());
+        } else {
+            observers.add(&cutter);
+        }
     }
     ProgressBar progress(deck);
     if (!f.quiet && isatty(fileno(stderr)) != 0) {
@@ -178,7 +200,22 @@ ExitCode run_deck(const RunRequest& f) {
     }
     nlohmann::json report = report_json(result, profile, f.input);
     std::string cut_summary;
-    if (!f.cut.empty()) {
+    if (wing_path) {
+        const auto airfoil = decks::open_airfoil(job);
+        const decks::WingProof proof = decks::prove_wing(wing_path->path, *airfoil, job.wing);
+        write_file(f.cut, decks::wing_cut_svg(proof, wing_path->path, job.wing,
+                                              fmt::format("{} wing", job.airfoil)));
+        report["cut"] = {{"root",
+                          {{"max_gouge_in", proof.root.max_gouge_in},
+                           {"max_leftover_in", proof.root.max_leftover_in}}},
+                         {"tip",
+                          {{"max_gouge_in", proof.tip.max_gouge_in},
+                           {"max_leftover_in", proof.tip.max_leftover_in}}}};
+        cut_summary = fmt::format("  cut            root section: deepest gouge {:.5f} in, most "
+                                  "left standing {:.5f} in; tip section: {:.5f} in, {:.5f} in\n",
+                                  proof.root.max_gouge_in, proof.root.max_leftover_in,
+                                  proof.tip.max_gouge_in, proof.tip.max_leftover_in);
+    } else if (!f.cut.empty()) {
         const auto airfoil = decks::open_airfoil(job);
         const auto samples = decks::design_samples(*airfoil, job.options, job.work_zero_in);
         const decks::DesignContour design{samples.points, samples.toward_cutter};

@@ -16,15 +16,25 @@ std::string surface_name(Surface s) {
 } // namespace
 
 std::string job_to_json(const JobDescription& job) {
-    const TemplateOptions& o = job.options;
-    json j{{"job", "template"},
-           {"airfoil", job.airfoil},
-           {"closed_trailing_edge", job.closed_trailing_edge},
-           {"chord_in", o.chord_in},
-           {"cutter_radius_in", o.cutter_radius_in},
-           {"surface", surface_name(o.surface)},
-           {"female", o.female},
-           {"work_zero_in", {job.work_zero_in.x(), job.work_zero_in.y()}}};
+    json j{{"airfoil", job.airfoil}, {"closed_trailing_edge", job.closed_trailing_edge}};
+    if (job.kind == JobKind::wing) {
+        const WingOptions& w = job.wing;
+        j["job"] = "wing";
+        j["root_chord_in"] = w.root_chord_in;
+        j["span_in"] = w.span_in;
+        j["taper"] = w.taper;
+        j["sweep_deg"] = w.sweep_deg;
+        j["cutter_radius_in"] = w.cutter_radius_in;
+        j["zero_in"] = {job.wing_zero_in.x(), job.wing_zero_in.y(), job.wing_zero_in.z()};
+    } else {
+        const TemplateOptions& o = job.options;
+        j["job"] = "template";
+        j["chord_in"] = o.chord_in;
+        j["cutter_radius_in"] = o.cutter_radius_in;
+        j["surface"] = surface_name(o.surface);
+        j["female"] = o.female;
+        j["work_zero_in"] = {job.work_zero_in.x(), job.work_zero_in.y()};
+    }
     return j.dump(2) + "\n";
 }
 
@@ -32,11 +42,25 @@ JobDescription job_from_json(const std::string& text) {
     JobDescription job;
     try {
         const json j = json::parse(text);
-        if (j.at("job") != "template") {
-            throw JobError("job: only template jobs can be proved");
-        }
+        const std::string kind = j.at("job").get<std::string>();
         job.airfoil = j.at("airfoil").get<std::string>();
         job.closed_trailing_edge = j.at("closed_trailing_edge").get<bool>();
+        if (kind == "wing") {
+            job.kind = JobKind::wing;
+            WingOptions& w = job.wing;
+            w.root_chord_in = j.at("root_chord_in").get<double>();
+            w.span_in = j.at("span_in").get<double>();
+            w.taper = j.at("taper").get<double>();
+            w.sweep_deg = j.at("sweep_deg").get<double>();
+            w.cutter_radius_in = j.at("cutter_radius_in").get<double>();
+            const auto& zero = j.at("zero_in");
+            job.wing_zero_in = Eigen::Vector3d(zero.at(0).get<double>(), zero.at(1).get<double>(),
+                                               zero.at(2).get<double>());
+            return job;
+        }
+        if (kind != "template") {
+            throw JobError(fmt::format("job: '{}' is not template or wing", kind));
+        }
         job.options.chord_in = j.at("chord_in").get<double>();
         job.options.cutter_radius_in = j.at("cutter_radius_in").get<double>();
         const std::string surface = j.at("surface").get<std::string>();

@@ -5,17 +5,23 @@
 
 #include "decks/airfoil.hpp"
 #include "decks/template_job.hpp"
+#include "decks/wing_job.hpp"
 
 #include <memory>
 #include <string>
 
 namespace parsons::decks {
 
+enum class JobKind { template_2d, wing };
+
 struct JobDescription {
+    JobKind kind = JobKind::template_2d;
     std::string airfoil; // "naca 2412" or "dat PATH"
     bool closed_trailing_edge = false;
-    TemplateOptions options;
+    TemplateOptions options; // the template job, and where its work zero lies
     Eigen::Vector2d work_zero_in = Eigen::Vector2d::Zero();
+    WingOptions wing; // the wing job, and its zero (cross, table, vertical)
+    Eigen::Vector3d wing_zero_in = Eigen::Vector3d::Zero();
 };
 
 std::string job_to_json(const JobDescription& job);

@@ -364,7 +364,9 @@ TEST_CASE("Sine plate: the report gives the fixture angles of swivel and tilt", 
     c.axis(Axis::tilt) = order(0, 1000, 3, {}, {}, 0b10000);
     RunResult r = run_orders({c});
     REQUIRE(r.completed);
-    // tilt: sin(angle) = 0.99975 / 10 (the stop plus a quarter-thousandth short of it)
-    CHECK(*r.axes.at(4).fixture_angle_deg == Approx(5.73773).margin(1e-4));
+    // tilt: sin(angle) = (0.99975 - 5) / 10: the stop, a quarter-thousandth short of it, from
+    // the level position at mid-travel
+    CHECK(*r.axes.at(4).fixture_angle_deg ==
+          Approx(std::asin((0.99975 - 5.0) / 10.0) * 180 / 3.14159265358979).margin(1e-6));
     CHECK_FALSE(r.axes.at(0).fixture_angle_deg);
 }
