@@ -1,0 +1,99 @@
+// parsons gen airfoil, run --cut and demo as a user types them.
+#include "tests/test_support.hpp"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+
+using parsons::test::q;
+using parsons::test::read_bytes;
+using parsons::test::run_parsons;
+using parsons::test::source_path;
+using parsons::test::TempDir;
+using parsons::test::write_bytes;
+
+TEST_CASE("Gen: a NACA 2412 template deck, its centres and its job; run --cut proves it",
+          "[gen][cli]") {
+    TempDir dir;
+    auto gen = run_parsons("gen airfoil --naca 2412 --chord 6 --cutter-radius 0.25 --scallop 0.002 "
+                           "-o " +
+                           q(dir.str("n.cbn")) + " --centres " + q(dir.str("c.csv")));
+    REQUIRE(gen.exit_code == 0);
+    CHECK(gen.output.find("naca 2412 template, chord 6.000 in") != std::string::npos);
+    const std::string centres = read_bytes(dir.path("c.csv"));
+    // At the leading edge the normal runs along the camber line, slope 2m/p = 0.1:
+    // the centre is 0.25 in back along it, (-0.25 cos 5.71 deg, -0.25 sin 5.71 deg).
+    CHECK(centres.rfind("x,y,cx,cy\n0.000000,0.000000,-0.248759,-0.024876\n", 0) == 0);
+    CHECK(std::filesystem::exists(dir.path("n.cbn.job.json")));
+    auto run = run_parsons("run " + q(dir.str("n.cbn")) + " --cut " + q(dir.str("cut.svg")) +
+                           " --report " + q(dir.str("r.json")));
+    CHECK(run.exit_code == 0);
+    const auto report = nlohmann::json::parse(read_bytes(dir.path("r.json")));
+    CHECK(report["status"] == "completed");
+    CHECK(report["cut"]["max_gouge_in"].get<double>() < 0.003);
+    CHECK(report["cut"]["max_leftover_in"].get<double>() < 0.003);
+    CHECK(read_bytes(dir.path("cut.svg")).find("</svg>") != std::string::npos);
+}
+
+TEST_CASE("Gen: a tapered wing deck runs and both sections are proved", "[gen][cli][wing]") {
+    TempDir dir;
+    auto gen = run_parsons("gen airfoil --naca 2412 --job wing --chord 4 --span 4 --taper 0.7 "
+                           "--sweep 5 --stations 30 -o " +
+                           q(dir.str("w.csv")));
+    REQUIRE(gen.exit_code == 0);
+    CHECK(gen.output.find("cards            60 (set the section, then plunge and traverse)") !=
+          std::string::npos);
+    auto run = run_parsons("run " + q(dir.str("w.csv")) + " --cut " + q(dir.str("cut.svg")) +
+                           " --report " + q(dir.str("r.json")));
+    CHECK(run.exit_code == 0);
+    const auto report = nlohmann::json::parse(read_bytes(dir.path("r.json")));
+    CHECK(report["cut"]["root"]["max_gouge_in"].get<double>() < 0.002);
+    CHECK(report["cut"]["tip"]["max_gouge_in"].get<double>() < 0.002);
+    const std::string svg = read_bytes(dir.path("cut.svg"));
+    CHECK(svg.find("root section (span 0)") != std::string::npos);
+    CHECK(svg.find("tip section (span 4.000 in)") != std::string::npos);
+}
+
+TEST_CASE("Gen: bad requests exit 2 and say why", "[gen][cli][bad-input]") {
+    TempDir dir;
+    const std::string out = " -o " + q(dir.str("x.cbn"));
+    auto both = run_parsons("gen airfoil --naca 2412 --dat foo.dat" + out);
+    CHECK(both.exit_code == 2);
+    CHECK(both.output.find("give exactly one of --naca DIGITS or --dat FILE") != std::string::npos);
+    auto digits = run_parsons("gen airfoil --naca 24a2" + out);
+    CHECK(digits.exit_code == 2);
+    CHECK(digits.output.find("parsons: error: gen airfoil:") != std::string::npos);
+    write_bytes(dir.path("bad.dat"), "MY FOIL\n1.0 0.0\n0.5 oops\n");
+    auto dat = run_parsons("gen airfoil --dat " + q(dir.str("bad.dat")) + out);
+    CHECK(dat.exit_code == 2);
+    CHECK(dat.output.find(dir.str("bad.dat") + ":3:") != std::string::npos);
+    auto hollow = run_parsons("gen airfoil --naca 2412 --female --cutter-radius 0.25" + out);
+    CHECK(hollow.exit_code == 2);
+    CHECK(hollow.output.find("cannot reach into the surface") != std::string::npos);
+    auto wing = run_parsons("gen airfoil --naca 2412 --job wing --surface lower" + out);
+    CHECK(wing.exit_code == 2);
+    CHECK(wing.output.find("the wing job cuts the upper surface") != std::string::npos);
+    auto huge = run_parsons("gen airfoil --naca 2412 --chord 12" + out);
+    CHECK(huge.exit_code == 2);
+    CHECK(huge.output.find("use a shorter chord") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir.path("x.cbn")));
+    auto nojob = run_parsons("run " + q(source_path("decks/samples/patent-example.csv")) +
+                             " --cut " + q(dir.str("c.svg")));
+    CHECK(nojob.exit_code == 2);
+    CHECK(nojob.output.find("cannot open the job description") != std::string::npos);
+}
+
+TEST_CASE("Demo: the default job writes its deck, cards, report, trace, plot and cut",
+          "[gen][cli][demo]") {
+    TempDir dir;
+    auto demo = run_parsons("demo --out " + q(dir.str("demo")));
+    CHECK(demo.exit_code == 0);
+    CHECK(demo.output.find("status         completed") != std::string::npos);
+    CHECK(demo.output.find("cut            deepest gouge") != std::string::npos);
+    for (const char* f : {"naca2412.cbn", "naca2412.cbn.job.json", "cards/card-0001.svg",
+                          "report.json", "trace.vcd", "plot.svg", "cut.svg", "centres.csv"}) {
+        INFO(f);
+        CHECK(std::filesystem::exists(dir.path("demo/" + std::string(f))));
+    }
+}
