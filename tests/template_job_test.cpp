@@ -177,6 +177,33 @@ TEST_CASE("Template: the same deck with its slow-downs stripped stops with check
     CHECK(run.stop->reason == relaylogic::StopReason::check_mismatch);
 }
 
+TEST_CASE("Template: where the path turns sharply the card is made at the lowest speed "
+          "(corner slow-down, EP 0636958)",
+          "[template][decks]") {
+    TemplateOptions o;
+    o.surface = Surface::both;
+    o.stations = 8; // coarse: the path turns sharply round the leading edge
+    const auto airfoil = naca4("2412");
+    const auto with = make_template_deck(*airfoil, o, axes::default_profile());
+    o.corner_slowdown = false;
+    const auto without = make_template_deck(*airfoil, o, axes::default_profile());
+    REQUIRE(with.corner_cards > 0);
+    CHECK(without.corner_cards == 0);
+    REQUIRE(with.cards.size() == without.cards.size());
+    int slowed = 0;
+    for (std::size_t i = 0; i < with.cards.size(); ++i) {
+        for (cardreader::Axis a : {cardreader::Axis::table, cardreader::Axis::cross}) {
+            const int w = with.cards[i].axis(a).start_speed;
+            const int wo = without.cards[i].axis(a).start_speed;
+            CHECK(w >= wo); // never faster with the corner rule
+            slowed += w > wo ? 1 : 0;
+        }
+    }
+    CHECK(slowed > 0);
+    // Both decks still run to completion: the rule is a margin, the physics still holds.
+    CHECK(run_orders(with.cards).completed);
+}
+
 TEST_CASE("Move planner: speeds and slow-downs follow the profile's physics", "[decks]") {
     const auto profile = axes::default_profile();
     const auto& table = profile.axes.at(0);

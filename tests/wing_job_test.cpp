@@ -34,9 +34,10 @@ constexpr double kTolerance = 0.0015;
 TEST_CASE("Wing: a tapered, swept NACA wing runs to completion and its root and tip sections "
           "are cut within tolerance (Fig. 5)",
           "[wing][decks][fig5]") {
-    auto [digits, radius, taper, sweep] = GENERATE(table<std::string, double, double, double>({
+    auto [source, radius, taper, sweep] = GENERATE(table<std::string, double, double, double>({
         {"2412", 0.25, 0.8, 5.0},
         {"0012", 0.1875, 0.6, 10.0},
+        {"clarky.dat", 0.125, 0.7, 8.0},
     }));
     WingOptions o;
     o.root_chord_in = 4.0;
@@ -45,10 +46,12 @@ TEST_CASE("Wing: a tapered, swept NACA wing runs to completion and its root and 
     o.sweep_deg = sweep;
     o.cutter_radius_in = radius;
     o.scallop_in = 0.002;
-    const auto airfoil = naca4(digits);
+    const auto airfoil = source.size() == 4
+                             ? naca4(source)
+                             : read_dat(std::string(PARSONS_SOURCE_DIR) + "/tests/data/" + source);
     const auto profile = axes::default_profile();
     const WingDeck deck = make_wing_deck(*airfoil, o, profile);
-    INFO("NACA " << digits << ": " << deck.stations.size() << " stations, planned leftover "
+    INFO(source << ": " << deck.stations.size() << " stations, planned leftover "
                  << deck.planned_leftover_in << " gouge " << deck.planned_gouge_in);
     CHECK(deck.planned_leftover_in <= 0.002);
     WorkPath observer(deck.zero, profile);
