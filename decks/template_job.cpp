@@ -223,7 +223,8 @@ void check_cutter_fits(const Airfoil& airfoil, const TemplateOptions& o, const T
                                    "{:.4f} in (at x = {:.3f} in from the leading edge): every "
                                    "deck would gouge there; use a cutter of radius under "
                                    "{:.4f} in",
-                                   o.cutter_radius_in, tightest, where.x(), tightest));
+                                   o.cutter_radius_in, tightest,
+                                   std::abs(where.x()) < 0.0005 ? 0.0 : where.x(), tightest));
     }
 }
 
