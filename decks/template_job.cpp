@@ -17,19 +17,28 @@ constexpr double kPi = 3.14159265358979323846;
 // upper from TE to LE and on round the leading edge along the lower back to the TE.
 struct Track {
     Surface surface;
+    // Where the stations start: the leading edge's own x. For a coordinate file the fitted
+    // leading edge is rarely at x = 0 exactly; every source clamps a station below it to it.
+    double u0 = 0;
     double end() const { return surface == Surface::both ? 2.0 : 1.0; }
+    double u_of(double f) const { return u0 + (1 - u0) * f; }
     std::pair<Side, double> at(double w) const {
         switch (surface) {
         case Surface::upper:
-            return {Side::upper, w};
+            return {Side::upper, u_of(w)};
         case Surface::lower:
-            return {Side::lower, w};
+            return {Side::lower, u_of(w)};
         case Surface::both:
             break;
         }
-        return w < 1.0 ? std::pair{Side::upper, 1.0 - w} : std::pair{Side::lower, w - 1.0};
+        return w < 1.0 ? std::pair{Side::upper, u_of(1.0 - w)}
+                       : std::pair{Side::lower, u_of(w - 1.0)};
     }
 };
+
+Track make_track(const Airfoil& airfoil, Surface surface) {
+    return {surface, std::min(0.0, airfoil.sample(Side::upper, -1.0).point.x())};
+}
 
 Vector2d outward(Side side, const Vector2d& t) {
     return side == Side::upper ? Vector2d(-t.y(), t.x()) : Vector2d(t.y(), -t.x());
@@ -239,7 +248,7 @@ TemplateDeck make_template_deck(const Airfoil& airfoil, const TemplateOptions& o
     if (!(o.chord_in > 0) || !(o.cutter_radius_in > 0)) {
         throw JobError("chord and cutter radius must be positive");
     }
-    const Track track{o.surface};
+    const Track track = make_track(airfoil, o.surface);
     check_cutter_fits(airfoil, o, track);
     const std::vector<double> ws =
         o.scallop_in > 0 ? stations_by_scallop(airfoil, o, track) : stations_by_count(o, track);
@@ -322,7 +331,7 @@ TemplateDeck make_template_deck(const Airfoil& airfoil, const TemplateOptions& o
 
 DesignSamples design_samples(const Airfoil& airfoil, const TemplateOptions& o,
                              const Eigen::Vector2d& work_zero_in, int per_surface) {
-    const Track track{o.surface};
+    const Track track = make_track(airfoil, o.surface);
     DesignSamples out;
     const int n = per_surface * static_cast<int>(track.end());
     for (int k = 0; k <= n; ++k) {

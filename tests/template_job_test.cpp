@@ -231,3 +231,20 @@ TEST_CASE("Move planner: speeds and slow-downs follow the profile's physics", "[
     coasting.axes.at(0).speed_in_per_min = {5.4, 1.8, 1.2};
     CHECK_THROWS_AS(plan_move({0, 4985, 2, false, 1}, coasting.axes.at(0), coasting), PlanError);
 }
+
+TEST_CASE("Template: both surfaces run round the fitted leading edge of a coordinate file, not "
+          "past it",
+          "[template][decks]") {
+    const auto airfoil = read_dat(data_file("clarky.dat"));
+    const double le_x = airfoil->sample(Side::upper, -1.0).point.x();
+    REQUIRE(le_x < 0); // Clark Y's fitted nose lies just ahead of x = 0
+    TemplateOptions o;
+    o.chord_in = 5.0;
+    o.surface = Surface::both;
+    const auto samples = design_samples(*airfoil, o, Eigen::Vector2d::Zero(), 200);
+    double least_x = 1e9;
+    for (const auto& p : samples.points) {
+        least_x = std::min(least_x, p.x());
+    }
+    CHECK(least_x == Approx(le_x * o.chord_in).margin(1e-12));
+}
