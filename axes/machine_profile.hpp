@@ -61,6 +61,12 @@ struct MachineProfile {
     // Departure from the patent, off by default: each slow-down and the stop get their own
     // register instead of sharing banks 350-356 (no spurious matches).
     bool separate_registers = false;
+    // The patent's own answer to impulses faster than the switches (col. 8), off by default:
+    // "count only every one-hundredth of an inch motion rather than every one-thousandth until
+    // the slow down signal occurs". While an axis's speed switch stands on speed 1, switches
+    // 110 and 310 stand still and commutator 100 steps 312 directly. The thousandths they
+    // skip are right again only where the move passes whole hundredths the way it started.
+    bool count_hundredths_at_speed_1 = false;
 };
 
 // The built-in profile, with the five axes named table, cross, vertical, swivel, tilt.

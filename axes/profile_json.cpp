@@ -145,6 +145,11 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
             p.delay_258_s = positive(value, key);
         } else if (key == "sequence_shaft_step_s") {
             p.sequence_shaft_step_s = positive(value, key);
+        } else if (key == "count_hundredths_at_speed_1") {
+            if (!value.is_boolean()) {
+                throw ProfileError("count_hundredths_at_speed_1: expected true or false");
+            }
+            p.count_hundredths_at_speed_1 = value.get<bool>();
         } else if (key == "separate_registers") {
             if (!value.is_boolean()) {
                 throw ProfileError("separate_registers: expected true or false");
@@ -177,6 +182,7 @@ std::string profile_to_json(const MachineProfile& p) {
            {"delay_258_s", p.delay_258_s},
            {"sequence_shaft_step_s", p.sequence_shaft_step_s},
            {"separate_registers", p.separate_registers},
+           {"count_hundredths_at_speed_1", p.count_hundredths_at_speed_1},
            {"axes", axes}};
     return j.dump(2) + "\n";
 }

@@ -246,9 +246,17 @@ void ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     }
     const double min_interval = 1.0 / profile_.max_stepping_rate_per_s;
     const int before = c.absolute_counter.value();
+    // The patent's answer to stepping-rate loss (col. 8), a profile option: while the speed
+    // switch stands on speed 1, count only every hundredth until the first slow-down.
+    const bool hundredths_only =
+        profile_.count_hundredths_at_speed_1 && c.speed_switch.position() == 1 && !stop_;
     c.absolute_counter.impulse(impulse.direction, impulse.hundredths, impulse.tenths,
-                               impulse.inches, now_, min_interval);
-    c.increment_counter.impulse(now_, min_interval);
+                               impulse.inches, now_, min_interval, !hundredths_only);
+    if (!hundredths_only) {
+        c.increment_counter.impulse(now_, min_interval);
+    } else if (impulse.hundredths) {
+        c.increment_counter.hundredths_impulse(now_, min_interval);
+    }
     if (c.absolute_counter.value() != before) {
         c.speed_switch.equality_left(now_); // the wipers break contact as they step
     }

@@ -40,8 +40,10 @@ void AbsoluteCounter::step(std::size_t i, int direction, double t, double min_in
 }
 
 void AbsoluteCounter::impulse(int direction, bool hundredths, bool tenths, bool inches, double t,
-                              double min_interval_s) {
-    step(3, direction, t, min_interval_s);
+                              double min_interval_s, bool count_thousandths) {
+    if (count_thousandths) {
+        step(3, direction, t, min_interval_s);
+    }
     if (hundredths) {
         step(2, direction, t, min_interval_s);
     }
@@ -74,7 +76,15 @@ IncrementCounter::IncrementCounter(Tracer& tracer, const std::string& scope) : t
 }
 
 void IncrementCounter::impulse(double t, double min_interval_s) {
-    for (std::size_t i = 0; i < 4; ++i) {
+    step_from(0, t, min_interval_s);
+}
+
+void IncrementCounter::hundredths_impulse(double t, double min_interval_s) {
+    step_from(1, t, min_interval_s);
+}
+
+void IncrementCounter::step_from(std::size_t first, double t, double min_interval_s) {
+    for (std::size_t i = first; i < 4; ++i) {
         SteppingSwitch::Step s = switches_.at(i).step(+1, t, min_interval_s);
         if (!s.taken) {
             return;

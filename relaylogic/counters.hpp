@@ -28,9 +28,11 @@ class AbsoluteCounter {
 public:
     AbsoluteCounter(Tracer& tracer, const std::string& scope);
 
-    // One crossing of the commutators: 102 always, 100 / 98 / 96 when they close too.
+    // One crossing of the commutators: 102 always, 100 / 98 / 96 when they close too. With
+    // count_thousandths false, commutator 102's impulse is not counted (switch 110 stands):
+    // the patent's counting of hundredths only, at high speed.
     void impulse(int direction, bool hundredths, bool tenths, bool inches, double t,
-                 double min_interval_s);
+                 double min_interval_s, bool count_thousandths = true);
 
     Digits digits() const;
     int value() const { return digits_value(digits()); }
@@ -50,6 +52,8 @@ public:
 
     // One impulse from commutator 102 (channel 120): 310 steps, carries ripple over 333.
     void impulse(double t, double min_interval_s);
+    // Counting hundredths only: commutator 100's impulse steps 312 directly (310 stands).
+    void hundredths_impulse(double t, double min_interval_s);
     // Zeroizing circuit, channel 298: every switch homes.
     void clear();
 
@@ -58,6 +62,8 @@ public:
     long lost() const;
 
 private:
+    void step_from(std::size_t first, double t, double min_interval_s);
+
     Tracer& tracer_;
     std::array<SteppingSwitch, 4> switches_; // 310, 312, 314, 316 (thousandths first)
     std::array<SignalId, 4> signals_{};

@@ -370,3 +370,32 @@ TEST_CASE("Sine plate: the report gives the fixture angles of swivel and tilt", 
           Approx(std::asin((0.99975 - 5.0) / 10.0) * 180 / 3.14159265358979).margin(1e-6));
     CHECK_FALSE(r.axes.at(0).fixture_angle_deg);
 }
+
+TEST_CASE("Counting hundredths at speed 1, the patent's answer to stepping-rate loss, lets a "
+          "fast table reach its stop exactly (col. 8)",
+          "[cabinet][counters]") {
+    auto fast = parsons::axes::default_profile();
+    fast.axes.at(0).speed_in_per_min = {9.0, 1.8, 0.6}; // 150 impulses/s; the switches take 100
+    fast.axes.at(0).acceleration_in_per_s2 = 10.0;
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    // Slow-downs on whole hundredths, where the standing thousandths switch is right again.
+    c.axis(Axis::table) = order(0, 2980, 1, 2780, 2880, 1);
+    // Counting every thousandth, the switches lose steps; the increment counter falls behind
+    // and the check catches it at the stop.
+    RunResult plain = run_orders({c}, fast);
+    CHECK(plain.axes.at(0).lost_steps > 0);
+    REQUIRE(plain.stop);
+    CHECK(plain.stop->reason == StopReason::check_mismatch);
+    fast.count_hundredths_at_speed_1 = true;
+    Recorder rec;
+    RunResult hundredths = run_orders({c}, fast, &rec);
+    REQUIRE(hundredths.completed);
+    CHECK(hundredths.axes.at(0).lost_steps == 0);
+    CHECK(std::abs(hundredths.axes.at(0).error_in) < 0.0005);
+    CHECK(hundredths.axes.at(0).counter_in == Approx(2.980));
+    // While on speed 1 the thousandths switch 110 stood still: its first step comes after the
+    // first slow-down.
+    const double slowed = first_time(rec, "table.speed_switch_236", 2);
+    REQUIRE(slowed > 0);
+    CHECK(first_time(rec, "table.absolute_counter_110", 1) > slowed);
+}

@@ -52,7 +52,7 @@ TEST_CASE("Wing: a tapered, swept NACA wing runs to completion and its root and 
     const auto profile = axes::default_profile();
     const WingDeck deck = make_wing_deck(*airfoil, o, profile);
     INFO(source << ": " << deck.stations.size() << " stations, planned leftover "
-                 << deck.planned_leftover_in << " gouge " << deck.planned_gouge_in);
+                << deck.planned_leftover_in << " gouge " << deck.planned_gouge_in);
     CHECK(deck.planned_leftover_in <= 0.002);
     WorkPath observer(deck.zero, profile);
     const auto run = parsons::test::run_orders(deck.cards, profile, &observer);
