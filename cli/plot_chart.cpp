@@ -1,0 +1,583 @@
+// Drawing the plot that PlotSvgRecorder (plot_svg.cpp) recorded.
+#include "cli/plot_svg.hpp"
+
+#include "cardreader/card_svg.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
+namespace parsons::cli {
+
+using cardreader::Axis;
+using relaylogic::SignalId;
+using Point = PlotSvgRecorder::Point;
+
+// ---------------------------------------------------------------------------------------------
+// Drawing
+//
+//   title, what happened (and the stop message)
+//   legend
+//   card 1      card 2        card 3 ...                 <- one label per card where room
+//   table  motor 38
+//   +--------------------------------------------+ speed 1
+//   |  position (left scale, inches)             | speed 2
+//   |  speed switch step line (right scale)      | speed 3
+//   +--------------------------------------------+ off
+//   cross ... vertical ... swivel ... tilt
+//   0     100     200 ...  machine time (s)
+
+namespace {
+
+constexpr double kWidth = 1100;
+constexpr double kLeft = 86;           // the plot area, px
+constexpr double kRight = kWidth - 92; // leaves room for the speed scale
+constexpr double kPanelHeight = 150;
+constexpr double kPanelGap = 42;
+constexpr double kBottomMargin = 62;
+
+constexpr const char* kPositionColour = "#1f4e9c";
+constexpr const char* kSpeedColour = "#f28e2b";
+constexpr const char* kSlowDownColour = "#c4530b";
+constexpr const char* kStopColour = "#d62728";
+constexpr const char* kCardColour = "#9a9a9a";
+constexpr const char* kGridColour = "#e4e4e4";
+constexpr const char* kTextColour = "#222222";
+
+// A linear map from data to page coordinates.
+struct Scale {
+    double d0, d1, p0, p1;
+    double operator()(double v) const { return p0 + (v - d0) * (p1 - p0) / (d1 - d0); }
+};
+
+struct Ticks {
+    std::vector<double> values;
+    int decimals = 0;
+};
+
+// Round steps of 1, 2, 2.5 or 5 times a power of ten, about `target` of them over [lo, hi].
+Ticks nice_ticks(double lo, double hi, int target) {
+    Ticks ticks;
+    const double raw = (hi - lo) / target;
+    if (!(raw > 0) || !std::isfinite(raw)) {
+        ticks.values.push_back(lo);
+        return ticks;
+    }
+    const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+    double step = 10 * magnitude;
+    double multiple = 10;
+    for (double m : {1.0, 2.0, 2.5, 5.0}) {
+        if (m * magnitude >= raw * 0.999) {
+            step = m * magnitude;
+            multiple = m;
+            break;
+        }
+    }
+    ticks.decimals =
+        std::max(0, static_cast<int>(-std::floor(std::log10(step) + 1e-9))) + (multiple == 2.5);
+    for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + step * 1e-9; k += 1) {
+        const double v = k * step;
+        ticks.values.push_back(std::fabs(v) < step * 1e-9 ? 0.0 : v);
+    }
+    return ticks;
+}
+
+// Word-wraps text into at most max_lines lines of about width characters ("..." if cut).
+std::vector<std::string> wrap(std::string_view text, std::size_t width, std::size_t max_lines) {
+    std::vector<std::string> lines;
+    while (!text.empty() && lines.size() < max_lines) {
+        if (text.size() <= width) {
+            lines.emplace_back(text);
+            return lines;
+        }
+        std::size_t cut = text.rfind(' ', width);
+        if (cut == std::string_view::npos || cut == 0) {
+            cut = width;
+        }
+        lines.emplace_back(text.substr(0, cut));
+        text.remove_prefix(cut);
+        while (!text.empty() && text.front() == ' ') {
+            text.remove_prefix(1);
+        }
+    }
+    if (!text.empty() && !lines.empty()) {
+        lines.back() += " ...";
+    }
+    return lines;
+}
+
+double interpolate(const std::vector<Point>& path, double t) {
+    if (path.empty()) {
+        return 0;
+    }
+    auto it = std::lower_bound(path.begin(), path.end(), t,
+                               [](const Point& p, double v) { return p.t < v; });
+    if (it == path.end()) {
+        return path.back().x;
+    }
+    if (it == path.begin() || it->t == t) {
+        return it->x;
+    }
+    const Point& b = *it;
+    const Point& a = *(it - 1);
+    return a.x + (b.x - a.x) * (t - a.t) / (b.t - a.t);
+}
+
+// The value of a step signal at t: after every change at or before t.
+double step_value_at(const std::vector<Point>& steps, double t) {
+    double v = steps.empty() ? 0 : steps.front().x;
+    for (const Point& s : steps) {
+        if (s.t > t) {
+            break;
+        }
+        v = s.x;
+    }
+    return v;
+}
+
+// The intervals in which a 0/1 step signal is 1, up to t_end.
+std::vector<std::pair<double, double>> on_intervals(const std::vector<Point>& steps, double t_end) {
+    std::vector<std::pair<double, double>> out;
+    bool on = false;
+    double since = 0;
+    for (const Point& s : steps) {
+        if (s.x != 0 && !on) {
+            on = true;
+            since = s.t;
+        } else if (s.x == 0 && on) {
+            out.emplace_back(since, s.t);
+            on = false;
+        }
+    }
+    if (on) {
+        out.emplace_back(since, t_end);
+    }
+    return out;
+}
+
+// The speed-switch scale of a panel: slower is lower, off at the bottom, then 3 (slowest), 2,
+// 1 (fastest) at the top.
+double speed_y(double position, double bottom) {
+    const int level = position >= 1 && position <= 3 ? 4 - static_cast<int>(position) : 0;
+    return bottom - 8 - level * (kPanelHeight - 16) / 3.0;
+}
+
+struct CardLine {
+    double x = 0; // px
+    int number = 0;
+};
+
+// What one panel shows.
+struct Panel {
+    std::string name;  // "table"
+    std::string motor; // "motor 38"
+    std::vector<Point> path;
+    std::vector<Point> speed;
+    std::vector<Point> motor_steps;
+    const std::vector<double>* slow_downs = nullptr;
+    const std::vector<double>* stops = nullptr;
+};
+
+struct StopMark {
+    double t = 0;
+    std::string reason;
+};
+
+class ChartWriter {
+public:
+    ChartWriter(double t_end, std::size_t message_lines)
+        : tx_{0, t_end > 0 ? t_end : 1.0, kLeft, kRight}, time_ticks_(nice_ticks(0, tx_.d1, 10)),
+          legend_y_(80 + 16 * static_cast<double>(message_lines)), first_top_(legend_y_ + 62) {
+        svg_.reserve(64 * 1024);
+    }
+
+    void begin();
+    void titles(const std::string& title, const std::string& outcome,
+                const std::vector<std::string>& message);
+    void legend();
+    void cards(const std::vector<CardLine>& cards);
+    void panel(std::size_t i, const Panel& p, const std::vector<CardLine>& cards,
+               const std::optional<StopMark>& stop);
+    void time_axis(const std::optional<StopMark>& stop);
+    std::string finish() {
+        fmt::format_to(out(), "</svg>\n");
+        return std::move(svg_);
+    }
+    double x(double t) const { return tx_(t); }
+
+private:
+    std::back_insert_iterator<std::string> out() { return std::back_inserter(svg_); }
+    double top(std::size_t i) const {
+        return first_top_ + static_cast<double>(i) * (kPanelHeight + kPanelGap);
+    }
+    double height() const { return top(cardreader::kAxisCount - 1) + kPanelHeight + kBottomMargin; }
+    void polyline(const std::vector<std::vector<std::pair<double, double>>>& runs,
+                  const char* attributes);
+    void speed_line(const Panel& p, double bottom);
+    void markers(const Panel& p, const Scale& ty);
+
+    std::string svg_;
+    Scale tx_;
+    Ticks time_ticks_;
+    double legend_y_;
+    double first_top_;
+};
+
+void ChartWriter::begin() {
+    fmt::format_to(out(),
+                   R"(<svg xmlns="http://www.w3.org/2000/svg" width="{0:.0f}" height="{1:.0f}" )"
+                   R"(viewBox="0 0 {0:.0f} {1:.0f}" )"
+                   R"(font-family="DejaVu Sans, Helvetica, Arial, sans-serif">)"
+                   "\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<defs>\n",
+                   kWidth, height());
+    for (std::size_t i = 0; i < cardreader::kAxisCount; ++i) {
+        fmt::format_to(out(),
+                       R"(<clipPath id="plot-clip-{}"><rect x="{:.1f}" y="{:.1f}" )"
+                       R"(width="{:.1f}" height="{:.1f}"/></clipPath>)"
+                       "\n",
+                       i, kLeft - 7, top(i) - 13, kRight - kLeft + 14, kPanelHeight + 20);
+    }
+    fmt::format_to(out(), "</defs>\n");
+}
+
+void ChartWriter::titles(const std::string& title, const std::string& outcome,
+                         const std::vector<std::string>& message) {
+    fmt::format_to(
+        out(),
+        R"(<text x="{:.1f}" y="30" font-size="19" font-weight="bold" fill="{}">{}</text>)"
+        "\n"
+        R"(<text x="{:.1f}" y="52" font-size="12.5" fill="#444">{}</text>)"
+        "\n",
+        kLeft, kTextColour, cardreader::xml_escape(title), kLeft, cardreader::xml_escape(outcome));
+    for (std::size_t k = 0; k < message.size(); ++k) {
+        fmt::format_to(out(),
+                       R"(<text x="{:.1f}" y="{:.1f}" font-size="11.5" fill="{}">{}</text>)"
+                       "\n",
+                       kLeft, 71 + 16 * static_cast<double>(k), kStopColour,
+                       cardreader::xml_escape(message[k]));
+    }
+}
+
+void ChartWriter::legend() {
+    const double y = legend_y_;
+    double x = kLeft;
+    auto label = [&](const char* text) {
+        fmt::format_to(out(),
+                       R"(<text x="{:.1f}" y="{:.1f}" font-size="12" fill="{}">{}</text>)"
+                       "\n",
+                       x, y + 4, kTextColour, text);
+        x += static_cast<double>(std::string_view(text).size()) * 6.9 + 26;
+    };
+    auto step_glyph = [&](const char* attributes) {
+        fmt::format_to(out(),
+                       R"(<polyline fill="none" stroke="{}" {} points=")"
+                       R"({:.1f},{:.1f} {:.1f},{:.1f} {:.1f},{:.1f} {:.1f},{:.1f}"/>)"
+                       "\n",
+                       kSpeedColour, attributes, x, y - 5, x + 12, y - 5, x + 12, y + 4, x + 24,
+                       y + 4);
+        x += 30;
+    };
+    fmt::format_to(out(),
+                   R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{2:.1f}" y2="{1:.1f}" stroke="{3}" )"
+                   R"(stroke-width="2"/>)"
+                   "\n",
+                   x, y, x + 24, kPositionColour);
+    x += 30;
+    label("real position, in (left scale)");
+    step_glyph(R"(stroke-width="1.8")");
+    label("speed switch 236 (right scale)");
+    step_glyph(R"(stroke-width="1.2" stroke-opacity="0.4")");
+    label("motor off");
+    fmt::format_to(out(),
+                   R"(<path d="M{:.1f},{:.1f} h11 l-5.5,9 z" fill="{}" stroke="white" )"
+                   R"(stroke-width="0.8"/>)"
+                   "\n",
+                   x, y - 5, kSlowDownColour);
+    x += 17;
+    label("slow-down");
+    fmt::format_to(out(),
+                   R"(<circle cx="{:.1f}" cy="{:.1f}" r="4.5" fill="{}" stroke="white" )"
+                   R"(stroke-width="0.8"/>)"
+                   "\n",
+                   x + 5, y, kStopColour);
+    x += 16;
+    label("stop");
+    fmt::format_to(out(),
+                   R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" stroke="{3}" )"
+                   R"(stroke-dasharray="3,2"/>)"
+                   "\n",
+                   x + 3, y - 7, y + 7, kCardColour);
+    x += 10;
+    label("card read");
+}
+
+// One label per card where there is room: "card N" when every card has room, else "N".
+void ChartWriter::cards(const std::vector<CardLine>& cards) {
+    bool roomy = true;
+    for (std::size_t k = 1; k < cards.size(); ++k) {
+        roomy = roomy && cards[k].x - cards[k - 1].x >= 50;
+    }
+    double free_from = -1e9;
+    for (const CardLine& c : cards) {
+        const std::string text =
+            roomy ? fmt::format("card {}", c.number) : fmt::format("{}", c.number);
+        const double w = static_cast<double>(text.size()) * 6.2 + 6;
+        if (c.x - 2 < free_from || c.x - 2 + w > kWidth - 4) {
+            continue;
+        }
+        fmt::format_to(out(),
+                       R"(<text x="{:.1f}" y="{:.1f}" font-size="10.5" fill="#555">{}</text>)"
+                       "\n",
+                       c.x - 2, first_top_ - 29, text);
+        free_from = c.x - 2 + w;
+    }
+}
+
+void ChartWriter::polyline(const std::vector<std::vector<std::pair<double, double>>>& runs,
+                           const char* attributes) {
+    std::string d;
+    for (const auto& run : runs) {
+        double lx = -1e9;
+        double ly = -1e9;
+        for (std::size_t i = 0; i < run.size(); ++i) {
+            const double x = std::round(run[i].first * 10) / 10;
+            const double y = std::round(run[i].second * 10) / 10;
+            if (x == lx && y == ly) {
+                continue; // lands where the last point did
+            }
+            fmt::format_to(std::back_inserter(d), "{}{:.1f},{:.1f}", i == 0 ? "M" : " L", x, y);
+            lx = x;
+            ly = y;
+        }
+    }
+    if (!d.empty()) {
+        fmt::format_to(out(),
+                       R"(<path fill="none" {} d="{}"/>)"
+                       "\n",
+                       attributes, d);
+    }
+}
+
+// The speed switch as a step line: faint all along, strong while the motor runs.
+void ChartWriter::speed_line(const Panel& p, double bottom) {
+    auto y = [bottom](double position) { return speed_y(position, bottom); };
+    auto run = [&](double t0, double t1) {
+        std::vector<std::pair<double, double>> pts;
+        double v = step_value_at(p.speed, t0);
+        pts.emplace_back(tx_(t0), y(v));
+        for (const Point& s : p.speed) {
+            if (s.t > t0 && s.t < t1) {
+                pts.emplace_back(tx_(s.t), y(v));
+                v = s.x;
+                pts.emplace_back(tx_(s.t), y(v));
+            }
+        }
+        pts.emplace_back(tx_(t1), y(v));
+        return pts;
+    };
+    polyline({run(0, tx_.d1)}, R"(class="speed-off" stroke="#f28e2b" stroke-opacity="0.4" )"
+                               R"(stroke-width="1.2")");
+    std::vector<std::vector<std::pair<double, double>>> running;
+    for (const auto& [t0, t1] : on_intervals(p.motor_steps, tx_.d1)) {
+        running.push_back(run(t0, t1));
+    }
+    polyline(running, R"(class="speed" stroke="#f28e2b" stroke-width="1.8")");
+}
+
+void ChartWriter::markers(const Panel& p, const Scale& ty) {
+    double last_x = -1e9;
+    for (double t : *p.slow_downs) {
+        const double x = tx_(t);
+        if (std::fabs(x - last_x) >= 1.5) {
+            last_x = x;
+            fmt::format_to(out(),
+                           R"(<path class="slowdown-marker" data-axis="{}" )"
+                           R"(d="M{:.1f},{:.1f} h11 l-5.5,9 z" fill="{}" stroke="white" )"
+                           R"(stroke-width="0.8"><title>{}: slow-down at {:.3f} s</title></path>)"
+                           "\n",
+                           p.name, x - 5.5, ty(interpolate(p.path, t)) - 12, kSlowDownColour,
+                           p.name, t);
+        }
+    }
+    last_x = -1e9;
+    for (double t : *p.stops) {
+        const double x = tx_(t);
+        if (std::fabs(x - last_x) >= 1.5) {
+            last_x = x;
+            const double at = interpolate(p.path, t);
+            fmt::format_to(out(),
+                           R"(<circle class="stop-marker" data-axis="{}" cx="{:.1f}" cy="{:.1f}" )"
+                           R"(r="4.5" fill="{}" stroke="white" stroke-width="0.8">)"
+                           R"(<title>{}: stop at {:.3f} s, {:.4f} in</title></circle>)"
+                           "\n",
+                           p.name, x, ty(at), kStopColour, p.name, t, at);
+        }
+    }
+}
+
+void ChartWriter::panel(std::size_t i, const Panel& p, const std::vector<CardLine>& cards,
+                        const std::optional<StopMark>& stop) {
+    const double panel_top = top(i);
+    const double bottom = panel_top + kPanelHeight;
+    double lo = 0;
+    double hi = 0;
+    if (!p.path.empty()) {
+        const auto [mn, mx] = std::minmax_element(
+            p.path.begin(), p.path.end(), [](const Point& a, const Point& b) { return a.x < b.x; });
+        lo = mn->x;
+        hi = mx->x;
+    }
+    const double span = std::max(hi - lo, 0.01);
+    const double mid = (lo + hi) / 2;
+    const Scale ty{mid - span * 0.56, mid + span * 0.56, bottom, panel_top};
+    const Ticks y_ticks = nice_ticks(ty.d0, ty.d1, 5);
+
+    fmt::format_to(
+        out(),
+        R"(<g class="panel" data-axis="{0}">)"
+        "\n"
+        R"(<text x="{1:.1f}" y="{2:.1f}" font-size="13.5" fill="{3}">)"
+        R"(<tspan font-weight="bold">{0}</tspan><tspan dx="9" fill="#666">{4}</tspan></text>)"
+        "\n"
+        R"(<rect x="{1:.1f}" y="{5:.1f}" width="{6:.1f}" height="{7:.1f}" )"
+        R"(fill="#fdfdfd" stroke="#b8b8b8"/>)"
+        "\n",
+        p.name, kLeft, panel_top - 9, kTextColour, cardreader::xml_escape(p.motor), panel_top,
+        kRight - kLeft, kPanelHeight);
+    for (double v : y_ticks.values) {
+        const double y = ty(v);
+        fmt::format_to(out(),
+                       R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}"/>)"
+                       R"(<text x="{:.1f}" y="{:.1f}" font-size="11" text-anchor="end" )"
+                       R"(fill="{}">{:.{}f}</text>)"
+                       "\n",
+                       kLeft, y, kRight, y, kGridColour, kLeft - 6, y + 4, kPositionColour, v,
+                       y_ticks.decimals);
+    }
+    for (double v : time_ticks_.values) {
+        fmt::format_to(out(),
+                       R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" stroke="{3}"/>)"
+                       "\n",
+                       tx_(v), panel_top, bottom, kGridColour);
+    }
+    for (int position : {0, 3, 2, 1}) {
+        fmt::format_to(out(),
+                       R"(<text x="{:.1f}" y="{:.1f}" font-size="10.5" fill="{}">{}</text>)"
+                       "\n",
+                       kRight + 7, speed_y(position, bottom) + 4, kSpeedColour,
+                       position == 0 ? std::string("off") : fmt::format("speed {}", position));
+    }
+    fmt::format_to(out(),
+                   R"~(<text transform="translate({:.1f},{:.1f}) rotate(-90)" font-size="11" )~"
+                   R"(text-anchor="middle" fill="{}">inches</text>)"
+                   "\n",
+                   kLeft - 64, (panel_top + bottom) / 2, kPositionColour);
+    for (const CardLine& c : cards) {
+        fmt::format_to(out(),
+                       R"(<line class="card" x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" )"
+                       R"(stroke="{3}" stroke-width="0.8" stroke-dasharray="3,2"/>)"
+                       "\n",
+                       c.x, i == 0 ? panel_top - 24 : panel_top, bottom, kCardColour);
+    }
+    if (stop) {
+        fmt::format_to(out(),
+                       R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" )"
+                       R"(stroke="{3}" stroke-width="1.2" stroke-dasharray="6,3"/>)"
+                       "\n",
+                       tx_(stop->t), panel_top, bottom, kStopColour);
+    }
+    fmt::format_to(out(),
+                   R"~(<g clip-path="url(#plot-clip-{})">)~"
+                   "\n",
+                   i);
+    speed_line(p, bottom);
+    std::vector<std::pair<double, double>> line;
+    line.reserve(p.path.size());
+    for (const Point& q : p.path) {
+        line.emplace_back(tx_(q.t), ty(q.x));
+    }
+    polyline({line}, R"(class="position" stroke="#1f4e9c" stroke-width="1.8" )"
+                     R"(stroke-linejoin="round")");
+    markers(p, ty);
+    fmt::format_to(out(), "</g>\n</g>\n");
+}
+
+void ChartWriter::time_axis(const std::optional<StopMark>& stop) {
+    const double axis_y = top(cardreader::kAxisCount - 1) + kPanelHeight;
+    for (double v : time_ticks_.values) {
+        fmt::format_to(out(),
+                       R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" )"
+                       R"(stroke="#888"/><text x="{0:.1f}" y="{3:.1f}" font-size="11" )"
+                       R"(text-anchor="middle" fill="{4}">{5:.{6}f}</text>)"
+                       "\n",
+                       tx_(v), axis_y, axis_y + 5, axis_y + 18, kTextColour, v,
+                       time_ticks_.decimals);
+    }
+    fmt::format_to(out(),
+                   R"(<text x="{:.1f}" y="{:.1f}" font-size="12" text-anchor="middle" )"
+                   R"(fill="{}">machine time (s)</text>)"
+                   "\n",
+                   (kLeft + kRight) / 2, axis_y + 40, kTextColour);
+    if (stop) {
+        const double x = tx_(stop->t);
+        const bool left = x > kRight - 150;
+        fmt::format_to(out(),
+                       R"(<text x="{:.1f}" y="{:.1f}" font-size="10.5" fill="{}" )"
+                       R"(text-anchor="{}">stop: {}</text>)"
+                       "\n",
+                       left ? x - 4 : x + 4, axis_y + 32, kStopColour, left ? "end" : "start",
+                       stop->reason);
+    }
+}
+
+} // namespace
+
+std::string PlotSvgRecorder::svg() const {
+    const double t_end = end_time();
+    const std::vector<std::string> message =
+        stop_ ? wrap(stop_->message, 140, 3) : std::vector<std::string>{};
+    ChartWriter chart(t_end, message.size());
+    std::optional<StopMark> stop;
+    if (stop_) {
+        stop = StopMark{stop_t_, std::string(relaylogic::stop_reason_name(stop_->reason))};
+    }
+    std::vector<CardLine> cards;
+    for (const CardMark& c : cards_) {
+        const double x = chart.x(c.t);
+        if (cards.empty() || x - cards.back().x >= 1.0) { // one line per pixel
+            cards.push_back(CardLine{x, c.number});
+        }
+    }
+    const std::string outcome =
+        fmt::format("{} card{} read, {:.2f} s of machine time, {}", cards_.size(),
+                    cards_.size() == 1 ? "" : "s", t_end,
+                    stop_ ? fmt::format("machine stopped at {:.2f} s: {} (card {})", stop_t_,
+                                        relaylogic::stop_reason_name(stop_->reason), stop_->card)
+                          : std::string("ran to the end of the deck"));
+
+    chart.begin();
+    chart.titles(title_.empty() ? std::string("Parsons-Stulen control: the five lead screws "
+                                              "against machine time")
+                                : title_,
+                 outcome, message);
+    chart.legend();
+    chart.cards(cards);
+    for (std::size_t i = 0; i < axes_.size(); ++i) {
+        const AxisTrace& a = axes_[i];
+        Panel p;
+        p.name = std::string(cardreader::axis_name(cardreader::kAxes.at(i)));
+        p.motor = a.motor_name.empty() ? std::string("lead screw") : "lead screw, " + a.motor_name;
+        p.path = path(cardreader::kAxes.at(i));
+        p.speed = a.speed;
+        p.motor_steps = a.motor;
+        p.slow_downs = &a.slow_downs;
+        p.stops = &a.stops;
+        chart.panel(i, p, cards, stop);
+    }
+    chart.time_axis(stop);
+    return chart.finish();
+}
+
+} // namespace parsons::cli
