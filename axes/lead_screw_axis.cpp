@@ -10,6 +10,9 @@ constexpr double kPi = 3.14159265358979323846;
 
 // Time to cover distance D > 0 from speed u with acceleration a, or kNever.
 double time_to_cover(double D, double u, double a) {
+    if (D <= 0) {
+        return 0; // on the boundary already: the crossing is now
+    }
     if (a == 0) {
         return u > 0 ? D / u : kNever;
     }

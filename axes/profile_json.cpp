@@ -159,9 +159,12 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
             throw ProfileError(fmt::format("{}: unknown key", key));
         }
     }
-    if (!(p.first_bank_s < p.second_bank_s && p.second_bank_s < p.reader_cycle_s)) {
-        throw ProfileError("first_bank_s < second_bank_s < reader_cycle_s must hold (the two "
-                           "brush banks sense the card within one card cycle)");
+    if (!(p.first_bank_s + p.relay_operate_s < p.second_bank_s &&
+          p.second_bank_s + 3 * p.stepping_switch_step_s <= p.reader_cycle_s)) {
+        throw ProfileError("first_bank_s + relay_operate_s < second_bank_s and second_bank_s + 3 "
+                           "stepping_switch_step_s <= reader_cycle_s must hold (the two brush "
+                           "banks sense the card, its relays pick and the speed switches step "
+                           "within one card cycle)");
     }
     return p;
 }

@@ -51,7 +51,7 @@ void ControlCabinet::attach(MachineObserver* observer) {
 }
 
 void ControlCabinet::schedule(double t, EventKind kind, int axis) {
-    queue_.push(Event{t, seq_++, kind, axis});
+    queue_.push(Event{t, seq_++, kind, axis, cards_read_});
 }
 
 std::string ControlCabinet::card_name() const {
@@ -113,12 +113,18 @@ void ControlCabinet::handle(const Event& e) {
     if (stop_ && e.kind != EventKind::feed) {
         return; // master switch open: the cabinet is dead
     }
+    if (e.kind != EventKind::feed && e.card != cards_read_) {
+        return; // an action of a card the zeroizing circuit has already cleared
+    }
     switch (e.kind) {
     case EventKind::feed:
         feed();
         break;
     case EventKind::first_bank:
         first_bank();
+        break;
+    case EventKind::relays_pick:
+        relays_pick();
         break;
     case EventKind::second_bank:
         for (std::size_t i = 0; i < circuits_.size(); ++i) {
@@ -128,9 +134,12 @@ void ControlCabinet::handle(const Event& e) {
             }
         }
         break;
-    case EventKind::speed_step_252:
-        circuits_.at(static_cast<std::size_t>(e.axis))->speed_switch.step_from_card();
+    case EventKind::speed_step_252: {
+        AxisCircuit& c = *circuits_.at(static_cast<std::size_t>(e.axis));
+        c.speed_switch.step_from_card();
+        update_motor(c); // the motor runs at whatever speed the switch stands on
         break;
+    }
     case EventKind::read_complete:
         read_complete();
         break;
@@ -195,6 +204,11 @@ void ControlCabinet::first_bank() {
     }
     previous_number_ = orders_.number;
     tracer_.set(card_number_136_, static_cast<std::uint32_t>(orders_.number));
+    // The brushes have sensed the card; the holding relays pick a relay's operate time later.
+    schedule(now_ + profile_.relay_operate_s, EventKind::relays_pick);
+}
+
+void ControlCabinet::relays_pick() {
     tracer_.set(spindle_165_, static_cast<std::uint32_t>(orders_.spindle));
     last_sequence_position_ = 0;
     for (auto& c : circuits_) {
@@ -250,8 +264,11 @@ void ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     // switch stands on speed 1, count only every hundredth until the first slow-down.
     const bool hundredths_only =
         profile_.count_hundredths_at_speed_1 && c.speed_switch.position() == 1 && !stop_;
-    c.absolute_counter.impulse(impulse.direction, impulse.hundredths, impulse.tenths,
-                               impulse.inches, now_, min_interval, !hundredths_only);
+    // The counters count up or down as reversing control 214 set them (the motion column),
+    // whichever way the screw really turns: coast that runs on after the next card has set the
+    // other sense is counted the wrong way, as on the 1952 machine.
+    c.absolute_counter.impulse(c.direction, impulse.hundredths, impulse.tenths, impulse.inches,
+                               now_, min_interval, !hundredths_only);
     if (!hundredths_only) {
         c.increment_counter.impulse(now_, min_interval);
     } else if (impulse.hundredths) {

@@ -81,6 +81,7 @@ private:
     enum class EventKind : std::uint8_t {
         feed,
         first_bank,
+        relays_pick,
         second_bank,
         speed_step_252,
         read_complete,
@@ -92,6 +93,7 @@ private:
         std::uint64_t seq;
         EventKind kind;
         int axis;
+        long card; // the card it belongs to: the zeroizing circuit ends every pending action
         bool operator>(const Event& o) const { return t != o.t ? t > o.t : seq > o.seq; }
     };
 
@@ -99,6 +101,7 @@ private:
     void handle(const Event& e);
     void feed();
     void first_bank();
+    void relays_pick();
     void read_complete();
     void on_impulse(AxisCircuit& c, const axes::Impulse& impulse);
     void evaluate(AxisCircuit& c);

@@ -2,6 +2,7 @@
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 
+#include "axes/profile_json.hpp"
 #include "cardreader/deck_io.hpp"
 
 #include <catch2/catch.hpp>
@@ -398,4 +399,46 @@ TEST_CASE("Counting hundredths at speed 1, the patent's answer to stepping-rate 
     const double slowed = first_time(rec, "table.speed_switch_236", 2);
     REQUIRE(slowed > 0);
     CHECK(first_time(rec, "table.absolute_counter_110", 1) > slowed);
+}
+
+TEST_CASE("Counters count as the motion column set them: coast that runs on after the next card "
+          "has set reverse is counted down (rule 3)",
+          "[cabinet][counters]") {
+    // Card 1 takes the table forward at speed 1 with no slow-downs, last in the sequence, so
+    // it coasts on after its stop; card 2 sets reverse while the table is still coasting.
+    CardOrders one = idle_card(1, {0, 0, 0, 0, 0});
+    one.axis(Axis::table) = order(0, 1000, 1, {}, {}, 0b10000);
+    one.axis(Axis::tilt).sequence = 0b00001;
+    CardOrders two = idle_card(2, {1000, 0, 0, 0, 0});
+    two.axis(Axis::table) = order(1000, 900, 3, {}, {}, 0b00001);
+    Recorder rec;
+    run_orders({one, two}, parsons::axes::default_profile(), &rec);
+    const double reverse_set = first_time(rec, "table.reversing_control_214", 1);
+    const double motor_on_again = [&] {
+        for (const auto& ch : rec.of("table.motor_38")) {
+            if (ch.new_value == 1 && ch.t > reverse_set) {
+                return ch.t;
+            }
+        }
+        return 1e9;
+    }();
+    REQUIRE(reverse_set > 0);
+    int counted_down_while_coasting_forward = 0;
+    for (const auto& ch : rec.of("table.absolute_counter_110")) {
+        if (ch.t > reverse_set && ch.t < motor_on_again) {
+            CHECK(ch.new_value == (ch.old_value + 9) % 10); // a step down
+            ++counted_down_while_coasting_forward;
+        }
+    }
+    CHECK(counted_down_while_coasting_forward > 0);
+}
+
+TEST_CASE("Profile: a card cycle too short for the relays and speed switches is refused",
+          "[cabinet][profile]") {
+    CHECK_THROWS_WITH(parsons::axes::profile_from_json(R"({"reader_cycle_s": 0.305})",
+                                                       parsons::axes::default_profile()),
+                      Catch::Contains("second_bank_s + 3 stepping_switch_step_s <= "
+                                      "reader_cycle_s must hold"));
+    CHECK_NOTHROW(parsons::axes::profile_from_json(R"({"reader_cycle_s": 0.33})",
+                                                   parsons::axes::default_profile()));
 }
