@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 namespace parsons::cli {
 
 using cardreader::Axis;
@@ -85,6 +87,18 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
     }
     for (Axis a : cardreader::kAxes) {
         const auto& x = r.axes.at(cardreader::axis_index(a));
+        if (x.lost_steps == 0 && std::abs(x.error_in) >= 0.0005) {
+            line(fmt::format("  warning: {} ends {:+.4f} in from where its counters say (counted "
+                             "in the other direction while coasting): the 1952 checks could not "
+                             "see it",
+                             axis_name(a), x.error_in));
+        }
+        if (r.completed && x.last_stop_in && std::abs(x.counter_in - *x.last_stop_in) >= 0.001) {
+            line(fmt::format("  warning: {} ends at {:.3f} in, not on its last stop {:.3f} in: it "
+                             "coasted past (reached the stop too fast) and no later card's check "
+                             "was left to catch it",
+                             axis_name(a), x.counter_in, *x.last_stop_in));
+        }
         if (x.lost_steps > 0) {
             line(fmt::format("  warning: {} lost {} stepping-switch steps (impulses came faster "
                              "than {} can step): its counters read {:+.4f} in from where the "

@@ -470,6 +470,9 @@ RunResult ControlCabinet::result() const {
         a.error_in = std::remainder(a.real_in - a.counter_in, 10.0);
         a.impulses = c.plant.impulses();
         a.lost_steps = c.absolute_counter.lost() + c.increment_counter.lost();
+        if (orders_.number >= 0) {
+            a.last_stop_in = c.order.stop / 1000.0;
+        }
         if (c.axis == Axis::swivel || c.axis == Axis::tilt) {
             a.fixture_angle_deg = c.plant.fixture_angle_deg(c.axis == Axis::tilt);
         }

@@ -45,6 +45,7 @@ struct AxisResult {
     long impulses = 0;                       // commutator 102 impulses the screw produced
     long lost_steps = 0;                     // impulses the stepping switches could not follow
     std::optional<double> fixture_angle_deg; // swivel and tilt
+    std::optional<double> last_stop_in;      // the stop of the last card read, if any
 };
 
 struct CardTiming {
