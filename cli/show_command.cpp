@@ -126,7 +126,8 @@ ExitCode run_show(const ShowFlags& f) {
     fmt::print("{} card{} read, {} warning{}, {} with bad punches\n", index, index == 1 ? "" : "s",
                notes, notes == 1 ? "" : "s", bad_cards);
     if (!f.svg_dir.empty()) {
-        fmt::print("card pictures: {}/card-0001.svg .. card-{:04}.svg\n", f.svg_dir, index);
+        fmt::print("card pictures: {} .. card-{:04}.svg\n",
+                   (std::filesystem::path(f.svg_dir) / "card-0001.svg").string(), index);
     }
     if (first_bad) {
         throw DeckError(*first_bad + (bad_cards > 1 ? fmt::format(" (and {} more cards with bad "
