@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
 
 int main(int argc, char** argv) {
     using namespace parsons::cli;
@@ -25,6 +26,23 @@ int main(int argc, char** argv) {
     add_gen_command(app, selected);
     add_demo_command(app, selected);
 
+    // Name an unknown command rather than let CLI11 say only that one is required.
+    if (argc > 1 && argv[1][0] != '-') {
+        const std::string word = argv[1];
+        bool known = false;
+        std::string names;
+        for (const CLI::App* sub : app.get_subcommands({})) {
+            known = known || sub->get_name() == word;
+            names += (names.empty() ? "" : ", ") + sub->get_name();
+        }
+        if (!known) {
+            fmt::print(stderr,
+                       "parsons: error: unknown command '{}' (one of: {}; see parsons "
+                       "--help)\n",
+                       word, names);
+            return to_int(ExitCode::bad_input);
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

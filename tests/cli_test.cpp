@@ -164,7 +164,11 @@ TEST_CASE("CLI: a text deck that cannot hold a fig8 card is refused by card and 
 
 TEST_CASE("CLI: usage errors exit 2, --help exits 0 with an example", "[cli]") {
     CHECK(run_parsons("").exit_code == 2);
-    CHECK(run_parsons("frobnicate").exit_code == 2);
+    auto unknown_command = run_parsons("frobnicate");
+    CHECK(unknown_command.exit_code == 2);
+    CHECK(unknown_command.output.find("parsons: error: unknown command 'frobnicate' (one of: "
+                                      "punch, show, convert, run, profile, gen, demo") !=
+          std::string::npos);
     CHECK(run_parsons("punch").exit_code == 2);
     auto missing = run_parsons("show /nonexistent/deck.cbn");
     CHECK(missing.exit_code == 2);
