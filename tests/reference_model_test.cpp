@@ -5,6 +5,7 @@
 // always completes. The relay-level emulation must agree on random valid decks, card by card:
 // the absolute counters read what the model says at every zeroizing, and the run completes.
 #include "tests/machine_support.hpp"
+#include "tests/test_support.hpp"
 
 #include "cardreader/deck_review.hpp"
 
@@ -161,4 +162,28 @@ TEST_CASE("Reference model: the relay-level machine agrees with plain integer ar
             CHECK(std::abs(r.axes.at(i).error_in) < 0.0005);
         }
     }
+}
+
+TEST_CASE("Cabinet: any orders at all end, completed or stopped with a reason, never hung",
+          "[cabinet][reference]") {
+    std::mt19937 rng(2026);
+    int completed = 0;
+    int stopped = 0;
+    for (int deck = 0; deck < 200; ++deck) {
+        std::vector<CardOrders> orders;
+        const int cards = 1 + static_cast<int>(rng() % 3);
+        int number = static_cast<int>(rng() % 10000);
+        for (int n = 0; n < cards; ++n) {
+            CardOrders c = parsons::test::random_orders(rng, fig8_layout());
+            c.number = rng() % 8 == 0 ? c.number : (number + n) % 10000; // mostly in order
+            orders.push_back(c);
+        }
+        const RunResult r = run_orders(orders);
+        INFO("deck " << deck);
+        CHECK(r.completed != r.stop.has_value());
+        CHECK(r.cards_read >= 1);
+        CHECK(r.machine_seconds < 1e5); // bounded: limits and checks end every card
+        (r.completed ? completed : stopped) += 1;
+    }
+    CHECK(stopped > 0);
 }
