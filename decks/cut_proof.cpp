@@ -343,7 +343,18 @@ public:
             [&](const Vector2d& centre) { return segment_distance_sq(centre, p, e1) <= keep_sq; },
             [&](std::size_t k, const Run& run) {
                 const double det = cross(n, run.u);
-                if (k + 1 == i || k == i || run.len == 0 || det == 0) {
+                if (k + 1 == i || k == i || run.len == 0) {
+                    return;
+                }
+                // Another stretch of the contour that starts or ends at p itself (the seam of
+                // a closed contour, where the two surfaces meet at a sharp trailing edge, up to
+                // the rounding of the fit): there is no material between them.
+                if ((run.a - p).squaredNorm() < kSeam * kSeam ||
+                    (run.a + run.len * run.u - p).squaredNorm() < kSeam * kSeam) {
+                    first = 0;
+                    return;
+                }
+                if (det == 0) {
                     return;
                 }
                 const Vector2d d = run.a - p;
@@ -358,6 +369,7 @@ public:
 
 private:
     static constexpr double kTouch = 1e-12;
+    static constexpr double kSeam = 1e-9; // inches
     static double cross(const Vector2d& x, const Vector2d& y) {
         return x.x() * y.y() - x.y() * y.x();
     }

@@ -79,20 +79,44 @@ struct Deviation {
     double gouge = 0;
 };
 
-// How far the surface between two stations ends up from the staircase cut between them.
+// How far the surface between two stations ends up from the staircase cut between them,
+// measured as the proof of the cut measures it (decks/cut_proof.hpp): a point the cutter
+// came nearer than R to is gouged by the difference; a point it did not reach has material
+// left standing up to where, out along its normal, the cutter's swept region begins.
 Deviation span_deviation(const Airfoil& airfoil, const TemplateOptions& o, const Track& track,
-                         double wa, double wb, const Station& a, const Station& b) {
+                         double wa, double wb, const Station& a, const Station& b,
+                         int samples = 16) {
     const Vector2d corner = corner_between(a, b);
+    const double r = o.cutter_radius_in;
+    auto dist = [&](const Vector2d& p) {
+        return std::min(segment_distance(p, a.centre, corner),
+                        segment_distance(p, corner, b.centre));
+    };
     Deviation d;
-    constexpr int kSamples = 16;
-    for (int k = 0; k <= kSamples; ++k) {
-        const double w = wa + (wb - wa) * k / kSamples;
-        const Vector2d p = station_at(airfoil, o, track, w).work;
-        const double dist =
-            std::min(segment_distance(p, a.centre, corner), segment_distance(p, corner, b.centre));
-        const double dev = dist - o.cutter_radius_in;
-        d.leftover = std::max(d.leftover, dev);
-        d.gouge = std::max(d.gouge, -dev);
+    constexpr int kMarch = 48;
+    for (int k = 0; k <= samples; ++k) {
+        const Station s = station_at(airfoil, o, track, wa + (wb - wa) * k / samples);
+        const double d0 = dist(s.work);
+        if (d0 <= r) {
+            d.gouge = std::max(d.gouge, r - d0);
+            continue;
+        }
+        const double t_max = 2 * r + d0;
+        double lo_t = 0;
+        double hi_t = t_max;
+        for (int i = 1; i <= kMarch; ++i) {
+            const double t = t_max * i / kMarch;
+            if (dist(s.work + t * s.toward_cutter) <= r) {
+                hi_t = t;
+                break;
+            }
+            lo_t = t;
+        }
+        for (int i = 0; i < 30; ++i) {
+            const double mid = (lo_t + hi_t) / 2;
+            (dist(s.work + mid * s.toward_cutter) <= r ? hi_t : lo_t) = mid;
+        }
+        d.leftover = std::max(d.leftover, hi_t);
     }
     return d;
 }
@@ -259,7 +283,7 @@ TemplateDeck make_template_deck(const Airfoil& airfoil, const TemplateOptions& o
     }
     for (std::size_t i = 0; i + 1 < ws.size(); ++i) {
         const Deviation d = span_deviation(airfoil, o, track, ws[i], ws[i + 1], deck.stations[i],
-                                           deck.stations[i + 1]);
+                                           deck.stations[i + 1], 256); // dense: the figure reported
         deck.planned_leftover_in = std::max(deck.planned_leftover_in, d.leftover);
         deck.planned_gouge_in = std::max(deck.planned_gouge_in, d.gouge);
     }
@@ -286,26 +310,38 @@ TemplateDeck make_template_deck(const Airfoil& airfoil, const TemplateOptions& o
     };
 
     CardMaker maker{profile, deck.cards};
-    // Approach from the reference zero (below and left of the whole job) on the cutter's side
-    // of the surface: from above when the cutter works above it (male upper, and both
-    // surfaces, which start at the upper trailing edge), from below otherwise. The first
-    // station alone cannot say: at the leading edge its normal is horizontal.
+    // Approach from the reference zero (below and left of the whole job). The last stretch
+    // comes in along the first station's own normal, from a point A a little way out on the
+    // cutter's side, by a staircase whose corner is on the cutter's side (so the cutter never
+    // passes nearer the surface than R: a cambered nose tilts its normal away from the
+    // horizontal, and a plain vertical drop would graze it). A is reached from the reference
+    // zero from the left when A lies left of the whole job, otherwise over the top (the cutter
+    // works above the surface) or from underneath (it works below).
     const Station& first = deck.stations.front();
     const auto [fx, fy] = machine(first.centre);
+    const Vector2d out = first.centre + (o.margin_in / 2) * first.toward_cutter;
+    const auto [ax, ay] = machine(out);
     double side = 0;
     for (const Station& s : deck.stations) {
         side += s.toward_cutter.y();
     }
-    const bool from_above = o.surface == Surface::both || side >= 0;
-    if (from_above) {
+    const bool left_of_job = out.x() < lo.x();
+    if (left_of_job) {
+        maker.move(0, ay, false, false);
+        maker.move(ax, ay, true, false);
+    } else if (o.surface == Surface::both || side >= 0) {
         const int top = thousandths(hi.y() + deck.work_zero_in.y() + o.margin_in / 2);
         maker.move(0, top, false, false);
-        maker.move(fx, top, true, false);
-        maker.move(fx, fy, false, false);
+        maker.move(ax, top, true, false);
+        maker.move(ax, ay, false, false);
     } else {
-        maker.move(fx, 0, true, false);
-        maker.move(fx, fy, false, false);
+        maker.move(ax, 0, true, false);
+        maker.move(ax, ay, false, false);
     }
+    Station approach = first;
+    approach.centre = out;
+    const Vector2d last_corner = corner_between(approach, first);
+    maker.move(fx, fy, last_corner.y() == approach.centre.y(), false);
     const double limit = o.corner_limit_deg * kPi / 180;
     for (std::size_t i = 1; i < deck.stations.size(); ++i) {
         const Station& a = deck.stations[i - 1];

@@ -388,3 +388,25 @@ TEST_CASE("Cut proof: a cut right through a thin part gouges the part's thicknes
     CHECK(proof.deviation_in[151] == Approx(-0.01).margin(1e-9)); // lower face, x = 0.5
     CHECK(std::isnan(proof.deviation_in[0]));                     // x = 0, 0.5 in away
 }
+
+TEST_CASE("Cut proof: at the seam of a closed contour, where the surfaces meet to within the "
+          "fit's rounding, no material lies between them and nothing is gouged",
+          "[cut]") {
+    using parsons::decks::DesignContour;
+    // A thin wedge: the upper surface from the trailing edge to the nose, the lower back to a
+    // trailing edge a hair to the right of the first point (a spline fit's rounding).
+    DesignContour design;
+    design.points = {{1.0, 0.0}, {0.5, 0.02}, {0.0, 0.0}, {0.5, -0.02}, {1.0 + 1e-10, 0.0}};
+    design.normals = {{0.04, 1.0}, {0.0, 1.0}, {-1.0, 0.0}, {0.0, -1.0}, {0.04, -1.0}};
+    for (auto& n : design.normals) {
+        n.normalize();
+    }
+    // Cutters a fifth of a thousandth nearer the trailing edge than R (the coast), above it and
+    // below it: the overcut there is a fifth of a thousandth, not the depth through the wedge.
+    const double r = 0.1;
+    const double near = r - 0.0002;
+    const std::vector<Eigen::Vector2d> path = {{1.0, near}, {1.0, 0.3},  {1.3, 0.3},
+                                               {1.3, -0.3}, {1.0, -0.3}, {1.0, -near}};
+    const auto proof = parsons::decks::prove_cut(path, r, design, 3 * r);
+    CHECK(proof.max_gouge_in < 0.001);
+}

@@ -77,6 +77,10 @@ TEST_CASE("Template: NACA 2412 and 0012 decks run to completion and cut within t
         {"2412", 0.125, Surface::lower},
         {"0012", 0.375, Surface::both},
         {"2412", 0.5, Surface::both},
+        // Strong camber tilts the nose's normal along the camber line: the approach must come
+        // in along it, not drop past the nose.
+        {"4412", 0.25, Surface::upper},
+        {"6409", 0.5, Surface::upper},
     }));
     TemplateOptions o;
     o.chord_in = 6.0;
@@ -93,12 +97,14 @@ TEST_CASE("Template: Clark Y and E387 from coordinate files, by count and by sca
     auto [file, radius, stations] = GENERATE(table<std::string, double, int>({
         {"clarky.dat", 0.25, 0},
         {"e387.dat", 0.1875, 80},
+        {"e387.dat", 0.25, 40}, // coarse: big scallops, and the sharp trailing edge's seam
     }));
     TemplateOptions o;
     o.chord_in = 5.0;
     o.cutter_radius_in = radius;
     o.surface = Surface::both;
     o.stations = stations > 0 ? stations : 60;
+    o.spacing = stations == 40 ? Spacing::uniform : Spacing::cosine;
     o.scallop_in = stations > 0 ? 0.0 : 0.002;
     INFO(file);
     const auto airfoil = read_dat(data_file(file));
