@@ -155,7 +155,7 @@ std::vector<double> stations_by_scallop(const Airfoil& airfoil, const TemplateOp
     auto fits = [&](double step) {
         const double wb = std::min(track.end(), w + step);
         const Station b = station_at(airfoil, o, track, wb);
-        const Deviation d = span_deviation(airfoil, o, track, w, wb, a, b);
+        const Deviation d = span_deviation(airfoil, o, track, w, wb, a, b, 256);
         return std::max(d.leftover, d.gouge) <= o.scallop_in;
     };
     while (w < track.end()) {
