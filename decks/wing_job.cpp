@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 namespace parsons::decks {
 namespace {
@@ -211,10 +212,20 @@ WingDeck make_wing_deck(const Airfoil& airfoil, const WingOptions& o,
                                    "leave: use a smaller wing",
                                    extent.x(), extent.y(), extent.z(), room));
     }
-    for (const Setting& s : settings) {
-        for (int screw : {s.tilt_screw, s.swivel_screw}) {
+    for (std::size_t i = 0; i < settings.size(); ++i) {
+        const Setting& s = settings[i];
+        const WingStation& st = deck.stations[i];
+        const std::array<std::tuple<const char*, int, double, const axes::AxisProfile*>, 2> screws =
+            {{{"tilt", s.tilt_screw, st.tilt_rad, &tilt},
+              {"swivel", s.swivel_screw, st.swivel_rad, &swivel}}};
+        for (const auto& [what, screw, angle, axis] : screws) {
             if (screw < 0 || screw > 9999) {
-                throw JobError("wing: the fixture would have to turn past its screws' travel");
+                throw JobError(fmt::format(
+                    "wing: at chord station {:.3f} the fixture must {} {:.2f} deg, which puts its "
+                    "screw at {:.3f} in, outside the counters' 0.000 .. 9.999 in (level at "
+                    "{:.3f} in, arm {:.1f} in): use less sweep or taper, or a shorter span",
+                    st.u, what, angle * 180 / kPi, screw / 1000.0, axis->level_in,
+                    axis->pivot_to_screw_in));
             }
         }
     }

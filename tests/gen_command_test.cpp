@@ -74,6 +74,12 @@ TEST_CASE("Gen: bad requests exit 2 and say why", "[gen][cli][bad-input]") {
     auto wing = run_parsons("gen airfoil --naca 2412 --job wing --surface lower" + out);
     CHECK(wing.exit_code == 2);
     CHECK(wing.output.find("the wing job cuts the upper surface") != std::string::npos);
+    auto swept = run_parsons("gen airfoil --naca 2412 --job wing --chord 4 --span 5 --taper 0.5 "
+                             "--sweep 15" +
+                             out);
+    CHECK(swept.exit_code == 2);
+    CHECK(swept.output.find("the fixture must swivel 15.00 deg, which puts its screw at 10.359 "
+                            "in, outside the counters' 0.000 .. 9.999 in") != std::string::npos);
     auto huge = run_parsons("gen airfoil --naca 2412 --chord 12" + out);
     CHECK(huge.exit_code == 2);
     CHECK(huge.output.find("use a shorter chord") != std::string::npos);
