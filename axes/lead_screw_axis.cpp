@@ -109,16 +109,13 @@ std::optional<Impulse> LeadScrewAxis::advance_to(double t) {
     Impulse impulse;
     impulse.direction = d_;
     // Commutators 100, 98, 96 close when the crossing also crosses a 0.01, 0.1 or 1 in
-    // boundary: in counter terms, when the thousandths digit wraps.
-    const long from = d_ > 0 ? k_ - 1 : k_;
-    const long to = d_ > 0 ? k_ : k_ + 1; // the pair of readings either side of the crossing
-    auto wraps = [&](long unit) {
-        return std::floor(static_cast<double>(to) / unit) !=
-               std::floor(static_cast<double>(from) / unit);
-    };
-    impulse.hundredths = wraps(10);
-    impulse.tenths = wraps(100);
-    impulse.inches = wraps(1000);
+    // boundary: the crossing lies between readings upper - 1 and upper, and it passes such a
+    // boundary exactly when upper is a whole number of hundredths, tenths or inches.
+    const long upper = d_ > 0 ? k_ : k_ + 1;
+    auto multiple_of = [upper](long unit) { return upper % unit == 0; }; // also for upper < 0
+    impulse.hundredths = multiple_of(10);
+    impulse.tenths = multiple_of(100);
+    impulse.inches = multiple_of(1000);
     plan();
     return impulse;
 }

@@ -80,18 +80,24 @@ double InputDeck::fraction_read() {
     return pos < 0 ? 1.0 : std::min(1.0, static_cast<double>(pos) / size_bytes_);
 }
 
+std::string read_text_file(const std::string& file, const std::string& missing) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        throw DeckError::in_file(
+            file, missing.empty() ? std::string("cannot open: ") + std::strerror(errno) : missing);
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
 axes::MachineProfile load_profile(const std::string& file) {
     if (file.empty()) {
         return axes::default_profile();
     }
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        throw DeckError::in_file(file, std::string("cannot open: ") + std::strerror(errno));
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
+    const std::string text = read_text_file(file);
     try {
-        return axes::profile_from_json(text.str(), axes::default_profile());
+        return axes::profile_from_json(text, axes::default_profile());
     } catch (const axes::ProfileError& e) {
         throw DeckError::in_file(file, e.what());
     }

@@ -25,6 +25,10 @@ void add_input_flags(CLI::App& cmd, DeckFlags& flags);
 cardreader::DeckOptions deck_options(const std::string& path, const std::string& format_flag,
                                      const DeckFlags& flags);
 
+// The whole of a text file; throws DeckError naming the file when it cannot be opened, with
+// `missing` as the reason, or the system's reason when `missing` is empty.
+std::string read_text_file(const std::string& file, const std::string& missing = {});
+
 // The built-in machine profile, or FILE applied over it; throws DeckError naming the file
 // and the key on a bad profile.
 axes::MachineProfile load_profile(const std::string& file);

@@ -4,6 +4,7 @@
 // emulation). Exit 2: the deck or a flag could not be read. Every output file is written
 // whole or not at all.
 #include "cli/commands.hpp"
+#include "cli/cutter_paths.hpp"
 #include "cli/deck_files.hpp"
 #include "cli/output_file.hpp"
 #include "cli/plot_svg.hpp"
@@ -77,45 +78,12 @@ private:
     std::unique_ptr<Writer> writer_;
 };
 
-// Records where the cutter centre really went: the table and cross-slide positions at every
-// impulse (the template job's two moving axes).
-class CutterPath : public relaylogic::MachineObserver {
-public:
-    void on_motion(double /*t*/, const std::array<double, 5>& real) override {
-        const Eigen::Vector2d p(real[0], real[1]);
-        if (path.empty() || p != path.back()) {
-            path.push_back(p);
-        }
-    }
-    std::vector<Eigen::Vector2d> path;
-};
-
-// Records where the cutter centre really went relative to the wing (the work frame), turning
-// the five real positions back through the fixture's real angles.
-class WingPath : public relaylogic::MachineObserver {
-public:
-    WingPath(const Eigen::Vector3d& zero, const axes::MachineProfile& profile)
-        : zero_(zero), profile_(profile) {}
-    void on_motion(double /*t*/, const std::array<double, 5>& real) override {
-        path.push_back(decks::work_point(real, zero_, profile_));
-    }
-    std::vector<Eigen::Vector3d> path;
-
-private:
-    Eigen::Vector3d zero_;
-    const axes::MachineProfile& profile_;
-};
-
 decks::JobDescription read_job(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        throw DeckError::in_file(file, "cannot open the job description (written by 'parsons gen "
-                                       "airfoil' beside the deck; or give --job FILE)");
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
+    const std::string text =
+        read_text_file(file, "cannot open the job description (written by 'parsons gen airfoil' "
+                             "beside the deck; or give --job FILE)");
     try {
-        return decks::job_from_json(text.str());
+        return decks::job_from_json(text);
     } catch (const decks::JobError& e) {
         throw DeckError::in_file(file, e.what());
     }

@@ -3,6 +3,8 @@
 // quantisation of the design.
 #include "tests/machine_support.hpp"
 
+#include "cli/cutter_paths.hpp"
+
 #include "cardreader/deck_review.hpp"
 #include "decks/cut_proof.hpp"
 #include "decks/move_planner.hpp"
@@ -20,17 +22,6 @@ std::string data_file(const std::string& name) {
     return std::string(PARSONS_SOURCE_DIR) + "/tests/data/" + name;
 }
 
-class CutterPath : public relaylogic::MachineObserver {
-public:
-    void on_motion(double, const std::array<double, 5>& real) override {
-        const Eigen::Vector2d p(real[0], real[1]);
-        if (path.empty() || p != path.back()) {
-            path.push_back(p);
-        }
-    }
-    std::vector<Eigen::Vector2d> path;
-};
-
 // Quantising each centre to 0.001 in on both axes moves it up to 0.0007 in; the coast leaves
 // each axis a quarter of a thousandth from its number.
 constexpr double kQuantisation = 0.0007 + 0.00025;
@@ -45,7 +36,7 @@ Proved generate_and_run(const Airfoil& airfoil, const TemplateOptions& options) 
     Proved p;
     const auto profile = axes::default_profile();
     p.deck = make_template_deck(airfoil, options, profile);
-    CutterPath cutter;
+    cli::CutterPath cutter;
     p.run = run_orders(p.deck.cards, profile, &cutter);
     const auto samples = design_samples(airfoil, options, p.deck.work_zero_in, 800);
     const DesignContour design{samples.points, samples.toward_cutter};

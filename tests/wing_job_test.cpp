@@ -2,6 +2,8 @@
 // the fixture turned by its screws; the root and tip sections come out as designed.
 #include "tests/machine_support.hpp"
 
+#include "cli/cutter_paths.hpp"
+
 #include "decks/wing_job.hpp"
 
 #include <catch2/catch.hpp>
@@ -10,20 +12,6 @@ using namespace parsons;
 using namespace parsons::decks;
 
 namespace {
-
-class WorkPath : public relaylogic::MachineObserver {
-public:
-    WorkPath(const Eigen::Vector3d& zero, const axes::MachineProfile& profile)
-        : zero_(zero), profile_(profile) {}
-    void on_motion(double, const std::array<double, 5>& real) override {
-        path.push_back(work_point(real, zero_, profile_));
-    }
-    std::vector<Eigen::Vector3d> path;
-
-private:
-    Eigen::Vector3d zero_;
-    const axes::MachineProfile& profile_;
-};
 
 // Quantising the screws to 0.001 in (the line and, through the sine-plate arms, its angles)
 // and the coast of a quarter-thousandth.
@@ -54,7 +42,7 @@ TEST_CASE("Wing: a tapered, swept NACA wing runs to completion and its root and 
     INFO(source << ": " << deck.stations.size() << " stations, planned leftover "
                 << deck.planned_leftover_in << " gouge " << deck.planned_gouge_in);
     CHECK(deck.planned_leftover_in <= 0.002);
-    WorkPath observer(deck.zero, profile);
+    cli::WingPath observer(deck.zero, profile);
     const auto run = parsons::test::run_orders(deck.cards, profile, &observer);
     REQUIRE(run.completed);
     for (const auto& axis : run.axes) {
