@@ -24,86 +24,117 @@ double time_to_cover(double D, double u, double a) {
     return denom > 0 ? 2 * D / denom : kNever;
 }
 
-} // namespace
-
-LeadScrewAxis::LeadScrewAxis(const AxisProfile& profile) : profile_(profile) {}
-
-void LeadScrewAxis::command(int direction, int speed_position) {
-    target_dir_ = direction >= 0 ? +1 : -1;
-    target_u_ =
-        speed_position >= 1 && speed_position <= 3
-            ? profile_.speed_in_per_min.at(static_cast<std::size_t>(speed_position - 1)) / 60.0
-            : 0.0;
-    plan();
+// The half-thousandth crossing h (odd) as a screw position: exactly the double that
+// (k + d / 2) * 0.001 gives for the crossing from k in direction d.
+double crossing_in(long h) {
+    return static_cast<double>(h) * (kInchesPerImpulse / 2);
 }
 
-double LeadScrewAxis::accel_toward_target() const {
-    if (target_u_ == 0) {
-        return u_ > 0 ? -profile_.braking_in_per_s2 : 0.0;
+} // namespace
+
+LeadScrewAxis::LeadScrewAxis(const AxisProfile& profile) : profile_(profile) {
+    // The crossings inside the travel limits, found once by bisection (the part's position is
+    // monotonic in the screw's): h = 2m + 1.
+    auto inside_low = [this](long m) {
+        return with_screw_error(crossing_in(2 * m + 1)) >= profile_.travel_min_in;
+    };
+    auto inside_high = [this](long m) {
+        return with_screw_error(crossing_in(2 * m + 1)) <= profile_.travel_max_in;
+    };
+    constexpr long kFar = 1L << 40;
+    long lo = -kFar; // smallest m inside the lower limit
+    long hi = kFar;
+    while (lo < hi) {
+        const long mid = floor_div(lo + hi, 2);
+        if (inside_low(mid)) {
+            hi = mid;
+        } else {
+            lo = mid + 1;
+        }
     }
-    if (u_ > 0 && d_ != target_dir_) {
+    h_lo_ = 2 * lo + 1;
+    lo = -kFar; // largest m inside the upper limit
+    hi = kFar;
+    while (lo < hi) {
+        const long mid = floor_div(lo + hi + 1, 2);
+        if (inside_high(mid)) {
+            lo = mid;
+        } else {
+            hi = mid - 1;
+        }
+    }
+    h_hi_ = 2 * lo + 1;
+    last_h_ = std::clamp(1L, h_lo_, std::max(h_lo_, h_hi_));
+    start_phase(0);
+}
+
+void LeadScrewAxis::command(int direction, int speed_position) {
+    const int dir = direction >= 0 ? +1 : -1;
+    const int speed = speed_position >= 1 && speed_position <= 3 ? speed_position : 0;
+    if (speed == target_speed_ && (speed == 0 || dir == target_dir_)) {
+        target_dir_ = dir;
+        return; // the motor is already doing this: the phase goes on unchanged
+    }
+    target_dir_ = dir;
+    target_speed_ = speed;
+    target_u_ =
+        speed > 0 ? profile_.speed_in_per_min.at(static_cast<std::size_t>(speed - 1)) / 60.0 : 0.0;
+    start_phase(speed_in_per_s());
+}
+
+double LeadScrewAxis::accel_toward_target(double u) const {
+    if (target_u_ == 0) {
+        return u > 0 ? -profile_.braking_in_per_s2 : 0.0;
+    }
+    if (u > 0 && d_ != target_dir_) {
         return -profile_.acceleration_in_per_s2; // slow to rest before reversing
     }
-    if (u_ < target_u_) {
+    if (u < target_u_) {
         return profile_.acceleration_in_per_s2;
     }
-    if (u_ > target_u_) {
+    if (u > target_u_) {
         return -profile_.acceleration_in_per_s2;
     }
     return 0.0;
 }
 
-void LeadScrewAxis::plan() {
-    if (u_ == 0 && target_u_ > 0) {
-        d_ = target_dir_;
-    }
-    a_ = accel_toward_target();
-    // Where the phase ends: at the target speed, or at rest when braking or reversing.
-    double end_speed = target_u_;
-    if (target_u_ == 0 || d_ != target_dir_) {
-        end_speed = 0;
-    }
-    phase_end_ = a_ == 0 ? kNever : t_ + (end_speed - u_) / a_;
-    // Next half-thousandth crossing in the direction of motion.
-    const double boundary = (static_cast<double>(k_) + 0.5 * d_) * kInchesPerImpulse;
-    const double D = std::max(0.0, (boundary - s_) * d_);
-    const double tau = (u_ == 0 && a_ <= 0) ? kNever : time_to_cover(D, u_, a_);
-    const double impulse_time = t_ + tau;
-    if (impulse_time <= phase_end_) {
-        next_time_ = impulse_time;
-        next_is_impulse_ = true;
-    } else {
-        next_time_ = phase_end_;
-        next_is_impulse_ = false;
-    }
+double LeadScrewAxis::phase_end_speed() const {
+    return target_u_ == 0 || d_ != target_dir_ ? 0.0 : target_u_;
 }
 
-std::optional<Impulse> LeadScrewAxis::advance_to(double t) {
-    const bool arriving = t >= next_time_;
-    if (t <= t_ && !arriving) {
-        return std::nullopt;
+void LeadScrewAxis::start_phase(double u) {
+    t0_ = t_;
+    s0_ = s_;
+    u0_ = u;
+    if (u == 0 && target_u_ > 0) {
+        d_ = target_dir_;
     }
-    if (arriving) {
-        t = next_time_;
+    a_ = accel_toward_target(u);
+    // Where the phase ends: at the target speed, or at rest when braking or reversing.
+    phase_end_ = a_ == 0 ? kNever : t0_ + (phase_end_speed() - u0_) / a_;
+    plan_impulse();
+}
+
+double LeadScrewAxis::boundary_time(long k_from) const {
+    if (u0_ == 0 && a_ <= 0) {
+        return kNever;
     }
-    const double tau = std::max(0.0, t - t_);
-    s_ += d_ * (u_ * tau + 0.5 * a_ * tau * tau);
-    u_ = std::max(0.0, u_ + a_ * tau);
-    t_ = t;
-    if (!arriving) {
-        return std::nullopt;
-    }
-    if (!next_is_impulse_) {
-        // End of a speed change: exactly at the target, or at rest.
-        if (target_u_ == 0 || d_ != target_dir_) {
-            u_ = 0;
-        } else {
-            u_ = target_u_;
-        }
-        plan();
-        return std::nullopt;
-    }
-    s_ = (static_cast<double>(k_) + 0.5 * d_) * kInchesPerImpulse;
+    const double boundary = (static_cast<double>(k_from) + 0.5 * d_) * kInchesPerImpulse;
+    const double D = std::max(0.0, (boundary - s0_) * d_);
+    const double t = t0_ + time_to_cover(D, u0_, a_);
+    return t <= phase_end_ ? t : kNever;
+}
+
+void LeadScrewAxis::plan_impulse() {
+    const double t = boundary_time(k_);
+    next_is_impulse_ = t != kNever;
+    next_time_ = next_is_impulse_ ? t : phase_end_;
+}
+
+std::optional<Impulse> LeadScrewAxis::take_impulse() {
+    t_ = next_time_;
+    last_h_ = 2 * k_ + d_;
+    s_ = crossing_in(last_h_);
     k_ += d_;
     ++impulses_;
     Impulse impulse;
@@ -112,12 +143,75 @@ std::optional<Impulse> LeadScrewAxis::advance_to(double t) {
     // boundary: the crossing lies between readings upper - 1 and upper, and it passes such a
     // boundary exactly when upper is a whole number of hundredths, tenths or inches.
     const long upper = d_ > 0 ? k_ : k_ + 1;
-    auto multiple_of = [upper](long unit) { return upper % unit == 0; }; // also for upper < 0
-    impulse.hundredths = multiple_of(10);
-    impulse.tenths = multiple_of(100);
-    impulse.inches = multiple_of(1000);
-    plan();
+    impulse.hundredths = upper % 10 == 0; // also for upper < 0
+    impulse.tenths = impulse.hundredths && upper % 100 == 0;
+    impulse.inches = impulse.tenths && upper % 1000 == 0;
+    plan_impulse();
     return impulse;
+}
+
+void LeadScrewAxis::advance_slowly(double t) {
+    if (t >= next_time_) {
+        // End of a speed change: exactly at the target, or at rest.
+        t_ = phase_end_;
+        s_ = position_at(phase_end_);
+        start_phase(phase_end_speed());
+        return;
+    }
+    if (t > t_) {
+        t_ = t;
+        s_ = position_at(t);
+    }
+}
+
+double LeadScrewAxis::impulse_time(long n) const {
+    return boundary_time(k_ + d_ * (n - 1));
+}
+
+long LeadScrewAxis::impulses_by(double t) const {
+    if (!next_is_impulse_ || next_time_ > t) {
+        return 0;
+    }
+    const double tau = std::min(t, phase_end_) - t0_;
+    const double covered = u0_ * tau + 0.5 * a_ * tau * tau;
+    const double first = ((static_cast<double>(k_) + 0.5 * d_) * kInchesPerImpulse - s0_) * d_;
+    const double estimate = std::floor((covered - first) / kInchesPerImpulse) + 1;
+    long n = estimate >= 1 && estimate < 1e15 ? static_cast<long>(estimate) : 1;
+    while (n > 1 && impulse_time(n) > t) {
+        --n;
+    }
+    while (impulse_time(n + 1) <= t) {
+        ++n;
+    }
+    return n;
+}
+
+void LeadScrewAxis::skip_impulses(long n) {
+    t_ = impulse_time(n);
+    k_ += d_ * (n - 1); // the last one is taken as any impulse is
+    next_time_ = t_;
+    take_impulse();
+    impulses_ += n - 1;
+}
+
+long LeadScrewAxis::impulses_to_limit() const {
+    const long h1 = 2 * k_ + d_;
+    if (h1 < h_lo_ || h1 > h_hi_) {
+        return 1;
+    }
+    if (d_ > 0) {
+        return (h_hi_ - 1) / 2 - k_ + 2;
+    }
+    return k_ - (h_lo_ - 1) / 2 + 1;
+}
+
+double LeadScrewAxis::position_at(double t) const {
+    const double tau = std::min(t, phase_end_) - t0_;
+    return s0_ + d_ * (u0_ * tau + 0.5 * a_ * tau * tau);
+}
+
+double LeadScrewAxis::speed_in_per_s() const {
+    return std::max(0.0, u0_ + a_ * (std::min(t_, phase_end_) - t0_));
 }
 
 double LeadScrewAxis::real_in() const {
@@ -125,8 +219,10 @@ double LeadScrewAxis::real_in() const {
 }
 
 double LeadScrewAxis::real_in_at(double t) const {
-    const double tau = std::clamp(t, t_, std::max(t_, next_time_)) - t_;
-    return with_screw_error(s_ + d_ * (u_ * tau + 0.5 * a_ * tau * tau));
+    if (t <= t_) {
+        return real_in();
+    }
+    return with_screw_error(position_at(std::min(t, next_time_)));
 }
 
 double LeadScrewAxis::with_screw_error(double s) const {
@@ -145,11 +241,6 @@ double LeadScrewAxis::with_screw_error(double s) const {
     const auto& [x1, e1] = *it;
     const auto& [x0, e0] = *(it - 1);
     return s + e0 + (e1 - e0) * (s - x0) / (x1 - x0);
-}
-
-bool LeadScrewAxis::beyond_limits() const {
-    const double x = real_in();
-    return x < profile_.travel_min_in || x > profile_.travel_max_in;
 }
 
 double LeadScrewAxis::fixture_angle_deg(bool sine_plate) const {

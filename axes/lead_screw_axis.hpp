@@ -14,6 +14,11 @@
 //          k-1.5   k-0.5   k+0.5            a half-thousandth, forward or reverse.
 //   commutators 100, 98, 96 close at the same crossings every 10, 100 and 1000 of them.
 //
+// Every impulse time is a pure function of the phase (its start time, place, speed and
+// acceleration) and of the integer index of the half-thousandth crossed, so the n-th impulse
+// from now has the same time whether the impulses before it were taken one by one or skipped
+// in one jump (fast-forward); the two modes of the cabinet agree to the last bit.
+//
 // The real part position is s plus the residual screw error left after compensating cam 160
 // (a table in the profile); the counters only ever see s. Motion goes through one gateway,
 // advance_to(), which is where impulses, coast and the travel limits are all decided.
@@ -41,12 +46,19 @@ struct Impulse {
     bool inches = false;     // commutator 96
 };
 
+// floor(a / b) for b > 0, also for negative a.
+inline long floor_div(long a, long b) {
+    const long q = a / b;
+    return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+
 class LeadScrewAxis {
 public:
     explicit LeadScrewAxis(const AxisProfile& profile);
 
     // The motor: direction +1 / -1 and one of the three speeds (1..3), or switched off (0).
-    // Takes effect at the current time; the speed changes at the profile's rates.
+    // Takes effect at the current time; the speed changes at the profile's rates. Asking for
+    // what the motor is already doing changes nothing.
     void command(int direction, int speed_position);
 
     // When the next thing happens to this axis by itself: an impulse or the end of a speed
@@ -56,18 +68,43 @@ public:
 
     // The one gateway for motion: moves the axis to machine time t (t <= next_event_time()).
     // Returns the impulse if t is the moment of the next impulse.
-    std::optional<Impulse> advance_to(double t);
+    std::optional<Impulse> advance_to(double t) {
+        if (t >= next_time_ && next_is_impulse_) {
+            return take_impulse();
+        }
+        advance_slowly(t);
+        return std::nullopt;
+    }
+
+    // Fast-forward: the time of the n-th impulse from now (n >= 1) in the current phase of
+    // motion, or kNever if the phase ends (or the axis stops) first.
+    double impulse_time(long n) const;
+    // How many of the coming impulses of this phase come at or before time t.
+    long impulses_by(double t) const;
+    // Takes the next n impulses of this phase at once (n >= 1, impulse_time(n) finite).
+    void skip_impulses(long n);
 
     double screw_in() const { return s_; }
     double real_in() const; // the part: screw plus residual screw error (cam 160)
     // Where the part is at time t (t_ <= t <= next_event_time()), without moving anything.
     double real_in_at(double t) const;
-    double speed_in_per_s() const { return u_; }
+    double speed_in_per_s() const;
     int moving_direction() const { return d_; }
-    bool at_rest() const { return u_ == 0 && target_u_ == 0; }
-    bool beyond_limits() const;
+    // Motion in this phase: acceleration (signed along moving_direction()), speed at its start.
+    double phase_acceleration() const { return a_; }
+    double phase_start_speed() const { return u0_; }
+    double phase_end_speed() const;
+    double phase_end_time() const { return phase_end_; }
+    bool at_rest() const { return speed_in_per_s() == 0 && target_u_ == 0; }
     long impulses() const { return impulses_; }
     long commutator_index() const { return k_; } // thousandths the commutator has passed
+
+    // Travel limits, decided on the half-thousandth crossings (the part's position through the
+    // screw-error table is monotonic, so the crossings inside the limits form one range).
+    // Did the last impulse's crossing put the part beyond a limit?
+    bool beyond_limits() const { return last_h_ < h_lo_ || last_h_ > h_hi_; }
+    // The first of the coming impulses (1-based) whose crossing lies beyond a limit.
+    long impulses_to_limit() const;
     const AxisProfile& profile() const { return profile_; }
 
     // Sine-plate geometry for swivel and tilt: the fixture angle this screw position makes,
@@ -76,23 +113,37 @@ public:
     double fixture_angle_deg(bool sine_plate) const;
 
 private:
-    void plan(); // works out the current phase and the next event
+    std::optional<Impulse> take_impulse();
+    void advance_slowly(double t);
+    void start_phase(double u); // a new phase of constant acceleration from (t_, s_, u)
+    void plan_impulse();        // the time of the next impulse in this phase
+    double boundary_time(long k_from) const;
+    double position_at(double t) const;
     double with_screw_error(double s) const;
-    double accel_toward_target() const;
+    double accel_toward_target(double u) const;
 
     AxisProfile profile_;
-    double t_ = 0;        // time of the state below
-    double s_ = 0;        // screw position, in
-    double u_ = 0;        // speed, in/s (>= 0)
-    int d_ = +1;          // direction of motion
-    long k_ = 0;          // commutator index: round(s / 0.001)
-    int target_dir_ = +1; // what the motor is asked to do
-    double target_u_ = 0;
-    double a_ = 0; // acceleration of the current phase (signed, along d_)
+    // The current phase: from time t0_ at screw position s0_ and speed u0_ (>= 0), moving in
+    // direction d_ with acceleration a_ (signed along d_) until phase_end_.
+    double t0_ = 0;
+    double s0_ = 0;
+    double u0_ = 0;
+    double a_ = 0;
+    int d_ = +1;
     double phase_end_ = kNever;
+    // The state now.
+    double t_ = 0;
+    double s_ = 0;
+    long k_ = 0;      // commutator index: round(s / 0.001)
+    long last_h_ = 0; // the last crossing, in half-thousandths (odd)
+    int target_dir_ = +1;
+    int target_speed_ = 0;
+    double target_u_ = 0;
     double next_time_ = kNever;
     bool next_is_impulse_ = false;
     long impulses_ = 0;
+    long h_lo_ = 0; // crossings inside the travel limits: h_lo_ <= h <= h_hi_ (odd)
+    long h_hi_ = 0;
 };
 
 } // namespace parsons::axes

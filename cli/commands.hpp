@@ -38,6 +38,7 @@ struct RunRequest {
     std::string profile;
     std::vector<std::string> faults;
     bool quiet = false;
+    bool impulse_level = false;
     DeckFlags deck;
 };
 ExitCode run_deck(const RunRequest& request);

@@ -101,6 +101,7 @@ public:
         std::fflush(stderr);
         shown_ = true;
     }
+    bool follows_impulses() const override { return false; }
     void on_finish(double /*t*/) override {
         if (shown_) {
             fmt::print(stderr, "\r{:<80}\r", "");
@@ -125,6 +126,9 @@ ExitCode run_deck(const RunRequest& f) {
     for (const auto& fault : faults) {
         cabinet.add_fault(fault);
     }
+    cabinet.set_pace(f.impulse_level ? relaylogic::Pace::impulse_level
+                                     : relaylogic::Pace::fast_forward);
+    cabinet.record_card_times(!f.report.empty());
 
     relaylogic::ObserverFanOut observers;
     TraceFile<VcdWriter> vcd;
@@ -238,6 +242,9 @@ void add_run_command(CLI::App& app, Command& selected) {
                     "Inject a fault: drop-impulse:AXIS:N (one contact set misses impulse N)");
     cmd->add_option("--profile", flags->profile, "Machine profile JSON (see 'parsons profile')");
     cmd->add_flag("-q,--quiet", flags->quiet, "No summary and no progress bar");
+    cmd->add_flag("--impulse-level", flags->impulse_level,
+                  "Take every commutator impulse one by one (the reference) instead of "
+                  "fast-forwarding between comparer equalities; the result is the same");
     add_input_flags(*cmd, flags->deck);
     cmd->footer("Exit status: 0 the deck completed, 3 the machine stopped itself (a check "
                 "fired), 2 unreadable input.\n"

@@ -1,9 +1,12 @@
 #include "relaylogic/control_cabinet.hpp"
 
+#include "relaylogic/fast_forward.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace parsons::relaylogic {
 
@@ -62,11 +65,18 @@ std::string ControlCabinet::card_name() const {
 
 RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     deck_ = &deck;
+    MachineObserver* observer = tracer_.observer();
+    jumping_ =
+        pace_ == Pace::fast_forward && (observer == nullptr || !observer->follows_impulses());
+    const bool alone = !jumping_ && observer == nullptr;
     schedule(0, EventKind::feed);
     while (true) {
+        if (jumping_) {
+            plan_quiet_stretches();
+        }
         double t = queue_.empty() ? axes::kNever : queue_.top().t;
-        for (const auto& c : circuits_) {
-            t = std::min(t, c->plant.next_event_time());
+        for (std::size_t i = 0; i < circuits_.size(); ++i) {
+            t = std::min(t, next_axis_event(i));
         }
         if (t == axes::kNever) {
             if (!deck_finished_ && !stop_) {
@@ -77,13 +87,19 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
         }
         now_ = t;
         tracer_.set_time(t);
+        if (jumping_) {
+            catch_up(t);
+        }
         bool moved = false;
-        for (const auto& c : circuits_) {
-            if (c->plant.next_event_time() <= t) {
-                auto impulse = c->plant.advance_to(t);
+        std::size_t last_moved = 0;
+        for (std::size_t i = 0; i < circuits_.size(); ++i) {
+            AxisCircuit& c = *circuits_[i];
+            if (c.plant.next_event_time() <= t) {
+                auto impulse = c.plant.advance_to(t);
                 moved = true;
+                last_moved = i;
                 if (impulse) {
-                    on_impulse(*c, *impulse);
+                    on_impulse(c, *impulse);
                 }
             }
         }
@@ -99,6 +115,9 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
             queue_.pop();
             handle(e);
         }
+        if (alone && moved) {
+            run_alone(last_moved);
+        }
     }
     for (const auto& c : circuits_) {
         c->plant.advance_to(now_);
@@ -107,6 +126,84 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
         tracer_.observer()->on_finish(now_);
     }
     return result();
+}
+
+double ControlCabinet::next_axis_event(std::size_t i) const {
+    return jumping_ ? quiet_end_.at(i) : circuits_[i]->plant.next_event_time();
+}
+
+// Fast-forward: how far each moving axis can go on quietly, and when its next event that
+// matters comes (the impulse that ends the stretch, or the end of its speed change).
+void ControlCabinet::plan_quiet_stretches() {
+    QuietConditions q;
+    q.min_interval_s = 1.0 / profile_.max_stepping_rate_per_s;
+    q.machine_stopped = stop_.has_value();
+    for (std::size_t i = 0; i < circuits_.size(); ++i) {
+        AxisCircuit& c = *circuits_[i];
+        quiet_.at(i) = 0;
+        quiet_end_.at(i) = c.plant.next_event_time();
+        if (!c.plant.next_event_is_impulse()) {
+            continue;
+        }
+        q.counting_hundredths =
+            profile_.count_hundredths_at_speed_1 && c.speed_switch.position() == 1 && !stop_;
+        q.next_fault_impulse = 0;
+        for (const DropImpulseFault& f : faults_) {
+            if (f.axis == c.axis && f.impulse > c.contact_set_a &&
+                (q.next_fault_impulse == 0 || f.impulse < q.next_fault_impulse)) {
+                q.next_fault_impulse = f.impulse;
+            }
+        }
+        const long quiet = quiet_impulses(c, q);
+        if (quiet > 0) {
+            quiet_.at(i) = quiet;
+            // The impulse that ends the stretch or, if the phase ends first, the phase's end.
+            const double after = quiet == std::numeric_limits<long>::max()
+                                     ? axes::kNever
+                                     : c.plant.impulse_time(quiet + 1);
+            quiet_end_.at(i) = after != axes::kNever ? after : c.plant.phase_end_time();
+        }
+    }
+}
+
+// Fast-forward: every axis takes its quiet impulses due by time t, in one jump each.
+void ControlCabinet::catch_up(double t) {
+    for (std::size_t i = 0; i < circuits_.size(); ++i) {
+        if (quiet_.at(i) == 0) {
+            continue;
+        }
+        AxisCircuit& c = *circuits_[i];
+        const long n = std::min(quiet_.at(i), c.plant.impulses_by(t));
+        if (n > 0) {
+            jump_quiet_impulses(c, n);
+            quiet_.at(i) -= n;
+        }
+    }
+}
+
+// Impulse level with no observer: while one axis's impulses come before anything else happens,
+// take them straight from its plant, without looking again at the queue and the other axes.
+void ControlCabinet::run_alone(std::size_t i) {
+    AxisCircuit& c = *circuits_[i];
+    double others = queue_.empty() ? axes::kNever : queue_.top().t;
+    double others_strict = axes::kNever; // another axis at the same instant goes in axis order
+    for (std::size_t j = 0; j < circuits_.size(); ++j) {
+        if (j != i) {
+            others_strict = std::min(others_strict, circuits_[j]->plant.next_event_time());
+        }
+    }
+    while (true) {
+        const double t = c.plant.next_event_time();
+        if (!(t < others_strict && t <= others)) {
+            return;
+        }
+        now_ = t;
+        tracer_.set_time(t);
+        auto impulse = c.plant.advance_to(t);
+        if (impulse && !on_impulse(c, *impulse)) {
+            return; // something happened: the main loop looks at everything again
+        }
+    }
 }
 
 void ControlCabinet::handle(const Event& e) {
@@ -167,9 +264,11 @@ void ControlCabinet::feed() {
         return;
     }
     ++cards_read_;
+    if (record_times_) {
+        timings_.push_back(CardTiming{cards_read_, -1, now_, now_});
+    }
     orders_ = cardreader::CardOrders{};
     orders_.number = -1;
-    timings_.push_back(CardTiming{cards_read_, -1, now_, now_});
     tracer_.set(reader_card_, static_cast<std::uint32_t>(cards_read_));
     tracer_.set(reader_feeding_, 1);
     schedule(now_ + profile_.first_bank_s, EventKind::first_bank);
@@ -188,7 +287,9 @@ void ControlCabinet::first_bank() {
         return;
     }
     orders_ = decoded.orders;
-    timings_.back().number = orders_.number;
+    if (record_times_) {
+        timings_.back().number = orders_.number;
+    }
     if (tracer_.observer() != nullptr) {
         tracer_.observer()->on_card(now_, cards_read_, orders_);
     }
@@ -214,14 +315,15 @@ void ControlCabinet::relays_pick() {
     for (auto& c : circuits_) {
         c->order = orders_.axis(c->axis);
         c->set_direction(c->order.motion);
-        std::vector<int> numbers;
+        std::array<int, 3> numbers{};
+        std::size_t count = 0;
         for (const auto& sd : c->order.slow_down) {
             if (sd) {
-                numbers.push_back(*sd);
+                numbers.at(count++) = *sd;
             }
         }
-        numbers.push_back(c->order.stop);
-        c->absolute_storage.store(numbers);
+        numbers.at(count++) = c->order.stop;
+        c->absolute_storage.store(std::span<const int>(numbers.data(), count));
         c->incremental_storage.store(c->order.check);
         c->sequence_switch.close_pattern(c->order.sequence);
         for (int p = 5; p >= 1; --p) {
@@ -248,7 +350,7 @@ bool ControlCabinet::live(const AxisCircuit& c) const {
            !c.speed_switch.off() && c.sequence_switch.closed(shaft_.position());
 }
 
-void ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
+bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     // Duplicate contact sets on commutator 102: both must see every impulse.
     ++c.contact_set_a;
     bool dropped = false;
@@ -259,7 +361,6 @@ void ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
         ++c.contact_set_b;
     }
     const double min_interval = 1.0 / profile_.max_stepping_rate_per_s;
-    const int before = c.absolute_counter.value();
     // The patent's answer to stepping-rate loss (col. 8), a profile option: while the speed
     // switch stands on speed 1, count only every hundredth until the first slow-down.
     const bool hundredths_only =
@@ -267,19 +368,20 @@ void ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     // The counters count up or down as reversing control 214 set them (the motion column),
     // whichever way the screw really turns: coast that runs on after the next card has set the
     // other sense is counted the wrong way, as on the 1952 machine.
-    c.absolute_counter.impulse(c.direction, impulse.hundredths, impulse.tenths, impulse.inches,
-                               now_, min_interval, !hundredths_only);
+    const bool stepped =
+        c.absolute_counter.impulse(c.direction, impulse.hundredths, impulse.tenths, impulse.inches,
+                                   now_, min_interval, !hundredths_only);
     if (!hundredths_only) {
         c.increment_counter.impulse(now_, min_interval);
     } else if (impulse.hundredths) {
         c.increment_counter.hundredths_impulse(now_, min_interval);
     }
-    if (c.absolute_counter.value() != before) {
+    if (stepped) {
         c.speed_switch.equality_left(now_); // the wipers break contact as they step
     }
     if (stop_) {
         c.compare();
-        return; // coasting after a stop: the counters still count
+        return true; // coasting after a stop: the counters still count
     }
     if (c.contact_set_a != c.contact_set_b) {
         machine_stop(StopReason::missed_impulse, c.axis,
@@ -288,7 +390,7 @@ void ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
                                  card_name(), axis_name(c.axis), c.contact_set_a),
                      fmt::format("duplicate-contact lamp ({} commutator 102)", axis_name(c.axis)));
         c.compare();
-        return;
+        return false;
     }
     if (c.plant.beyond_limits()) {
         const auto& p = c.plant.profile();
@@ -299,30 +401,30 @@ void ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
                                  p.travel_max_in),
                      fmt::format("limit-switch lamp ({})", axis_name(c.axis)));
         c.compare();
-        return;
+        return false;
     }
-    evaluate(c);
+    return evaluate(c);
 }
 
-void ControlCabinet::evaluate(AxisCircuit& c) {
+bool ControlCabinet::evaluate(AxisCircuit& c) {
     c.compare();
     const bool any = c.absolute_conducting || c.incremental_conducting;
     if (!any) {
         c.speed_switch.equality_left(now_);
     }
     if (!any || !live(c)) {
-        return;
+        return true;
     }
     if (!c.speed_switch.channel_257_open(now_)) {
         if (now_ < c.speed_switch.hold_until()) {
             schedule(c.speed_switch.hold_until(), EventKind::delay_258_release,
                      static_cast<int>(cardreader::axis_index(c.axis)));
         }
-        return;
+        return false;
     }
     if (c.incremental_conducting || c.speed_switch.position() == 3) {
         stop_axis(c);
-        return;
+        return false;
     }
     c.speed_switch.step_slower(now_, profile_.delay_258_s); // stepping relay 256, channel 257
     update_motor(c);
@@ -330,6 +432,7 @@ void ControlCabinet::evaluate(AxisCircuit& c) {
     // still stands then must not step the switch a second time (it has not been left).
     schedule(c.speed_switch.hold_until(), EventKind::delay_258_release,
              static_cast<int>(cardreader::axis_index(c.axis)));
+    return false;
 }
 
 void ControlCabinet::stop_axis(AxisCircuit& c) {
@@ -388,7 +491,9 @@ void ControlCabinet::zeroize() {
     shaft_.reset(); // device 288, channel 302
     reading_complete_ = false;
     update_motors();
-    timings_.back().end_s = now_;
+    if (record_times_) {
+        timings_.back().end_s = now_;
+    }
     schedule(now_ + profile_.relay_release_s, EventKind::feed); // channel 304
 }
 
@@ -427,7 +532,7 @@ void ControlCabinet::machine_stop(StopReason reason, std::optional<Axis> axis,
     info.message = message;
     info.lamps = balancing_.lamps();
     stop_ = info;
-    if (!timings_.empty()) {
+    if (record_times_ && !timings_.empty()) {
         timings_.back().end_s = now_;
     }
     queue_ = {};

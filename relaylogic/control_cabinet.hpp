@@ -61,8 +61,15 @@ struct RunResult {
     double machine_seconds = 0;
     std::optional<StopInfo> stop;
     std::array<AxisResult, cardreader::kAxisCount> axes{};
-    std::vector<CardTiming> cards;
+    std::vector<CardTiming> cards; // each card's machine time, if asked for (record_card_times)
 };
+
+// How the cabinet spends its time. Both give the same machine, event for event: impulse level
+// takes every commutator impulse one by one (the reference); fast-forward jumps analytically
+// over the stretches of impulses between comparer equalities (relaylogic/fast_forward.hpp), so
+// a card costs the same whatever the length of its moves. With an observer attached every
+// impulse is written, and fast-forward takes them one by one too.
+enum class Pace : std::uint8_t { fast_forward, impulse_level };
 
 class ControlCabinet {
 public:
@@ -71,6 +78,9 @@ public:
     // Attach before run(); announces every signal to the observer.
     void attach(MachineObserver* observer);
     void add_fault(DropImpulseFault fault) { faults_.push_back(fault); }
+    void set_pace(Pace pace) { pace_ = pace; }
+    // Keep each card's start and end time for the result (memory grows with the deck).
+    void record_card_times(bool on) { record_times_ = on; }
 
     // Runs the deck to the end or to a stop, then lets every axis coast to rest. A deck file
     // that cannot be read throws cardreader::DeckError.
@@ -104,8 +114,13 @@ private:
     void first_bank();
     void relays_pick();
     void read_complete();
-    void on_impulse(AxisCircuit& c, const axes::Impulse& impulse);
-    void evaluate(AxisCircuit& c);
+    double next_axis_event(std::size_t i) const;
+    void plan_quiet_stretches();
+    void catch_up(double t);
+    void run_alone(std::size_t i);
+    // Returns true if the impulse only counted (nothing scheduled, no other axis touched).
+    bool on_impulse(AxisCircuit& c, const axes::Impulse& impulse);
+    bool evaluate(AxisCircuit& c);
     bool live(const AxisCircuit& c) const;
     void stop_axis(AxisCircuit& c);
     void shaft_step();
@@ -125,6 +140,10 @@ private:
     SteppingShaft shaft_;
     BalancingCircuit balancing_;
     std::vector<DropImpulseFault> faults_;
+    Pace pace_ = Pace::fast_forward;
+    bool jumping_ = false;                                   // fast-forward with no observer
+    std::array<long, cardreader::kAxisCount> quiet_{};       // quiet impulses ahead of each axis
+    std::array<double, cardreader::kAxisCount> quiet_end_{}; // when the stretch's next event is
 
     std::priority_queue<Event, std::vector<Event>, std::greater<>> queue_;
     std::uint64_t seq_ = 0;
@@ -137,6 +156,7 @@ private:
     bool deck_finished_ = false;
     int last_sequence_position_ = 5;
     long cards_read_ = 0;
+    bool record_times_ = false;
     std::vector<CardTiming> timings_;
     std::optional<StopInfo> stop_;
 

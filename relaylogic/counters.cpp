@@ -13,10 +13,6 @@ long total_lost(const std::array<SteppingSwitch, 4>& switches) {
 
 } // namespace
 
-int digits_value(const Digits& d) {
-    return ((d[0] * 10 + d[1]) * 10 + d[2]) * 10 + d[3];
-}
-
 Digits value_digits(int v) {
     v = ((v % 10000) + 10000) % 10000;
     return {v / 1000, v / 100 % 10, v / 10 % 10, v % 10};
@@ -32,32 +28,11 @@ AbsoluteCounter::AbsoluteCounter(Tracer& tracer, const std::string& scope) : tra
     }
 }
 
-void AbsoluteCounter::step(std::size_t i, int direction, double t, double min_interval_s) {
-    SteppingSwitch& sw = switches_.at(i);
-    if (sw.step(direction, t, min_interval_s).taken) {
-        tracer_.set(signals_.at(i), static_cast<std::uint32_t>(sw.position()));
+void AbsoluteCounter::jump(const Digits& positions, const std::array<double, 4>& last_step_s) {
+    for (std::size_t i = 0; i < 4; ++i) {
+        switches_.at(i).jump(positions.at(i), last_step_s.at(i));
+        tracer_.set(signals_.at(i), static_cast<std::uint32_t>(positions.at(i)));
     }
-}
-
-void AbsoluteCounter::impulse(int direction, bool hundredths, bool tenths, bool inches, double t,
-                              double min_interval_s, bool count_thousandths) {
-    if (count_thousandths) {
-        step(3, direction, t, min_interval_s);
-    }
-    if (hundredths) {
-        step(2, direction, t, min_interval_s);
-    }
-    if (tenths) {
-        step(1, direction, t, min_interval_s);
-    }
-    if (inches) {
-        step(0, direction, t, min_interval_s);
-    }
-}
-
-Digits AbsoluteCounter::digits() const {
-    return {switches_[0].position(), switches_[1].position(), switches_[2].position(),
-            switches_[3].position()};
 }
 
 long AbsoluteCounter::lost() const {
@@ -75,24 +50,14 @@ IncrementCounter::IncrementCounter(Tracer& tracer, const std::string& scope) : t
     }
 }
 
-void IncrementCounter::impulse(double t, double min_interval_s) {
-    step_from(0, t, min_interval_s);
-}
-
 void IncrementCounter::hundredths_impulse(double t, double min_interval_s) {
     step_from(1, t, min_interval_s);
 }
 
-void IncrementCounter::step_from(std::size_t first, double t, double min_interval_s) {
-    for (std::size_t i = first; i < 4; ++i) {
-        SteppingSwitch::Step s = switches_.at(i).step(+1, t, min_interval_s);
-        if (!s.taken) {
-            return;
-        }
-        tracer_.set(signals_.at(i), static_cast<std::uint32_t>(switches_.at(i).position()));
-        if (!s.carry) {
-            return; // no carry over channel 333
-        }
+void IncrementCounter::jump(const Digits& positions, const std::array<double, 4>& last_step_s) {
+    for (std::size_t i = 0; i < 4; ++i) {
+        switches_.at(i).jump(positions.at(3 - i), last_step_s.at(i));
+        tracer_.set(signals_.at(i), static_cast<std::uint32_t>(positions.at(3 - i)));
     }
 }
 
@@ -101,11 +66,6 @@ void IncrementCounter::clear() {
         switches_.at(i).home();
         tracer_.set(signals_.at(i), 0);
     }
-}
-
-Digits IncrementCounter::digits() const {
-    return {switches_[3].position(), switches_[2].position(), switches_[1].position(),
-            switches_[0].position()};
 }
 
 long IncrementCounter::lost() const {

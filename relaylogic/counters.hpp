@@ -21,7 +21,9 @@ namespace parsons::relaylogic {
 // Digits from the inch down: {inches, tenths, hundredths, thousandths}.
 using Digits = std::array<int, 4>;
 
-int digits_value(const Digits& d); // thousandths
+inline int digits_value(const Digits& d) { // thousandths
+    return ((d[0] * 10 + d[1]) * 10 + d[2]) * 10 + d[3];
+}
 Digits value_digits(int thousandths);
 
 class AbsoluteCounter {
@@ -31,15 +33,45 @@ public:
     // One crossing of the commutators: 102 always, 100 / 98 / 96 when they close too. With
     // count_thousandths false, commutator 102's impulse is not counted (switch 110 stands):
     // the patent's counting of hundredths only, at high speed.
-    void impulse(int direction, bool hundredths, bool tenths, bool inches, double t,
-                 double min_interval_s, bool count_thousandths = true);
+    // Returns whether any switch stepped (the reading changed).
+    bool impulse(int direction, bool hundredths, bool tenths, bool inches, double t,
+                 double min_interval_s, bool count_thousandths = true) {
+        bool stepped = false;
+        if (count_thousandths) {
+            stepped = step(3, direction, t, min_interval_s);
+        }
+        if (hundredths) {
+            stepped = step(2, direction, t, min_interval_s) || stepped;
+            if (tenths) {
+                stepped = step(1, direction, t, min_interval_s) || stepped;
+                if (inches) {
+                    stepped = step(0, direction, t, min_interval_s) || stepped;
+                }
+            }
+        }
+        return stepped;
+    }
 
-    Digits digits() const;
+    Digits digits() const {
+        return {switches_[0].position(), switches_[1].position(), switches_[2].position(),
+                switches_[3].position()};
+    }
     int value() const { return digits_value(digits()); }
     long lost() const;
+    // Switch i of {104, 106, 108, 110}.
+    const SteppingSwitch& stepping_switch(std::size_t i) const { return switches_.at(i); }
+    // Fast-forward: every switch stands where a stretch of ready impulses left it.
+    void jump(const Digits& positions, const std::array<double, 4>& last_step_s);
 
 private:
-    void step(std::size_t i, int direction, double t, double min_interval_s);
+    bool step(std::size_t i, int direction, double t, double min_interval_s) {
+        SteppingSwitch& sw = switches_[i];
+        if (sw.step(direction, t, min_interval_s).taken) {
+            tracer_.set(signals_[i], static_cast<std::uint32_t>(sw.position()));
+            return true;
+        }
+        return false;
+    }
 
     Tracer& tracer_;
     std::array<SteppingSwitch, 4> switches_; // 104, 106, 108, 110
@@ -51,18 +83,36 @@ public:
     IncrementCounter(Tracer& tracer, const std::string& scope);
 
     // One impulse from commutator 102 (channel 120): 310 steps, carries ripple over 333.
-    void impulse(double t, double min_interval_s);
+    void impulse(double t, double min_interval_s) { step_from(0, t, min_interval_s); }
     // Counting hundredths only: commutator 100's impulse steps 312 directly (310 stands).
     void hundredths_impulse(double t, double min_interval_s);
     // Zeroizing circuit, channel 298: every switch homes.
     void clear();
 
-    Digits digits() const; // {316, 314, 312, 310}
+    Digits digits() const { // {316, 314, 312, 310}
+        return {switches_[3].position(), switches_[2].position(), switches_[1].position(),
+                switches_[0].position()};
+    }
     int value() const { return digits_value(digits()); }
     long lost() const;
+    // Switch i of {310, 312, 314, 316}.
+    const SteppingSwitch& stepping_switch(std::size_t i) const { return switches_.at(i); }
+    // Fast-forward: positions {316, 314, 312, 310} and last steps {310, 312, 314, 316}.
+    void jump(const Digits& positions, const std::array<double, 4>& last_step_s);
 
 private:
-    void step_from(std::size_t first, double t, double min_interval_s);
+    void step_from(std::size_t first, double t, double min_interval_s) {
+        for (std::size_t i = first; i < 4; ++i) {
+            SteppingSwitch::Step s = switches_[i].step(+1, t, min_interval_s);
+            if (!s.taken) {
+                return;
+            }
+            tracer_.set(signals_[i], static_cast<std::uint32_t>(switches_[i].position()));
+            if (!s.carry) {
+                return; // no carry over channel 333
+            }
+        }
+    }
 
     Tracer& tracer_;
     std::array<SteppingSwitch, 4> switches_; // 310, 312, 314, 316 (thousandths first)

@@ -66,6 +66,10 @@ public:
     virtual void on_stop(double /*seconds*/, const StopInfo& /*stop*/) {}
     // The run is over (completed or stopped and every axis at rest).
     virtual void on_finish(double /*seconds*/) {}
+    // Does this observer follow every signal change and motion as it happens (a trace, a
+    // path)? One that only wants cards, stops and the finish says no, and the cabinet may then
+    // fast-forward: the signal changes it is sent come a stretch of impulses at a time.
+    virtual bool follows_impulses() const { return true; }
 };
 
 // Sends every call to several observers, in order.
@@ -73,6 +77,14 @@ class ObserverFanOut : public MachineObserver {
 public:
     void add(MachineObserver* o) { observers_.push_back(o); }
     bool empty() const { return observers_.empty(); }
+    bool follows_impulses() const override {
+        for (auto* o : observers_) {
+            if (o->follows_impulses()) {
+                return true;
+            }
+        }
+        return false;
+    }
     void on_signal_defined(const SignalInfo& info, std::uint32_t initial) override {
         for (auto* o : observers_) {
             o->on_signal_defined(info, initial);

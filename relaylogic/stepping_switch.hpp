@@ -43,6 +43,14 @@ public:
     void home() { position_ = 0; }
     void set(int position) { position_ = position; }
 
+    // Fast-forward: after a stretch of impulses that all found the switch ready, it stands on
+    // `position`, and took its last step at time `last_step_s`.
+    double last_step_s() const { return last_step_s_; }
+    void jump(int position, double last_step_s) {
+        position_ = position;
+        last_step_s_ = last_step_s;
+    }
+
 private:
     int position_ = 0;
     double last_step_s_ = -std::numeric_limits<double>::infinity();

@@ -16,13 +16,13 @@ HoldingRelayBank::HoldingRelayBank(Tracer& tracer, const std::string& scope,
 
 void HoldingRelayBank::pick(int digit) {
     const auto i = static_cast<std::size_t>(digit);
-    closed_.at(i) = true;
+    closed_ = static_cast<std::uint16_t>(closed_ | (1U << i));
     tracer_.set(signals_.at(i), 1);
 }
 
 void HoldingRelayBank::release_all() {
+    closed_ = 0;
     for (std::size_t i = 0; i < 10; ++i) {
-        closed_.at(i) = false;
         tracer_.set(signals_.at(i), 0);
     }
 }
@@ -44,8 +44,8 @@ AbsoluteStorage::AbsoluteStorage(Tracer& tracer, const std::string& scope, bool 
              HoldingRelayBank(tracer, scope, "356", "absolute_storage")},
       separate_registers_(separate) {}
 
-void AbsoluteStorage::store(const std::vector<int>& numbers) {
-    numbers_ = numbers;
+void AbsoluteStorage::store(std::span<const int> numbers) {
+    numbers_.assign(numbers.begin(), numbers.end());
     for (int n : numbers) {
         const Digits d = value_digits(n);
         for (std::size_t i = 0; i < 4; ++i) {
@@ -61,16 +61,8 @@ void AbsoluteStorage::clear() {
     }
 }
 
-bool AbsoluteStorage::conducts(const Digits& counter) const {
-    if (separate_registers_) {
-        return std::find(numbers_.begin(), numbers_.end(), digits_value(counter)) != numbers_.end();
-    }
-    for (std::size_t i = 0; i < 4; ++i) {
-        if (!banks_.at(i).closed(counter.at(i))) {
-            return false;
-        }
-    }
-    return true;
+bool AbsoluteStorage::conducts_separately(const Digits& counter) const {
+    return std::find(numbers_.begin(), numbers_.end(), digits_value(counter)) != numbers_.end();
 }
 
 IncrementalStorage::IncrementalStorage(Tracer& tracer, const std::string& scope)
@@ -90,15 +82,6 @@ void IncrementalStorage::clear() {
     for (auto& b : banks_) {
         b.release_all();
     }
-}
-
-bool IncrementalStorage::conducts(const Digits& increment) const {
-    for (std::size_t i = 0; i < 4; ++i) {
-        if (!banks_.at(i).closed(increment.at(i))) {
-            return false;
-        }
-    }
-    return true;
 }
 
 } // namespace parsons::relaylogic

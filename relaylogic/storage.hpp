@@ -16,7 +16,10 @@
 
 #include "relaylogic/counters.hpp"
 
+#include <cstdint>
+#include <initializer_list>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace parsons::relaylogic {
@@ -27,12 +30,14 @@ public:
                      const std::string& what);
     void pick(int digit);
     void release_all();
-    bool closed(int digit) const { return closed_.at(static_cast<std::size_t>(digit)); }
+    bool closed(int digit) const { return (closed_ >> digit & 1U) != 0; }
+    // Relay d closed <=> bit d set.
+    std::uint16_t closed_mask() const { return closed_; }
     std::vector<int> closed_relays() const;
 
 private:
     Tracer& tracer_;
-    std::array<bool, 10> closed_{};
+    std::uint16_t closed_ = 0;
     std::array<SignalId, 10> signals_{};
 };
 
@@ -40,13 +45,27 @@ class AbsoluteStorage {
 public:
     AbsoluteStorage(Tracer& tracer, const std::string& scope, bool separate_registers);
     // The reader's first brush bank: slow-downs and stop into banks 350-356.
-    void store(const std::vector<int>& numbers);
+    void store(std::span<const int> numbers);
+    void store(std::initializer_list<int> numbers) {
+        store(std::span<const int>(numbers.begin(), numbers.size()));
+    }
     void clear();
     // Comparer 122': does the circuit through the banks close for these counter digits?
-    bool conducts(const Digits& counter) const;
+    bool conducts(const Digits& counter) const {
+        if (separate_registers_) {
+            return conducts_separately(counter);
+        }
+        return banks_[0].closed(counter[0]) && banks_[1].closed(counter[1]) &&
+               banks_[2].closed(counter[2]) && banks_[3].closed(counter[3]);
+    }
     const HoldingRelayBank& bank(int i) const { return banks_.at(static_cast<std::size_t>(i)); }
+    bool separate_registers() const { return separate_registers_; }
+    // The numbers stored (with separate registers, each in its own).
+    const std::vector<int>& numbers() const { return numbers_; }
 
 private:
+    bool conducts_separately(const Digits& counter) const;
+
     std::array<HoldingRelayBank, 4> banks_; // 350, 352, 354, 356
     bool separate_registers_;
     std::vector<int> numbers_;
@@ -58,7 +77,10 @@ public:
     void store(int check);
     void clear();
     // Comparer 122'': does the circuit through banks 318-324 close for counter 112?
-    bool conducts(const Digits& increment) const;
+    bool conducts(const Digits& increment) const {
+        return banks_[0].closed(increment[0]) && banks_[1].closed(increment[1]) &&
+               banks_[2].closed(increment[2]) && banks_[3].closed(increment[3]);
+    }
     const HoldingRelayBank& bank(int i) const { return banks_.at(static_cast<std::size_t>(i)); }
 
 private:

@@ -1,0 +1,202 @@
+#include "relaylogic/fast_forward.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace parsons::relaylogic {
+namespace {
+
+using axes::floor_div;
+
+constexpr long kForever = std::numeric_limits<long>::max();
+constexpr std::array<long, 4> kUnits = {1000, 100, 10, 1}; // digits from the inch down
+// Beyond this many numbers the banks could match, stepping one by one is cheaper.
+constexpr long kMostMatches = 1000;
+
+int mod10(long v) {
+    return static_cast<int>(((v % 10) + 10) % 10);
+}
+
+long mod10000(long v) {
+    return ((v % 10000) + 10000) % 10000;
+}
+
+// Impulses until the counter first reads a number: 1 .. 10000 (0 means a full turn).
+long impulses_until(long distance) {
+    const long j = mod10000(distance);
+    return j == 0 ? 10000 : j;
+}
+
+// Every 4-digit number whose digit i is in allowed[i] (bit x = digit x), or nothing if there
+// are more than kMostMatches of them.
+std::optional<std::vector<long>> numbers_from(const std::array<unsigned, 4>& allowed) {
+    long count = 1;
+    for (unsigned mask : allowed) {
+        count *= __builtin_popcount(mask);
+    }
+    if (count > kMostMatches) {
+        return std::nullopt;
+    }
+    std::vector<long> out{0};
+    for (unsigned mask : allowed) {
+        std::vector<long> next;
+        for (long prefix : out) {
+            for (int x = 0; x < 10; ++x) {
+                if ((mask >> x & 1U) != 0) {
+                    next.push_back(prefix * 10 + x);
+                }
+            }
+        }
+        out = std::move(next);
+    }
+    return out;
+}
+
+// Absolute comparer 122': the first coming impulse after which it conducts, or kForever.
+// Returns nullopt when the banks hold too many numbers to search.
+std::optional<long> first_absolute_equality(const AxisCircuit& c) {
+    const long k0 = c.plant.commutator_index();
+    const int d = c.plant.moving_direction();
+    const int sigma = c.direction * d;
+    std::array<int, 4> offset{};
+    for (std::size_t i = 0; i < 4; ++i) {
+        const int position = c.absolute_counter.stepping_switch(i).position();
+        offset.at(i) = mod10(position - sigma * mod10(floor_div(k0, kUnits.at(i))));
+    }
+    // The screw digit x of unit i that puts switch i on counter digit v: v = o + sigma x.
+    auto screw_digit = [&](std::size_t i, int v) { return mod10(sigma * (v - offset.at(i))); };
+    std::vector<long> screw_numbers;
+    if (c.absolute_storage.separate_registers()) {
+        for (int number : c.absolute_storage.numbers()) {
+            const Digits v = value_digits(number);
+            long w = 0;
+            for (std::size_t i = 0; i < 4; ++i) {
+                w = w * 10 + screw_digit(i, v.at(i));
+            }
+            screw_numbers.push_back(w);
+        }
+    } else {
+        std::array<unsigned, 4> allowed{};
+        for (std::size_t i = 0; i < 4; ++i) {
+            for (int v = 0; v < 10; ++v) {
+                if (c.absolute_storage.bank(static_cast<int>(i)).closed(v)) {
+                    allowed.at(i) |= 1U << screw_digit(i, v);
+                }
+            }
+        }
+        auto numbers = numbers_from(allowed);
+        if (!numbers) {
+            return std::nullopt;
+        }
+        screw_numbers = std::move(*numbers);
+    }
+    long first = kForever;
+    for (long w : screw_numbers) {
+        first = std::min(first, impulses_until(d * (w - k0)));
+    }
+    return first;
+}
+
+// Incremental comparer 122'': the first coming impulse after which it conducts.
+std::optional<long> first_incremental_equality(const AxisCircuit& c) {
+    std::array<unsigned, 4> allowed{};
+    for (std::size_t i = 0; i < 4; ++i) {
+        allowed.at(i) = c.incremental_storage.bank(static_cast<int>(i)).closed_mask();
+    }
+    auto numbers = numbers_from(allowed);
+    if (!numbers) {
+        return std::nullopt;
+    }
+    const long v = c.increment_counter.value();
+    long first = kForever;
+    for (long w : *numbers) {
+        first = std::min(first, impulses_until(w - v));
+    }
+    return first;
+}
+
+} // namespace
+
+long quiet_impulses(const AxisCircuit& c, const QuietConditions& q) {
+    const axes::LeadScrewAxis& plant = c.plant;
+    if (!plant.next_event_is_impulse() || q.counting_hundredths) {
+        return 0;
+    }
+    // No switch may be asked to step sooner than it can: every impulse of this phase comes at
+    // least 0.001 in / (its fastest speed) after the one before, and the first one after every
+    // switch's last step.
+    const double u_max = std::max(plant.phase_start_speed(), plant.phase_end_speed());
+    const double ready = q.min_interval_s * (1 + 1e-6);
+    if (u_max <= 0 || axes::kInchesPerImpulse / u_max < ready) {
+        return 0;
+    }
+    double last_step = -axes::kNever;
+    for (std::size_t i = 0; i < 4; ++i) {
+        last_step = std::max({last_step, c.absolute_counter.stepping_switch(i).last_step_s(),
+                              c.increment_counter.stepping_switch(i).last_step_s()});
+    }
+    if (plant.next_event_time() - last_step < ready) {
+        return 0;
+    }
+    long first_event = kForever;
+    if (q.next_fault_impulse > c.contact_set_a) {
+        first_event = q.next_fault_impulse - c.contact_set_a;
+    }
+    if (!q.machine_stopped) {
+        first_event = std::min(first_event, plant.impulses_to_limit());
+    }
+    const auto absolute = first_absolute_equality(c);
+    const auto incremental = first_incremental_equality(c);
+    if (!absolute || !incremental) {
+        return 0;
+    }
+    first_event = std::min({first_event, *absolute, *incremental});
+    return first_event == kForever ? kForever : first_event - 1;
+}
+
+void jump_quiet_impulses(AxisCircuit& c, long n) {
+    axes::LeadScrewAxis& plant = c.plant;
+    const long k0 = plant.commutator_index();
+    const int d = plant.moving_direction();
+    const long kn = k0 + d * n;
+    // Absolute counter: switch i stepped once for every crossing of a multiple of its unit
+    // (the crossing's upper reading), in the sense reversing control 214 set.
+    Digits absolute{};
+    std::array<double, 4> absolute_last{};
+    for (std::size_t i = 0; i < 4; ++i) {
+        const long m = kUnits.at(i);
+        const SteppingSwitch& sw = c.absolute_counter.stepping_switch(i);
+        const long steps = d * (floor_div(kn, m) - floor_div(k0, m));
+        absolute.at(i) = mod10(sw.position() + c.direction * steps);
+        absolute_last.at(i) = sw.last_step_s();
+        if (steps > 0) {
+            // The last impulse of the stretch whose upper reading is a multiple of m.
+            const long j =
+                d > 0 ? floor_div(kn, m) * m - k0 : k0 - (-floor_div(-(kn + 1), m)) * m + 1;
+            absolute_last.at(i) = plant.impulse_time(j);
+        }
+    }
+    // Increment counter: a decimal counter of the impulses, 310 first.
+    const long v = c.increment_counter.value();
+    const Digits increment = value_digits(static_cast<int>((v + n) % 10000));
+    std::array<double, 4> increment_last{};
+    for (std::size_t i = 0; i < 4; ++i) {
+        const long m = kUnits.at(3 - i);
+        increment_last.at(i) = c.increment_counter.stepping_switch(i).last_step_s();
+        if ((v + n) / m > v / m) {
+            increment_last.at(i) = plant.impulse_time((v + n) / m * m - v);
+        }
+    }
+    const double t_last = plant.impulse_time(n);
+    c.absolute_counter.jump(absolute, absolute_last);
+    c.increment_counter.jump(increment, increment_last);
+    plant.skip_impulses(n);
+    c.contact_set_a += n;
+    c.contact_set_b += n;
+    c.compare();
+    c.speed_switch.equality_left(t_last);
+}
+
+} // namespace parsons::relaylogic

@@ -1,0 +1,40 @@
+// Fast-forward: the analytic jump between comparer equalities.
+//
+// Between two events that matter, an axis's impulses each do the same small thing: commutator
+// 102 steps switch 110 and the increment counter, commutators 100, 98, 96 step 108, 106, 104
+// now and then, and both comparers stay open. Every such "quiet" impulse is a pure function of
+// the integer commutator index it crosses, so a stretch of them can be taken in one jump:
+//
+//   switch i of the absolute counter (unit m = 1000, 100, 10, 1 thousandths) after the impulse
+//   that leaves the screw on index k reads  (o_i + sigma * floor(k / m) mod 10) mod 10,
+//   sigma = (counting sense of reversing control 214) x (direction the screw turns), and
+//   o_i fixed by where it stood;   the increment counter reads  (start + j) mod 10000.
+//
+// So the comparer closes again at the first index whose digits fall on closed relays, which is
+// found from the (few) numbers the banks can match, not by stepping. A stretch ends before the
+// first impulse that is not quiet: a comparer conducts, a fault is due, the part would pass a
+// travel limit, or a stepping switch could miss a step (impulses closer than its stepping
+// time, where one-by-one is the only exact answer). The impulse that ends it, and everything
+// after, goes through the ordinary impulse path. A jump leaves every switch, its last-step
+// time, the counters and the plant exactly where taking the impulses one by one would.
+#pragma once
+
+#include "relaylogic/axis_circuit.hpp"
+
+namespace parsons::relaylogic {
+
+struct QuietConditions {
+    double min_interval_s = 0;        // 1 / the stepping switches' fastest rate
+    bool machine_stopped = false;     // master switch open: nothing but counting happens
+    long next_fault_impulse = 0;      // contact-set-A count of the next fault on this axis, or 0
+    bool counting_hundredths = false; // the profile's hundredths-only counting is in force
+};
+
+// How many of the axis's coming impulses are quiet (0 when the next one is not, or when the
+// axis is not moving toward an impulse).
+long quiet_impulses(const AxisCircuit& c, const QuietConditions& q);
+
+// Takes the next n quiet impulses at once (n <= quiet_impulses()).
+void jump_quiet_impulses(AxisCircuit& c, long n);
+
+} // namespace parsons::relaylogic

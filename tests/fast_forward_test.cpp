@@ -1,0 +1,323 @@
+// Fast-forward against impulse level: the same machine, event for event.
+//
+// Each random deck runs four times: at impulse level and fast-forward with no observer (the
+// results must be identical to the last bit: machine time, every counter, real positions,
+// impulses, lost steps, the stop and its message), and again with an observer that records
+// every signal change except those the impulses themselves drive (counter switches, comparers,
+// stepping relay 256 and delay 258, which fast-forward reports a stretch at a time to an
+// observer that does not follow impulses), plus every signal's value at each zeroizing. Those
+// must be identical too: every relay event at the same instant, in the same order.
+//
+// The decks are plausible rather than valid: moves of every length, slow-downs well placed or
+// too close, a wrong check or card number now and then, patterns that stall. The profiles vary
+// speeds (some faster than the switches can step), stepping rate, acceleration, delay 258,
+// screw error, travel limits, separate registers, hundredths-only counting and dropped
+// impulses, so every kind of stretch end is met.
+#include "tests/machine_support.hpp"
+
+#include "cardreader/deck_review.hpp"
+#include "relaylogic/fast_forward.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <random>
+
+using namespace parsons;
+using namespace parsons::cardreader;
+using namespace parsons::relaylogic;
+using parsons::test::run_orders;
+
+namespace {
+
+class Events : public MachineObserver {
+public:
+    explicit Events(bool follows) : follows_(follows) {}
+    bool follows_impulses() const override { return follows_; }
+    void on_signal_defined(const SignalInfo& info, std::uint32_t initial) override {
+        const std::string& n = info.name;
+        const bool driven = n.find("counter_") != std::string::npos ||
+                            n.find("comparer") != std::string::npos || n == "stepping_relay_256" ||
+                            n == "delay_device_258";
+        driven_.push_back(driven);
+        values_.push_back(initial);
+        if (n == "zeroizing_circuit_292") {
+            zeroize_ = info.id;
+        }
+    }
+    void on_signal(double t, SignalId id, std::uint32_t, std::uint32_t v) override {
+        values_.at(id) = v;
+        if (!driven_.at(id)) {
+            events.emplace_back(t, id, v);
+        }
+        if (id == zeroize_ && v == 1) {
+            at_zeroize.push_back(values_);
+        }
+    }
+    void on_card(double t, long index, const CardOrders&) override { cards.emplace_back(t, index); }
+    void on_stop(double t, const StopInfo& s) override { stops.emplace_back(t, s.message); }
+
+    std::vector<std::tuple<double, SignalId, std::uint32_t>> events;
+    std::vector<std::vector<std::uint32_t>> at_zeroize;
+    std::vector<std::pair<double, long>> cards;
+    std::vector<std::pair<double, std::string>> stops;
+
+private:
+    bool follows_;
+    std::vector<bool> driven_;
+    std::vector<std::uint32_t> values_;
+    SignalId zeroize_ = 0;
+};
+
+struct Case {
+    axes::MachineProfile profile = axes::default_profile();
+    std::vector<CardOrders> cards;
+    std::vector<DropImpulseFault> faults;
+};
+
+Case random_case(std::mt19937& rng) {
+    auto pick = [&rng](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    auto chance = [&rng](double p) { return std::bernoulli_distribution(p)(rng); };
+    auto real = [&rng](double lo, double hi) {
+        return std::uniform_real_distribution<double>(lo, hi)(rng);
+    };
+    Case c;
+    auto& p = c.profile;
+    const bool fast = chance(0.25);
+    for (auto& a : p.axes) {
+        if (fast) {
+            const double scale = real(0.5, 3.0); // speed 1 up to 270 impulses a second
+            for (double& s : a.speed_in_per_min) {
+                s *= scale;
+            }
+        }
+        if (chance(0.3)) {
+            a.acceleration_in_per_s2 = real(0.05, 2.0);
+            a.braking_in_per_s2 = real(0.05, 2.0);
+        }
+        if (chance(0.1)) {
+            a.screw_error_in = {{0.0, real(-0.002, 0.002)},
+                                {5.0, real(-0.002, 0.002)},
+                                {10.0, real(-0.002, 0.002)}};
+        }
+        if (chance(0.05)) {
+            a.travel_min_in = real(-0.5, -0.001);
+            a.travel_max_in = real(4.0, 10.5);
+        }
+    }
+    if (chance(0.3)) {
+        p.max_stepping_rate_per_s = real(60, 300);
+    }
+    if (chance(0.15)) {
+        p.delay_258_s = real(0.001, 0.02);
+    }
+    p.separate_registers = chance(0.2);
+    p.count_hundredths_at_speed_1 = chance(0.15);
+
+    // Half the decks are valid; the others have one mistake, on one card and axis.
+    const int mistake = chance(0.5) ? 0 : pick(1, 6);
+    const int cards = pick(1, 8);
+    const int bad_card = pick(0, cards - 1);
+    const auto bad_axis = kAxes.at(static_cast<std::size_t>(pick(0, 4)));
+    std::array<int, 5> at{};
+    int number = pick(0, 9990);
+    for (int n = 0; n < cards; ++n) {
+        CardOrders o;
+        o.number = number++;
+        if (mistake == 1 && n == bad_card) {
+            o.number = pick(0, 9999); // out of order (most likely)
+        }
+        o.spindle = static_cast<Spindle>(pick(0, 2));
+        for (Axis a : kAxes) {
+            const bool bad = n == bad_card && a == bad_axis;
+            AxisOrder& x = o.axis(a);
+            int& from = at.at(axis_index(a));
+            const int reach =
+                std::array<int, 4>{5, 40, 400, 9999}.at(static_cast<std::size_t>(pick(0, 3)));
+            const int to = std::clamp(from + pick(-reach, reach), 0, 9999);
+            const int sign = to >= from ? +1 : -1;
+            x.motion = (sign > 0) != (bad && mistake == 2) ? Motion::forward : Motion::reverse;
+            // Speed 1 needs room for slow-downs 0.2 and 0.1 in before the stop; speed 2 for 0.1.
+            const int length = std::abs(to - from);
+            x.start_speed = length > 260 ? (fast ? 1 : pick(1, 3)) : length > 130 ? pick(2, 3) : 3;
+            const bool close = bad && mistake == 3;
+            for (int s = 0; s < 3 - x.start_speed; ++s) {
+                const int before = close ? pick(1, 5) : (2 - s) * 100 + pick(-20, 20);
+                x.slow_down.at(static_cast<std::size_t>(s)) =
+                    static_cast<Thousandths>(std::clamp(to - sign * before, 0, 9999));
+            }
+            if (bad && mistake == 4) {
+                x.slow_down.at(0) = static_cast<Thousandths>(pick(0, 9999)); // anywhere
+            }
+            x.stop = static_cast<Thousandths>(to);
+            const int check = std::abs(to - from) + (bad && mistake == 5 ? pick(-3, 3) : 0);
+            x.check = static_cast<Thousandths>(std::clamp(check, 0, 9999));
+            const std::array<SequencePattern, 5> patent = {0b00011, 0b00011, 0b01100, 0b01100,
+                                                           0b10000};
+            x.sequence = bad && mistake == 6 ? static_cast<SequencePattern>(pick(0, 31))
+                                             : patent.at(axis_index(a));
+            if (!bad && !spurious_matches_on_path(x, static_cast<Thousandths>(from)).empty()) {
+                x.start_speed = 3; // the generator's answer to the shared-bank hazard
+                x.slow_down = {};
+            }
+            from = to;
+        }
+        c.cards.push_back(o);
+    }
+    if (chance(0.1)) {
+        c.faults.push_back({kAxes.at(static_cast<std::size_t>(pick(0, 4))), pick(1, 3000)});
+    }
+    return c;
+}
+
+RunResult run_at(const Case& c, Pace pace, MachineObserver* observer) {
+    std::vector<Card> punched;
+    for (const auto& o : c.cards) {
+        punched.push_back(encode(o, fig8_layout()).card);
+    }
+    test::VectorDeck deck(punched);
+    ControlCabinet cabinet(c.profile, fig8_layout());
+    for (const auto& f : c.faults) {
+        cabinet.add_fault(f);
+    }
+    cabinet.set_pace(pace);
+    cabinet.record_card_times(true);
+    if (observer != nullptr) {
+        cabinet.attach(observer);
+    }
+    return cabinet.run(deck);
+}
+
+void require_same(const RunResult& a, const RunResult& b) {
+    REQUIRE(a.completed == b.completed);
+    REQUIRE(a.cards_read == b.cards_read);
+    REQUIRE(a.machine_seconds == b.machine_seconds);
+    REQUIRE(a.stop.has_value() == b.stop.has_value());
+    if (a.stop) {
+        REQUIRE(a.stop->reason == b.stop->reason);
+        REQUIRE(a.stop->card == b.stop->card);
+        REQUIRE(a.stop->axis == b.stop->axis);
+        REQUIRE(a.stop->message == b.stop->message);
+        REQUIRE(a.stop->lamps == b.stop->lamps);
+    }
+    for (std::size_t i = 0; i < a.axes.size(); ++i) {
+        INFO("axis " << i);
+        REQUIRE(a.axes.at(i).counter_in == b.axes.at(i).counter_in);
+        REQUIRE(a.axes.at(i).real_in == b.axes.at(i).real_in);
+        REQUIRE(a.axes.at(i).impulses == b.axes.at(i).impulses);
+        REQUIRE(a.axes.at(i).lost_steps == b.axes.at(i).lost_steps);
+    }
+    REQUIRE(a.cards.size() == b.cards.size());
+    for (std::size_t i = 0; i < a.cards.size(); ++i) {
+        REQUIRE(a.cards.at(i).start_s == b.cards.at(i).start_s);
+        REQUIRE(a.cards.at(i).end_s == b.cards.at(i).end_s);
+    }
+}
+
+} // namespace
+
+TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, result and relay "
+          "events alike",
+          "[fastforward][cabinet]") {
+    std::mt19937 rng(1952);
+    long impulses = 0;
+    int stopped = 0;
+    int lost = 0;
+    for (int n = 0; n < 240; ++n) {
+        const Case c = random_case(rng);
+        INFO("deck " << n);
+        const RunResult reference = run_at(c, Pace::impulse_level, nullptr);
+        const RunResult jumped = run_at(c, Pace::fast_forward, nullptr);
+        require_same(reference, jumped);
+
+        Events followed(true);
+        Events sparse(false);
+        const RunResult traced = run_at(c, Pace::impulse_level, &followed);
+        const RunResult skipped = run_at(c, Pace::fast_forward, &sparse);
+        require_same(reference, traced);
+        require_same(reference, skipped);
+        REQUIRE(followed.events == sparse.events);
+        REQUIRE(followed.at_zeroize == sparse.at_zeroize);
+        REQUIRE(followed.cards == sparse.cards);
+        REQUIRE(followed.stops == sparse.stops);
+
+        for (const auto& a : reference.axes) {
+            impulses += a.impulses;
+            lost += a.lost_steps > 0 ? 1 : 0;
+        }
+        stopped += reference.stop ? 1 : 0;
+    }
+    // The decks did what they are for: long runs, stops of several kinds, lost steps.
+    CHECK(impulses > 1'000'000);
+    CHECK(stopped > 40);
+    CHECK(stopped < 200);
+    CHECK(lost >= 3);
+}
+
+TEST_CASE("Fast-forward: a jump leaves every stepping switch, its last-step time and the screw "
+          "where taking the impulses one by one does",
+          "[fastforward][counters]") {
+    std::mt19937 rng(1953);
+    auto pick = [&rng](long lo, long hi) {
+        return std::uniform_int_distribution<long>(lo, hi)(rng);
+    };
+    const double min_interval = 1.0 / 100;
+    for (int trial = 0; trial < 300; ++trial) {
+        INFO("trial " << trial);
+        Tracer tracer_a;
+        Tracer tracer_b;
+        axes::AxisProfile profile = axes::default_profile().axes.at(0);
+        profile.travel_min_in = -1e6;
+        profile.travel_max_in = 1e6;
+        const bool separate = false;
+        AxisCircuit a(tracer_a, profile, Axis::table, separate);
+        AxisCircuit b(tracer_b, profile, Axis::table, separate);
+        const int motion = pick(0, 1) != 0 ? +1 : -1;
+        const int counting = pick(0, 3) != 0 ? motion : -motion; // coast counted the wrong way
+        const Digits start_abs = value_digits(static_cast<int>(pick(0, 9999)));
+        const Digits start_inc = value_digits(static_cast<int>(pick(0, 9999)));
+        for (AxisCircuit* c : {&a, &b}) {
+            c->direction = counting;
+            c->absolute_counter.jump(start_abs, {-1, -1, -1, -1});
+            c->increment_counter.jump(start_inc, {-1, -1, -1, -1});
+            c->plant.command(motion, 1);
+        }
+        // Both run through the same speed-up, impulse by impulse; then b jumps.
+        auto step = [&](AxisCircuit& c) {
+            const double t = c.plant.next_event_time();
+            if (auto i = c.plant.advance_to(t)) {
+                c.absolute_counter.impulse(c.direction, i->hundredths, i->tenths, i->inches, t,
+                                           min_interval);
+                c.increment_counter.impulse(t, min_interval);
+                ++c.contact_set_a;
+                ++c.contact_set_b;
+            }
+        };
+        const long lead = pick(30, 3000);
+        for (long i = 0; i < lead; ++i) {
+            step(a);
+            step(b);
+        }
+        const long n = pick(1, 30000);
+        for (long i = 0; i < n; ++i) {
+            step(a);
+        }
+        jump_quiet_impulses(b, n);
+        REQUIRE(a.plant.commutator_index() == b.plant.commutator_index());
+        REQUIRE(a.plant.impulses() == b.plant.impulses());
+        REQUIRE(a.plant.next_event_time() == b.plant.next_event_time());
+        REQUIRE(a.plant.real_in() == b.plant.real_in());
+        REQUIRE(a.contact_set_a == b.contact_set_a);
+        for (std::size_t i = 0; i < 4; ++i) {
+            INFO("switch " << i);
+            const auto& sa = a.absolute_counter.stepping_switch(i);
+            const auto& sb = b.absolute_counter.stepping_switch(i);
+            REQUIRE(sa.position() == sb.position());
+            REQUIRE(sa.last_step_s() == sb.last_step_s());
+            REQUIRE(sa.lost() == 0);
+            const auto& ia = a.increment_counter.stepping_switch(i);
+            const auto& ib = b.increment_counter.stepping_switch(i);
+            REQUIRE(ia.position() == ib.position());
+            REQUIRE(ia.last_step_s() == ib.last_step_s());
+        }
+    }
+}
