@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace parsons::decks {
 namespace {
@@ -79,10 +80,52 @@ struct Deviation {
     double gouge = 0;
 };
 
+// The least t >= 0 at which p + t n (n a unit vector) comes within r of the segment a-b: where
+// the ray enters the capsule the cutter sweeps along it (two flat sides, two round ends).
+// kNever if it never does. Exact, by the quadratic and linear equations of those boundaries.
+double ray_enters_capsule(const Vector2d& p, const Vector2d& n, const Vector2d& a,
+                          const Vector2d& b, double r) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const Vector2d& c : {a, b}) { // the round ends
+        const Vector2d pc = p - c;
+        const double half_b = n.dot(pc);
+        const double disc = half_b * half_b - (pc.squaredNorm() - r * r);
+        if (disc >= 0) {
+            const double near = -half_b - std::sqrt(disc);
+            const double far = -half_b + std::sqrt(disc);
+            if (far >= 0) {
+                best = std::min(best, std::max(near, 0.0)); // 0: p is inside already
+            }
+        }
+    }
+    const Vector2d ab = b - a;
+    const double len = ab.norm();
+    if (len > 0) { // the flat sides, r either side of the segment
+        const Vector2d u = ab / len;
+        const Vector2d m(-u.y(), u.x());
+        const double y0 = m.dot(p - a);
+        const double x0 = u.dot(p - a);
+        const double ny = m.dot(n);
+        const double nx = u.dot(n);
+        if (ny != 0) {
+            for (double side : {-r, r}) {
+                const double t = (side - y0) / ny;
+                const double x = x0 + t * nx;
+                if (t >= 0 && x >= 0 && x <= len) {
+                    best = std::min(best, t);
+                }
+            }
+        }
+    }
+    return best;
+}
+
 // How far the surface between two stations ends up from the staircase cut between them,
 // measured as the proof of the cut measures it (decks/cut_proof.hpp): a point the cutter
 // came nearer than R to is gouged by the difference; a point it did not reach has material
-// left standing up to where, out along its normal, the cutter's swept region begins.
+// left standing up to where, out along its normal, the cutter's swept region begins. The span
+// is judged at evenly spaced points, one every kJudgeStep inches of chord-wise parameter but
+// never fewer than 8 nor more than `samples`.
 Deviation span_deviation(const Airfoil& airfoil, const TemplateOptions& o, const Track& track,
                          double wa, double wb, const Station& a, const Station& b,
                          int samples = 16) {
@@ -92,31 +135,21 @@ Deviation span_deviation(const Airfoil& airfoil, const TemplateOptions& o, const
         return std::min(segment_distance(p, a.centre, corner),
                         segment_distance(p, corner, b.centre));
     };
+    constexpr double kJudgeStep = 0.05 / 256; // the densest: 256 points in the widest span
+    const double length = (b.work - a.work).norm() / o.chord_in;
+    const int n = std::clamp(static_cast<int>(std::ceil(length / kJudgeStep)), 8, samples);
     Deviation d;
-    constexpr int kMarch = 48;
-    for (int k = 0; k <= samples; ++k) {
-        const Station s = station_at(airfoil, o, track, wa + (wb - wa) * k / samples);
+    for (int k = 0; k <= n; ++k) {
+        const Station s = station_at(airfoil, o, track, wa + (wb - wa) * k / n);
         const double d0 = dist(s.work);
         if (d0 <= r) {
             d.gouge = std::max(d.gouge, r - d0);
             continue;
         }
         const double t_max = 2 * r + d0;
-        double lo_t = 0;
-        double hi_t = t_max;
-        for (int i = 1; i <= kMarch; ++i) {
-            const double t = t_max * i / kMarch;
-            if (dist(s.work + t * s.toward_cutter) <= r) {
-                hi_t = t;
-                break;
-            }
-            lo_t = t;
-        }
-        for (int i = 0; i < 30; ++i) {
-            const double mid = (lo_t + hi_t) / 2;
-            (dist(s.work + mid * s.toward_cutter) <= r ? hi_t : lo_t) = mid;
-        }
-        d.leftover = std::max(d.leftover, hi_t);
+        const double t = std::min(ray_enters_capsule(s.work, s.toward_cutter, a.centre, corner, r),
+                                  ray_enters_capsule(s.work, s.toward_cutter, corner, b.centre, r));
+        d.leftover = std::max(d.leftover, std::min(t, t_max));
     }
     return d;
 }
