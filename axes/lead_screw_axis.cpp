@@ -8,28 +8,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Time to cover distance D > 0 from speed u with acceleration a, or kNever.
-double time_to_cover(double D, double u, double a) {
-    if (D <= 0) {
-        return 0; // on the boundary already: the crossing is now
-    }
-    if (a == 0) {
-        return u > 0 ? D / u : kNever;
-    }
-    const double disc = u * u + 2 * a * D;
-    if (disc < 0) {
-        return kNever;
-    }
-    const double denom = u + std::sqrt(disc);
-    return denom > 0 ? 2 * D / denom : kNever;
-}
-
-// The half-thousandth crossing h (odd) as a screw position: exactly the double that
-// (k + d / 2) * 0.001 gives for the crossing from k in direction d.
-double crossing_in(long h) {
-    return static_cast<double>(h) * (kInchesPerImpulse / 2);
-}
-
 } // namespace
 
 LeadScrewAxis::LeadScrewAxis(const AxisProfile& profile) : profile_(profile) {
@@ -112,42 +90,12 @@ void LeadScrewAxis::start_phase(double u) {
     a_ = accel_toward_target(u);
     // Where the phase ends: at the target speed, or at rest when braking or reversing.
     phase_end_ = a_ == 0 ? kNever : t0_ + (phase_end_speed() - u0_) / a_;
-    plan_impulse();
-}
-
-double LeadScrewAxis::boundary_time(long k_from) const {
-    if (u0_ == 0 && a_ <= 0) {
-        return kNever;
+    if (a_ == 0 && u0_ > 0) {
+        // t0 + ((k + d/2) 0.001 - s0) d / u, as a + b k.
+        time_per_index_ = d_ * kInchesPerImpulse / u0_;
+        time_at_index0_ = t0_ + (0.5 * d_ * kInchesPerImpulse - s0_) * d_ / u0_;
     }
-    const double boundary = (static_cast<double>(k_from) + 0.5 * d_) * kInchesPerImpulse;
-    const double D = std::max(0.0, (boundary - s0_) * d_);
-    const double t = t0_ + time_to_cover(D, u0_, a_);
-    return t <= phase_end_ ? t : kNever;
-}
-
-void LeadScrewAxis::plan_impulse() {
-    const double t = boundary_time(k_);
-    next_is_impulse_ = t != kNever;
-    next_time_ = next_is_impulse_ ? t : phase_end_;
-}
-
-std::optional<Impulse> LeadScrewAxis::take_impulse() {
-    t_ = next_time_;
-    last_h_ = 2 * k_ + d_;
-    s_ = crossing_in(last_h_);
-    k_ += d_;
-    ++impulses_;
-    Impulse impulse;
-    impulse.direction = d_;
-    // Commutators 100, 98, 96 close when the crossing also crosses a 0.01, 0.1 or 1 in
-    // boundary: the crossing lies between readings upper - 1 and upper, and it passes such a
-    // boundary exactly when upper is a whole number of hundredths, tenths or inches.
-    const long upper = d_ > 0 ? k_ : k_ + 1;
-    impulse.hundredths = upper % 10 == 0; // also for upper < 0
-    impulse.tenths = impulse.hundredths && upper % 100 == 0;
-    impulse.inches = impulse.tenths && upper % 1000 == 0;
     plan_impulse();
-    return impulse;
 }
 
 void LeadScrewAxis::advance_slowly(double t) {

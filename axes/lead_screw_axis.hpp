@@ -28,6 +28,8 @@
 
 #include "axes/machine_profile.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -50,6 +52,28 @@ struct Impulse {
 inline long floor_div(long a, long b) {
     const long q = a / b;
     return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+
+// Time to cover distance D > 0 from speed u with acceleration a, or kNever.
+inline double time_to_cover(double D, double u, double a) {
+    if (D <= 0) {
+        return 0; // on the boundary already: the crossing is now
+    }
+    if (a == 0) {
+        return u > 0 ? D / u : kNever;
+    }
+    const double disc = u * u + 2 * a * D;
+    if (disc < 0) {
+        return kNever;
+    }
+    const double denom = u + std::sqrt(disc);
+    return denom > 0 ? 2 * D / denom : kNever;
+}
+
+// The half-thousandth crossing h (odd) as a screw position: exactly the double that
+// (k + d / 2) * 0.001 gives for the crossing from k in direction d.
+inline double crossing_in(long h) {
+    return static_cast<double>(h) * (kInchesPerImpulse / 2);
 }
 
 class LeadScrewAxis {
@@ -75,6 +99,9 @@ public:
         advance_slowly(t);
         return std::nullopt;
     }
+
+    // The next impulse, due now (next_event_is_impulse()): the impulse loop's own gateway.
+    Impulse take_next_impulse() { return take_impulse(); }
 
     // Fast-forward: the time of the n-th impulse from now (n >= 1) in the current phase of
     // motion, or kNever if the phase ends (or the axis stops) first.
@@ -113,11 +140,48 @@ public:
     double fixture_angle_deg(bool sine_plate) const;
 
 private:
-    std::optional<Impulse> take_impulse();
+    [[gnu::always_inline]] Impulse take_impulse() {
+        t_ = next_time_;
+        last_h_ = 2 * k_ + d_;
+        s_ = crossing_in(last_h_);
+        k_ += d_;
+        ++impulses_;
+        Impulse impulse;
+        impulse.direction = d_;
+        // Commutators 100, 98, 96 close when the crossing also crosses a 0.01, 0.1 or 1 in
+        // boundary: the crossing lies between readings upper - 1 and upper, and it passes such
+        // a boundary exactly when upper is a whole number of hundredths, tenths or inches.
+        const long upper = d_ > 0 ? k_ : k_ + 1;
+        impulse.hundredths = upper % 10 == 0; // also for upper < 0
+        impulse.tenths = impulse.hundredths && upper % 100 == 0;
+        impulse.inches = impulse.tenths && upper % 1000 == 0;
+        plan_impulse();
+        return impulse;
+    }
     void advance_slowly(double t);
     void start_phase(double u); // a new phase of constant acceleration from (t_, s_, u)
-    void plan_impulse();        // the time of the next impulse in this phase
-    double boundary_time(long k_from) const;
+    // The time of the next impulse in this phase.
+    [[gnu::always_inline]] void plan_impulse() {
+        const double t = boundary_time(k_);
+        next_is_impulse_ = t != kNever;
+        next_time_ = next_is_impulse_ ? t : phase_end_;
+    }
+    [[gnu::always_inline]] double boundary_time(long k_from) const {
+        if (a_ == 0) {
+            // At constant speed the crossing times are linear in the index: t0 + (boundary -
+            // s0) / u, with the constants worked out once a phase. Never before the phase.
+            return u0_ > 0 ? std::max(t0_, time_at_index0_ +
+                                               time_per_index_ * static_cast<double>(k_from))
+                           : kNever;
+        }
+        if (u0_ == 0 && a_ < 0) {
+            return kNever;
+        }
+        const double boundary = (static_cast<double>(k_from) + 0.5 * d_) * kInchesPerImpulse;
+        const double D = std::max(0.0, (boundary - s0_) * d_);
+        const double t = t0_ + time_to_cover(D, u0_, a_);
+        return t <= phase_end_ ? t : kNever;
+    }
     double position_at(double t) const;
     double with_screw_error(double s) const;
     double accel_toward_target(double u) const;
@@ -128,6 +192,8 @@ private:
     double t0_ = 0;
     double s0_ = 0;
     double u0_ = 0;
+    double time_at_index0_ = 0; // at constant speed: crossing from index k at
+    double time_per_index_ = 0; // time_at_index0_ + time_per_index_ * k
     double a_ = 0;
     int d_ = +1;
     double phase_end_ = kNever;

@@ -51,6 +51,7 @@ CardLayout make_fig8() {
     }
     // Column 76 is left unused.
     layout.fields.push_back({FieldKind::card_number, std::nullopt, 77, 4});
+    layout.index();
     return layout;
 }
 
@@ -198,6 +199,17 @@ std::string field_label(const LayoutField& field) {
     return fmt::format("{} {}", axis_name(field.axis.value_or(Axis::table)), what);
 }
 
+void CardLayout::index() {
+    for (int c = 1; c <= kColumns; ++c) {
+        const LayoutField* f = field_at(c);
+        ColumnWord allowed = f ? rows_allowed(f->kind) : 0;
+        if (sequence_at(c)) {
+            allowed |= r12;
+        }
+        allowed_rows.at(static_cast<std::size_t>(c)) = allowed;
+    }
+}
+
 const CardLayout& fig8_layout() {
     static const CardLayout layout = make_fig8();
     return layout;
@@ -216,13 +228,10 @@ DecodeResult decode(const Card& card, const CardLayout& layout) {
 
     // Holes where the layout expects none.
     for (int c = 1; c <= kColumns; ++c) {
-        const LayoutField* f = layout.field_at(c);
-        ColumnWord allowed = f ? rows_allowed(f->kind) : 0;
-        if (layout.sequence_at(c)) {
-            allowed |= r12;
-        }
+        const ColumnWord allowed = layout.allowed_rows[static_cast<std::size_t>(c)];
         ColumnWord stray = card.column(c) & static_cast<ColumnWord>(~allowed) & kAllRowsMask;
         if (stray != 0) {
+            const LayoutField* f = layout.field_at(c);
             std::string where =
                 f ? fmt::format("in {}", field_label(*f))
                   : fmt::format("in column {}, which layout {} leaves unused", c, layout.name);

@@ -49,6 +49,10 @@ struct CardLayout {
     const LayoutField* field_at(int column) const;
     // The sequence position (1..5) and axis whose cross mark sits in row 12 of this column.
     std::optional<std::pair<Axis, int>> sequence_at(int column) const;
+
+    // The rows each column may be punched in (index 1..80), worked out once by index().
+    std::array<ColumnWord, kColumns + 1> allowed_rows{};
+    void index();
 };
 
 // "table stop", "spindle", "card number"

@@ -8,6 +8,7 @@
 
 #include "axes/machine_profile.hpp"
 #include "decks/job_file.hpp"
+#include "relaylogic/control_cabinet.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -24,6 +25,7 @@ void add_run_command(CLI::App& app, Command& selected);
 void add_profile_command(CLI::App& app, Command& selected);
 void add_gen_command(CLI::App& app, Command& selected);
 void add_demo_command(CLI::App& app, Command& selected);
+void add_bench_command(CLI::App& app, Command& selected);
 
 // What `parsons run` is asked to do (the flags of DESIGN.md section 6).
 struct RunRequest {
@@ -41,7 +43,8 @@ struct RunRequest {
     bool impulse_level = false;
     DeckFlags deck;
 };
-ExitCode run_deck(const RunRequest& request);
+// The result of the run goes to *result too, if given (the benchmark counts its impulses).
+ExitCode run_deck(const RunRequest& request, relaylogic::RunResult* result = nullptr);
 
 // A deck generated and written: DECK, DECK.job.json and (if named) the centres CSV.
 struct GeneratedJob {

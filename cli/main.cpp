@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
     add_profile_command(app, selected);
     add_gen_command(app, selected);
     add_demo_command(app, selected);
+    add_bench_command(app, selected);
 
     // Name an unknown command rather than let CLI11 say only that one is required.
     if (argc > 1 && argv[1][0] != '-') {

@@ -115,7 +115,7 @@ private:
 
 } // namespace
 
-ExitCode run_deck(const RunRequest& f) {
+ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     const axes::MachineProfile profile = load_profile(f.profile);
     std::vector<relaylogic::DropImpulseFault> faults;
     for (const auto& spec : f.faults) {
@@ -163,6 +163,9 @@ ExitCode run_deck(const RunRequest& f) {
     }
 
     const relaylogic::RunResult result = cabinet.run(deck.cards());
+    if (out != nullptr) {
+        *out = result;
+    }
 
     vcd.commit();
     events.commit();

@@ -1,5 +1,6 @@
 #include "cli/trace_outputs.hpp"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -210,7 +211,7 @@ void VcdWriter::write_header() {
             h.code_len = static_cast<std::uint8_t>(v.code.size());
             h.width = static_cast<std::uint8_t>(v.width);
             if (!taken.insert(v.reference).second) {
-                v.reference += "_" + std::to_string(id); // two names that differ only in '.'
+                v.reference = fmt::format("{}_{}", v.reference, id); // names that differ in '.'
                 taken.insert(v.reference);
             }
             buf_.put("$var wire ");

@@ -47,13 +47,6 @@ void AxisCircuit::set_direction(cardreader::Motion motion) {
     tracer.set(reversing_214_, direction > 0 ? 0 : 1);
 }
 
-void AxisCircuit::compare() {
-    absolute_conducting = absolute_storage.conducts(absolute_counter.digits());
-    incremental_conducting = incremental_storage.conducts(increment_counter.digits());
-    tracer.set(comparer_absolute_, absolute_conducting ? 1 : 0);
-    tracer.set(comparer_incremental_, incremental_conducting ? 1 : 0);
-}
-
 void AxisCircuit::set_powered(bool on) {
     powered = on;
     tracer.set(motor_, on ? 1 : 0);

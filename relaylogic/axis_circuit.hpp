@@ -25,7 +25,12 @@ struct AxisCircuit {
     // Reversing control 214 (row 0 forward, row 1 reverse), also setting the counters' sense.
     void set_direction(cardreader::Motion motion);
     // Comparers 122' and 122'': re-read the circuits through storage and counters.
-    void compare();
+    void compare() {
+        absolute_conducting = absolute_storage.conducts(absolute_counter.digits());
+        incremental_conducting = incremental_storage.conducts(increment_counter.digits());
+        tracer.set(comparer_absolute_, absolute_conducting ? 1 : 0);
+        tracer.set(comparer_incremental_, incremental_conducting ? 1 : 0);
+    }
     void set_powered(bool on);
 
     Tracer& tracer;

@@ -24,7 +24,8 @@ std::string inches(int thousandths) {
 } // namespace
 
 ControlCabinet::ControlCabinet(axes::MachineProfile profile, const cardreader::CardLayout& layout)
-    : profile_(std::move(profile)), layout_(layout), shaft_(tracer_), balancing_(tracer_) {
+    : profile_(std::move(profile)), layout_(layout), shaft_(tracer_), balancing_(tracer_),
+      min_interval_s_(1.0 / profile_.max_stepping_rate_per_s) {
     reader_card_ = tracer_.define("cabinet", "card_reader_134.card",
                                   "card in the reader (deck "
                                   "position)",
@@ -91,13 +92,11 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
             catch_up(t);
         }
         bool moved = false;
-        std::size_t last_moved = 0;
         for (std::size_t i = 0; i < circuits_.size(); ++i) {
             AxisCircuit& c = *circuits_[i];
             if (c.plant.next_event_time() <= t) {
                 auto impulse = c.plant.advance_to(t);
                 moved = true;
-                last_moved = i;
                 if (impulse) {
                     on_impulse(c, *impulse);
                 }
@@ -115,8 +114,8 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
             queue_.pop();
             handle(e);
         }
-        if (alone && moved) {
-            run_alone(last_moved);
+        if (alone) {
+            run_impulses();
         }
     }
     for (const auto& c : circuits_) {
@@ -181,27 +180,50 @@ void ControlCabinet::catch_up(double t) {
     }
 }
 
-// Impulse level with no observer: while one axis's impulses come before anything else happens,
-// take them straight from its plant, without looking again at the queue and the other axes.
-void ControlCabinet::run_alone(std::size_t i) {
-    AxisCircuit& c = *circuits_[i];
-    double others = queue_.empty() ? axes::kNever : queue_.top().t;
-    double others_strict = axes::kNever; // another axis at the same instant goes in axis order
-    for (std::size_t j = 0; j < circuits_.size(); ++j) {
-        if (j != i) {
-            others_strict = std::min(others_strict, circuits_[j]->plant.next_event_time());
-        }
-    }
+// Impulse level with no observer: while only impulses come (no relay event is due), take them
+// straight from the plants in time order, lowest axis first at the same instant as the main
+// loop does, without looking at anything else. Back to the main loop as soon as an impulse
+// does more than count.
+void ControlCabinet::run_impulses() {
+    const double queued = queue_.empty() ? axes::kNever : queue_.top().t;
+    const std::size_t n = circuits_.size();
     while (true) {
-        const double t = c.plant.next_event_time();
-        if (!(t < others_strict && t <= others)) {
-            return;
+        std::size_t first = 0;
+        double t = circuits_[0]->plant.next_event_time();
+        for (std::size_t j = 1; j < n; ++j) {
+            const double tj = circuits_[j]->plant.next_event_time();
+            if (tj < t) {
+                t = tj;
+                first = j;
+            }
         }
-        now_ = t;
-        tracer_.set_time(t);
-        auto impulse = c.plant.advance_to(t);
-        if (impulse && !on_impulse(c, *impulse)) {
-            return; // something happened: the main loop looks at everything again
+        // This axis goes on alone until another's impulse (a lower axis at the same instant
+        // goes first) or a relay event comes.
+        double before = axes::kNever; // strictly before
+        double until = queued;        // at or before
+        for (std::size_t j = 0; j < n; ++j) {
+            const double tj = circuits_[j]->plant.next_event_time();
+            if (j < first) {
+                before = std::min(before, tj);
+            } else if (j > first) {
+                until = std::min(until, tj);
+            }
+        }
+        AxisCircuit& c = *circuits_[first];
+        axes::LeadScrewAxis& plant = c.plant;
+        while (plant.next_event_is_impulse()) {
+            t = plant.next_event_time();
+            if (!(t < before && t <= until)) {
+                break;
+            }
+            now_ = t;
+            tracer_.set_time(t);
+            if (!on_impulse(c, plant.take_next_impulse())) {
+                return; // something happened: the main loop looks at everything again
+            }
+        }
+        if (!plant.next_event_is_impulse() || t > queued) {
+            return; // a speed change ends, or a relay event is due: the main loop
         }
     }
 }
@@ -353,14 +375,9 @@ bool ControlCabinet::live(const AxisCircuit& c) const {
 bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     // Duplicate contact sets on commutator 102: both must see every impulse.
     ++c.contact_set_a;
-    bool dropped = false;
-    for (const DropImpulseFault& f : faults_) {
-        dropped = dropped || (f.axis == c.axis && f.impulse == c.contact_set_a);
-    }
-    if (!dropped) {
+    if (faults_.empty() || !fault_drops(c)) {
         ++c.contact_set_b;
     }
-    const double min_interval = 1.0 / profile_.max_stepping_rate_per_s;
     // The patent's answer to stepping-rate loss (col. 8), a profile option: while the speed
     // switch stands on speed 1, count only every hundredth until the first slow-down.
     const bool hundredths_only =
@@ -370,11 +387,11 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     // other sense is counted the wrong way, as on the 1952 machine.
     const bool stepped =
         c.absolute_counter.impulse(c.direction, impulse.hundredths, impulse.tenths, impulse.inches,
-                                   now_, min_interval, !hundredths_only);
+                                   now_, min_interval_s_, !hundredths_only);
     if (!hundredths_only) {
-        c.increment_counter.impulse(now_, min_interval);
+        c.increment_counter.impulse(now_, min_interval_s_);
     } else if (impulse.hundredths) {
-        c.increment_counter.hundredths_impulse(now_, min_interval);
+        c.increment_counter.hundredths_impulse(now_, min_interval_s_);
     }
     if (stepped) {
         c.speed_switch.equality_left(now_); // the wipers break contact as they step
@@ -384,26 +401,48 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
         return true; // coasting after a stop: the counters still count
     }
     if (c.contact_set_a != c.contact_set_b) {
-        machine_stop(StopReason::missed_impulse, c.axis,
-                     fmt::format("{}, {}: impulse {} of commutator 102 was seen by contact set A "
-                                 "but not by its duplicate set B",
-                                 card_name(), axis_name(c.axis), c.contact_set_a),
-                     fmt::format("duplicate-contact lamp ({} commutator 102)", axis_name(c.axis)));
-        c.compare();
+        missed_impulse(c);
         return false;
     }
     if (c.plant.beyond_limits()) {
-        const auto& p = c.plant.profile();
-        machine_stop(StopReason::soft_limit, c.axis,
-                     fmt::format("{}, {}: the part reached its travel limit at {:.4f} in (limits "
-                                 "{:.3f} .. {:.3f} in)",
-                                 card_name(), axis_name(c.axis), c.plant.real_in(), p.travel_min_in,
-                                 p.travel_max_in),
-                     fmt::format("limit-switch lamp ({})", axis_name(c.axis)));
-        c.compare();
+        travel_limit(c);
         return false;
     }
+    c.compare();
+    if (!c.absolute_conducting && !c.incremental_conducting) {
+        c.speed_switch.equality_left(now_);
+        return true;
+    }
     return evaluate(c);
+}
+
+bool ControlCabinet::fault_drops(const AxisCircuit& c) const {
+    for (const DropImpulseFault& f : faults_) {
+        if (f.axis == c.axis && f.impulse == c.contact_set_a) {
+            return true;
+        }
+    }
+    return false;
+}
+
+void ControlCabinet::missed_impulse(AxisCircuit& c) {
+    machine_stop(StopReason::missed_impulse, c.axis,
+                 fmt::format("{}, {}: impulse {} of commutator 102 was seen by contact set A "
+                             "but not by its duplicate set B",
+                             card_name(), axis_name(c.axis), c.contact_set_a),
+                 fmt::format("duplicate-contact lamp ({} commutator 102)", axis_name(c.axis)));
+    c.compare();
+}
+
+void ControlCabinet::travel_limit(AxisCircuit& c) {
+    const auto& p = c.plant.profile();
+    machine_stop(StopReason::soft_limit, c.axis,
+                 fmt::format("{}, {}: the part reached its travel limit at {:.4f} in (limits "
+                             "{:.3f} .. {:.3f} in)",
+                             card_name(), axis_name(c.axis), c.plant.real_in(), p.travel_min_in,
+                             p.travel_max_in),
+                 fmt::format("limit-switch lamp ({})", axis_name(c.axis)));
+    c.compare();
 }
 
 bool ControlCabinet::evaluate(AxisCircuit& c) {

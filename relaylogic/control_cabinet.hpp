@@ -117,10 +117,13 @@ private:
     double next_axis_event(std::size_t i) const;
     void plan_quiet_stretches();
     void catch_up(double t);
-    void run_alone(std::size_t i);
+    void run_impulses();
     // Returns true if the impulse only counted (nothing scheduled, no other axis touched).
     bool on_impulse(AxisCircuit& c, const axes::Impulse& impulse);
     bool evaluate(AxisCircuit& c);
+    bool fault_drops(const AxisCircuit& c) const;
+    [[gnu::cold]] void missed_impulse(AxisCircuit& c);
+    [[gnu::cold]] void travel_limit(AxisCircuit& c);
     bool live(const AxisCircuit& c) const;
     void stop_axis(AxisCircuit& c);
     void shaft_step();
@@ -140,6 +143,7 @@ private:
     SteppingShaft shaft_;
     BalancingCircuit balancing_;
     std::vector<DropImpulseFault> faults_;
+    double min_interval_s_; // 1 / the stepping switches' fastest rate
     Pace pace_ = Pace::fast_forward;
     bool jumping_ = false;                                   // fast-forward with no observer
     std::array<long, cardreader::kAxisCount> quiet_{};       // quiet impulses ahead of each axis

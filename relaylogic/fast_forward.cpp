@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <limits>
 #include <optional>
-#include <vector>
 
 namespace parsons::relaylogic {
 namespace {
@@ -29,9 +28,10 @@ long impulses_until(long distance) {
     return j == 0 ? 10000 : j;
 }
 
-// Every 4-digit number whose digit i is in allowed[i] (bit x = digit x), or nothing if there
-// are more than kMostMatches of them.
-std::optional<std::vector<long>> numbers_from(const std::array<unsigned, 4>& allowed) {
+// The least distance(w) over every 4-digit number w whose digit i is in allowed[i] (bit x =
+// digit x), or nothing if there are more than kMostMatches such numbers.
+template <typename Distance>
+std::optional<long> least_over_matches(const std::array<unsigned, 4>& allowed, Distance distance) {
     long count = 1;
     for (unsigned mask : allowed) {
         count *= __builtin_popcount(mask);
@@ -39,19 +39,24 @@ std::optional<std::vector<long>> numbers_from(const std::array<unsigned, 4>& all
     if (count > kMostMatches) {
         return std::nullopt;
     }
-    std::vector<long> out{0};
-    for (unsigned mask : allowed) {
-        std::vector<long> next;
-        for (long prefix : out) {
-            for (int x = 0; x < 10; ++x) {
-                if ((mask >> x & 1U) != 0) {
-                    next.push_back(prefix * 10 + x);
-                }
+    long best = kForever;
+    auto each = [](unsigned mask, auto&& f) {
+        for (int x = 0; x < 10; ++x) {
+            if ((mask >> x & 1U) != 0) {
+                f(x);
             }
         }
-        out = std::move(next);
-    }
-    return out;
+    };
+    each(allowed[0], [&](int a) {
+        each(allowed[1], [&](int b) {
+            each(allowed[2], [&](int c) {
+                each(allowed[3], [&](int d) {
+                    best = std::min(best, distance(((a * 10L + b) * 10 + c) * 10 + d));
+                });
+            });
+        });
+    });
+    return best;
 }
 
 // Absolute comparer 122': the first coming impulse after which it conducts, or kForever.
@@ -67,36 +72,29 @@ std::optional<long> first_absolute_equality(const AxisCircuit& c) {
     }
     // The screw digit x of unit i that puts switch i on counter digit v: v = o + sigma x.
     auto screw_digit = [&](std::size_t i, int v) { return mod10(sigma * (v - offset.at(i))); };
-    std::vector<long> screw_numbers;
+    auto distance = [&](long w) { return impulses_until(d * (w - k0)); };
     if (c.absolute_storage.separate_registers()) {
+        long first = kForever;
         for (int number : c.absolute_storage.numbers()) {
             const Digits v = value_digits(number);
             long w = 0;
             for (std::size_t i = 0; i < 4; ++i) {
                 w = w * 10 + screw_digit(i, v.at(i));
             }
-            screw_numbers.push_back(w);
+            first = std::min(first, distance(w));
         }
-    } else {
-        std::array<unsigned, 4> allowed{};
-        for (std::size_t i = 0; i < 4; ++i) {
-            for (int v = 0; v < 10; ++v) {
-                if (c.absolute_storage.bank(static_cast<int>(i)).closed(v)) {
-                    allowed.at(i) |= 1U << screw_digit(i, v);
-                }
+        return first;
+    }
+    std::array<unsigned, 4> allowed{};
+    for (std::size_t i = 0; i < 4; ++i) {
+        const unsigned closed = c.absolute_storage.bank(static_cast<int>(i)).closed_mask();
+        for (int v = 0; v < 10; ++v) {
+            if ((closed >> v & 1U) != 0) {
+                allowed.at(i) |= 1U << screw_digit(i, v);
             }
         }
-        auto numbers = numbers_from(allowed);
-        if (!numbers) {
-            return std::nullopt;
-        }
-        screw_numbers = std::move(*numbers);
     }
-    long first = kForever;
-    for (long w : screw_numbers) {
-        first = std::min(first, impulses_until(d * (w - k0)));
-    }
-    return first;
+    return least_over_matches(allowed, distance);
 }
 
 // Incremental comparer 122'': the first coming impulse after which it conducts.
@@ -105,16 +103,8 @@ std::optional<long> first_incremental_equality(const AxisCircuit& c) {
     for (std::size_t i = 0; i < 4; ++i) {
         allowed.at(i) = c.incremental_storage.bank(static_cast<int>(i)).closed_mask();
     }
-    auto numbers = numbers_from(allowed);
-    if (!numbers) {
-        return std::nullopt;
-    }
     const long v = c.increment_counter.value();
-    long first = kForever;
-    for (long w : *numbers) {
-        first = std::min(first, impulses_until(w - v));
-    }
-    return first;
+    return least_over_matches(allowed, [v](long w) { return impulses_until(w - v); });
 }
 
 } // namespace

@@ -34,14 +34,6 @@ void SpeedSwitch::to_off(double t, double hold_s) {
     hold(t, hold_s);
 }
 
-void SpeedSwitch::equality_left(double t) {
-    left_equality_ = true;
-    if (t >= hold_until_) {
-        tracer_.set(relay_256_, 0);
-        tracer_.set(delay_258_, 0);
-    }
-}
-
 void SpeedSwitch::hold_expired(double t) {
     if (left_equality_ && t >= hold_until_) {
         tracer_.set(relay_256_, 0);

@@ -40,7 +40,13 @@ public:
     bool channel_257_open(double t) const { return t >= hold_until_ && left_equality_; }
     double hold_until() const { return hold_until_; }
     // The comparer has been out of equality since the last step (the counter stepped).
-    void equality_left(double t);
+    void equality_left(double t) {
+        left_equality_ = true;
+        if (t >= hold_until_) {
+            tracer_.set(relay_256_, 0);
+            tracer_.set(delay_258_, 0);
+        }
+    }
     // The hold time of delay 258 has run out (the equality may still stand).
     void hold_expired(double t);
     // Zeroizing: the delay device and the stepping relay reset for the next card.

@@ -21,10 +21,14 @@ void HoldingRelayBank::pick(int digit) {
 }
 
 void HoldingRelayBank::release_all() {
-    closed_ = 0;
-    for (std::size_t i = 0; i < 10; ++i) {
-        tracer_.set(signals_.at(i), 0);
+    if (tracer_.observer() != nullptr) {
+        for (std::size_t i = 0; i < 10; ++i) {
+            if ((closed_ >> i & 1U) != 0) {
+                tracer_.set(signals_.at(i), 0);
+            }
+        }
     }
+    closed_ = 0;
 }
 
 std::vector<int> HoldingRelayBank::closed_relays() const {

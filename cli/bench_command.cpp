@@ -1,0 +1,408 @@
+// parsons bench: how fast the emulator runs, measured end to end through `parsons run`.
+//
+// It writes its own decks to a temporary folder, runs each through run_deck() (what
+// `parsons run` calls) several times and prints one line per figure, the median of the runs:
+//   impulse level, no observer ........ impulses a second (--impulse-level, every rule applied)
+//   VCD trace .......................... impulses, trace events and MB a second, to a file
+//   fast-forward, long moves ........... the same deck as the first line, fast-forwarded
+//   fast-forward, short moves .......... cards a second (0.010 in moves)
+//   cost per card vs move length ....... microseconds a card for 0.010 in and 10 in moves
+//   cut sweep .......................... run --cut of a 2,000-station template deck
+//   deck generation .................... a 100,000-station template deck, written
+//   peak memory ........................ resident size of `parsons run` on 1,000 / 10,000 /
+//                                        100,000 cards (a child process each)
+// A benchmark, not a test: it asserts nothing about time. --json for the same as JSON.
+#include "cli/commands.hpp"
+#include "cli/output_file.hpp"
+
+#include "cardreader/deck_io.hpp"
+#include "cardreader/deck_review.hpp"
+#include "cardreader/layout.hpp"
+#include "relaylogic/control_cabinet.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace parsons::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using cardreader::Axis;
+using cardreader::CardOrders;
+using Clock = std::chrono::steady_clock;
+
+#ifndef PARSONS_BUILD_TYPE
+#define PARSONS_BUILD_TYPE "unknown"
+#endif
+
+struct BenchOptions {
+    int runs = 5;
+    int long_cards = 400;
+    int trace_cards = 40;
+    int short_cards = 100000;
+    bool json = false;
+    std::string child_deck;   // internal: run this deck and exit (the memory figure's child)
+    std::string child_report; // internal: where the child writes its peak resident size
+};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.at(v.size() / 2);
+}
+
+template <typename F>
+double seconds(F&& f) {
+    const auto t0 = Clock::now();
+    f();
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+cardreader::AxisOrder move(int from, int to, int speed, cardreader::SequencePattern seq) {
+    cardreader::AxisOrder o;
+    const int sign = to >= from ? +1 : -1;
+    o.motion = sign > 0 ? cardreader::Motion::forward : cardreader::Motion::reverse;
+    o.start_speed = speed;
+    if (speed <= 2) {
+        o.slow_down[0] = static_cast<cardreader::Thousandths>(to - sign * (speed == 1 ? 200 : 100));
+    }
+    if (speed == 1) {
+        o.slow_down[1] = static_cast<cardreader::Thousandths>(to - sign * 100);
+    }
+    o.stop = static_cast<cardreader::Thousandths>(to);
+    o.check = static_cast<cardreader::Thousandths>(std::abs(to - from));
+    o.sequence = seq;
+    if (!cardreader::spurious_matches_on_path(o, static_cast<cardreader::Thousandths>(from))
+             .empty()) {
+        throw std::logic_error("benchmark deck has a shared-bank hazard");
+    }
+    return o;
+}
+
+// Each axis shuttles between two positions (a, b) at its speed, with the patent's slow-downs
+// and sequence (12, 12, 34, 34, 5). The first card starts every axis from zero.
+struct Shuttle {
+    int a, b, speed;
+    cardreader::SequencePattern seq;
+};
+
+void write_deck(const std::string& path, int cards, const std::array<Shuttle, 5>& shuttles) {
+    OutputFile file(path);
+    cardreader::DeckOptions options;
+    options.file_name = path;
+    auto sink = cardreader::open_card_sink(file.stream(), options);
+    std::array<int, 5> at{};
+    for (int n = 0; n < cards; ++n) {
+        CardOrders o;
+        o.number = (n + 1) % 10000;
+        o.spindle = cardreader::Spindle::forward;
+        for (std::size_t i = 0; i < 5; ++i) {
+            const Shuttle& s = shuttles.at(i);
+            const int to = n % 2 == 0 ? s.b : s.a;
+            o.axes.at(i) = move(at.at(i), to, at.at(i) == to ? 3 : s.speed, s.seq);
+            at.at(i) = to;
+        }
+        sink->write(cardreader::encode(o, cardreader::fig8_layout()).card);
+    }
+    sink.reset();
+    file.commit();
+}
+
+// Every axis moves, the table 9 inches at speed 1: millions of impulses.
+constexpr std::array<Shuttle, 5> kLongMoves = {{{485, 9485, 1, 0b00011},
+                                                {1085, 2985, 2, 0b00011},
+                                                {500, 1500, 2, 0b01100},
+                                                {200, 400, 3, 0b01100},
+                                                {100, 200, 3, 0b10000}}};
+// Only the table moves, 0.010 in a card at speed 3; the others stand (check 0).
+constexpr std::array<Shuttle, 5> kShortMoves = {{{1000, 1010, 3, 0b00001},
+                                                 {500, 500, 3, 0b00010},
+                                                 {500, 500, 3, 0b00100},
+                                                 {500, 500, 3, 0b01000},
+                                                 {500, 500, 3, 0b10000}}};
+// Only the table moves, 9.999 in a card at speed 1 (10 inches, near enough: the counters).
+constexpr std::array<Shuttle, 5> kTenInchMoves = {{{0, 9999, 1, 0b00001},
+                                                   {500, 500, 3, 0b00010},
+                                                   {500, 500, 3, 0b00100},
+                                                   {500, 500, 3, 0b01000},
+                                                   {500, 500, 3, 0b10000}}};
+
+long impulses_of(const relaylogic::RunResult& r) {
+    long n = 0;
+    for (const auto& a : r.axes) {
+        n += a.impulses;
+    }
+    return n;
+}
+
+struct Timed {
+    relaylogic::RunResult result;
+    double seconds = 0; // median
+};
+
+Timed time_run(const RunRequest& request, int runs) {
+    Timed t;
+    std::vector<double> s;
+    for (int r = 0; r < runs; ++r) {
+        s.push_back(seconds([&] {
+            if (run_deck(request, &t.result) != ExitCode::ok) {
+                throw std::runtime_error("benchmark deck " + request.input + " did not complete");
+            }
+        }));
+    }
+    t.seconds = median(s);
+    return t;
+}
+
+RunRequest quiet_run(const std::string& deck) {
+    RunRequest r;
+    r.input = deck;
+    r.quiet = true;
+    return r;
+}
+
+// This process's own peak resident size (VmHWM), in MB.
+double own_peak_mb() {
+    std::ifstream in("/proc/self/status");
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("VmHWM:", 0) == 0) {
+            return std::stod(line.substr(6)) / 1024.0;
+        }
+    }
+    return 0;
+}
+
+// Peak resident size of `parsons bench --child-deck DECK --child-report FILE`, which runs the
+// deck as `parsons run DECK -q` does and writes its own peak (VmHWM) to FILE, in MB. (The
+// kernel's ru_maxrss of a child would include this process's size from before the exec.)
+double child_peak_mb(const std::string& deck, const std::string& report) {
+    std::vector<std::string> args = {"/proc/self/exe", "bench", "--child-deck", deck,
+                                     "--child-report", report};
+    std::vector<char*> argv;
+    for (auto& a : args) {
+        argv.push_back(a.data());
+    }
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    if (posix_spawn(&pid, "/proc/self/exe", nullptr, nullptr, argv.data(), environ) != 0) {
+        throw std::runtime_error("cannot start a child process for the memory figure");
+    }
+    int status = 0;
+    if (waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        throw std::runtime_error("the memory figure's child run of " + deck + " failed");
+    }
+    std::ifstream in(report);
+    double mb = 0;
+    if (!(in >> mb)) {
+        throw std::runtime_error("the memory figure's child wrote no figure");
+    }
+    return mb;
+}
+
+std::string cpu_model() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("model name", 0) == 0) {
+            return line.substr(line.find(':') + 2);
+        }
+    }
+    return "unknown";
+}
+
+// Value-change lines of a VCD file: every trace event is one.
+long vcd_events(const std::string& path) {
+    std::ifstream in(path);
+    std::string line;
+    bool body = false;
+    long n = 0;
+    while (std::getline(in, line)) {
+        if (!body) {
+            body = line.rfind("$enddefinitions", 0) == 0;
+            continue;
+        }
+        n += !line.empty() && line[0] != '#' && line[0] != '$' ? 1 : 0;
+    }
+    return n;
+}
+
+ExitCode run_bench(const BenchOptions& o) {
+    if (!o.child_deck.empty()) {
+        const ExitCode code = run_deck(quiet_run(o.child_deck));
+        std::ofstream(o.child_report) << own_peak_mb() << "\n";
+        return code;
+    }
+    const fs::path dir = fs::temp_directory_path() / fmt::format("parsons-bench-{}", getpid());
+    fs::create_directories(dir);
+    struct Cleanup {
+        fs::path d;
+        ~Cleanup() {
+            std::error_code ec;
+            fs::remove_all(d, ec);
+        }
+    } cleanup{dir};
+    auto path = [&dir](const std::string& name) { return (dir / name).string(); };
+    nlohmann::json j;
+    j["machine"] = {{"cpu", cpu_model()},
+                    {"cores", sysconf(_SC_NPROCESSORS_ONLN)},
+                    {"build", PARSONS_BUILD_TYPE}};
+    j["runs"] = o.runs;
+    auto say = [&o](const std::string& s) {
+        if (!o.json) {
+            fmt::print("{}\n", s);
+            std::fflush(stdout);
+        }
+    };
+    say(fmt::format("parsons bench: {} ({} cores), {} build, median of {} runs", cpu_model(),
+                    sysconf(_SC_NPROCESSORS_ONLN), PARSONS_BUILD_TYPE, o.runs));
+
+    // Impulse level and fast-forward on the same long deck.
+    write_deck(path("long.cbn"), o.long_cards, kLongMoves);
+    RunRequest impulse_level = quiet_run(path("long.cbn"));
+    impulse_level.impulse_level = true;
+    const Timed il = time_run(impulse_level, o.runs);
+    const long impulses = impulses_of(il.result);
+    j["impulse_level"] = {{"cards", o.long_cards},
+                          {"impulses", impulses},
+                          {"seconds", il.seconds},
+                          {"impulses_per_s", static_cast<double>(impulses) / il.seconds}};
+    say(fmt::format("impulse level, no observer  {:>8.1f} M impulses/s  ({} cards, {} impulses "
+                    "in {:.3f} s)",
+                    static_cast<double>(impulses) / il.seconds / 1e6, o.long_cards, impulses,
+                    il.seconds));
+
+    const Timed ff = time_run(quiet_run(path("long.cbn")), o.runs);
+    j["fast_forward_long"] = {{"cards", o.long_cards},
+                              {"impulses", impulses_of(ff.result)},
+                              {"seconds", ff.seconds},
+                              {"impulses_per_s", static_cast<double>(impulses) / ff.seconds},
+                              {"cards_per_s", o.long_cards / ff.seconds}};
+    say(fmt::format("fast-forward, long moves    {:>8.1f} M impulses/s  (the same deck: {:.0f} "
+                    "cards/s)",
+                    static_cast<double>(impulses) / ff.seconds / 1e6, o.long_cards / ff.seconds));
+
+    // The VCD trace, written to a file.
+    write_deck(path("trace.cbn"), o.trace_cards, kLongMoves);
+    RunRequest traced = quiet_run(path("trace.cbn"));
+    traced.trace = path("trace.vcd");
+    const Timed tr = time_run(traced, o.runs);
+    const long events = vcd_events(traced.trace);
+    const double mb = static_cast<double>(fs::file_size(traced.trace)) / 1e6;
+    const long trace_impulses = impulses_of(tr.result);
+    j["vcd"] = {{"cards", o.trace_cards},
+                {"impulses", trace_impulses},
+                {"events", events},
+                {"mb", mb},
+                {"seconds", tr.seconds},
+                {"impulses_per_s", static_cast<double>(trace_impulses) / tr.seconds},
+                {"events_per_s", static_cast<double>(events) / tr.seconds},
+                {"mb_per_s", mb / tr.seconds}};
+    say(fmt::format("VCD trace to a file         {:>8.1f} M events/s    ({:.1f} M impulses/s, "
+                    "{:.1f} MB in {:.3f} s, {:.0f} MB/s)",
+                    static_cast<double>(events) / tr.seconds / 1e6,
+                    static_cast<double>(trace_impulses) / tr.seconds / 1e6, mb, tr.seconds,
+                    mb / tr.seconds));
+
+    // Short moves: cards a second; and the cost of a card against the length of its move.
+    write_deck(path("short.cbn"), o.short_cards, kShortMoves);
+    const Timed sh = time_run(quiet_run(path("short.cbn")), o.runs);
+    j["short_moves"] = {{"cards", o.short_cards},
+                        {"seconds", sh.seconds},
+                        {"cards_per_s", o.short_cards / sh.seconds}};
+    say(fmt::format("fast-forward, short moves   {:>8.3f} M cards/s     ({} cards of 0.010 in "
+                    "in {:.3f} s)",
+                    o.short_cards / sh.seconds / 1e6, o.short_cards, sh.seconds));
+    const int per = std::max(1000, o.short_cards / 10);
+    write_deck(path("ten.cbn"), per, kTenInchMoves);
+    write_deck(path("hundredth.cbn"), per, kShortMoves);
+    const Timed ten = time_run(quiet_run(path("ten.cbn")), o.runs);
+    const Timed hundredth = time_run(quiet_run(path("hundredth.cbn")), o.runs);
+    const double us_ten = ten.seconds / per * 1e6;
+    const double us_hundredth = hundredth.seconds / per * 1e6;
+    j["move_length"] = {
+        {"cards", per}, {"us_per_card_0_01_in", us_hundredth}, {"us_per_card_10_in", us_ten}};
+    say(fmt::format("cost per card               {:>8.2f} us (0.010 in move), {:.2f} us (10 in "
+                    "move, {} impulses a card)",
+                    us_hundredth, us_ten, impulses_of(ten.result) / per));
+
+    // Deck generation and the cut sweep.
+    decks::JobDescription big;
+    big.airfoil = "naca 2412";
+    big.options.stations = 100000;
+    std::vector<double> gen_s;
+    for (int r = 0; r < o.runs; ++r) {
+        gen_s.push_back(
+            seconds([&] { generate_job(big, axes::default_profile(), path("gen.cbn"), "", ""); }));
+    }
+    j["generation"] = {{"stations", 100000}, {"seconds", median(gen_s)}};
+    say(fmt::format("deck generation             {:>8.3f} s         (100,000 stations, NACA "
+                    "2412, written)",
+                    median(gen_s)));
+    decks::JobDescription cut_job;
+    cut_job.airfoil = "naca 2412";
+    cut_job.options.stations = 2000;
+    generate_job(cut_job, axes::default_profile(), path("cut.cbn"), "", "");
+    RunRequest cut = quiet_run(path("cut.cbn"));
+    cut.cut = path("cut.svg");
+    const Timed sweep = time_run(cut, o.runs);
+    j["cut_sweep"] = {{"stations", 2000}, {"seconds", sweep.seconds}};
+    say(fmt::format("cut sweep                   {:>8.3f} s         (run --cut of a 2,000-station "
+                    "deck)",
+                    sweep.seconds));
+
+    // Memory: one child process per deck length.
+    nlohmann::json memory = nlohmann::json::object();
+    std::string line;
+    for (int cards : {1000, 10000, 100000}) {
+        const std::string deck = path(fmt::format("mem{}.cbn", cards));
+        write_deck(deck, cards, kShortMoves);
+        const double peak = child_peak_mb(deck, path("peak.txt"));
+        memory[std::to_string(cards)] = peak;
+        line += fmt::format("{}{:.1f} MB ({} cards)", line.empty() ? "" : ", ", peak, cards);
+    }
+    j["peak_memory_mb"] = memory;
+    say(fmt::format("peak memory of parsons run  {}", line));
+    if (o.json) {
+        fmt::print("{}\n", j.dump(2));
+    }
+    return ExitCode::ok;
+}
+
+} // namespace
+
+void add_bench_command(CLI::App& app, Command& selected) {
+    auto o = std::make_shared<BenchOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "bench", "Measure the emulator: impulses, trace events, cards a second, memory");
+    cmd->add_option("--runs", o->runs, "Runs per figure (the median is printed)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 101));
+    cmd->add_option("--long-cards", o->long_cards, "Cards in the long-move deck")
+        ->capture_default_str()
+        ->check(CLI::Range(2, 100000));
+    cmd->add_option("--trace-cards", o->trace_cards, "Cards in the traced deck")
+        ->capture_default_str()
+        ->check(CLI::Range(2, 10000));
+    cmd->add_option("--short-cards", o->short_cards, "Cards in the short-move deck")
+        ->capture_default_str()
+        ->check(CLI::Range(10, 10000000));
+    cmd->add_flag("--json", o->json, "Print the figures as JSON");
+    cmd->add_option("--child-deck", o->child_deck)->group(""); // internal: the memory figure
+    cmd->add_option("--child-report", o->child_report)->group("");
+    cmd->footer("Examples:\n  parsons bench\n  parsons bench --runs 7 --json > bench.json");
+    cmd->callback([&selected, o] { selected = [o] { return run_bench(*o); }; });
+}
+
+} // namespace parsons::cli
