@@ -131,8 +131,9 @@ constexpr std::array<Shuttle, 5> kShortMoves = {{{1000, 1010, 3, 0b00001},
                                                  {500, 500, 3, 0b00100},
                                                  {500, 500, 3, 0b01000},
                                                  {500, 500, 3, 0b10000}}};
-// Only the table moves, 9.999 in a card at speed 1 (10 inches, near enough: the counters).
-constexpr std::array<Shuttle, 5> kTenInchMoves = {{{0, 9999, 1, 0b00001},
+// Only the table moves, 9.999 in a card (10 inches, near enough: the counters), at speed 3
+// like the short moves, so that the two decks differ only in the length of the move.
+constexpr std::array<Shuttle, 5> kTenInchMoves = {{{0, 9999, 3, 0b00001},
                                                    {500, 500, 3, 0b00010},
                                                    {500, 500, 3, 0b00100},
                                                    {500, 500, 3, 0b01000},
