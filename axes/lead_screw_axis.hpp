@@ -133,6 +133,30 @@ public:
     // The first of the coming impulses (1-based) whose crossing lies beyond a limit.
     long impulses_to_limit() const;
     const AxisProfile& profile() const { return profile_; }
+    // The part's position at the crossing of the j-th coming impulse (j >= 1).
+    double real_at_impulse(long j) const {
+        return with_screw_error(crossing_in(2 * (k_ + d_ * (j - 1)) + d_));
+    }
+    // The first coming impulse (1-based) whose crossing puts the part where trips(x) holds,
+    // for a trips that, once true, stays true further along the motion; 0 if none ever does.
+    template <typename Trips>
+    long first_impulse_where(Trips trips) const {
+        constexpr long kFar = 1L << 40;
+        if (!trips(real_at_impulse(kFar))) {
+            return 0;
+        }
+        long lo = 1;
+        long hi = kFar;
+        while (lo < hi) {
+            const long mid = lo + (hi - lo) / 2;
+            if (trips(real_at_impulse(mid))) {
+                hi = mid;
+            } else {
+                lo = mid + 1;
+            }
+        }
+        return lo;
+    }
 
     // Sine-plate geometry for swivel and tilt: the fixture angle this screw position makes,
     // degrees, from its level position (tilt: sin = (screw - level) / arm, the sine plate;

@@ -26,6 +26,13 @@ struct AxisProfile {
     // Travel of the part; a limit switch stops the machine past either end.
     double travel_min_in = -0.5;
     double travel_max_in = 10.5;
+    // The job's movement range (the soft limits of Mitsubishi's control, US 4,706,003 and
+    // seeds/001): a card whose move would end outside it stops the machine before any axis
+    // moves, and a running axis that could no longer brake to rest inside it is switched off
+    // in time. Off unless set (profile key soft_limits_in, or run --limit AXIS=MIN:MAX).
+    bool soft_limits = false;
+    double soft_min_in = 0;
+    double soft_max_in = 0;
     // Lead of the screw; 1000 commutator impulses an inch whatever the lead (gear train 82-92).
     double screw_lead_in_per_rev = 0.2;
     // Residual screw error after compensating cam 160: (screw position, error) in inches,

@@ -50,6 +50,16 @@ void apply_axis(const json& j, AxisProfile& a, const std::string& where) {
             a.travel_min_in = finite(value, k);
         } else if (key == "travel_max_in") {
             a.travel_max_in = finite(value, k);
+        } else if (key == "soft_limits_in") {
+            if (value.is_null()) {
+                a.soft_limits = false;
+            } else if (value.is_array() && value.size() == 2) {
+                a.soft_limits = true;
+                a.soft_min_in = finite(value.at(0), k + "[0]");
+                a.soft_max_in = finite(value.at(1), k + "[1]");
+            } else {
+                throw ProfileError(fmt::format("{}: expected [min, max] in inches, or null", k));
+            }
         } else if (key == "screw_lead_in_per_rev") {
             a.screw_lead_in_per_rev = positive(value, k);
         } else if (key == "pivot_to_screw_in") {
@@ -78,6 +88,21 @@ void apply_axis(const json& j, AxisProfile& a, const std::string& where) {
     if (a.travel_min_in >= a.travel_max_in) {
         throw ProfileError(fmt::format("{}: travel_min_in must be below travel_max_in", where));
     }
+    if (a.soft_limits && a.soft_min_in >= a.soft_max_in) {
+        throw ProfileError(
+            fmt::format("{}: soft_limits_in: the minimum must be below the maximum", where));
+    }
+    // The part's position must grow with the screw's (1 + the error's slope > 0), or a limit
+    // could be passed and found again further on.
+    for (std::size_t i = 1; i < a.screw_error_in.size(); ++i) {
+        const auto& [x0, e0] = a.screw_error_in.at(i - 1);
+        const auto& [x1, e1] = a.screw_error_in.at(i);
+        if ((x1 + e1) - (x0 + e0) <= 0) {
+            throw ProfileError(fmt::format("{}: screw_error_in: the error falls faster than the "
+                                           "screw advances between {} and {} in",
+                                           where, x0, x1));
+        }
+    }
 }
 
 json axis_json(const AxisProfile& a) {
@@ -85,16 +110,18 @@ json axis_json(const AxisProfile& a) {
     for (const auto& [x, e] : a.screw_error_in) {
         errors.push_back({x, e});
     }
-    return json{{"name", a.name},
-                {"speed_in_per_min", a.speed_in_per_min},
-                {"acceleration_in_per_s2", a.acceleration_in_per_s2},
-                {"braking_in_per_s2", a.braking_in_per_s2},
-                {"travel_min_in", a.travel_min_in},
-                {"travel_max_in", a.travel_max_in},
-                {"screw_lead_in_per_rev", a.screw_lead_in_per_rev},
-                {"screw_error_in", errors},
-                {"pivot_to_screw_in", a.pivot_to_screw_in},
-                {"level_in", a.level_in}};
+    return json{
+        {"name", a.name},
+        {"speed_in_per_min", a.speed_in_per_min},
+        {"acceleration_in_per_s2", a.acceleration_in_per_s2},
+        {"braking_in_per_s2", a.braking_in_per_s2},
+        {"travel_min_in", a.travel_min_in},
+        {"travel_max_in", a.travel_max_in},
+        {"soft_limits_in", a.soft_limits ? json{a.soft_min_in, a.soft_max_in} : json(nullptr)},
+        {"screw_lead_in_per_rev", a.screw_lead_in_per_rev},
+        {"screw_error_in", errors},
+        {"pivot_to_screw_in", a.pivot_to_screw_in},
+        {"level_in", a.level_in}};
 }
 
 } // namespace

@@ -26,6 +26,7 @@ void add_profile_command(CLI::App& app, Command& selected);
 void add_gen_command(CLI::App& app, Command& selected);
 void add_demo_command(CLI::App& app, Command& selected);
 void add_bench_command(CLI::App& app, Command& selected);
+void add_check_command(CLI::App& app, Command& selected);
 
 // What `parsons run` is asked to do (the flags of DESIGN.md section 6).
 struct RunRequest {
@@ -39,6 +40,7 @@ struct RunRequest {
     std::string job;
     std::string profile;
     std::vector<std::string> faults;
+    std::vector<std::string> limits;
     bool quiet = false;
     bool impulse_level = false;
     DeckFlags deck;

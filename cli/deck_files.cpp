@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <sstream>
@@ -100,6 +101,52 @@ axes::MachineProfile load_profile(const std::string& file) {
         return axes::profile_from_json(text, axes::default_profile());
     } catch (const axes::ProfileError& e) {
         throw DeckError::in_file(file, e.what());
+    }
+}
+
+} // namespace parsons::cli
+
+namespace parsons::cli {
+
+void apply_limits(axes::MachineProfile& profile, const std::vector<std::string>& limits) {
+    for (const std::string& spec : limits) {
+        const auto eq = spec.find('=');
+        const auto colon = spec.find(':', eq == std::string::npos ? 0 : eq);
+        auto bad = [&spec](const std::string& why) {
+            return DeckError(fmt::format("--limit '{}': {} (expected AXIS=MIN:MAX in inches, e.g. "
+                                         "table=0:9.5)",
+                                         spec, why));
+        };
+        if (eq == std::string::npos || colon == std::string::npos) {
+            throw bad("not AXIS=MIN:MAX");
+        }
+        const auto axis = cardreader::axis_named(spec.substr(0, eq));
+        if (!axis) {
+            throw bad("unknown axis '" + spec.substr(0, eq) +
+                      "' (table, cross, vertical, swivel or tilt)");
+        }
+        auto number = [&](const std::string& text) {
+            std::size_t used = 0;
+            double v = 0;
+            try {
+                v = std::stod(text, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            if (used == 0 || used != text.size() || !std::isfinite(v)) {
+                throw bad("'" + text + "' is not a number of inches");
+            }
+            return v;
+        };
+        const double lo = number(spec.substr(eq + 1, colon - eq - 1));
+        const double hi = number(spec.substr(colon + 1));
+        if (!(lo < hi)) {
+            throw bad("the minimum must be below the maximum");
+        }
+        auto& a = profile.axes.at(cardreader::axis_index(*axis));
+        a.soft_limits = true;
+        a.soft_min_in = lo;
+        a.soft_max_in = hi;
     }
 }
 

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace parsons::cli {
 
@@ -32,6 +33,8 @@ std::string read_text_file(const std::string& file, const std::string& missing =
 // The built-in machine profile, or FILE applied over it; throws DeckError naming the file
 // and the key on a bad profile.
 axes::MachineProfile load_profile(const std::string& file);
+// --limit AXIS=MIN:MAX (repeatable): the soft limits of the job, over the profile's.
+void apply_limits(axes::MachineProfile& profile, const std::vector<std::string>& limits);
 
 // An open input deck: the file and its card reader.
 class InputDeck {

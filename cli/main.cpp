@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     add_show_command(app, selected);
     add_convert_command(app, selected);
     add_run_command(app, selected);
+    add_check_command(app, selected);
     add_profile_command(app, selected);
     add_gen_command(app, selected);
     add_demo_command(app, selected);

@@ -116,7 +116,8 @@ private:
 } // namespace
 
 ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
-    const axes::MachineProfile profile = load_profile(f.profile);
+    axes::MachineProfile profile = load_profile(f.profile);
+    apply_limits(profile, f.limits);
     std::vector<relaylogic::DropImpulseFault> faults;
     for (const auto& spec : f.faults) {
         faults.push_back(parse_fault(spec));
@@ -244,6 +245,9 @@ void add_run_command(CLI::App& app, Command& selected) {
     cmd->add_option("--fault", flags->faults,
                     "Inject a fault: drop-impulse:AXIS:N (one contact set misses impulse N)");
     cmd->add_option("--profile", flags->profile, "Machine profile JSON (see 'parsons profile')");
+    cmd->add_option("--limit", flags->limits,
+                    "Soft limits of the job, AXIS=MIN:MAX inches (e.g. table=0:9.5): the machine "
+                    "stops with soft_limit before the part passes one");
     cmd->add_flag("-q,--quiet", flags->quiet, "No summary and no progress bar");
     cmd->add_flag("--impulse-level", flags->impulse_level,
                   "Take every commutator impulse one by one (the reference) instead of "

@@ -146,6 +146,7 @@ void ControlCabinet::plan_quiet_stretches() {
         }
         q.counting_hundredths =
             profile_.count_hundredths_at_speed_1 && c.speed_switch.position() == 1 && !stop_;
+        q.watching_soft_limits = c.powered && c.plant.profile().soft_limits;
         q.next_fault_impulse = 0;
         for (const DropImpulseFault& f : faults_) {
             if (f.axis == c.axis && f.impulse > c.contact_set_a &&
@@ -327,8 +328,38 @@ void ControlCabinet::first_bank() {
     }
     previous_number_ = orders_.number;
     tracer_.set(card_number_136_, static_cast<std::uint32_t>(orders_.number));
+    if (!move_within_soft_limits()) {
+        return;
+    }
     // The brushes have sensed the card; the holding relays pick a relay's operate time later.
     schedule(now_ + profile_.relay_operate_s, EventKind::relays_pick);
+}
+
+// The movement range, judged on the card before anything moves: where would each axis end
+// if it travels exactly its check in the sense of its motion column?
+bool ControlCabinet::move_within_soft_limits() {
+    for (const auto& c : circuits_) {
+        const auto& p = c->plant.profile();
+        if (!p.soft_limits) {
+            continue;
+        }
+        const cardreader::AxisOrder& o = orders_.axis(c->axis);
+        const double from = c->plant.real_in();
+        const double move = (o.motion == cardreader::Motion::forward ? 1 : -1) * o.check / 1000.0;
+        const double to = from + move;
+        if (to > p.soft_max_in || to < p.soft_min_in) {
+            machine_stop(StopReason::soft_limit, c->axis,
+                         fmt::format("{}, {}: this card moves it {:+.3f} in, from {:.4f} to {:.4f} "
+                                     "in, past its soft limit {:.3f} in (movement range {:.3f} .. "
+                                     "{:.3f} in); stopped before any axis moved",
+                                     card_name(), axis_name(c->axis), move, from, to,
+                                     to > p.soft_max_in ? p.soft_max_in : p.soft_min_in,
+                                     p.soft_min_in, p.soft_max_in),
+                         fmt::format("soft-limit lamp ({})", axis_name(c->axis)));
+            return false;
+        }
+    }
+    return true;
 }
 
 void ControlCabinet::relays_pick() {
@@ -408,6 +439,12 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
         travel_limit(c);
         return false;
     }
+    if (c.powered && c.plant.profile().soft_limits &&
+        soft_limit_trips(c.plant.profile(), c.plant.moving_direction(), c.plant.real_in(),
+                         c.plant.speed_in_per_s())) {
+        soft_limit_watch(c);
+        return false;
+    }
     c.compare();
     if (!c.absolute_conducting && !c.incremental_conducting) {
         c.speed_switch.equality_left(now_);
@@ -434,11 +471,25 @@ void ControlCabinet::missed_impulse(AxisCircuit& c) {
     c.compare();
 }
 
+void ControlCabinet::soft_limit_watch(AxisCircuit& c) {
+    const auto& p = c.plant.profile();
+    const bool up = c.plant.moving_direction() > 0;
+    machine_stop(StopReason::soft_limit, c.axis,
+                 fmt::format("{}, {}: at {:.4f} in, moving {} at {:.3f} in/min, the part could "
+                             "no longer brake to rest inside its soft limit {:.3f} in (movement "
+                             "range {:.3f} .. {:.3f} in): switched off",
+                             card_name(), axis_name(c.axis), c.plant.real_in(), up ? "up" : "down",
+                             c.plant.speed_in_per_s() * 60, up ? p.soft_max_in : p.soft_min_in,
+                             p.soft_min_in, p.soft_max_in),
+                 fmt::format("soft-limit lamp ({})", axis_name(c.axis)));
+    c.compare();
+}
+
 void ControlCabinet::travel_limit(AxisCircuit& c) {
     const auto& p = c.plant.profile();
     machine_stop(StopReason::soft_limit, c.axis,
-                 fmt::format("{}, {}: the part reached its travel limit at {:.4f} in (limits "
-                             "{:.3f} .. {:.3f} in)",
+                 fmt::format("{}, {}: the part reached its travel limit at {:.4f} in (limit "
+                             "switches at {:.3f} .. {:.3f} in)",
                              card_name(), axis_name(c.axis), c.plant.real_in(), p.travel_min_in,
                              p.travel_max_in),
                  fmt::format("limit-switch lamp ({})", axis_name(c.axis)));

@@ -124,6 +124,8 @@ private:
     bool fault_drops(const AxisCircuit& c) const;
     [[gnu::cold]] void missed_impulse(AxisCircuit& c);
     [[gnu::cold]] void travel_limit(AxisCircuit& c);
+    [[gnu::cold]] void soft_limit_watch(AxisCircuit& c);
+    bool move_within_soft_limits();
     bool live(const AxisCircuit& c) const;
     void stop_axis(AxisCircuit& c);
     void shaft_step();

@@ -109,6 +109,12 @@ std::optional<long> first_incremental_equality(const AxisCircuit& c) {
 
 } // namespace
 
+bool soft_limit_trips(const axes::AxisProfile& p, int d, double x, double v) {
+    const double coast = v * v / (2 * p.braking_in_per_s2);
+    return d > 0 ? x + axes::kInchesPerImpulse + coast > p.soft_max_in
+                 : x - axes::kInchesPerImpulse - coast < p.soft_min_in;
+}
+
 long quiet_impulses(const AxisCircuit& c, const QuietConditions& q) {
     const axes::LeadScrewAxis& plant = c.plant;
     if (!plant.next_event_is_impulse() || q.counting_hundredths) {
@@ -136,6 +142,17 @@ long quiet_impulses(const AxisCircuit& c, const QuietConditions& q) {
     }
     if (!q.machine_stopped) {
         first_event = std::min(first_event, plant.impulses_to_limit());
+        if (q.watching_soft_limits) {
+            // Exact at constant speed; while the speed changes, judged at the phase's fastest,
+            // which trips no later than the real watch (the impulses after go one by one).
+            const int d = plant.moving_direction();
+            const double v = plant.phase_acceleration() == 0 ? plant.phase_start_speed() : u_max;
+            const long trips = plant.first_impulse_where(
+                [&](double x) { return soft_limit_trips(plant.profile(), d, x, v); });
+            if (trips > 0) {
+                first_event = std::min(first_event, trips);
+            }
+        }
     }
     const auto absolute = first_absolute_equality(c);
     const auto incremental = first_incremental_equality(c);

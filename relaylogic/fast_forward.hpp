@@ -24,11 +24,17 @@
 namespace parsons::relaylogic {
 
 struct QuietConditions {
-    double min_interval_s = 0;        // 1 / the stepping switches' fastest rate
-    bool machine_stopped = false;     // master switch open: nothing but counting happens
-    long next_fault_impulse = 0;      // contact-set-A count of the next fault on this axis, or 0
-    bool counting_hundredths = false; // the profile's hundredths-only counting is in force
+    double min_interval_s = 0;         // 1 / the stepping switches' fastest rate
+    bool machine_stopped = false;      // master switch open: nothing but counting happens
+    long next_fault_impulse = 0;       // contact-set-A count of the next fault on this axis, or 0
+    bool counting_hundredths = false;  // the profile's hundredths-only counting is in force
+    bool watching_soft_limits = false; // the axis is powered and has a movement range
 };
+
+// The control's soft-limit watch (Mitsubishi's movement range): with the part at x after an
+// impulse, moving in direction d at speed v, could it still brake to rest inside the range if
+// the motor were switched off at the next impulse? If not, it is switched off now.
+bool soft_limit_trips(const axes::AxisProfile& p, int d, double x, double v);
 
 // How many of the axis's coming impulses are quiet (0 when the next one is not, or when the
 // axis is not moving toward an impulse).

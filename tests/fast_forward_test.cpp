@@ -11,8 +11,8 @@
 // The decks are plausible rather than valid: moves of every length, slow-downs well placed or
 // too close, a wrong check or card number now and then, patterns that stall. The profiles vary
 // speeds (some faster than the switches can step), stepping rate, acceleration, delay 258,
-// screw error, travel limits, separate registers, hundredths-only counting and dropped
-// impulses, so every kind of stretch end is met.
+// screw error, travel limits, soft limits, separate registers, hundredths-only counting and
+// dropped impulses, so every kind of stretch end is met.
 #include "tests/machine_support.hpp"
 
 #include "cardreader/deck_review.hpp"
@@ -82,7 +82,7 @@ Case random_case(std::mt19937& rng) {
     };
     Case c;
     auto& p = c.profile;
-    const bool fast = chance(0.25);
+    const bool fast = chance(0.3);
     for (auto& a : p.axes) {
         if (fast) {
             const double scale = real(0.5, 3.0); // speed 1 up to 270 impulses a second
@@ -103,8 +103,13 @@ Case random_case(std::mt19937& rng) {
             a.travel_min_in = real(-0.5, -0.001);
             a.travel_max_in = real(4.0, 10.5);
         }
+        if (chance(0.1)) {
+            a.soft_limits = true;
+            a.soft_min_in = real(-0.4, -0.001);
+            a.soft_max_in = real(1.0, 10.0);
+        }
     }
-    if (chance(0.3)) {
+    if (!fast && chance(0.3)) {
         p.max_stepping_rate_per_s = real(60, 300);
     }
     if (chance(0.15)) {

@@ -66,7 +66,8 @@ CardOrders idle_card(int number, const std::array<int, 5>& at) {
 relaylogic::RunResult run_orders(const std::vector<CardOrders>& cards,
                                  const axes::MachineProfile& profile,
                                  relaylogic::MachineObserver* observer,
-                                 const std::vector<relaylogic::DropImpulseFault>& faults) {
+                                 const std::vector<relaylogic::DropImpulseFault>& faults,
+                                 relaylogic::Pace pace) {
     std::vector<Card> punched;
     for (const auto& o : cards) {
         auto e = encode(o, fig8_layout());
@@ -77,6 +78,7 @@ relaylogic::RunResult run_orders(const std::vector<CardOrders>& cards,
     }
     VectorDeck deck(punched);
     relaylogic::ControlCabinet cabinet(profile, fig8_layout());
+    cabinet.set_pace(pace);
     for (const auto& f : faults) {
         cabinet.add_fault(f);
     }

@@ -1,0 +1,109 @@
+// parsons check DECK: the whole-program check a later control made before running a part
+// program (Mitsubishi's movement range, seeds/001): every card whose move would take an axis
+// past a soft limit (the profile's, or --limit) or past a limit switch, listed before anything
+// runs; with the careful operator's warnings of `parsons show` (deck_review) beside them.
+//
+// The moves are the cards' own: each axis travels its check in the sense of its motion
+// column, from where the last card left it (every axis starts the deck at zero). Coast and
+// screw error are the run's business, not the check's.
+//
+// Exit 0: no card passes a limit. Exit 3: some card would (the machine would stop there).
+// Exit 2: the deck or a flag cannot be read.
+#include "cli/commands.hpp"
+
+#include "cardreader/deck_error.hpp"
+#include "cardreader/deck_review.hpp"
+#include "cardreader/layout.hpp"
+
+#include <fmt/format.h>
+
+namespace parsons::cli {
+namespace {
+
+using namespace cardreader;
+
+struct CheckFlags {
+    std::string input;
+    std::string profile;
+    std::vector<std::string> limits;
+    DeckFlags deck;
+};
+
+ExitCode run_check(const CheckFlags& f) {
+    axes::MachineProfile profile = load_profile(f.profile);
+    apply_limits(profile, f.limits);
+    InputDeck deck(f.input, f.deck);
+    const CardLayout& layout = *deck.options().layout;
+    DeckReviewer reviewer;
+    std::array<double, kAxisCount> at{};
+    long index = 0;
+    long passing = 0;
+    long warnings = 0;
+    long bad = 0;
+    while (auto card = deck.cards().next()) {
+        ++index;
+        const DecodeResult decoded = decode(*card, layout);
+        if (!decoded) {
+            ++bad;
+            fmt::print("card {}: BAD PUNCH: column {}: {} (the reader stops the machine here)\n",
+                       index, decoded.bad_punch->column, decoded.bad_punch->what);
+            reviewer.skip();
+            continue;
+        }
+        const CardOrders& o = decoded.orders;
+        for (const ReviewNote& n : reviewer.review(o)) {
+            ++warnings;
+            fmt::print("card {} (number {:04}): warning: {}{}\n", index, o.number,
+                       n.axis ? fmt::format("{}: ", axis_name(*n.axis)) : "", n.message);
+        }
+        for (Axis a : kAxes) {
+            const auto& p = profile.axes.at(axis_index(a));
+            const AxisOrder& x = o.axis(a);
+            double& pos = at.at(axis_index(a));
+            const double move = (x.motion == Motion::forward ? 1 : -1) * x.check / 1000.0;
+            const double to = pos + move;
+            std::string past;
+            if (p.soft_limits && (to > p.soft_max_in || to < p.soft_min_in)) {
+                past = fmt::format("its soft limit {:.3f} in (movement range {:.3f} .. {:.3f} in)",
+                                   to > p.soft_max_in ? p.soft_max_in : p.soft_min_in,
+                                   p.soft_min_in, p.soft_max_in);
+            } else if (to > p.travel_max_in || to < p.travel_min_in) {
+                past = fmt::format("its limit switch at {:.3f} in",
+                                   to > p.travel_max_in ? p.travel_max_in : p.travel_min_in);
+            }
+            if (!past.empty()) {
+                ++passing;
+                fmt::print("card {} (number {:04}): {} moves {:+.3f} in, from {:.3f} to {:.3f} in, "
+                           "past {}\n",
+                           index, o.number, axis_name(a), move, pos, to, past);
+            }
+            pos = to;
+        }
+    }
+    fmt::print("{} card{} checked: {} move{} past a limit, {} with bad punches, {} warning{}\n",
+               index, index == 1 ? "" : "s", passing, passing == 1 ? "" : "s", bad, warnings,
+               warnings == 1 ? "" : "s");
+    return passing > 0 || bad > 0 ? ExitCode::machine_stop : ExitCode::ok;
+}
+
+} // namespace
+
+void add_check_command(CLI::App& app, Command& selected) {
+    auto flags = std::make_shared<CheckFlags>();
+    CLI::App* cmd = app.add_subcommand(
+        "check", "Before running: list every card whose move would pass a soft limit or a "
+                 "limit switch, with the deck's warnings");
+    cmd->add_option("DECK", flags->input, "The deck to check")->required();
+    cmd->add_option("--profile", flags->profile, "Machine profile JSON (see 'parsons profile')");
+    cmd->add_option("--limit", flags->limits,
+                    "Soft limits of the job, AXIS=MIN:MAX inches (e.g. table=0:9.5)");
+    add_input_flags(*cmd, flags->deck);
+    cmd->footer("Exit status: 0 no card passes a limit, 3 some card would (listed), 2 unreadable "
+                "input.\n"
+                "Examples:\n"
+                "  parsons check deck.cbn --limit table=0:9.5\n"
+                "  parsons check decks/samples/patent-example.csv --limit cross=0:2");
+    cmd->callback([&selected, flags] { selected = [flags] { return run_check(*flags); }; });
+}
+
+} // namespace parsons::cli

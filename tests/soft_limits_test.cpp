@@ -1,0 +1,91 @@
+// Soft limits, the movement range of Mitsubishi's control (seeds/001): the machine stops with
+// soft_limit BEFORE the part passes a limit, and `parsons check` lists the offending cards.
+#include "tests/machine_support.hpp"
+#include "tests/test_support.hpp"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+using namespace parsons;
+using namespace parsons::cardreader;
+using namespace parsons::relaylogic;
+using namespace parsons::test;
+
+namespace {
+
+axes::MachineProfile with_table_range(double lo, double hi) {
+    auto p = axes::default_profile();
+    p.axes.at(0).soft_limits = true;
+    p.axes.at(0).soft_min_in = lo;
+    p.axes.at(0).soft_max_in = hi;
+    return p;
+}
+
+} // namespace
+
+TEST_CASE("Soft limits: a card whose move would end past the range stops before any axis moves",
+          "[softlimit]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 9800, 1, 9600, 9700, 1);
+    for (Pace pace : {Pace::fast_forward, Pace::impulse_level}) {
+        const RunResult r = run_orders({c}, with_table_range(0, 9.5), nullptr, {}, pace);
+        REQUIRE(r.stop);
+        CHECK(r.stop->reason == StopReason::soft_limit);
+        CHECK(r.stop->axis == Axis::table);
+        CHECK(r.stop->card == 1);
+        CHECK_THAT(r.stop->message, Catch::Contains("from 0.0000 to 9.8000 in, past its soft "
+                                                    "limit 9.500 in") &&
+                                        Catch::Contains("stopped before any axis moved"));
+        CHECK(r.axes.at(0).impulses == 0);
+    }
+    // Inside the range, the same card runs.
+    CHECK(run_orders({c}, with_table_range(0, 9.9)).completed);
+}
+
+TEST_CASE("Soft limits: an axis that could no longer brake inside the range is switched off "
+          "and comes to rest before the limit",
+          "[softlimit]") {
+    // The stop is inside the range, but the slow-downs sit 0.002 and 0.001 in before it: the
+    // table arrives near speed 1 and would coast 0.02 in past 8.985 in.
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 8985, 1, 8983, 8984, 1);
+    const double limit = 8.990;
+    CHECK(run_orders({c}).axes.at(0).real_in > limit); // without a range it passes 8.990
+    for (Pace pace : {Pace::fast_forward, Pace::impulse_level}) {
+        const RunResult r = run_orders({c}, with_table_range(-0.1, limit), nullptr, {}, pace);
+        REQUIRE(r.stop);
+        CHECK(r.stop->reason == StopReason::soft_limit);
+        CHECK(r.stop->axis == Axis::table);
+        CHECK_THAT(r.stop->message, Catch::Contains("could no longer brake to rest inside its "
+                                                    "soft limit 8.990 in"));
+        CHECK(r.axes.at(0).real_in <= limit); // at rest, and not past the limit
+        CHECK(r.axes.at(0).real_in > limit - 0.03);
+    }
+}
+
+TEST_CASE("Soft limits: parsons check lists every card that would pass a limit; run --limit "
+          "stops there",
+          "[softlimit][cli]") {
+    const std::string sample = source_path("decks/samples/patent-example.csv");
+    auto r = run_parsons("check " + q(sample) + " --limit table=0:8.9");
+    CHECK(r.exit_code == 3);
+    CHECK_THAT(r.output, Catch::Contains("card 1 (number 0001): table moves +8.985 in, from 0.000 "
+                                         "to 8.985 in, past its soft limit 8.900 in"));
+    CHECK_THAT(r.output, Catch::Contains("card 3 (number 0003): table moves +0.600 in, from 8.385 "
+                                         "to 8.985 in"));
+    CHECK_THAT(r.output, Catch::Contains("4 cards checked: 2 moves past a limit"));
+
+    auto clean = run_parsons("check " + q(sample) + " --limit table=0:9.5");
+    CHECK(clean.exit_code == 0);
+    CHECK_THAT(clean.output, Catch::Contains("0 moves past a limit"));
+
+    auto run = run_parsons("run " + q(sample) + " --limit table=0:8.9 -q");
+    CHECK(run.exit_code == 3);
+    CHECK_THAT(run.output, Catch::Contains("soft_limit: card 1 (number 0001), table"));
+
+    for (const std::string bad : {"table=9:1", "table=0-9", "spindle=0:1", "table=a:9"}) {
+        auto e = run_parsons("run " + q(sample) + " --limit " + bad);
+        CHECK(e.exit_code == 2);
+        CHECK_THAT(e.output, Catch::Contains("--limit '" + bad + "'"));
+    }
+}
