@@ -167,7 +167,8 @@ TEST_CASE("CLI: usage errors exit 2, --help exits 0 with an example", "[cli]") {
     auto unknown_command = run_parsons("frobnicate");
     CHECK(unknown_command.exit_code == 2);
     CHECK(unknown_command.output.find("parsons: error: unknown command 'frobnicate' (one of: "
-                                      "punch, show, convert, run, profile, gen, demo") !=
+                                      "punch, show, convert, run, check, profile, gen, demo, "
+                                      "bench;") !=
           std::string::npos);
     CHECK(run_parsons("punch").exit_code == 2);
     auto missing = run_parsons("show /nonexistent/deck.cbn");
