@@ -11,20 +11,21 @@ constexpr double kPi = 3.14159265358979323846;
 } // namespace
 
 LeadScrewAxis::LeadScrewAxis(const AxisProfile& profile) : profile_(profile) {
-    // The crossings inside the travel limits, found once by bisection (the part's position is
+    set_limit_range();
+    last_h_ = std::clamp(1L, h_lo_, std::max(h_lo_, h_hi_));
+    start_phase(0);
+}
+
+void LeadScrewAxis::set_limit_range() {
+    // The crossings inside the travel limits, found by bisection (the part's position is
     // monotonic in the screw's): h = 2m + 1.
-    auto inside_low = [this](long m) {
-        return with_screw_error(crossing_in(2 * m + 1)) >= profile_.travel_min_in;
-    };
-    auto inside_high = [this](long m) {
-        return with_screw_error(crossing_in(2 * m + 1)) <= profile_.travel_max_in;
-    };
+    auto real = [this](long m) { return with_screw_error(crossing_in(2 * m + 1)) + slip_in_; };
     constexpr long kFar = 1L << 40;
     long lo = -kFar; // smallest m inside the lower limit
     long hi = kFar;
     while (lo < hi) {
         const long mid = floor_div(lo + hi, 2);
-        if (inside_low(mid)) {
+        if (real(mid) >= profile_.travel_min_in) {
             hi = mid;
         } else {
             lo = mid + 1;
@@ -35,15 +36,19 @@ LeadScrewAxis::LeadScrewAxis(const AxisProfile& profile) : profile_(profile) {
     hi = kFar;
     while (lo < hi) {
         const long mid = floor_div(lo + hi + 1, 2);
-        if (inside_high(mid)) {
+        if (real(mid) <= profile_.travel_max_in) {
             lo = mid;
         } else {
             hi = mid - 1;
         }
     }
     h_hi_ = 2 * lo + 1;
-    last_h_ = std::clamp(1L, h_lo_, std::max(h_lo_, h_hi_));
-    start_phase(0);
+}
+
+void LeadScrewAxis::slip() {
+    slip_in_ -= d_ * kInchesPerImpulse;
+    --slip_left_;
+    set_limit_range();
 }
 
 void LeadScrewAxis::command(int direction, int speed_position) {
@@ -163,14 +168,14 @@ double LeadScrewAxis::speed_in_per_s() const {
 }
 
 double LeadScrewAxis::real_in() const {
-    return with_screw_error(s_);
+    return with_screw_error(s_) + slip_in_;
 }
 
 double LeadScrewAxis::real_in_at(double t) const {
     if (t <= t_) {
         return real_in();
     }
-    return with_screw_error(position_at(std::min(t, next_time_)));
+    return with_screw_error(position_at(std::min(t, next_time_))) + slip_in_;
 }
 
 double LeadScrewAxis::with_screw_error(double s) const {

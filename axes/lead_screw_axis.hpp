@@ -135,8 +135,18 @@ public:
     const AxisProfile& profile() const { return profile_; }
     // The part's position at the crossing of the j-th coming impulse (j >= 1).
     double real_at_impulse(long j) const {
-        return with_screw_error(crossing_in(2 * (k_ + d_ * (j - 1)) + d_));
+        return with_screw_error(crossing_in(2 * (k_ + d_ * (j - 1)) + d_)) + slip_in_;
     }
+
+    // Fault: from its nth impulse (from 1) the screw slips in the part for `count` impulses:
+    // the commutators turn, the part does not move.
+    void slip_from(long n, long count) {
+        slip_from_ = n;
+        slip_left_ = count;
+    }
+    bool slipping_ahead() const { return slip_left_ > 0; }
+    long impulses_to_slip() const { return slip_left_ > 0 ? slip_from_ - impulses_ : 0; }
+    double slip_in() const { return slip_in_; } // how far the part lags the screw
     // The first coming impulse (1-based) whose crossing puts the part where trips(x) holds,
     // for a trips that, once true, stays true further along the motion; 0 if none ever does.
     template <typename Trips>
@@ -170,6 +180,9 @@ private:
         s_ = crossing_in(last_h_);
         k_ += d_;
         ++impulses_;
+        if (slip_left_ > 0 && impulses_ >= slip_from_) {
+            slip(); // the fault: the screw turns, the part stays
+        }
         Impulse impulse;
         impulse.direction = d_;
         // Commutators 100, 98, 96 close when the crossing also crosses a 0.01, 0.1 or 1 in
@@ -183,6 +196,8 @@ private:
         return impulse;
     }
     void advance_slowly(double t);
+    void slip();
+    void set_limit_range();     // h_lo_, h_hi_ for the limits and the slip so far
     void start_phase(double u); // a new phase of constant acceleration from (t_, s_, u)
     // The time of the next impulse in this phase.
     [[gnu::always_inline]] void plan_impulse() {
@@ -234,6 +249,9 @@ private:
     long impulses_ = 0;
     long h_lo_ = 0; // crossings inside the travel limits: h_lo_ <= h <= h_hi_ (odd)
     long h_hi_ = 0;
+    long slip_from_ = 0; // the slip fault: from this impulse,
+    long slip_left_ = 0; // this many more impulses
+    double slip_in_ = 0; // the part's lag behind the screw so far
 };
 
 } // namespace parsons::axes

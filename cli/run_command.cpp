@@ -30,29 +30,6 @@ namespace {
 
 using cardreader::DeckError;
 
-relaylogic::DropImpulseFault parse_fault(const std::string& spec) {
-    const std::string prefix = "drop-impulse:";
-    const auto last = spec.rfind(':');
-    if (spec.rfind(prefix, 0) != 0 || last <= prefix.size()) {
-        throw DeckError(fmt::format("--fault '{}': expected drop-impulse:AXIS:N (e.g. "
-                                    "drop-impulse:table:120)",
-                                    spec));
-    }
-    const std::string axis = spec.substr(prefix.size(), last - prefix.size());
-    const std::string n = spec.substr(last + 1);
-    auto a = cardreader::axis_named(axis);
-    if (!a) {
-        throw DeckError(fmt::format("--fault '{}': unknown axis '{}' (table, cross, vertical, "
-                                    "swivel or tilt)",
-                                    spec, axis));
-    }
-    if (n.empty() || n.size() > 12 || n.find_first_not_of("0123456789") != std::string::npos ||
-        std::stol(n) < 1) {
-        throw DeckError(fmt::format("--fault '{}': N must be an impulse count from 1", spec));
-    }
-    return {*a, std::stol(n)};
-}
-
 // A trace written to a file while the machine runs; the file takes its name only when
 // complete (OutputFile), so a failed run leaves none.
 template <typename Writer>
@@ -118,9 +95,13 @@ private:
 ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     axes::MachineProfile profile = load_profile(f.profile);
     apply_limits(profile, f.limits);
-    std::vector<relaylogic::DropImpulseFault> faults;
+    std::vector<relaylogic::Fault> faults;
     for (const auto& spec : f.faults) {
-        faults.push_back(parse_fault(spec));
+        try {
+            faults.push_back(relaylogic::parse_fault(spec));
+        } catch (const relaylogic::FaultSpecError& e) {
+            throw DeckError(e.what());
+        }
     }
     InputDeck deck(f.input, f.deck);
     relaylogic::ControlCabinet cabinet(profile, *deck.options().layout);
@@ -243,7 +224,10 @@ void add_run_command(CLI::App& app, Command& selected) {
                     "against the design, SVG (generated decks)");
     cmd->add_option("--job", flags->job, "The job description for --cut (default DECK.job.json)");
     cmd->add_option("--fault", flags->faults,
-                    "Inject a fault: drop-impulse:AXIS:N (one contact set misses impulse N)");
+                    "Inject a fault (repeatable; docs/faults.md): drop-impulse:AXIS:N, "
+                    "stuck-relay:AXIS:BANK:DIGIT, dead-relay:AXIS:BANK:DIGIT, "
+                    "skip-step:AXIS:SWITCH:N, feed-twice:N, swap-cards:N, short-card:N, "
+                    "slip:AXIS:N:M");
     cmd->add_option("--profile", flags->profile, "Machine profile JSON (see 'parsons profile')");
     cmd->add_option("--limit", flags->limits,
                     "Soft limits of the job, AXIS=MIN:MAX inches (e.g. table=0:9.5): the machine "

@@ -32,17 +32,20 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachinePr
     json axes = json::object();
     for (Axis a : cardreader::kAxes) {
         const auto& x = r.axes.at(cardreader::axis_index(a));
-        json ax{{"position", x.counter_in},
-                {"real_position", x.real_in},
-                {"position_error", x.error_in},
-                {"impulses", x.impulses},
-                {"lost_steps", x.lost_steps}};
+        json ax{{"position", x.counter_in},     {"real_position", x.real_in},
+                {"position_error", x.error_in}, {"impulses", x.impulses},
+                {"lost_steps", x.lost_steps},   {"screw_slip", x.slip_in}};
         if (x.fixture_angle_deg) {
             ax["fixture_angle_deg"] = *x.fixture_angle_deg;
         }
         axes[std::string(axis_name(a))] = ax;
     }
     j["axes"] = axes;
+    json faults = json::array();
+    for (const auto& f : r.faults) {
+        faults.push_back(json{{"fault", f.spec}, {"acted", f.acted}, {"effect", f.effect}});
+    }
+    j["faults"] = faults;
     json cards = json::array();
     for (const auto& c : r.cards) {
         cards.push_back(json{{"index", c.index},
@@ -85,9 +88,21 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
         line(fmt::format("  {:<9} {:>8.3f} {:>10.5f} {:>+10.5f} {:>9} {:>6}{}", axis_name(a),
                          x.counter_in, x.real_in, x.error_in, x.impulses, x.lost_steps, angle));
     }
+    for (const auto& f : r.faults) {
+        line(fmt::format("  fault          {}: {}", f.spec, f.effect));
+    }
     for (Axis a : cardreader::kAxes) {
         const auto& x = r.axes.at(cardreader::axis_index(a));
-        if (x.lost_steps == 0 && std::abs(x.error_in) >= 0.0005) {
+        if (x.slip_in != 0) {
+            line(fmt::format("  warning: {} lead screw slipped: the part is {:+.4f} in from where "
+                             "its counters say, and the 1952 checks could not see it",
+                             axis_name(a), x.error_in));
+        } else if (x.skipped_steps > 0 && std::abs(x.error_in) >= 0.0005) {
+            line(
+                fmt::format("  warning: {} ends {:+.4f} in from where its counters say (a stepping "
+                            "switch skipped a position): the 1952 checks could not see it",
+                            axis_name(a), x.error_in));
+        } else if (x.lost_steps == 0 && std::abs(x.error_in) >= 0.0005) {
             line(fmt::format("  warning: {} ends {:+.4f} in from where its counters say (counted "
                              "in the other direction while coasting): the 1952 checks could not "
                              "see it",

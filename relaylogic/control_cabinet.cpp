@@ -66,6 +66,7 @@ std::string ControlCabinet::card_name() const {
 
 RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     deck_ = &deck;
+    apply_faults(deck);
     MachineObserver* observer = tracer_.observer();
     jumping_ =
         pace_ == Pace::fast_forward && (observer == nullptr || !observer->follows_impulses());
@@ -121,10 +122,101 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     for (const auto& c : circuits_) {
         c->plant.advance_to(now_);
     }
+    report_faults();
     if (tracer_.observer() != nullptr) {
         tracer_.observer()->on_finish(now_);
     }
     return result();
+}
+
+HoldingRelayBank& ControlCabinet::bank_numbered(AxisCircuit& c, int numeral) {
+    if (numeral >= 350) {
+        return c.absolute_storage.bank((numeral - 350) / 2); // 350, 352, 354, 356
+    }
+    return c.incremental_storage.bank((324 - numeral) / 2); // 324, 322, 320, 318
+}
+
+SteppingSwitch& ControlCabinet::switch_numbered(AxisCircuit& c, int numeral) {
+    if (numeral >= 310) {
+        return c.increment_counter.stepping_switch(static_cast<std::size_t>((numeral - 310) / 2));
+    }
+    return c.absolute_counter.stepping_switch(static_cast<std::size_t>((numeral - 104) / 2));
+}
+
+void ControlCabinet::apply_faults(cardreader::CardSource& deck) {
+    effects_.clear();
+    std::vector<Fault> feed_faults;
+    std::vector<std::size_t> feed_effects;
+    for (const Fault& f : faults_) {
+        effects_.push_back(FaultEffect{f.spec, false, ""});
+        AxisCircuit& c = *circuits_.at(cardreader::axis_index(f.axis));
+        switch (f.kind) {
+        case FaultKind::stuck_relay:
+            bank_numbered(c, f.numeral).stick(f.digit);
+            effects_.back().acted = true;
+            effects_.back().effect = fmt::format("relay {} of {} bank {} was stuck closed from the "
+                                                 "start",
+                                                 f.digit, axis_name(f.axis), f.numeral);
+            break;
+        case FaultKind::dead_relay:
+            bank_numbered(c, f.numeral).kill(f.digit);
+            break;
+        case FaultKind::skip_step:
+            switch_numbered(c, f.numeral).skip_on_step(f.n);
+            break;
+        case FaultKind::slip:
+            c.plant.slip_from(f.n, f.count);
+            break;
+        case FaultKind::feed_twice:
+        case FaultKind::swap_cards:
+        case FaultKind::short_card:
+            feed_faults.push_back(f);
+            feed_effects.push_back(effects_.size() - 1);
+            break;
+        case FaultKind::drop_impulse:
+            break;
+        }
+    }
+    if (!feed_faults.empty()) {
+        std::vector<FaultEffect*> targets;
+        for (std::size_t i : feed_effects) {
+            targets.push_back(&effects_.at(i));
+        }
+        faulty_feed_ = std::make_unique<FaultyFeed>(deck, feed_faults, targets);
+        deck_ = faulty_feed_.get();
+    }
+}
+
+// After the run: what the faults that act unseen did.
+void ControlCabinet::report_faults() {
+    for (std::size_t i = 0; i < faults_.size(); ++i) {
+        const Fault& f = faults_[i];
+        FaultEffect& e = effects_.at(i);
+        AxisCircuit& c = *circuits_.at(cardreader::axis_index(f.axis));
+        const std::string_view axis = axis_name(f.axis);
+        if (f.kind == FaultKind::dead_relay && bank_numbered(c, f.numeral).refused_picks() > 0) {
+            e.acted = true;
+            e.effect = fmt::format("relay {} of {} bank {} failed to pick {} time{}", f.digit, axis,
+                                   f.numeral, bank_numbered(c, f.numeral).refused_picks(),
+                                   bank_numbered(c, f.numeral).refused_picks() == 1 ? "" : "s");
+        } else if (f.kind == FaultKind::skip_step &&
+                   !switch_numbered(c, f.numeral).skip_pending()) {
+            e.acted = true;
+            e.effect = fmt::format("{} stepping switch {} skipped a position on its step {}", axis,
+                                   f.numeral, f.n);
+        } else if (f.kind == FaultKind::slip && c.plant.slip_in() != 0) {
+            const long slipped = std::lround(std::abs(c.plant.slip_in()) / axes::kInchesPerImpulse);
+            e.acted = true;
+            e.effect = fmt::format(
+                "the {} lead screw slipped for {} impulse{} from its impulse {}: "
+                "the part lags the counters by {:.3f} in, which no 1952 check "
+                "can see",
+                axis, slipped, slipped == 1 ? "" : "s", f.n, std::abs(c.plant.slip_in()));
+        }
+        if (!e.acted && e.effect.empty()) {
+            e.effect = "never came into play in this run";
+        }
+    }
 }
 
 double ControlCabinet::next_axis_event(std::size_t i) const {
@@ -148,10 +240,17 @@ void ControlCabinet::plan_quiet_stretches() {
             profile_.count_hundredths_at_speed_1 && c.speed_switch.position() == 1 && !stop_;
         q.watching_soft_limits = c.powered && c.plant.profile().soft_limits;
         q.next_fault_impulse = 0;
-        for (const DropImpulseFault& f : faults_) {
-            if (f.axis == c.axis && f.impulse > c.contact_set_a &&
-                (q.next_fault_impulse == 0 || f.impulse < q.next_fault_impulse)) {
-                q.next_fault_impulse = f.impulse;
+        q.faulty_switch_ahead = false;
+        for (const Fault& f : faults_) {
+            if (f.axis != c.axis) {
+                continue;
+            }
+            if (f.kind == FaultKind::drop_impulse && f.n > c.contact_set_a &&
+                (q.next_fault_impulse == 0 || f.n < q.next_fault_impulse)) {
+                q.next_fault_impulse = f.n;
+            }
+            if (f.kind == FaultKind::skip_step && switch_numbered(c, f.numeral).skip_pending()) {
+                q.faulty_switch_ahead = true;
             }
         }
         const long quiet = quiet_impulses(c, q);
@@ -453,9 +552,14 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     return evaluate(c);
 }
 
-bool ControlCabinet::fault_drops(const AxisCircuit& c) const {
-    for (const DropImpulseFault& f : faults_) {
-        if (f.axis == c.axis && f.impulse == c.contact_set_a) {
+bool ControlCabinet::fault_drops(const AxisCircuit& c) {
+    for (std::size_t i = 0; i < faults_.size(); ++i) {
+        const Fault& f = faults_[i];
+        if (f.kind == FaultKind::drop_impulse && f.axis == c.axis && f.n == c.contact_set_a) {
+            effects_.at(i).acted = true;
+            effects_.at(i).effect =
+                fmt::format("contact set B of the {} commutator 102 missed impulse {} ({})",
+                            axis_name(c.axis), f.n, card_name());
             return true;
         }
     }
@@ -657,6 +761,7 @@ RunResult ControlCabinet::result() const {
     r.machine_seconds = now_;
     r.stop = stop_;
     r.cards = timings_;
+    r.faults = effects_;
     for (std::size_t i = 0; i < circuits_.size(); ++i) {
         const AxisCircuit& c = *circuits_[i];
         AxisResult& a = r.axes.at(i);
@@ -667,6 +772,11 @@ RunResult ControlCabinet::result() const {
         a.lost_steps = c.absolute_counter.lost() + c.increment_counter.lost();
         if (orders_.number >= 0) {
             a.last_stop_in = c.order.stop / 1000.0;
+        }
+        a.slip_in = c.plant.slip_in();
+        for (std::size_t k = 0; k < 4; ++k) {
+            a.skipped_steps += c.absolute_counter.stepping_switch(k).skipped() ? 1 : 0;
+            a.skipped_steps += c.increment_counter.stepping_switch(k).skipped() ? 1 : 0;
         }
         if (c.axis == Axis::swivel || c.axis == Axis::tilt) {
             a.fixture_angle_deg = c.plant.fixture_angle_deg(c.axis == Axis::tilt);

@@ -23,6 +23,7 @@
 #include "cardreader/layout.hpp"
 #include "relaylogic/axis_circuit.hpp"
 #include "relaylogic/balancing_circuit.hpp"
+#include "relaylogic/faults.hpp"
 
 #include <memory>
 #include <optional>
@@ -30,13 +31,6 @@
 #include <vector>
 
 namespace parsons::relaylogic {
-
-// --fault drop-impulse:AXIS:N: one contact set of the axis's commutator 102 misses its Nth
-// impulse of the run (counted from 1).
-struct DropImpulseFault {
-    cardreader::Axis axis = cardreader::Axis::table;
-    long impulse = 1;
-};
 
 struct AxisResult {
     double counter_in = 0;                   // what absolute counter 104-110 reads
@@ -46,6 +40,8 @@ struct AxisResult {
     long lost_steps = 0;                     // impulses the stepping switches could not follow
     std::optional<double> fixture_angle_deg; // swivel and tilt
     std::optional<double> last_stop_in;      // the stop of the last card read, if any
+    double slip_in = 0;                      // a slip fault: how far the part lags the screw
+    int skipped_steps = 0;                   // skip faults that acted on its switches
 };
 
 struct CardTiming {
@@ -61,7 +57,8 @@ struct RunResult {
     double machine_seconds = 0;
     std::optional<StopInfo> stop;
     std::array<AxisResult, cardreader::kAxisCount> axes{};
-    std::vector<CardTiming> cards; // each card's machine time, if asked for (record_card_times)
+    std::vector<CardTiming> cards;   // each card's machine time, if asked for (record_card_times)
+    std::vector<FaultEffect> faults; // what each injected fault did
 };
 
 // How the cabinet spends its time. Both give the same machine, event for event: impulse level
@@ -77,7 +74,8 @@ public:
 
     // Attach before run(); announces every signal to the observer.
     void attach(MachineObserver* observer);
-    void add_fault(DropImpulseFault fault) { faults_.push_back(fault); }
+    // An injected fault (relaylogic/faults.hpp), in force from the start of run().
+    void add_fault(Fault fault) { faults_.push_back(std::move(fault)); }
     void set_pace(Pace pace) { pace_ = pace; }
     // Keep each card's start and end time for the result (memory grows with the deck).
     void record_card_times(bool on) { record_times_ = on; }
@@ -121,7 +119,11 @@ private:
     // Returns true if the impulse only counted (nothing scheduled, no other axis touched).
     bool on_impulse(AxisCircuit& c, const axes::Impulse& impulse);
     bool evaluate(AxisCircuit& c);
-    bool fault_drops(const AxisCircuit& c) const;
+    bool fault_drops(const AxisCircuit& c);
+    void apply_faults(cardreader::CardSource& deck);
+    void report_faults();
+    HoldingRelayBank& bank_numbered(AxisCircuit& c, int numeral);
+    SteppingSwitch& switch_numbered(AxisCircuit& c, int numeral);
     [[gnu::cold]] void missed_impulse(AxisCircuit& c);
     [[gnu::cold]] void travel_limit(AxisCircuit& c);
     [[gnu::cold]] void soft_limit_watch(AxisCircuit& c);
@@ -144,7 +146,9 @@ private:
     std::vector<std::unique_ptr<AxisCircuit>> circuits_;
     SteppingShaft shaft_;
     BalancingCircuit balancing_;
-    std::vector<DropImpulseFault> faults_;
+    std::vector<Fault> faults_;
+    std::vector<FaultEffect> effects_;
+    std::unique_ptr<FaultyFeed> faulty_feed_;
     double min_interval_s_; // 1 / the stepping switches' fastest rate
     Pace pace_ = Pace::fast_forward;
     bool jumping_ = false;                                   // fast-forward with no observer

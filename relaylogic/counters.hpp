@@ -60,6 +60,7 @@ public:
     long lost() const;
     // Switch i of {104, 106, 108, 110}.
     const SteppingSwitch& stepping_switch(std::size_t i) const { return switches_.at(i); }
+    SteppingSwitch& stepping_switch(std::size_t i) { return switches_.at(i); }
     // Fast-forward: every switch stands where a stretch of ready impulses left it.
     void jump(const Digits& positions, const std::array<double, 4>& last_step_s);
 
@@ -97,6 +98,7 @@ public:
     long lost() const;
     // Switch i of {310, 312, 314, 316}.
     const SteppingSwitch& stepping_switch(std::size_t i) const { return switches_.at(i); }
+    SteppingSwitch& stepping_switch(std::size_t i) { return switches_.at(i); }
     // Fast-forward: positions {316, 314, 312, 310} and last steps {310, 312, 314, 316}.
     void jump(const Digits& positions, const std::array<double, 4>& last_step_s);
 

@@ -117,7 +117,7 @@ bool soft_limit_trips(const axes::AxisProfile& p, int d, double x, double v) {
 
 long quiet_impulses(const AxisCircuit& c, const QuietConditions& q) {
     const axes::LeadScrewAxis& plant = c.plant;
-    if (!plant.next_event_is_impulse() || q.counting_hundredths) {
+    if (!plant.next_event_is_impulse() || q.counting_hundredths || q.faulty_switch_ahead) {
         return 0;
     }
     // No switch may be asked to step sooner than it can: every impulse of this phase comes at
@@ -139,6 +139,12 @@ long quiet_impulses(const AxisCircuit& c, const QuietConditions& q) {
     long first_event = kForever;
     if (q.next_fault_impulse > c.contact_set_a) {
         first_event = q.next_fault_impulse - c.contact_set_a;
+    }
+    if (plant.slipping_ahead()) {
+        if (plant.impulses_to_slip() < 1) {
+            return 0; // slipping now: one impulse at a time
+        }
+        first_event = std::min(first_event, plant.impulses_to_slip());
     }
     if (!q.machine_stopped) {
         first_event = std::min(first_event, plant.impulses_to_limit());

@@ -29,6 +29,7 @@ struct QuietConditions {
     long next_fault_impulse = 0;       // contact-set-A count of the next fault on this axis, or 0
     bool counting_hundredths = false;  // the profile's hundredths-only counting is in force
     bool watching_soft_limits = false; // the axis is powered and has a movement range
+    bool faulty_switch_ahead = false;  // a skip fault waits on one of the axis's switches
 };
 
 // The control's soft-limit watch (Mitsubishi's movement range): with the part at x after an

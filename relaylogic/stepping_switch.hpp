@@ -28,16 +28,17 @@ public:
             return {};
         }
         last_step_s_ = t;
-        Step s{true, false};
-        if (direction >= 0) {
-            s.carry = position_ == 9;
-            position_ = s.carry ? 0 : position_ + 1;
-        } else {
-            s.carry = position_ == 0;
-            position_ = s.carry ? 9 : position_ - 1;
+        Step s{true, move(direction)};
+        if (++steps_ == skip_at_) {
+            s.carry = move(direction) || s.carry; // the fault: the wiper skips a position
         }
         return s;
     }
+
+    // Fault: on its nth step (from 1) the wiper moves two positions.
+    void skip_on_step(long n) { skip_at_ = n; }
+    bool skip_pending() const { return skip_at_ > steps_; }
+    bool skipped() const { return skip_at_ > 0 && skip_at_ <= steps_; }
 
     // Homing (zeroizing): the wiper runs back to 0.
     void home() { position_ = 0; }
@@ -52,7 +53,21 @@ public:
     }
 
 private:
+    // One position; true if it passed 9 -> 0 (or 0 -> 9 going back).
+    bool move(int direction) {
+        if (direction >= 0) {
+            const bool carry = position_ == 9;
+            position_ = carry ? 0 : position_ + 1;
+            return carry;
+        }
+        const bool carry = position_ == 0;
+        position_ = carry ? 9 : position_ - 1;
+        return carry;
+    }
+
     int position_ = 0;
+    long steps_ = 0;   // steps taken (counted only for a skip fault's sake)
+    long skip_at_ = 0; // 0: no fault
     double last_step_s_ = -std::numeric_limits<double>::infinity();
     long lost_ = 0;
 };

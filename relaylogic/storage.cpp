@@ -16,6 +16,10 @@ HoldingRelayBank::HoldingRelayBank(Tracer& tracer, const std::string& scope,
 
 void HoldingRelayBank::pick(int digit) {
     const auto i = static_cast<std::size_t>(digit);
+    if ((dead_ >> i & 1U) != 0) {
+        ++refused_;
+        return;
+    }
     closed_ = static_cast<std::uint16_t>(closed_ | (1U << i));
     tracer_.set(signals_.at(i), 1);
 }
@@ -23,12 +27,23 @@ void HoldingRelayBank::pick(int digit) {
 void HoldingRelayBank::release_all() {
     if (tracer_.observer() != nullptr) {
         for (std::size_t i = 0; i < 10; ++i) {
-            if ((closed_ >> i & 1U) != 0) {
+            if ((closed_ >> i & 1U) != 0 && (stuck_ >> i & 1U) == 0) {
                 tracer_.set(signals_.at(i), 0);
             }
         }
     }
-    closed_ = 0;
+    closed_ = stuck_;
+}
+
+void HoldingRelayBank::stick(int digit) {
+    const auto i = static_cast<std::size_t>(digit);
+    stuck_ = static_cast<std::uint16_t>(stuck_ | (1U << i));
+    closed_ = static_cast<std::uint16_t>(closed_ | (1U << i));
+    tracer_.set(signals_.at(i), 1);
+}
+
+void HoldingRelayBank::kill(int digit) {
+    dead_ = static_cast<std::uint16_t>(dead_ | (1U << static_cast<unsigned>(digit)));
 }
 
 std::vector<int> HoldingRelayBank::closed_relays() const {

@@ -30,6 +30,10 @@ public:
                      const std::string& what);
     void pick(int digit);
     void release_all();
+    // Faults: relay `digit` stuck closed (it never releases) or dead (it never picks).
+    void stick(int digit);
+    void kill(int digit);
+    long refused_picks() const { return refused_; } // picks a dead relay did not follow
     bool closed(int digit) const { return (closed_ >> digit & 1U) != 0; }
     // Relay d closed <=> bit d set.
     std::uint16_t closed_mask() const { return closed_; }
@@ -38,6 +42,9 @@ public:
 private:
     Tracer& tracer_;
     std::uint16_t closed_ = 0;
+    std::uint16_t stuck_ = 0;
+    std::uint16_t dead_ = 0;
+    long refused_ = 0;
     std::array<SignalId, 10> signals_{};
 };
 
@@ -59,6 +66,7 @@ public:
                banks_[2].closed(counter[2]) && banks_[3].closed(counter[3]);
     }
     const HoldingRelayBank& bank(int i) const { return banks_.at(static_cast<std::size_t>(i)); }
+    HoldingRelayBank& bank(int i) { return banks_.at(static_cast<std::size_t>(i)); }
     bool separate_registers() const { return separate_registers_; }
     // The numbers stored (with separate registers, each in its own).
     const std::vector<int>& numbers() const { return numbers_; }
@@ -82,6 +90,7 @@ public:
                banks_[2].closed(increment[2]) && banks_[3].closed(increment[3]);
     }
     const HoldingRelayBank& bank(int i) const { return banks_.at(static_cast<std::size_t>(i)); }
+    HoldingRelayBank& bank(int i) { return banks_.at(static_cast<std::size_t>(i)); }
 
 private:
     std::array<HoldingRelayBank, 4> banks_; // 324 (inches), 322, 320, 318 (thousandths)

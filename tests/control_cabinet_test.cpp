@@ -207,7 +207,7 @@ TEST_CASE("Duplicate contacts: an impulse missed by one contact set stops with m
     CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
     c.axis(Axis::cross) = order(0, 300, 3, {}, {}, 0b00010);
     RunResult r = run_orders({c}, parsons::axes::default_profile(), nullptr,
-                             {DropImpulseFault{Axis::cross, 120}});
+                             {drop_impulse(Axis::cross, 120)});
     REQUIRE(r.stop);
     CHECK(r.stop->reason == StopReason::missed_impulse);
     CHECK(r.stop->axis == Axis::cross);

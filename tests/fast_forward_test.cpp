@@ -12,13 +12,15 @@
 // too close, a wrong check or card number now and then, patterns that stall. The profiles vary
 // speeds (some faster than the switches can step), stepping rate, acceleration, delay 258,
 // screw error, travel limits, soft limits, separate registers, hundredths-only counting and
-// dropped impulses, so every kind of stretch end is met.
+// every kind of injected fault, so every kind of stretch end is met.
 #include "tests/machine_support.hpp"
 
 #include "cardreader/deck_review.hpp"
 #include "relaylogic/fast_forward.hpp"
 
 #include <catch2/catch.hpp>
+
+#include <fmt/format.h>
 
 #include <random>
 
@@ -71,7 +73,7 @@ private:
 struct Case {
     axes::MachineProfile profile = axes::default_profile();
     std::vector<CardOrders> cards;
-    std::vector<DropImpulseFault> faults;
+    std::vector<Fault> faults;
 };
 
 Case random_case(std::mt19937& rng) {
@@ -168,8 +170,18 @@ Case random_case(std::mt19937& rng) {
         }
         c.cards.push_back(o);
     }
-    if (chance(0.1)) {
-        c.faults.push_back({kAxes.at(static_cast<std::size_t>(pick(0, 4))), pick(1, 3000)});
+    if (chance(0.25)) {
+        const std::string axis(axis_name(kAxes.at(static_cast<std::size_t>(pick(0, 4)))));
+        const std::array<std::string, 8> specs = {
+            fmt::format("drop-impulse:{}:{}", axis, pick(1, 3000)),
+            fmt::format("stuck-relay:{}:{}:{}", axis, 350 + 2 * pick(0, 3), pick(0, 9)),
+            fmt::format("dead-relay:{}:{}:{}", axis, 318 + 2 * pick(0, 3), pick(0, 9)),
+            fmt::format("skip-step:{}:{}:{}", axis, pick(0, 1) ? 110 : 312, pick(1, 500)),
+            fmt::format("feed-twice:{}", pick(1, cards)),
+            fmt::format("swap-cards:{}", pick(1, cards)),
+            fmt::format("short-card:{}", pick(1, cards)),
+            fmt::format("slip:{}:{}:{}", axis, pick(1, 3000), pick(1, 50))};
+        c.faults.push_back(parse_fault(specs.at(static_cast<std::size_t>(pick(0, 7)))));
     }
     return c;
 }
@@ -210,6 +222,11 @@ void require_same(const RunResult& a, const RunResult& b) {
         REQUIRE(a.axes.at(i).real_in == b.axes.at(i).real_in);
         REQUIRE(a.axes.at(i).impulses == b.axes.at(i).impulses);
         REQUIRE(a.axes.at(i).lost_steps == b.axes.at(i).lost_steps);
+        REQUIRE(a.axes.at(i).slip_in == b.axes.at(i).slip_in);
+    }
+    REQUIRE(a.faults.size() == b.faults.size());
+    for (std::size_t i = 0; i < a.faults.size(); ++i) {
+        REQUIRE(a.faults.at(i).effect == b.faults.at(i).effect);
     }
     REQUIRE(a.cards.size() == b.cards.size());
     for (std::size_t i = 0; i < a.cards.size(); ++i) {

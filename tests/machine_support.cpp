@@ -66,7 +66,7 @@ CardOrders idle_card(int number, const std::array<int, 5>& at) {
 relaylogic::RunResult run_orders(const std::vector<CardOrders>& cards,
                                  const axes::MachineProfile& profile,
                                  relaylogic::MachineObserver* observer,
-                                 const std::vector<relaylogic::DropImpulseFault>& faults,
+                                 const std::vector<relaylogic::Fault>& faults,
                                  relaylogic::Pace pace) {
     std::vector<Card> punched;
     for (const auto& o : cards) {

@@ -65,7 +65,7 @@ cardreader::CardOrders idle_card(int number, const std::array<int, 5>& at);
 relaylogic::RunResult run_orders(const std::vector<cardreader::CardOrders>& cards,
                                  const axes::MachineProfile& profile = axes::default_profile(),
                                  relaylogic::MachineObserver* observer = nullptr,
-                                 const std::vector<relaylogic::DropImpulseFault>& faults = {},
+                                 const std::vector<relaylogic::Fault>& faults = {},
                                  relaylogic::Pace pace = relaylogic::Pace::fast_forward);
 
 } // namespace parsons::test

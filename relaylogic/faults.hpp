@@ -1,0 +1,84 @@
+// Injected faults (run --fault SPEC, repeatable): what the 1952 machine had to survive, and
+// what its checks could and could not see. docs/faults.md tells each one's story.
+//
+//   drop-impulse:AXIS:N          contact set B of commutator 102 misses the axis's Nth impulse
+//   stuck-relay:AXIS:BANK:D      holding relay D of storage bank BANK (350-356 absolute,
+//                                318-324 incremental) is stuck closed: it never releases
+//   dead-relay:AXIS:BANK:D       holding relay D of bank BANK never picks
+//   skip-step:AXIS:SWITCH:N      stepping switch SWITCH (104-110 absolute, 310-316 increment)
+//                                skips a position on its Nth step: the wiper moves two
+//   feed-twice:N                 the reader feeds the deck's Nth card twice
+//   swap-cards:N                 the deck's cards N and N+1 come in the other order
+//   short-card:N                 the deck's Nth card is short: columns 61-80 never reach the
+//                                brushes (the card number among them)
+//   slip:AXIS:N:M                the lead screw slips for M impulses from the axis's Nth: the
+//                                commutators turn and the counters count, the part stands
+//
+// Impulses and steps count from 1 over the whole run; cards by their place in the deck.
+#pragma once
+
+#include "cardreader/deck_io.hpp"
+#include "cardreader/orders.hpp"
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace parsons::relaylogic {
+
+enum class FaultKind : std::uint8_t {
+    drop_impulse,
+    stuck_relay,
+    dead_relay,
+    skip_step,
+    feed_twice,
+    swap_cards,
+    short_card,
+    slip,
+};
+
+struct Fault {
+    FaultKind kind = FaultKind::drop_impulse;
+    cardreader::Axis axis = cardreader::Axis::table;
+    long n = 1;      // the impulse, the step or the card (deck position), from 1
+    int numeral = 0; // the bank or the stepping switch
+    int digit = 0;   // the relay of the bank
+    long count = 0;  // slip: impulses the part does not follow
+    std::string spec;
+};
+
+class FaultSpecError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Throws FaultSpecError with a message that names the spec and what is wrong with it.
+Fault parse_fault(const std::string& spec);
+Fault drop_impulse(cardreader::Axis axis, long impulse);
+
+// What a fault did in the run, for the report.
+struct FaultEffect {
+    std::string spec;
+    bool acted = false;
+    std::string effect; // one sentence; empty while it has not acted
+};
+
+// The card reader's feed with the deck faults (twice, swapped, short) applied.
+class FaultyFeed : public cardreader::CardSource {
+public:
+    FaultyFeed(cardreader::CardSource& deck, std::vector<Fault> faults,
+               std::vector<FaultEffect*> effects);
+    std::optional<cardreader::Card> next() override;
+
+private:
+    std::optional<cardreader::Card> pull();
+
+    cardreader::CardSource& deck_;
+    std::vector<Fault> faults_;
+    std::vector<FaultEffect*> effects_;
+    long pulled_ = 0; // cards taken from the deck
+    std::optional<cardreader::Card> again_;
+};
+
+} // namespace parsons::relaylogic

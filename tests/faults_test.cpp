@@ -1,0 +1,149 @@
+// Injected faults (docs/faults.md): for each, what the 1952 checks caught, and what the report
+// says — the fault's effect and, where the machine could not see it, the real position error.
+// Each runs the sample deck through `parsons run` as a user would.
+#include "tests/test_support.hpp"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+using parsons::test::q;
+using parsons::test::read_bytes;
+using parsons::test::run_parsons;
+using parsons::test::source_path;
+using parsons::test::TempDir;
+
+namespace {
+
+struct Outcome {
+    int exit_code;
+    std::string output;
+    nlohmann::json report;
+};
+
+Outcome run_with(const std::string& fault) {
+    TempDir dir;
+    auto r = run_parsons("run " + q(source_path("decks/samples/patent-example.csv")) + " --fault " +
+                         fault + " --report " + q(dir.str("r.json")));
+    return {r.exit_code, r.output, nlohmann::json::parse(read_bytes(dir.path("r.json")))};
+}
+
+std::string effect(const Outcome& o) {
+    REQUIRE(o.report["faults"].size() == 1);
+    CHECK(o.report["faults"][0]["acted"] == true);
+    return o.report["faults"][0]["effect"].get<std::string>();
+}
+
+} // namespace
+
+TEST_CASE("Fault drop-impulse: the duplicate contact sets catch it at once", "[faults]") {
+    const Outcome o = run_with("drop-impulse:table:120");
+    CHECK(o.exit_code == 3);
+    CHECK(o.report["stop"]["reason"] == "missed_impulse");
+    CHECK(o.report["stop"]["axis"] == "table");
+    CHECK_THAT(effect(o), Catch::Contains("contact set B of the table commutator 102 missed "
+                                          "impulse 120"));
+    CHECK(o.report["axes"]["table"]["impulses"].get<long>() < 200); // stopped within the move
+}
+
+TEST_CASE("Fault stuck-relay: a relay stuck closed in absolute storage makes a spurious match; "
+          "the balancing circuit catches it at the stop",
+          "[faults]") {
+    // Relay 1 of bank 354 (hundredths) held closed: with 350 = 8, 352 = {7, 8, 9} and
+    // 356 = 5 the comparer also conducts at 8.715, 8.815 and 8.915 — the table slows early.
+    const Outcome o = run_with("stuck-relay:table:354:1");
+    CHECK(o.exit_code == 3);
+    CHECK(o.report["stop"]["reason"] == "check_mismatch");
+    CHECK_THAT(o.report["stop"]["message"].get<std::string>(),
+               Catch::Contains("only the absolute comparer 122' conducted: absolute counter "
+                               "8.815 (stop 8.985)"));
+    CHECK_THAT(effect(o), Catch::Contains("relay 1 of table bank 354 was stuck closed"));
+}
+
+TEST_CASE("Fault dead-relay: a relay that never picks leaves the stop unstored; the balancing "
+          "circuit catches it (only the incremental comparer conducts)",
+          "[faults]") {
+    const Outcome o = run_with("dead-relay:table:356:5");
+    CHECK(o.exit_code == 3);
+    CHECK(o.report["stop"]["reason"] == "check_mismatch");
+    CHECK_THAT(o.report["stop"]["message"].get<std::string>(),
+               Catch::Contains("only the incremental comparer 122'' conducted"));
+    CHECK_THAT(effect(o), Catch::Contains("relay 5 of table bank 356 failed to pick"));
+}
+
+TEST_CASE("Fault skip-step: a skipping switch of the increment counter stops at the check; one "
+          "of the absolute counter is caught too, and the report gives the real position",
+          "[faults]") {
+    const Outcome abs = run_with("skip-step:table:110:300");
+    CHECK(abs.exit_code == 3);
+    CHECK(abs.report["stop"]["reason"] == "check_mismatch");
+    CHECK_THAT(effect(abs), Catch::Contains("table stepping switch 110 skipped a position on its "
+                                            "step 300"));
+    // The counter reads 8.985 where the part really is one thousandth short.
+    CHECK(abs.report["axes"]["table"]["position"].get<double>() == Approx(8.985));
+    CHECK(abs.report["axes"]["table"]["position_error"].get<double>() ==
+          Approx(-0.00125).margin(1e-6));
+    CHECK_THAT(abs.output, Catch::Contains("a stepping switch skipped a position"));
+
+    const Outcome inc = run_with("skip-step:table:310:300");
+    CHECK(inc.exit_code == 3);
+    CHECK(inc.report["stop"]["reason"] == "check_mismatch");
+    CHECK_THAT(inc.report["stop"]["message"].get<std::string>(),
+               Catch::Contains("only the incremental comparer 122'' conducted"));
+}
+
+TEST_CASE("Fault feed-twice and swap-cards: the card-number check stops before any axis moves",
+          "[faults]") {
+    const Outcome twice = run_with("feed-twice:2");
+    CHECK(twice.exit_code == 3);
+    CHECK(twice.report["stop"]["reason"] == "out_of_order_card");
+    CHECK_THAT(twice.report["stop"]["message"].get<std::string>(),
+               Catch::Contains("card number 0002 follows 0002 (expected 0003)"));
+    CHECK_THAT(effect(twice), Catch::Contains("card 2 of the deck was fed twice"));
+
+    const Outcome swapped = run_with("swap-cards:2");
+    CHECK(swapped.exit_code == 3);
+    CHECK(swapped.report["stop"]["reason"] == "out_of_order_card");
+    CHECK_THAT(swapped.report["stop"]["message"].get<std::string>(),
+               Catch::Contains("card number 0003 follows 0001"));
+    CHECK_THAT(effect(swapped), Catch::Contains("cards 2 and 3 of the deck were fed in the other "
+                                                "order"));
+}
+
+TEST_CASE("Fault short-card: the reader finds blank columns where numbers belong", "[faults]") {
+    const Outcome o = run_with("short-card:2");
+    CHECK(o.exit_code == 3);
+    CHECK(o.report["stop"]["reason"] == "bad_punch");
+    CHECK(o.report["stop"]["card"] == 2);
+    CHECK_THAT(effect(o), Catch::Contains("columns 61-80 never reached the brushes"));
+}
+
+TEST_CASE("Fault slip: the lead screw slips; every check passes and only the report tells the "
+          "real position",
+          "[faults]") {
+    const Outcome o = run_with("slip:table:2000:25");
+    CHECK(o.exit_code == 0); // the 1952 machine cannot see it
+    CHECK(o.report["status"] == "completed");
+    CHECK(o.report["axes"]["table"]["position"].get<double>() == Approx(0.100));
+    CHECK(o.report["axes"]["table"]["screw_slip"].get<double>() == Approx(-0.025));
+    CHECK(o.report["axes"]["table"]["position_error"].get<double>() == Approx(-0.02475));
+    CHECK_THAT(effect(o), Catch::Contains("slipped for 25 impulses from its impulse 2000") &&
+                              Catch::Contains("no 1952 check can see"));
+    CHECK_THAT(o.output, Catch::Contains("warning: table lead screw slipped"));
+}
+
+TEST_CASE("Faults: a bad spec is a usage error naming it; faults combine", "[faults][cli]") {
+    const std::string sample = q(source_path("decks/samples/patent-example.csv"));
+    for (const std::string bad : {"stuck-relay:table:351:1", "skip-step:table:111:3",
+                                  "slip:table:0:5", "feed-twice:x", "melt:table"}) {
+        auto r = run_parsons("run " + sample + " --fault " + bad);
+        CHECK(r.exit_code == 2);
+        CHECK_THAT(r.output, Catch::Contains("--fault '" + bad + "'"));
+    }
+    TempDir dir;
+    auto both = run_parsons("run " + sample + " --fault slip:cross:100:3 --fault feed-twice:4 " +
+                            "--report " + q(dir.str("r.json")));
+    CHECK(both.exit_code == 3);
+    const auto report = nlohmann::json::parse(read_bytes(dir.path("r.json")));
+    CHECK(report["faults"].size() == 2);
+    CHECK(report["axes"]["cross"]["screw_slip"].get<double>() == Approx(-0.003));
+}
