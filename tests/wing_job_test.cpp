@@ -8,6 +8,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <tuple>
+
 using namespace parsons;
 using namespace parsons::decks;
 
@@ -17,16 +19,26 @@ namespace {
 // and the coast of a quarter-thousandth.
 constexpr double kTolerance = 0.0015;
 
+// The sanitize preset (PARSONS_SANITIZE) runs the test suite tens of times slower: there the
+// first test runs one wing, from the coordinate file, instead of all three.
+#ifdef PARSONS_SANITIZE
+constexpr bool kOneWing = true;
+#else
+constexpr bool kOneWing = false;
+#endif
+
 } // namespace
 
 TEST_CASE("Wing: a tapered, swept NACA wing runs to completion and its root and tip sections "
           "are cut within tolerance (Fig. 5)",
           "[wing][decks][fig5]") {
-    auto [source, radius, taper, sweep] = GENERATE(table<std::string, double, double, double>({
-        {"2412", 0.25, 0.8, 5.0},
-        {"0012", 0.1875, 0.6, 10.0},
-        {"clarky.dat", 0.125, 0.7, 8.0},
-    }));
+    auto [source, radius, taper, sweep] = GENERATE(
+        filter([](const auto& wing) { return !kOneWing || std::get<0>(wing) == "clarky.dat"; },
+               table<std::string, double, double, double>({
+                   {"2412", 0.25, 0.8, 5.0},
+                   {"0012", 0.1875, 0.6, 10.0},
+                   {"clarky.dat", 0.125, 0.7, 8.0},
+               })));
     WingOptions o;
     o.root_chord_in = 4.0;
     o.span_in = 5.0;

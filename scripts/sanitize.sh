@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Builds parsons and its test suite with AddressSanitizer and UndefinedBehaviorSanitizer (the
+# `sanitize` CMake preset, in build-sanitize/) and runs the suite there. See docs/testing.md.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs="$(nproc 2>/dev/null || echo 2)"
+cmake --preset sanitize >/dev/null
+cmake --build --preset sanitize --parallel "$jobs"
+ctest --preset sanitize --parallel "$jobs"
