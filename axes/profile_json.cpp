@@ -147,8 +147,10 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
                 throw ProfileError("axes: expected an object keyed by axis name");
             }
             for (const auto& [axis, settings] : value.items()) {
-                auto it = std::find_if(p.axes.begin(), p.axes.end(),
-                                       [&](const AxisProfile& a) { return a.name == axis; });
+                // An init-capture: clang before 16 cannot capture a structured binding.
+                auto it =
+                    std::find_if(p.axes.begin(), p.axes.end(),
+                                 [&name = axis](const AxisProfile& a) { return a.name == name; });
                 if (it == p.axes.end()) {
                     throw ProfileError(fmt::format("axes.{}: unknown axis", axis));
                 }

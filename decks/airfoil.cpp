@@ -44,6 +44,7 @@
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -297,7 +298,7 @@ std::string trim(const std::string& text) {
 }
 
 // Lines split at LF, CRLF or a lone CR.
-std::vector<std::string> split_lines(const std::string& bytes) {
+std::vector<std::string> split_lines(std::string_view bytes) {
     std::vector<std::string> lines(1);
     for (std::size_t i = 0; i < bytes.size(); ++i) {
         const char ch = bytes[i];
@@ -362,14 +363,9 @@ FilePoint parse_pair(const std::string& path, long line, const std::string& text
     return {{v[0], v[1]}, line};
 }
 
-ParsedFile parse_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw DeckError::in_file(path, "cannot open the airfoil file");
-    }
-    std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (bytes.rfind("\xEF\xBB\xBF", 0) == 0) { // UTF-8 byte order mark
-        bytes.erase(0, 3);
+ParsedFile parse_file(const std::string& path, std::string_view bytes) {
+    if (bytes.starts_with("\xEF\xBB\xBF")) { // UTF-8 byte order mark
+        bytes.remove_prefix(3);
     }
     ParsedFile file;
     const auto lines = split_lines(bytes);
@@ -535,7 +531,16 @@ std::unique_ptr<Airfoil> naca4(const std::string& digits, bool closed_trailing_e
 }
 
 std::unique_ptr<Airfoil> read_dat(const std::string& path) {
-    const ParsedFile file = parse_file(path);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw DeckError::in_file(path, "cannot open the airfoil file");
+    }
+    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    return read_dat_text(bytes, path);
+}
+
+std::unique_ptr<Airfoil> read_dat_text(std::string_view bytes, const std::string& path) {
+    const ParsedFile file = parse_file(path, bytes);
     std::vector<FilePoint> loop = selig_loop(path, file);
     const std::size_t le = normalise_loop(path, file, loop);
     check_monotone(path, loop, le);

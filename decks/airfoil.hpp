@@ -16,6 +16,7 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 
 namespace parsons::decks {
 
@@ -40,5 +41,7 @@ std::unique_ptr<Airfoil> naca4(const std::string& digits, bool closed_trailing_e
 // A Selig or Lednicer coordinate file (layout detected; CRLF accepted; scaled to chord 1 if
 // tabulated in percent). Throws cardreader::DeckError naming the file and line.
 std::unique_ptr<Airfoil> read_dat(const std::string& path);
+// The same from the file's bytes, already read; `path` only names the file in messages.
+std::unique_ptr<Airfoil> read_dat_text(std::string_view bytes, const std::string& path);
 
 } // namespace parsons::decks

@@ -1,0 +1,155 @@
+// Running a fuzzed deck: through the card reader, on the cabinet at both paces, and checked.
+//
+// The cabinet's two paces are a differential test that costs nothing to write: fast-forward
+// (the default) must end every deck exactly as impulse level does, event for event
+// (relaylogic/control_cabinet.hpp), so any difference in the result is a finding.
+#include "tests/fuzz/machine_run.hpp"
+
+#include "tests/fuzz/fuzz_targets.hpp"
+
+#include "cardreader/cbn_format.hpp"
+#include "cardreader/deck_error.hpp"
+#include "cardreader/layout.hpp"
+#include "relaylogic/control_cabinet.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace parsons::fuzz {
+namespace {
+
+using namespace parsons::cardreader;
+using relaylogic::Pace;
+using relaylogic::RunResult;
+
+// Machine time only runs forwards and every position is a number. Attached to the
+// fast-forward run it says it does not follow impulses, so that the cabinet still jumps.
+class RunChecker : public relaylogic::MachineObserver {
+public:
+    explicit RunChecker(bool follows_impulses) : follows_(follows_impulses) {}
+    bool follows_impulses() const override { return follows_; }
+    void on_signal(double t, relaylogic::SignalId, std::uint32_t, std::uint32_t) override {
+        check_time(t);
+    }
+    void on_motion(double t, const std::array<double, 5>& real_in) override {
+        check_time(t);
+        for (double x : real_in) {
+            if (!std::isfinite(x)) {
+                throw Finding(fmt::format("machine: an axis position is {} at {} s", x, t));
+            }
+        }
+    }
+
+private:
+    void check_time(double t) {
+        if (!std::isfinite(t) || t < last_s_) {
+            throw Finding(fmt::format("machine: time {} s after {} s", t, last_s_));
+        }
+        last_s_ = t;
+    }
+    bool follows_;
+    double last_s_ = 0;
+};
+
+RunResult run_once(const std::string& deck_file, const axes::MachineProfile& profile, Pace pace,
+                   bool observe) {
+    std::istringstream in(deck_file);
+    DeckOptions options;
+    options.format = DeckFormat::cbn;
+    options.file_name = "fuzz.cbn";
+    auto deck = open_card_source(in, options);
+    relaylogic::ControlCabinet cabinet(profile, fig8_layout());
+    cabinet.set_pace(pace);
+    RunChecker checker(pace == Pace::impulse_level);
+    if (observe) {
+        cabinet.attach(&checker);
+    }
+    try {
+        return cabinet.run(*deck);
+    } catch (const DeckError& e) {
+        throw Finding(
+            fmt::format("machine: the reader refused a deck the writer wrote: {}", e.what()));
+    }
+}
+
+void check_run(const RunResult& run, std::size_t cards) {
+    if (run.completed == run.stop.has_value()) {
+        throw Finding("machine: a run must end either completed or stopped with a reason");
+    }
+    if (run.cards_read < 0 || run.cards_read > static_cast<long>(cards) ||
+        (run.completed && run.cards_read != static_cast<long>(cards))) {
+        throw Finding(fmt::format("machine: {} cards read of a deck of {}{}", run.cards_read, cards,
+                                  run.completed ? ", completed" : ""));
+    }
+    if (!std::isfinite(run.machine_seconds) || run.machine_seconds < 0) {
+        throw Finding(fmt::format("machine: the run took {} s", run.machine_seconds));
+    }
+    for (const auto& axis : run.axes) {
+        if (!std::isfinite(axis.counter_in) || !std::isfinite(axis.real_in) ||
+            !std::isfinite(axis.error_in) || !std::isfinite(axis.fixture_angle_deg.value_or(0))) {
+            throw Finding("machine: an axis result is not a number");
+        }
+    }
+}
+
+std::string summary(const RunResult& r) {
+    std::string text =
+        fmt::format("{} after {} cards at {} s", r.completed ? "completed" : "stopped",
+                    r.cards_read, r.machine_seconds);
+    if (r.stop) {
+        text += fmt::format(" ({}, card {}: {})", relaylogic::stop_reason_name(r.stop->reason),
+                            r.stop->card, r.stop->message);
+    }
+    for (std::size_t i = 0; i < r.axes.size(); ++i) {
+        const auto& a = r.axes.at(i);
+        text += fmt::format("; {}: counter {} real {} impulses {} lost {}", axis_name(kAxes.at(i)),
+                            a.counter_in, a.real_in, a.impulses, a.lost_steps);
+    }
+    return text;
+}
+
+bool same_run(const RunResult& a, const RunResult& b) {
+    if (a.completed != b.completed || a.cards_read != b.cards_read ||
+        a.machine_seconds != b.machine_seconds || a.stop.has_value() != b.stop.has_value()) {
+        return false;
+    }
+    if (a.stop && (a.stop->reason != b.stop->reason || a.stop->card != b.stop->card ||
+                   a.stop->axis != b.stop->axis || a.stop->message != b.stop->message ||
+                   a.stop->lamps != b.stop->lamps)) {
+        return false;
+    }
+    for (std::size_t i = 0; i < a.axes.size(); ++i) {
+        const auto& x = a.axes.at(i);
+        const auto& y = b.axes.at(i);
+        if (x.counter_in != y.counter_in || x.real_in != y.real_in || x.impulses != y.impulses ||
+            x.lost_steps != y.lost_steps) {
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+void run_machine(const std::vector<Card>& cards, const axes::MachineProfile& profile,
+                 bool observe) {
+    std::ostringstream file;
+    auto sink = make_cbn_sink(file, "fuzz.cbn");
+    for (const Card& card : cards) {
+        sink->write(card);
+    }
+    const RunResult fast = run_once(file.str(), profile, Pace::fast_forward, observe);
+    check_run(fast, cards.size());
+    const RunResult reference = run_once(file.str(), profile, Pace::impulse_level, observe);
+    check_run(reference, cards.size());
+    if (!same_run(fast, reference)) {
+        throw Finding("machine: fast-forward and impulse level end differently:\n  fast-forward: " +
+                      summary(fast) + "\n  impulse level: " + summary(reference));
+    }
+}
+
+} // namespace parsons::fuzz

@@ -1,0 +1,182 @@
+// The whole machine as a fuzz target: the input bytes become a short, valid-looking deck.
+//
+// The bytes are read as a recipe rather than as card images, so that almost every input is a
+// deck a programmer might have punched: card numbers in order, each check the travel since
+// the previous card, slow-downs before the stop, sequence positions 1-5. Single bits of the
+// recipe make it wrong the ways real decks were wrong (a check off by some thousandths, the
+// motion against the stop, the wrong number of slow-downs, a stray sequence pattern), and the
+// bytes left over flip single punches on the finished cards (a card number, a digit, a mark).
+//
+//   byte 0       cards: 1 + b % 6 (the bound that keeps every input fast)
+//   byte 1       bit 0 separate registers, bit 1 count hundredths at speed 1, bit 2 attach an
+//                observer, bit 3 switches that follow only 50 steps a second (lost impulses)
+//   bytes 2-3    first card number, big-endian, modulo 10000
+//   per card     1 byte spindle (b % 3), then 4 bytes per axis (table .. tilt):
+//                  flags  bits 0-1 start speed 1 + b % 3; bit 2 moves x16; bit 3 a wrong
+//                         check; bits 4-5 slow-downs: 0 as many as the speed needs (3 - speed),
+//                         1 none, 2 one, 3 two; bit 6 motion against the stop; bit 7 stay put
+//                  step   signed travel in thousandths (x16 with bit 2), clamped to 0..9.999
+//                  gap    slow-down spacing 0.020 + 0.004 b in; the error of a wrong check
+//                  seq    bit 5 set: the pattern is bits 0-4 (0 = never runs); otherwise the
+//                         single position 1 + (bits 0-4) % 5
+//   then         up to 8 triples (card, column, row): flip that punch
+// Missing bytes read as zero: an empty input is one card on which nothing moves.
+#include "tests/fuzz/fuzz_targets.hpp"
+#include "tests/fuzz/machine_run.hpp"
+
+#include "axes/machine_profile.hpp"
+#include "cardreader/deck_review.hpp"
+#include "cardreader/layout.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace parsons::fuzz {
+namespace {
+
+using namespace parsons::cardreader;
+
+constexpr int kMaxCards = 6;
+constexpr int kMaxFlips = 8;
+
+class Recipe {
+public:
+    explicit Recipe(Bytes bytes) : bytes_(bytes) {}
+    std::uint8_t next() { return pos_ < bytes_.size() ? bytes_[pos_++] : 0; }
+    bool done() const { return pos_ >= bytes_.size(); }
+
+private:
+    Bytes bytes_;
+    std::size_t pos_ = 0;
+};
+
+Thousandths thousandths(int value) {
+    return static_cast<Thousandths>(std::clamp(value, 0, int{kMaxThousandths}));
+}
+
+void place_slow_downs(AxisOrder& o, int count, int gap) {
+    const int direction = o.motion == Motion::forward ? 1 : -1;
+    o.slow_down = {};
+    for (int i = 0; i < count; ++i) { // the first slow-down is the farther from the stop
+        o.slow_down.at(static_cast<std::size_t>(i)) =
+            thousandths(o.stop - direction * gap * (count - i));
+    }
+}
+
+// As a careful programmer punches them: as many slow-downs as the start speed needs, a fast
+// start only where the move is long enough for its slow-downs, and a spacing whose numbers
+// make no spurious match in the shared banks on the way (the patent's own spacing, 0.100 in,
+// changes only the tenths digit). Without such a spacing the deck keeps the hazard.
+void honest_slow_downs(AxisOrder& o, Axis axis, int from, int gap) {
+    int count = 3 - o.start_speed;
+    if (count == 2 && fig8_layout().find(FieldKind::slow_down_2, axis) == nullptr) {
+        count = 1;
+    }
+    const int travel = std::abs(int{o.stop} - from);
+    for (int spacing : {gap, 100, 200, 50, 150, 300}) {
+        int fits = count;
+        while (fits > 0 && fits * spacing >= travel) {
+            --fits;
+        }
+        place_slow_downs(o, fits, spacing);
+        o.start_speed = 3 - fits;
+        if (spurious_matches_on_path(o, thousandths(from)).empty()) {
+            return;
+        }
+    }
+    place_slow_downs(o, count, gap);
+    o.start_speed = 3 - count;
+}
+
+// One axis of a card; `at` is where the previous card sent the axis, and becomes this stop.
+AxisOrder axis_order(Recipe& recipe, Axis axis, int& at) {
+    const std::uint8_t flags = recipe.next();
+    const int step = static_cast<std::int8_t>(recipe.next()) * ((flags & 0x04) ? 16 : 1);
+    const int gap = 20 + 4 * recipe.next();
+    const std::uint8_t seq = recipe.next();
+
+    AxisOrder o;
+    const int stop = (flags & 0x80) ? at : std::clamp(at + step, 0, int{kMaxThousandths});
+    o.stop = thousandths(stop);
+    o.motion = stop >= at ? Motion::forward : Motion::reverse;
+    o.check = thousandths(std::abs(stop - at));
+    o.start_speed = 1 + (flags & 0x03) % 3;
+    const bool two_fields = fig8_layout().find(FieldKind::slow_down_2, axis) != nullptr;
+    switch ((flags >> 4) & 0x03) {
+    case 0:
+        honest_slow_downs(o, axis, at, gap);
+        break;
+    case 1:
+        place_slow_downs(o, 0, gap);
+        break;
+    case 2:
+        place_slow_downs(o, 1, gap);
+        break;
+    default:
+        place_slow_downs(o, two_fields ? 2 : 1, gap);
+        break;
+    }
+    // The deck's mistakes, after the slow-downs were placed for the real motion.
+    if (flags & 0x08) {
+        o.check = thousandths((o.check + gap - 19) % (kMaxThousandths + 1));
+    }
+    if (flags & 0x40) {
+        o.motion = o.motion == Motion::forward ? Motion::reverse : Motion::forward;
+    }
+    o.sequence = (seq & 0x20) ? static_cast<SequencePattern>(seq & 0x1F)
+                              : static_cast<SequencePattern>(1u << ((seq & 0x1F) % 5));
+    at = stop;
+    return o;
+}
+
+std::vector<Card> deck_from_recipe(Recipe& recipe) {
+    const int count = 1 + recipe.next() % kMaxCards;
+    recipe.next(); // the profile byte, read by the caller
+    const int hi = recipe.next();
+    int number = (hi * 256 + recipe.next()) % 10000;
+    std::array<int, kAxisCount> at{};
+    std::vector<Card> cards;
+    for (int k = 0; k < count; ++k) {
+        CardOrders orders;
+        orders.number = number;
+        number = (number + 1) % 10000;
+        orders.spindle = static_cast<Spindle>(recipe.next() % 3);
+        for (Axis a : kAxes) {
+            orders.axis(a) = axis_order(recipe, a, at.at(axis_index(a)));
+        }
+        EncodeResult punched = encode(orders, fig8_layout());
+        if (!punched) {
+            throw Finding("machine: the keypunch refused orders the layout holds: " +
+                          *punched.error);
+        }
+        cards.push_back(punched.card);
+    }
+    for (int flip = 0; flip < kMaxFlips && !recipe.done(); ++flip) {
+        Card& card = cards.at(recipe.next() % cards.size());
+        const int column = 1 + recipe.next() % kColumns;
+        const auto row = static_cast<Row>(recipe.next() % kRows);
+        card.set_column(column, card.column(column) ^ row_bit(row));
+    }
+    return cards;
+}
+
+} // namespace
+
+void fuzz_machine(Bytes input) {
+    Recipe recipe(input);
+    const std::vector<Card> cards = deck_from_recipe(recipe);
+    const std::uint8_t machine = input.size() > 1 ? input[1] : 0;
+    axes::MachineProfile profile = axes::default_profile();
+    profile.separate_registers = (machine & 0x01) != 0;
+    profile.count_hundredths_at_speed_1 = (machine & 0x02) != 0;
+    if (machine & 0x08) {
+        profile.max_stepping_rate_per_s = 50;
+    }
+    run_machine(cards, profile, (machine & 0x04) != 0);
+}
+
+} // namespace parsons::fuzz

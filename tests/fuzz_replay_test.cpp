@@ -1,0 +1,102 @@
+// Replays every kept fuzz input through the same function the libFuzzer executable calls:
+// the seed corpus of each target (tests/fuzz/corpus/<target>/) and every input a fuzzer ever
+// found a fault with (tests/fuzz/regressions/<target>/, kept after the fix). Needs no libFuzzer.
+#include "tests/fuzz/fuzz_targets.hpp"
+
+#include "tests/test_support.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using parsons::fuzz::FuzzTarget;
+
+namespace {
+
+std::vector<fs::path> kept_inputs(const std::string& kind, std::string_view target) {
+    std::vector<fs::path> files;
+    const fs::path dir =
+        parsons::test::source_path("tests/fuzz/" + kind + "/" + std::string(target));
+    if (fs::is_directory(dir)) {
+        for (const auto& entry : fs::directory_iterator(dir)) {
+            if (entry.is_regular_file() && entry.path().filename() != "README.md") {
+                files.push_back(entry.path());
+            }
+        }
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+void replay(std::string_view name) {
+    const FuzzTarget* target = parsons::fuzz::fuzz_target_named(name);
+    REQUIRE(target != nullptr);
+    const auto seeds = kept_inputs("corpus", name);
+    CHECK(seeds.size() >= 2);
+    auto inputs = seeds;
+    const auto regressions = kept_inputs("regressions", name);
+    inputs.insert(inputs.end(), regressions.begin(), regressions.end());
+    for (const auto& file : inputs) {
+        const std::string bytes = parsons::test::read_bytes(file);
+        INFO(file.string() << " (" << bytes.size() << " bytes)");
+        CHECK_NOTHROW(
+            target->run({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()}));
+    }
+}
+
+} // namespace
+
+TEST_CASE("Fuzz replay: the targets are the ones CMake builds, each with a seed corpus", "[fuzz]") {
+    std::set<std::string> in_cmake;
+    std::istringstream list(PARSONS_FUZZ_TARGETS);
+    for (std::string name; std::getline(list, name, ',');) {
+        in_cmake.insert(name);
+    }
+    std::set<std::string> in_code;
+    for (const FuzzTarget& t : parsons::fuzz::fuzz_targets()) {
+        in_code.insert(std::string(t.name));
+    }
+    CHECK(in_code == in_cmake);
+    for (const auto& entry :
+         fs::directory_iterator(parsons::test::source_path("tests/fuzz/corpus"))) {
+        INFO(entry.path().string());
+        CHECK(in_code.count(entry.path().filename().string()) == 1);
+    }
+}
+
+TEST_CASE("Fuzz replay: every kept .cbn input gives cards or a DeckError", "[fuzz][cbn]") {
+    replay("cbn");
+}
+
+TEST_CASE("Fuzz replay: every kept .bin input gives cards or a DeckError", "[fuzz][bin]") {
+    replay("bin");
+}
+
+TEST_CASE("Fuzz replay: every kept text card image gives cards or a DeckError", "[fuzz][text]") {
+    replay("text");
+}
+
+TEST_CASE("Fuzz replay: every kept listing gives cards or a DeckError", "[fuzz][listing]") {
+    replay("listing");
+}
+
+TEST_CASE("Fuzz replay: every kept airfoil file gives a smooth airfoil or a DeckError",
+          "[fuzz][airfoil]") {
+    replay("airfoil");
+}
+
+TEST_CASE("Fuzz replay: every kept profile is refused with a ProfileError or runs the machine",
+          "[fuzz][profile]") {
+    replay("profile");
+}
+
+TEST_CASE("Fuzz replay: every kept deck recipe runs to completion or to a stop with a reason",
+          "[fuzz][machine]") {
+    replay("machine");
+}
