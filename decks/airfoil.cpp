@@ -442,28 +442,38 @@ private:
     SplineSurface lower_;
 };
 
-// Cleans the loop in place: exact consecutive duplicates dropped, percent tables scaled to
-// chord 1, counter-clockwise order. Returns the index of the leading edge (minimum x).
+// Consecutive points closer than this (chords) are one point: the spline's chord-length
+// parameter could not tell them apart. Files give 4 to 6 decimals.
+constexpr double kSamePointChords = 1e-9;
+
+// Cleans the loop in place: percent tables scaled to chord 1, consecutive duplicates dropped,
+// counter-clockwise order. Returns the index of the leading edge (minimum x).
 std::size_t normalise_loop(const std::string& path, const ParsedFile& file,
                            std::vector<FilePoint>& loop) {
-    loop.erase(std::unique(loop.begin(), loop.end(),
-                           [](const FilePoint& a, const FilePoint& b) { return a.p == b.p; }),
-               loop.end());
     double max_x = 0;
     for (const auto& q : loop) {
         max_x = std::max(max_x, std::abs(q.p.x()));
     }
-    if (max_x > 1.5) {
-        if (max_x > 150) {
-            throw DeckError::in_file(
-                path, fmt::format("x reaches {}: coordinates are neither in chords nor in "
-                                  "percent of chord",
-                                  max_x));
-        }
-        for (auto& q : loop) {
-            q.p /= 100;
-        }
+    const double scale = max_x > 1.5 ? 100 : 1;
+    if (max_x > 150) {
+        throw DeckError::in_file(path, fmt::format("x reaches {}: coordinates are neither in "
+                                                   "chords nor in percent of chord",
+                                                   max_x));
     }
+    for (auto& q : loop) {
+        if (std::abs(q.p.y()) > scale) {
+            throw DeckError::at_line(path, q.line,
+                                     fmt::format("y = {} lies farther from the chord line than "
+                                                 "the chord is long",
+                                                 q.p.y()));
+        }
+        q.p /= scale;
+    }
+    loop.erase(std::unique(loop.begin(), loop.end(),
+                           [](const FilePoint& a, const FilePoint& b) {
+                               return (a.p - b.p).norm() <= kSamePointChords;
+                           }),
+               loop.end());
     double area2 = 0; // twice the signed (shoelace) area; positive counter-clockwise
     for (std::size_t k = 0; k < loop.size(); ++k) {
         const auto& a = loop[k].p;

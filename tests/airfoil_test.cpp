@@ -386,6 +386,13 @@ TEST_CASE("Airfoil: bad coordinate files name the file and the line", "[airfoil]
               "must increase from the leading edge to the trailing edge");
     CHECK(read_error(dir.str("missing.dat")) ==
           dir.str("missing.dat") + ": cannot open the airfoil file");
+    // Found by the airfoil fuzzer: a y so large that the chord-length spline overflowed.
+    CHECK(bad("tall.dat", "TALL\n1.0 0.001\n0.5 -3.5e138\n" + good) ==
+          dir.str("tall.dat") + ":3: y = -3.5e+138 lies farther from the chord line than the "
+                                "chord is long");
+    CHECK(bad("tall_percent.dat", "TALL\n100 0.1\n50 101\n0 0\n50 -3\n100 -0.1\n") ==
+          dir.str("tall_percent.dat") + ":3: y = 101 lies farther from the chord line than the "
+                                        "chord is long");
 
     // Lednicer: 5 + 5 announced, 5 + 4 given.
     CHECK(bad("lednicer.dat", "LEDNICER\n  5.  5.\n\n0 0\n0.1 0.04\n0.2 0.06\n0.5 0.05\n1 0\n\n"
@@ -394,6 +401,27 @@ TEST_CASE("Airfoil: bad coordinate files name the file and the line", "[airfoil]
                                     "but 9 coordinate lines follow");
     CHECK(bad("lednicer_ok.dat", "LEDNICER\n  5.  5.\n\n0 0\n0.1 0.04\n0.2 0.06\n0.5 0.05\n1 0\n\n"
                                  "0 0\n0.1 -0.03\n0.2 -0.04\n0.5 -0.03\n1 0\n") == "no error");
+}
+
+TEST_CASE("Airfoil: points closer than 1e-9 chord are one point, as exact repeats are",
+          "[airfoil]") {
+    // Two points 1e-300 apart got the same chord-length parameter and the spline divided by
+    // their distance along it, zero (the fix for the fuzzer's tall file, made whole).
+    parsons::test::TempDir dir;
+    const std::string upper = "1.0 0.001\n0.5 0.05\n0.2 0.06\n0.1 0.04\n";
+    const std::string lower = "0.1 -0.03\n0.2 -0.04\n0.5 -0.03\n1.0 -0.001\n";
+    parsons::test::write_bytes(dir.path("once.dat"), "ONCE\n" + upper + "0 0\n" + lower);
+    parsons::test::write_bytes(dir.path("near.dat"),
+                               "NEAR\n" + upper + "0 0\n1e-300 0\n0 1e-12\n" + lower);
+    const auto once = read_dat(dir.str("once.dat"));
+    const auto near = read_dat(dir.str("near.dat"));
+    for (Side side : {Side::upper, Side::lower}) {
+        for (int k = 0; k <= 20; ++k) {
+            const auto a = near->sample(side, k / 20.0);
+            CHECK((a.point - once->sample(side, k / 20.0).point).norm() < 1e-9);
+            CHECK(a.tangent.norm() == Approx(1));
+        }
+    }
 }
 
 TEST_CASE("Airfoil: the spline reproduces the NACA 0012 equations between the file's stations",
