@@ -11,6 +11,19 @@ namespace {
 
 using nlohmann::json;
 
+// A screw-error table a real screw can have: positions along a screw of a few feet, errors of
+// thousandths left after compensating cam 160. Far beyond, the interpolation overflows.
+constexpr double kScrewPositionLimitIn = 1000;
+constexpr double kScrewErrorLimitIn = 1;
+
+// Machine time is a double. Durations of a minute at most, speeds of 0.1 to 1000 in/min and
+// accelerations of 0.001 in/s2 or more keep a deck of 9999 cards under 1e9 s, where it still
+// resolves a microsecond; at 1e15 s it cannot tell one impulse from the next.
+constexpr double kMaxDurationS = 60;
+constexpr double kMinSpeedInPerMin = 0.1;
+constexpr double kMaxSpeedInPerMin = 1000;
+constexpr double kMinAccelerationInPerS2 = 0.001;
+
 double positive(const json& j, const std::string& key) {
     if (!j.is_number()) {
         throw ProfileError(fmt::format("{}: expected a number", key));
@@ -20,6 +33,19 @@ double positive(const json& j, const std::string& key) {
         throw ProfileError(fmt::format("{}: must be a positive number, not {}", key, j.dump()));
     }
     return v;
+}
+
+double within(const json& j, const std::string& key, double least, double most) {
+    const double v = positive(j, key);
+    if (v < least || v > most) {
+        throw ProfileError(
+            fmt::format("{}: must lie between {} and {}, not {}", key, least, most, j.dump()));
+    }
+    return v;
+}
+
+double duration(const json& j, const std::string& key) {
+    return within(j, key, 0, kMaxDurationS);
 }
 
 double finite(const json& j, const std::string& key) {
@@ -40,12 +66,13 @@ void apply_axis(const json& j, AxisProfile& a, const std::string& where) {
                 throw ProfileError(fmt::format("{}: expected three speeds [1, 2, 3]", k));
             }
             for (std::size_t i = 0; i < 3; ++i) {
-                a.speed_in_per_min.at(i) = positive(value.at(i), fmt::format("{}[{}]", k, i));
+                a.speed_in_per_min.at(i) = within(value.at(i), fmt::format("{}[{}]", k, i),
+                                                  kMinSpeedInPerMin, kMaxSpeedInPerMin);
             }
         } else if (key == "acceleration_in_per_s2") {
-            a.acceleration_in_per_s2 = positive(value, k);
+            a.acceleration_in_per_s2 = within(value, k, kMinAccelerationInPerS2, HUGE_VAL);
         } else if (key == "braking_in_per_s2") {
-            a.braking_in_per_s2 = positive(value, k);
+            a.braking_in_per_s2 = within(value, k, kMinAccelerationInPerS2, HUGE_VAL);
         } else if (key == "travel_min_in") {
             a.travel_min_in = finite(value, k);
         } else if (key == "travel_max_in") {
@@ -76,10 +103,16 @@ void apply_axis(const json& j, AxisProfile& a, const std::string& where) {
                     throw ProfileError(fmt::format("{}: expected [[position, error], ...]", k));
                 }
                 const double x = finite(pair.at(0), k);
+                const double e = finite(pair.at(1), k);
                 if (!a.screw_error_in.empty() && x <= a.screw_error_in.back().first) {
                     throw ProfileError(fmt::format("{}: positions must increase", k));
                 }
-                a.screw_error_in.emplace_back(x, finite(pair.at(1), k));
+                if (std::abs(x) > kScrewPositionLimitIn || std::abs(e) > kScrewErrorLimitIn) {
+                    throw ProfileError(fmt::format(
+                        "{}: [{}, {}]: positions must lie within +-{} in and errors within +-{} in",
+                        k, x, e, kScrewPositionLimitIn, kScrewErrorLimitIn));
+                }
+                a.screw_error_in.emplace_back(x, e);
             }
         } else if (key != "name") {
             throw ProfileError(fmt::format("{}: unknown key", k));
@@ -132,6 +165,8 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
         j = json::parse(json_text);
     } catch (const json::parse_error& e) {
         throw ProfileError(fmt::format("not valid JSON at byte {}", e.byte));
+    } catch (const json::out_of_range&) { // 1e400: valid JSON, but no double holds it
+        throw ProfileError("a number too large to read (over 1.8e308)");
     }
     if (!j.is_object()) {
         throw ProfileError("the profile must be a JSON object");
@@ -157,23 +192,23 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
                 apply_axis(settings, *it, "axes." + axis);
             }
         } else if (key == "reader_cycle_s") {
-            p.reader_cycle_s = positive(value, key);
+            p.reader_cycle_s = duration(value, key);
         } else if (key == "first_bank_s") {
-            p.first_bank_s = positive(value, key);
+            p.first_bank_s = duration(value, key);
         } else if (key == "second_bank_s") {
-            p.second_bank_s = positive(value, key);
+            p.second_bank_s = duration(value, key);
         } else if (key == "relay_operate_s") {
-            p.relay_operate_s = positive(value, key);
+            p.relay_operate_s = duration(value, key);
         } else if (key == "relay_release_s") {
-            p.relay_release_s = positive(value, key);
+            p.relay_release_s = duration(value, key);
         } else if (key == "stepping_switch_step_s") {
-            p.stepping_switch_step_s = positive(value, key);
+            p.stepping_switch_step_s = duration(value, key);
         } else if (key == "max_stepping_rate_per_s") {
             p.max_stepping_rate_per_s = positive(value, key);
         } else if (key == "delay_258_s") {
-            p.delay_258_s = positive(value, key);
+            p.delay_258_s = duration(value, key);
         } else if (key == "sequence_shaft_step_s") {
-            p.sequence_shaft_step_s = positive(value, key);
+            p.sequence_shaft_step_s = duration(value, key);
         } else if (key == "count_hundredths_at_speed_1") {
             if (!value.is_boolean()) {
                 throw ProfileError("count_hundredths_at_speed_1: expected true or false");

@@ -118,6 +118,25 @@ TEST_CASE("Run: an unreadable deck, a bad fault or a bad profile exit 2 naming w
         run_parsons("run " + q(source_path(kSample)) + " --profile " + q(dir.str("broken.json")));
     CHECK(broken.exit_code == 2);
     CHECK(broken.output.find("broken.json: not valid JSON at byte") != std::string::npos);
+    // Found by the profile fuzzer: a number no double holds was an internal error (exit 1).
+    write_bytes(dir.path("huge.json"), R"({"delay_258_s": 1e400})");
+    auto huge = run_parsons("profile --profile " + q(dir.str("huge.json")));
+    CHECK(huge.exit_code == 2);
+    CHECK(huge.output.find("huge.json: a number too large to read (over 1.8e308)") !=
+          std::string::npos);
+    // Found by the profile fuzzer: a card cycle of 1e15 s put machine time where a double
+    // cannot tell one impulse from the next (the two paces disagreed; at 6e45 s a run hung).
+    write_bytes(dir.path("slow.json"), R"({"reader_cycle_s": 1e15})");
+    auto slow = run_parsons("profile --profile " + q(dir.str("slow.json")));
+    CHECK(slow.exit_code == 2);
+    CHECK(slow.output.find("slow.json: reader_cycle_s: must lie between 0 and 60, not 1e+15") !=
+          std::string::npos);
+    // Screw errors of +-1e308 in overflowed their interpolation and put the part at infinity.
+    write_bytes(dir.path("screw.json"), R"({"axes": {"table": {"screw_error_in": [[0, 2]]}}})");
+    auto screw = run_parsons("profile --profile " + q(dir.str("screw.json")));
+    CHECK(screw.exit_code == 2);
+    CHECK(screw.output.find("screw.json: axes.table.screw_error_in: [0, 2]: positions must lie "
+                            "within +-1000 in and errors within +-1 in") != std::string::npos);
 }
 
 TEST_CASE("Profile: the printed default reads back, and a partial file changes only its keys",
