@@ -3,7 +3,9 @@
 # missing. Safe to run again: with everything present it installs nothing and asks for nothing.
 set -euo pipefail
 
-packages=(g++ cmake make libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev catch2 gtkwave)
+# clang and libclang-rt-14-dev: libFuzzer and clang's sanitizer runtimes, for scripts/fuzz.sh.
+packages=(g++ cmake make libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev catch2 gtkwave
+          clang libclang-rt-14-dev)
 
 missing=()
 for p in "${packages[@]}"; do

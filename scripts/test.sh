@@ -1,6 +1,12 @@
 #!/usr/bin/env bash
-# Builds parsons and runs the whole test suite (installing what is missing first).
+# Builds parsons and runs the whole test suite (installing what is missing first), then the
+# same suite under AddressSanitizer and UndefinedBehaviorSanitizer, then every fuzz target for
+# 20 seconds. Each part alone: docs/testing.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
 ctest --test-dir build --output-on-failure --parallel "$(nproc 2>/dev/null || echo 2)"
+echo "== the suite under ASan and UBSan (build-sanitize/)"
+scripts/sanitize.sh
+echo "== the fuzz targets, 20 s each (build-fuzz/)"
+scripts/fuzz.sh 20
