@@ -1,5 +1,7 @@
 #include "axes/lead_screw_axis.hpp"
 
+#include "axes/state_json.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -200,6 +202,59 @@ double LeadScrewAxis::fixture_angle_deg(bool sine_plate) const {
     const double ratio = (real_in() - profile_.level_in) / profile_.pivot_to_screw_in;
     const double radians = sine_plate ? std::asin(std::clamp(ratio, -1.0, 1.0)) : std::atan(ratio);
     return radians * 180.0 / kPi;
+}
+
+nlohmann::json LeadScrewAxis::save() const {
+    return nlohmann::json{{"t0", exact(t0_)},
+                          {"s0", exact(s0_)},
+                          {"u0", exact(u0_)},
+                          {"a", exact(a_)},
+                          {"d", d_},
+                          {"phase_end", exact(phase_end_)},
+                          {"time_at_index0", exact(time_at_index0_)},
+                          {"time_per_index", exact(time_per_index_)},
+                          {"t", exact(t_)},
+                          {"screw_in", exact(s_)},
+                          {"k", k_},
+                          {"last_h", last_h_},
+                          {"target_dir", target_dir_},
+                          {"target_speed", target_speed_},
+                          {"target_u", exact(target_u_)},
+                          {"next_time", exact(next_time_)},
+                          {"next_is_impulse", next_is_impulse_},
+                          {"impulses", impulses_},
+                          {"slip_from", slip_from_},
+                          {"slip_left", slip_left_},
+                          {"slip_in", exact(slip_in_)},
+                          {"real_in", exact(real_in())}};
+}
+
+void LeadScrewAxis::load(const nlohmann::json& j) {
+    t0_ = exact(member(j, "t0"));
+    s0_ = exact(member(j, "s0"));
+    u0_ = exact(member(j, "u0"));
+    a_ = exact(member(j, "a"));
+    d_ = read<int>(j, "d") >= 0 ? +1 : -1;
+    phase_end_ = exact(member(j, "phase_end"));
+    time_at_index0_ = exact(member(j, "time_at_index0"));
+    time_per_index_ = exact(member(j, "time_per_index"));
+    t_ = exact(member(j, "t"));
+    s_ = exact(member(j, "screw_in"));
+    k_ = read<long>(j, "k");
+    last_h_ = read<long>(j, "last_h");
+    target_dir_ = read<int>(j, "target_dir") >= 0 ? +1 : -1;
+    target_speed_ = read<int>(j, "target_speed");
+    target_u_ = exact(member(j, "target_u"));
+    next_time_ = exact(member(j, "next_time"));
+    next_is_impulse_ = read<bool>(j, "next_is_impulse");
+    impulses_ = read<long>(j, "impulses");
+    slip_from_ = read<long>(j, "slip_from");
+    slip_left_ = read<long>(j, "slip_left");
+    slip_in_ = exact(member(j, "slip_in"));
+    if (target_speed_ < 0 || target_speed_ > 3) {
+        throw StateError("target_speed must be 0..3");
+    }
+    set_limit_range();
 }
 
 } // namespace parsons::axes

@@ -28,6 +28,8 @@
 
 #include "axes/machine_profile.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -167,6 +169,10 @@ public:
         }
         return lo;
     }
+
+    // Everything that moves, for a saved machine state (run --save-state / --resume).
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
 
     // Sine-plate geometry for swivel and tilt: the fixture angle this screw position makes,
     // degrees, from its level position (tilt: sin = (screw - level) / arm, the sine plate;

@@ -41,6 +41,8 @@ struct RunRequest {
     std::string profile;
     std::vector<std::string> faults;
     std::vector<std::string> limits;
+    std::string save_state;
+    std::string resume;
     bool quiet = false;
     bool impulse_level = false;
     DeckFlags deck;

@@ -11,6 +11,8 @@
 #include "cli/run_report.hpp"
 #include "cli/trace_outputs.hpp"
 
+#include "axes/profile_json.hpp"
+#include "axes/state_json.hpp"
 #include "cardreader/deck_error.hpp"
 #include "decks/cut_proof.hpp"
 #include "decks/cut_svg.hpp"
@@ -19,6 +21,7 @@
 
 #include <fmt/format.h>
 
+#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -90,13 +93,111 @@ private:
     bool shown_ = false;
 };
 
+// Keeps the tracer's values current (a saved state writes them) and nothing else: the cabinet
+// may still fast-forward.
+class KeepsValues : public relaylogic::MachineObserver {
+public:
+    bool follows_impulses() const override { return false; }
+};
+
+volatile std::sig_atomic_t g_signal = 0;
+
+extern "C" void on_operator_signal(int signal) {
+    g_signal = signal;
+}
+
+// SIGINT and SIGTERM, caught for the length of a run.
+class OperatorStop {
+public:
+    OperatorStop() {
+        g_signal = 0;
+        struct sigaction action {};
+        action.sa_handler = on_operator_signal;
+        sigemptyset(&action.sa_mask);
+        sigaction(SIGINT, &action, &old_int_);
+        sigaction(SIGTERM, &action, &old_term_);
+    }
+    ~OperatorStop() { restore(); }
+    OperatorStop(const OperatorStop&) = delete;
+    OperatorStop& operator=(const OperatorStop&) = delete;
+    const volatile std::sig_atomic_t* flag() const { return &g_signal; }
+    int signal() const { return g_signal; }
+    void restore() {
+        if (!restored_) {
+            sigaction(SIGINT, &old_int_, nullptr);
+            sigaction(SIGTERM, &old_term_, nullptr);
+            restored_ = true;
+        }
+    }
+
+private:
+    struct sigaction old_int_ {};
+    struct sigaction old_term_ {};
+    bool restored_ = false;
+};
+
+nlohmann::json read_state(const std::string& file) {
+    const std::string text = read_text_file(file, "cannot open the saved state");
+    try {
+        return nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw DeckError::in_file(file, fmt::format("not valid JSON at byte {}", e.byte));
+    }
+}
+
+// The saved state: where the machine stopped and why (for the operator), and the machine as
+// the card it stopped on was fed (for --resume): the profile and faults it ran with too.
+nlohmann::json state_json(const relaylogic::RunResult& r, const nlohmann::json& resume_point,
+                          const axes::MachineProfile& profile,
+                          const std::vector<std::string>& faults, const std::string& deck) {
+    nlohmann::json stopped = nlohmann::json::object();
+    for (cardreader::Axis a : cardreader::kAxes) {
+        const auto& x = r.axes.at(cardreader::axis_index(a));
+        stopped[std::string(cardreader::axis_name(a))] = {{"counter_in", x.counter_in},
+                                                          {"real_in", x.real_in}};
+    }
+    const auto& s = *r.stop;
+    return nlohmann::json{{"parsons_state", 1},
+                          {"deck", deck},
+                          {"stop",
+                           {{"reason", relaylogic::stop_reason_name(s.reason)},
+                            {"card", s.card},
+                            {"message", s.message},
+                            {"machine_seconds", r.machine_seconds},
+                            {"axes_at_rest", stopped}}},
+                          {"resume_card", axes::read<long>(resume_point, "cards_read") + 1},
+                          {"profile", nlohmann::json::parse(axes::profile_to_json(profile))},
+                          {"faults", faults},
+                          {"resume", resume_point}};
+}
+
 } // namespace
 
 ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
-    axes::MachineProfile profile = load_profile(f.profile);
+    // A resumed run takes the profile and the faults the state was saved with (its --limit
+    // widens or narrows the movement range, as an operator would before going on).
+    nlohmann::json state;
+    std::vector<std::string> fault_specs = f.faults;
+    axes::MachineProfile profile;
+    if (!f.resume.empty()) {
+        if (!f.profile.empty() || !f.faults.empty()) {
+            throw DeckError("--resume: the saved state carries its machine profile and faults; "
+                            "give --limit to change the movement range, not --profile or --fault");
+        }
+        state = read_state(f.resume);
+        try {
+            profile = axes::profile_from_json(axes::member(state, "profile").dump(),
+                                              axes::default_profile());
+            fault_specs = axes::read<std::vector<std::string>>(state, "faults");
+        } catch (const std::exception& e) {
+            throw DeckError::in_file(f.resume, e.what());
+        }
+    } else {
+        profile = load_profile(f.profile);
+    }
     apply_limits(profile, f.limits);
     std::vector<relaylogic::Fault> faults;
-    for (const auto& spec : f.faults) {
+    for (const auto& spec : fault_specs) {
         try {
             faults.push_back(relaylogic::parse_fault(spec));
         } catch (const relaylogic::FaultSpecError& e) {
@@ -108,6 +209,16 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     for (const auto& fault : faults) {
         cabinet.add_fault(fault);
     }
+    if (!f.resume.empty()) {
+        try {
+            cabinet.resume(axes::member(state, "resume"));
+        } catch (const std::exception& e) {
+            throw DeckError::in_file(f.resume, std::string("not a machine state parsons can "
+                                                           "resume: ") +
+                                                   e.what());
+        }
+    }
+    cabinet.keep_resume_point(!f.save_state.empty());
     cabinet.set_pace(f.impulse_level ? relaylogic::Pace::impulse_level
                                      : relaylogic::Pace::fast_forward);
     cabinet.record_card_times(!f.report.empty());
@@ -140,11 +251,21 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     if (!f.quiet && isatty(fileno(stderr)) != 0) {
         observers.add(&progress);
     }
+    // A state to be saved needs the signal values kept: an observer that wants nothing more.
+    KeepsValues values_kept;
+    if (!f.save_state.empty()) {
+        observers.add(&values_kept);
+    }
     if (!observers.empty()) {
         cabinet.attach(&observers);
     }
 
+    // Ctrl-C and SIGTERM stop the machine at its next event; the outputs are then written
+    // whole, as after any stop.
+    OperatorStop operator_stop;
+    cabinet.watch_interrupt(operator_stop.flag());
     const relaylogic::RunResult result = cabinet.run(deck.cards());
+    operator_stop.restore();
     if (out != nullptr) {
         *out = result;
     }
@@ -196,8 +317,23 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     if (!f.report.empty()) {
         write_file(f.report, report.dump(2) + "\n");
     }
+    if (!f.save_state.empty()) {
+        if (result.stop) {
+            write_file(
+                f.save_state,
+                state_json(result, cabinet.resume_point(), profile, fault_specs, f.input).dump(1) +
+                    "\n");
+        } else if (!f.quiet) {
+            fmt::print("  state          the deck completed: no state to save ({} not written)\n",
+                       f.save_state);
+        }
+    }
     if (!f.quiet) {
         fmt::print("{}{}", summary_text(result, f.input, profile.name), cut_summary);
+    }
+    if (result.stop && result.stop->reason == relaylogic::StopReason::interrupted) {
+        fmt::print(stderr, "parsons: interrupted: {}\n", result.stop->message);
+        return operator_stop.signal() == SIGTERM ? ExitCode::terminated : ExitCode::interrupted;
     }
     if (result.stop) {
         fmt::print(stderr, "parsons: machine stop: {}: {}\n",
@@ -233,6 +369,12 @@ void add_run_command(CLI::App& app, Command& selected) {
                     "Soft limits of the job, AXIS=MIN:MAX inches (e.g. table=0:9.5): the machine "
                     "stops with soft_limit before the part passes one");
     cmd->add_flag("-q,--quiet", flags->quiet, "No summary and no progress bar");
+    cmd->add_option("--save-state", flags->save_state,
+                    "On a stop (or Ctrl-C), write the machine state as JSON: where it stopped, "
+                    "and the machine as the stopped card was fed, to --resume from");
+    cmd->add_option("--resume", flags->resume,
+                    "Resume from a saved state: the deck (corrected) is read again from the "
+                    "card the machine stopped on");
     cmd->add_flag("--impulse-level", flags->impulse_level,
                   "Take every commutator impulse one by one (the reference) instead of "
                   "fast-forwarding between comparer equalities; the result is the same");

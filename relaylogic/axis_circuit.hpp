@@ -32,6 +32,9 @@ struct AxisCircuit {
         tracer.set(comparer_incremental_, incremental_conducting ? 1 : 0);
     }
     void set_powered(bool on);
+    // The state a saved machine keeps (relaylogic/machine_state.cpp).
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
 
     Tracer& tracer;
     cardreader::Axis axis;

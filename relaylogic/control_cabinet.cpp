@@ -2,6 +2,9 @@
 
 #include "relaylogic/fast_forward.hpp"
 
+#include "axes/state_json.hpp"
+#include "cardreader/deck_error.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -68,11 +71,24 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     deck_ = &deck;
     apply_faults(deck);
     MachineObserver* observer = tracer_.observer();
+    if (resuming_) {
+        // The cards read before the saved one went through the reader already.
+        for (long i = 0; i < cards_read_; ++i) {
+            if (!deck_->next()) {
+                throw cardreader::DeckError(
+                    fmt::format("the deck has {} cards; the saved state resumes after card {}", i,
+                                cards_read_));
+            }
+        }
+    }
     jumping_ =
         pace_ == Pace::fast_forward && (observer == nullptr || !observer->follows_impulses());
     const bool alone = !jumping_ && observer == nullptr;
-    schedule(0, EventKind::feed);
+    schedule(now_, EventKind::feed);
     while (true) {
+        if (interrupted()) {
+            continue; // the machine stops; the loop lets the axes coast to rest
+        }
         if (jumping_) {
             plan_quiet_stretches();
         }
@@ -144,10 +160,23 @@ SteppingSwitch& ControlCabinet::switch_numbered(AxisCircuit& c, int numeral) {
 }
 
 void ControlCabinet::apply_faults(cardreader::CardSource& deck) {
-    effects_.clear();
+    // A resumed machine has its faults in its state already (stuck relays, a slip under way)
+    // and what they did so far; only the reader's faults are set up again.
+    if (!resuming_) {
+        effects_.clear();
+    }
     std::vector<Fault> feed_faults;
     std::vector<std::size_t> feed_effects;
-    for (const Fault& f : faults_) {
+    for (std::size_t i = 0; i < faults_.size(); ++i) {
+        const Fault& f = faults_[i];
+        if (resuming_) {
+            if (f.kind == FaultKind::feed_twice || f.kind == FaultKind::swap_cards ||
+                f.kind == FaultKind::short_card) {
+                feed_faults.push_back(f);
+                feed_effects.push_back(i);
+            }
+            continue;
+        }
         effects_.push_back(FaultEffect{f.spec, false, ""});
         AxisCircuit& c = *circuits_.at(cardreader::axis_index(f.axis));
         switch (f.kind) {
@@ -311,6 +340,9 @@ void ControlCabinet::run_impulses() {
         }
         AxisCircuit& c = *circuits_[first];
         axes::LeadScrewAxis& plant = c.plant;
+        if (interrupt_ != nullptr && *interrupt_ != 0) {
+            return;
+        }
         while (plant.next_event_is_impulse()) {
             t = plant.next_event_time();
             if (!(t < before && t <= until)) {
@@ -377,6 +409,9 @@ void ControlCabinet::handle(const Event& e) {
 void ControlCabinet::feed() {
     if (stop_) {
         return;
+    }
+    if (keep_resume_point_) {
+        resume_point_ = capture();
     }
     tracer_.set(zeroizing_, 0);
     card_ = deck_->next();
@@ -538,18 +573,21 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
         travel_limit(c);
         return false;
     }
-    if (c.powered && c.plant.profile().soft_limits &&
+    c.compare();
+    bool quiet = true;
+    if (!c.absolute_conducting && !c.incremental_conducting) {
+        c.speed_switch.equality_left(now_);
+    } else {
+        quiet = evaluate(c);
+    }
+    // The soft-limit watch, after the comparers: an axis that stops here anyway is not tripped.
+    if (c.powered && c.plant.profile().soft_limits && !stop_ &&
         soft_limit_trips(c.plant.profile(), c.plant.moving_direction(), c.plant.real_in(),
                          c.plant.speed_in_per_s())) {
         soft_limit_watch(c);
         return false;
     }
-    c.compare();
-    if (!c.absolute_conducting && !c.incremental_conducting) {
-        c.speed_switch.equality_left(now_);
-        return true;
-    }
-    return evaluate(c);
+    return quiet;
 }
 
 bool ControlCabinet::fault_drops(const AxisCircuit& c) {
@@ -752,6 +790,86 @@ void ControlCabinet::sequence_stall() {
                              "not stopped is enabled there; waiting: {}",
                              card_name(), shaft_.position(), waiting),
                  "sequence lamp (stepping shaft 280)");
+}
+
+bool ControlCabinet::interrupted() {
+    if (interrupt_ == nullptr || *interrupt_ == 0 || stop_) {
+        return false;
+    }
+    machine_stop(StopReason::interrupted, std::nullopt,
+                 fmt::format("{}: the operator stopped the run (signal) at {:.3f} s of machine "
+                             "time",
+                             card_name(), now_),
+                 "");
+    return true;
+}
+
+nlohmann::json ControlCabinet::capture() const {
+    using axes::exact;
+    nlohmann::json axes = nlohmann::json::object();
+    for (const auto& c : circuits_) {
+        axes[std::string(axis_name(c->axis))] = c->save();
+    }
+    nlohmann::json times = nlohmann::json::array();
+    for (const CardTiming& ct : timings_) {
+        times.push_back({ct.index, ct.number, exact(ct.start_s), exact(ct.end_s)});
+    }
+    nlohmann::json faults = nlohmann::json::array();
+    for (const FaultEffect& e : effects_) {
+        faults.push_back({{"fault", e.spec}, {"acted", e.acted}, {"effect", e.effect}});
+    }
+    return nlohmann::json{{"machine_seconds", exact(now_)},
+                          {"event_sequence", seq_},
+                          {"cards_read", cards_read_},
+                          {"card_number_storage_136", previous_number_
+                                                          ? nlohmann::json(*previous_number_)
+                                                          : nlohmann::json(nullptr)},
+                          {"last_card_number", orders_.number},
+                          {"spindle", static_cast<int>(orders_.spindle)},
+                          {"last_sequence_position", last_sequence_position_},
+                          {"axes", axes},
+                          {"stepping_shaft_280", shaft_.save()},
+                          {"signals", tracer_.save()},
+                          {"card_times", times},
+                          {"faults", faults}};
+}
+
+void ControlCabinet::resume(const nlohmann::json& j) {
+    using axes::exact;
+    using axes::member;
+    using axes::read;
+    now_ = exact(member(j, "machine_seconds"));
+    seq_ = read<std::uint64_t>(j, "event_sequence");
+    cards_read_ = read<long>(j, "cards_read");
+    const auto& number = member(j, "card_number_storage_136");
+    previous_number_ = number.is_null() ? std::nullopt : std::optional(number.get<int>());
+    orders_ = cardreader::CardOrders{};
+    orders_.number = read<int>(j, "last_card_number");
+    orders_.spindle = static_cast<cardreader::Spindle>(read<int>(j, "spindle"));
+    last_sequence_position_ = read<int>(j, "last_sequence_position");
+    const auto& axes = member(j, "axes");
+    for (auto& c : circuits_) {
+        c->load(member(axes, std::string(axis_name(c->axis)).c_str()));
+    }
+    shaft_.load(member(j, "stepping_shaft_280"));
+    tracer_.load(member(j, "signals"));
+    timings_.clear();
+    for (const auto& t : member(j, "card_times")) {
+        timings_.push_back(
+            CardTiming{t.at(0).get<long>(), t.at(1).get<int>(), exact(t.at(2)), exact(t.at(3))});
+    }
+    effects_.clear();
+    for (const auto& e : member(j, "faults")) {
+        effects_.push_back(FaultEffect{read<std::string>(e, "fault"), read<bool>(e, "acted"),
+                                       read<std::string>(e, "effect")});
+    }
+    if (cards_read_ < 0 || now_ < 0) {
+        throw axes::StateError("cards_read and machine_seconds must not be negative");
+    }
+    reading_complete_ = false;
+    deck_finished_ = false;
+    stop_.reset();
+    resuming_ = true;
 }
 
 RunResult ControlCabinet::result() const {

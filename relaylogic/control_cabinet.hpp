@@ -25,6 +25,7 @@
 #include "relaylogic/balancing_circuit.hpp"
 #include "relaylogic/faults.hpp"
 
+#include <csignal>
 #include <memory>
 #include <optional>
 #include <queue>
@@ -86,6 +87,17 @@ public:
 
     const Tracer& tracer() const { return tracer_; }
 
+    // Saved state. With keep_resume_point on, the machine is captured each time a card is
+    // fed; resume_point() is the capture for the last card fed: the state a resumed run starts
+    // from, to read that card again. resume() (before attach() and run()) loads such a state:
+    // run() then passes over the cards read before it and feeds the next at the saved time.
+    void keep_resume_point(bool on) { keep_resume_point_ = on; }
+    const nlohmann::json& resume_point() const { return resume_point_; }
+    void resume(const nlohmann::json& state);
+    // The operator's stop: run() stops the machine at its next event once *flag is non-zero
+    // (set by a signal handler).
+    void watch_interrupt(const volatile std::sig_atomic_t* flag) { interrupt_ = flag; }
+
 private:
     enum class EventKind : std::uint8_t {
         feed,
@@ -138,6 +150,8 @@ private:
                       const std::string& message, const std::string& lamp);
     void sequence_stall();
     RunResult result() const;
+    nlohmann::json capture() const;
+    bool interrupted();
     std::string card_name() const;
 
     axes::MachineProfile profile_;
@@ -157,6 +171,10 @@ private:
 
     std::priority_queue<Event, std::vector<Event>, std::greater<>> queue_;
     std::uint64_t seq_ = 0;
+    bool keep_resume_point_ = false;
+    bool resuming_ = false;
+    nlohmann::json resume_point_;
+    const volatile std::sig_atomic_t* interrupt_ = nullptr;
     double now_ = 0;
     cardreader::CardSource* deck_ = nullptr;
     std::optional<cardreader::Card> card_;

@@ -63,6 +63,9 @@ public:
     SteppingSwitch& stepping_switch(std::size_t i) { return switches_.at(i); }
     // Fast-forward: every switch stands where a stretch of ready impulses left it.
     void jump(const Digits& positions, const std::array<double, 4>& last_step_s);
+    // The state a saved machine keeps (relaylogic/machine_state.cpp).
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
 
 private:
     bool step(std::size_t i, int direction, double t, double min_interval_s) {
@@ -101,6 +104,9 @@ public:
     SteppingSwitch& stepping_switch(std::size_t i) { return switches_.at(i); }
     // Fast-forward: positions {316, 314, 312, 310} and last steps {310, 312, 314, 316}.
     void jump(const Digits& positions, const std::array<double, 4>& last_step_s);
+    // The state a saved machine keeps (relaylogic/machine_state.cpp).
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
 
 private:
     void step_from(std::size_t first, double t, double min_interval_s) {

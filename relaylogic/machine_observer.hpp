@@ -35,6 +35,7 @@ enum class StopReason : std::uint8_t {
     sequence_stall,
     bad_punch,
     soft_limit,
+    interrupted, // not a check: the operator stopped the run (SIGINT, SIGTERM)
 };
 
 std::string_view stop_reason_name(StopReason r);

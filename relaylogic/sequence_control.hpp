@@ -29,6 +29,9 @@ public:
     void open_all();
     bool closed(int position) const { return closed_.at(static_cast<std::size_t>(position - 1)); }
     cardreader::SequencePattern pattern() const;
+    // The state a saved machine keeps (relaylogic/machine_state.cpp).
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
 
 private:
     Tracer& tracer_;
@@ -54,6 +57,9 @@ public:
     bool finish_step();
     // Zeroizing: device 288 reset (channel 302).
     void reset();
+    // The state a saved machine keeps (relaylogic/machine_state.cpp).
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
 
 private:
     Tracer& tracer_;

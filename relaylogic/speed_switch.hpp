@@ -51,6 +51,9 @@ public:
     void hold_expired(double t);
     // Zeroizing: the delay device and the stepping relay reset for the next card.
     void reset();
+    // The state a saved machine keeps (relaylogic/machine_state.cpp).
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
 
 private:
     void hold(double t, double hold_s);

@@ -8,6 +8,8 @@
 // error DESIGN.md 4.4 asks us to expose: the switch is behind the lead screw.
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include <limits>
 
 namespace parsons::relaylogic {
@@ -51,6 +53,10 @@ public:
         position_ = position;
         last_step_s_ = last_step_s;
     }
+
+    // The state a saved machine keeps (relaylogic/machine_state.cpp).
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
 
 private:
     // One position; true if it passed 9 -> 0 (or 0 -> 9 going back).

@@ -34,6 +34,9 @@ public:
     void stick(int digit);
     void kill(int digit);
     long refused_picks() const { return refused_; } // picks a dead relay did not follow
+    // The state a saved machine keeps (relaylogic/machine_state.cpp).
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
     bool closed(int digit) const { return (closed_ >> digit & 1U) != 0; }
     // Relay d closed <=> bit d set.
     std::uint16_t closed_mask() const { return closed_; }
@@ -70,6 +73,9 @@ public:
     bool separate_registers() const { return separate_registers_; }
     // The numbers stored (with separate registers, each in its own).
     const std::vector<int>& numbers() const { return numbers_; }
+    // The state a saved machine keeps (relaylogic/machine_state.cpp).
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
 
 private:
     bool conducts_separately(const Digits& counter) const;
@@ -91,6 +97,9 @@ public:
     }
     const HoldingRelayBank& bank(int i) const { return banks_.at(static_cast<std::size_t>(i)); }
     HoldingRelayBank& bank(int i) { return banks_.at(static_cast<std::size_t>(i)); }
+    // The state a saved machine keeps (relaylogic/machine_state.cpp).
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
 
 private:
     std::array<HoldingRelayBank, 4> banks_; // 324 (inches), 322, 320, 318 (thousandths)

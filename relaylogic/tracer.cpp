@@ -16,6 +16,8 @@ std::string_view stop_reason_name(StopReason r) {
         return "bad_punch";
     case StopReason::soft_limit:
         return "soft_limit";
+    case StopReason::interrupted:
+        return "interrupted";
     }
     return "check_mismatch";
 }

@@ -7,6 +7,8 @@
 
 #include "relaylogic/machine_observer.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <vector>
 
 namespace parsons::relaylogic {
@@ -30,6 +32,10 @@ public:
     }
 
     const std::vector<SignalInfo>& signals() const { return infos_; }
+    // Every signal's value by name ("table.absolute_counter_104": 8). Kept only while an
+    // observer is attached: a run that saves its state attaches one.
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
 
 private:
     void report(SignalId id, std::uint32_t value);
