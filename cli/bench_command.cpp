@@ -53,8 +53,11 @@ struct BenchOptions {
     int trace_cards = 40;
     int short_cards = 100000;
     bool json = false;
+    bool scaling = false;
     std::string child_deck;   // internal: run this deck and exit (the memory figure's child)
     std::string child_report; // internal: where the child writes its peak resident size
+    bool child_impulse_level = false;
+    std::string child_trace;
 };
 
 double median(std::vector<double> v) {
@@ -188,9 +191,11 @@ double own_peak_mb() {
 // Peak resident size of `parsons bench --child-deck DECK --child-report FILE`, which runs the
 // deck as `parsons run DECK -q` does and writes its own peak (VmHWM) to FILE, in MB. (The
 // kernel's ru_maxrss of a child would include this process's size from before the exec.)
-double child_peak_mb(const std::string& deck, const std::string& report) {
+double child_peak_mb(const std::string& deck, const std::string& report,
+                     const std::vector<std::string>& extra = {}) {
     std::vector<std::string> args = {"/proc/self/exe", "bench", "--child-deck", deck,
                                      "--child-report", report};
+    args.insert(args.end(), extra.begin(), extra.end());
     std::vector<char*> argv;
     for (auto& a : args) {
         argv.push_back(a.data());
@@ -241,7 +246,10 @@ long vcd_events(const std::string& path) {
 
 ExitCode run_bench(const BenchOptions& o) {
     if (!o.child_deck.empty()) {
-        const ExitCode code = run_deck(quiet_run(o.child_deck));
+        RunRequest child = quiet_run(o.child_deck);
+        child.impulse_level = o.child_impulse_level;
+        child.trace = o.child_trace;
+        const ExitCode code = run_deck(child);
         std::ofstream(o.child_report) << own_peak_mb() << "\n";
         return code;
     }
@@ -375,6 +383,42 @@ ExitCode run_bench(const BenchOptions& o) {
     }
     j["peak_memory_mb"] = memory;
     say(fmt::format("peak memory of parsons run  {}", line));
+
+    if (o.scaling) {
+        // How cost grows: decks of short moves, 10^3 .. 10^6 cards, each run once in a child
+        // process (wall time and peak memory): fast-forward, impulse level, and with a VCD.
+        say("scaling (short moves; one run each, in a child process):");
+        say("     cards   fast-fwd s  impulse s   VCD s   VCD MB   peak MB");
+        nlohmann::json rows = nlohmann::json::array();
+        for (int cards : {1000, 10000, 100000, 1000000}) {
+            const std::string deck = path("scale.cbn");
+            write_deck(deck, cards, kShortMoves);
+            double peak = 0;
+            const double ff_s = seconds([&] { peak = child_peak_mb(deck, path("peak.txt")); });
+            const double il_s =
+                seconds([&] { child_peak_mb(deck, path("peak.txt"), {"--child-impulse-level"}); });
+            double vcd_s = 0;
+            double vcd_mb = 0;
+            if (cards <= 100000) {
+                const std::string vcd = path("scale.vcd");
+                vcd_s = seconds([&] {
+                    child_peak_mb(deck, path("peak.txt"), {"--child-trace", vcd});
+                });
+                vcd_mb = static_cast<double>(fs::file_size(vcd)) / 1e6;
+                fs::remove(vcd);
+            }
+            rows.push_back({{"cards", cards},
+                            {"fast_forward_s", ff_s},
+                            {"impulse_level_s", il_s},
+                            {"vcd_s", vcd_s},
+                            {"vcd_mb", vcd_mb},
+                            {"peak_mb", peak}});
+            say(fmt::format("  {:>8}   {:>10.3f} {:>10.3f} {:>7} {:>8} {:>9.1f}", cards, ff_s, il_s,
+                            vcd_s > 0 ? fmt::format("{:.3f}", vcd_s) : "-",
+                            vcd_s > 0 ? fmt::format("{:.1f}", vcd_mb) : "-", peak));
+        }
+        j["scaling"] = rows;
+    }
     if (o.json) {
         fmt::print("{}\n", j.dump(2));
     }
@@ -400,8 +444,12 @@ void add_bench_command(CLI::App& app, Command& selected) {
         ->capture_default_str()
         ->check(CLI::Range(10, 10000000));
     cmd->add_flag("--json", o->json, "Print the figures as JSON");
+    cmd->add_flag("--scaling", o->scaling,
+                  "Also time decks of 10^3 .. 10^6 cards (fast-forward, impulse level, VCD)");
     cmd->add_option("--child-deck", o->child_deck)->group(""); // internal: the memory figure
     cmd->add_option("--child-report", o->child_report)->group("");
+    cmd->add_flag("--child-impulse-level", o->child_impulse_level)->group("");
+    cmd->add_option("--child-trace", o->child_trace)->group("");
     cmd->footer("Examples:\n  parsons bench\n  parsons bench --runs 7 --json > bench.json");
     cmd->callback([&selected, o] { selected = [o] { return run_bench(*o); }; });
 }
