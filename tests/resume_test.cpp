@@ -64,14 +64,25 @@ json read_json(const std::filesystem::path& p) {
     return json::parse(read_bytes(p));
 }
 
-// Starts `parsons ARGS`, sends `signal` after `delay`, and returns the exit status.
-int run_and_signal(const std::string& args, int signal, std::chrono::milliseconds delay) {
+// Starts `parsons ARGS`, waits until its VCD (`trace`, written under a temporary name while the
+// run goes on) has begun, then `delay` more, sends `signal`, and returns the exit status.
+int run_and_signal(const std::string& args, const std::filesystem::path& trace, int signal,
+                   std::chrono::milliseconds delay) {
     const pid_t pid = fork();
     if (pid == 0) {
         const std::string command =
             std::string("exec '") + PARSONS_EXE + "' " + args + " >/dev/null 2>&1";
         execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
         _exit(127);
+    }
+    const auto partial =
+        trace.parent_path() / ("." + trace.filename().string() + ".partial-" + std::to_string(pid));
+    for (int i = 0; i < 600; ++i) { // up to a minute (a sanitizer build starts slowly)
+        std::error_code ec;
+        if (std::filesystem::exists(partial, ec) && std::filesystem::file_size(partial, ec) > 0) {
+            break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
     std::this_thread::sleep_for(delay);
     kill(pid, signal);
@@ -229,7 +240,7 @@ TEST_CASE("Ctrl-C: a long run stops at the next event with a valid report, a com
     const int status = run_and_signal(
         "run " + deck + " --impulse-level --trace " + q(dir.str("run.vcd")) + " --report " +
             q(dir.str("report.json")) + " --save-state " + q(dir.str("state.json")) + " -q",
-        SIGINT, std::chrono::milliseconds(300));
+        dir.path("run.vcd"), SIGINT, std::chrono::milliseconds(200));
     REQUIRE(status == 130);
     const json report = read_json(dir.path("report.json"));
     CHECK(report["status"] == "stopped");
@@ -264,7 +275,7 @@ TEST_CASE("Nothing lost: a run killed outright leaves no file under an output's 
         run_and_signal("run " + q(dir.str("deck.csv")) + " --impulse-level --trace " +
                            q(dir.str("run.vcd")) + " --report " + q(dir.str("report.json")) +
                            " --events " + q(dir.str("events.jsonl")) + " -q",
-                       SIGKILL, std::chrono::milliseconds(300));
+                       dir.path("run.vcd"), SIGKILL, std::chrono::milliseconds(200));
     CHECK(status == 128 + SIGKILL);
     CHECK_FALSE(std::filesystem::exists(dir.path("run.vcd")));
     CHECK_FALSE(std::filesystem::exists(dir.path("report.json")));
