@@ -244,7 +244,7 @@ TEST_CASE("Airfoil: the Lednicer NACA 63-412 reads as the same section as the Se
     CHECK(selig->sample(Side::lower, 0.5).point.y() == Approx(-0.031640));
 }
 
-TEST_CASE("Airfoil: a blunt TE (Clark Y) keeps both TE points; u outside the chord clamps",
+TEST_CASE("Airfoil: a blunt TE (Clark Y) keeps both TE points, u outside the chord clamps",
           "[airfoil]") {
     const auto foil = read_dat(data_path("clarky.dat"));
     CHECK(foil->sample(Side::upper, 1).point.y() == Approx(0.0005993).margin(1e-12));

@@ -200,3 +200,13 @@ TEST_CASE("CLI: show judges the card after a bad one against the bad card's numb
     CHECK(shown.exit_code == 2);
     CHECK(shown.output.find("4 cards read, 0 warnings, 1 with bad punches") != std::string::npos);
 }
+
+TEST_CASE("Suite: no test name holds a semicolon (ctest would split it and run no test)",
+          "[suite]") {
+    const auto& tests = Catch::getRegistryHub().getTestCaseRegistry().getAllTests();
+    REQUIRE(tests.size() > 100);
+    for (const auto& t : tests) {
+        INFO(t.getTestCaseInfo().name);
+        CHECK(t.getTestCaseInfo().name.find(';') == std::string::npos);
+    }
+}

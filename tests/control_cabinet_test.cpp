@@ -244,7 +244,7 @@ TEST_CASE("Shared banks: with separate registers (a departure) the same card com
 }
 
 TEST_CASE("Coast: slow-downs 0.002 and 0.001 before the stop overshoot and the next card stops "
-          "with check_mismatch; 0.200 and 0.100 before complete",
+          "with check_mismatch, 0.200 and 0.100 before complete",
           "[cabinet][coast]") {
     auto deck = [](int slow1, int slow2) {
         CardOrders one = idle_card(1, {0, 0, 0, 0, 0});
@@ -343,7 +343,7 @@ TEST_CASE("Delay 258: held longer than the time between impulses, the switch mis
     CHECK(r.axes.at(0).real_in > 10.0);
 }
 
-TEST_CASE("Screw error: the part is where the screw plus the residual error of cam 160 puts it; "
+TEST_CASE("Screw error: the part is where the screw plus the residual error of cam 160 puts it, "
           "the counters cannot see it, the report can",
           "[cabinet][axes]") {
     auto profile = parsons::axes::default_profile();

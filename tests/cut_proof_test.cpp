@@ -355,7 +355,7 @@ TEST_CASE("Cut proof: agrees with brute-force bisection on a raw staircase recor
     CHECK(proof.max_leftover_in > 0.001);
 }
 
-TEST_CASE("Cut proof: a single plunge cuts a dimple; bad arguments are refused", "[cut]") {
+TEST_CASE("Cut proof: a single plunge cuts a dimple, bad arguments are refused", "[cut]") {
     const DesignContour design = flat_design(-1, 1, 0.01);
     const CutProof proof = prove_cut({Vector2d(0, 0.249)}, 0.25, design, 0.5);
     CHECK(proof.max_gouge_in == Approx(0.001).margin(1e-9));

@@ -45,7 +45,7 @@ TEST_CASE("Fault drop-impulse: the duplicate contact sets catch it at once", "[f
     CHECK(o.report["axes"]["table"]["impulses"].get<long>() < 200); // stopped within the move
 }
 
-TEST_CASE("Fault stuck-relay: a relay stuck closed in absolute storage makes a spurious match; "
+TEST_CASE("Fault stuck-relay: a relay stuck closed in absolute storage makes a spurious match, "
           "the balancing circuit catches it at the stop",
           "[faults]") {
     // Relay 1 of bank 354 (hundredths) held closed: with 350 = 8, 352 = {7, 8, 9} and
@@ -59,7 +59,7 @@ TEST_CASE("Fault stuck-relay: a relay stuck closed in absolute storage makes a s
     CHECK_THAT(effect(o), Catch::Contains("relay 1 of table bank 354 was stuck closed"));
 }
 
-TEST_CASE("Fault dead-relay: a relay that never picks leaves the stop unstored; the balancing "
+TEST_CASE("Fault dead-relay: a relay that never picks leaves the stop unstored, the balancing "
           "circuit catches it (only the incremental comparer conducts)",
           "[faults]") {
     const Outcome o = run_with("dead-relay:table:356:5");
@@ -70,7 +70,7 @@ TEST_CASE("Fault dead-relay: a relay that never picks leaves the stop unstored; 
     CHECK_THAT(effect(o), Catch::Contains("relay 5 of table bank 356 failed to pick"));
 }
 
-TEST_CASE("Fault skip-step: a skipping switch of the increment counter stops at the check; one "
+TEST_CASE("Fault skip-step: a skipping switch of the increment counter stops at the check, one "
           "of the absolute counter is caught too, and the report gives the real position",
           "[faults]") {
     const Outcome abs = run_with("skip-step:table:110:300");
@@ -117,7 +117,7 @@ TEST_CASE("Fault short-card: the reader finds blank columns where numbers belong
     CHECK_THAT(effect(o), Catch::Contains("columns 61-80 never reached the brushes"));
 }
 
-TEST_CASE("Fault slip: the lead screw slips; every check passes and only the report tells the "
+TEST_CASE("Fault slip: the lead screw slips, every check passes and only the report tells the "
           "real position",
           "[faults]") {
     const Outcome o = run_with("slip:table:2000:25");
@@ -131,7 +131,7 @@ TEST_CASE("Fault slip: the lead screw slips; every check passes and only the rep
     CHECK_THAT(o.output, Catch::Contains("warning: table lead screw slipped"));
 }
 
-TEST_CASE("Faults: a bad spec is a usage error naming it; faults combine", "[faults][cli]") {
+TEST_CASE("Faults: a bad spec is a usage error naming it, faults combine", "[faults][cli]") {
     const std::string sample = q(source_path("decks/samples/patent-example.csv"));
     for (const std::string bad : {"stuck-relay:table:351:1", "skip-step:table:111:3",
                                   "slip:table:0:5", "feed-twice:x", "melt:table"}) {

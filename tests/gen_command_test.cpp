@@ -13,7 +13,7 @@ using parsons::test::source_path;
 using parsons::test::TempDir;
 using parsons::test::write_bytes;
 
-TEST_CASE("Gen: a NACA 2412 template deck, its centres and its job; run --cut proves it",
+TEST_CASE("Gen: a NACA 2412 template deck, its centres and its job, run --cut proves it",
           "[gen][cli]") {
     TempDir dir;
     auto gen = run_parsons("gen airfoil --naca 2412 --chord 6 --cutter-radius 0.25 --scallop 0.002 "

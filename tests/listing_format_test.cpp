@@ -57,7 +57,7 @@ std::string round_trip(const std::string& listing) {
 
 } // namespace
 
-TEST_CASE("Listing: a valid listing reads; comments, blank lines and CRLF are allowed",
+TEST_CASE("Listing: a valid listing reads, comments, blank lines and CRLF are allowed",
           "[listing]") {
     const std::string text =
         "# a comment\n" + kHeader + "\r\n" + card_rows(1) + "  # indented comment\n" + card_rows(2);

@@ -63,7 +63,7 @@ TEST_CASE("Soft limits: an axis that could no longer brake inside the range is s
     }
 }
 
-TEST_CASE("Soft limits: parsons check lists every card that would pass a limit; run --limit "
+TEST_CASE("Soft limits: parsons check lists every card that would pass a limit, run --limit "
           "stops there",
           "[softlimit][cli]") {
     const std::string sample = source_path("decks/samples/patent-example.csv");

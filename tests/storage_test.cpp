@@ -28,7 +28,7 @@ TEST_CASE("Absolute storage: 8.785 / 8.885 / 8.985 close relay 8 of 350, relays 
 }
 
 TEST_CASE("Absolute storage: shared banks also conduct at spurious numbers (9.050 with 8.850, "
-          "8.950 matches 8.050); separate registers do not",
+          "8.950 matches 8.050), separate registers do not",
           "[storage][fig12]") {
     Tracer tracer;
     AbsoluteStorage shared(tracer, "table", false);

@@ -332,7 +332,7 @@ TEST_CASE("VCD: every change names a declared signal, time only moves forward, a
     CHECK(rec.vcd.find("$comment card 1 read, number 1 $end") != std::string::npos);
 }
 
-TEST_CASE("VCD: changes in the same microsecond share one timestamp; wide values are written "
+TEST_CASE("VCD: changes in the same microsecond share one timestamp, wide values are written "
           "bit for bit",
           "[trace][vcd]") {
     std::ostringstream out;
@@ -380,7 +380,7 @@ TEST_CASE("VCD: GTKWave's vcd2fst converts the trace of a run, and fst2vcd gives
     CHECK(back.find("absolute_counter_110") != std::string::npos);
 }
 
-TEST_CASE("Events: every line is a JSON object; motor 38 switching on, the card and the finish "
+TEST_CASE("Events: every line is a JSON object, motor 38 switching on, the card and the finish "
           "are there, one line per signal change",
           "[trace][events]") {
     const Recorded& rec = simple_run();
