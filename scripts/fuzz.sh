@@ -33,12 +33,16 @@ run_one() {
     if [ -d "tests/fuzz/regressions/$t" ]; then
         inputs+=("tests/fuzz/regressions/$t")
     fi
-    local dict=()
+    local flags=()
     if [ -f "tests/fuzz/$t.dict" ]; then
-        dict=("-dict=tests/fuzz/$t.dict")
+        flags+=("-dict=tests/fuzz/$t.dict")
+    fi
+    if [ -f "tests/fuzz/$t.options" ]; then # more libFuzzer flags for this target, one line
+        read -r -a options <"tests/fuzz/$t.options"
+        flags+=("${options[@]}")
     fi
     local rc=0
-    "$build/tests/fuzz/fuzz_$t" "${inputs[@]}" "${dict[@]}" -max_total_time="$seconds" \
+    "$build/tests/fuzz/fuzz_$t" "${inputs[@]}" "${flags[@]}" -max_total_time="$seconds" \
         -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
         -artifact_prefix="$build/findings/$t/" >"$build/logs/$t.log" 2>&1 || rc=$?
     echo "$rc" >"$build/logs/$t.rc"

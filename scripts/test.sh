@@ -4,9 +4,11 @@
 # 20 seconds. Each part alone: docs/testing.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+elapsed() { printf '%dm%02ds' $((SECONDS / 60)) $((SECONDS % 60)); }
 scripts/build.sh
 ctest --test-dir build --output-on-failure --parallel "$(nproc 2>/dev/null || echo 2)"
-echo "== the suite under ASan and UBSan (build-sanitize/)"
+echo "== $(elapsed): the suite under ASan and UBSan (build-sanitize/)"
 scripts/sanitize.sh
-echo "== the fuzz targets, 20 s each (build-fuzz/)"
+echo "== $(elapsed): the fuzz targets, 20 s each (build-fuzz/)"
 scripts/fuzz.sh 20
+echo "== $(elapsed): all passed"

@@ -2,7 +2,8 @@
 //
 // An airfoil the reader accepts must answer every chord station in [0, 1] of both surfaces
 // with a finite point and a unit tangent. A profile the reader accepts must write out and read
-// back the same, and run a short two-card deck on the machine to an end.
+// back the same, and run a short two-card deck on the machine as the machine target runs its
+// decks (machine_run.hpp): to an end, and the same at both paces.
 #include "tests/fuzz/fuzz_targets.hpp"
 #include "tests/fuzz/machine_run.hpp"
 
