@@ -82,6 +82,40 @@ std::optional<DeckFormat> format_for_path(std::string_view path) {
     return std::nullopt;
 }
 
+std::optional<DeckFormat> sniff_format(std::string_view head) {
+    if (head.empty()) {
+        return std::nullopt;
+    }
+    if ((static_cast<unsigned char>(head[0]) & 0x80) != 0 && head.substr(0, 3) != "\xEF\xBB\xBF") {
+        return DeckFormat::cbn;
+    }
+    std::string_view text = head;
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") {
+        text.remove_prefix(3); // a spreadsheet's UTF-8 byte-order mark
+    }
+    std::string start(text.substr(0, 5));
+    std::transform(start.begin(), start.end(), start.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (start.starts_with("#") || start == "card,") {
+        return DeckFormat::listing;
+    }
+    const bool printable = std::all_of(text.begin(), text.end(), [](char c) {
+        const auto u = static_cast<unsigned char>(c);
+        return (u >= 0x20 && u < 0x7F) || c == '\n' || c == '\r' || c == '\t';
+    });
+    if (printable) {
+        return DeckFormat::text;
+    }
+    bool low_bits_clear = head.size() % 2 == 0;
+    for (std::size_t i = 0; low_bits_clear && i < head.size(); i += 2) {
+        low_bits_clear = (static_cast<unsigned char>(head[i]) & 0x0F) == 0;
+    }
+    if (low_bits_clear) {
+        return DeckFormat::bin;
+    }
+    return std::nullopt;
+}
+
 std::unique_ptr<CardSource> open_card_source(std::istream& in, const DeckOptions& options) {
     std::unique_ptr<CardSource> inner;
     switch (options.format) {

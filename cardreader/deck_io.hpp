@@ -24,6 +24,11 @@ enum class DeckFormat : std::uint8_t { cbn, bin, text, listing };
 std::string_view format_name(DeckFormat f);
 std::optional<DeckFormat> format_named(std::string_view name);
 std::optional<DeckFormat> format_for_path(std::string_view path);
+// The format of a deck told from its first bytes (standard input has no extension):
+// a card-start mark (bit 7 of the first byte) is column binary, a '#' or a "card," header a
+// listing, printable characters text card images, and 16-bit words whose low four bits are
+// all clear the .bin format. Nothing when the bytes fit none of them.
+std::optional<DeckFormat> sniff_format(std::string_view head);
 
 class CardSource {
 public:

@@ -19,7 +19,7 @@ struct ConvertFlags {
 
 ExitCode run_convert(const ConvertFlags& f) {
     InputDeck deck(f.input, f.deck);
-    const auto out_options = deck_options(f.output, f.to, f.deck);
+    const auto out_options = deck_options(f.output, f.to, f.deck, "--to");
     OutputFile out(f.output);
     auto sink = cardreader::open_card_sink(out.stream(), out_options);
     long cards = 0;
@@ -28,9 +28,9 @@ ExitCode run_convert(const ConvertFlags& f) {
         ++cards;
     }
     out.commit();
-    fmt::print("converted {} card{}: {} ({}) -> {} ({})\n", cards, cards == 1 ? "" : "s", f.input,
-               cardreader::format_name(deck.options().format), f.output,
-               cardreader::format_name(out_options.format));
+    fmt::print(message_stream(), "converted {} card{}: {} ({}) -> {} ({})\n", cards,
+               cards == 1 ? "" : "s", f.input, cardreader::format_name(deck.options().format),
+               f.output, cardreader::format_name(out_options.format));
     return ExitCode::ok;
 }
 

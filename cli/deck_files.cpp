@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
+#include <iterator>
 #include <sstream>
 
 namespace parsons::cli {
@@ -26,7 +28,7 @@ void add_input_flags(CLI::App& cmd, DeckFlags& flags) {
 }
 
 cardreader::DeckOptions deck_options(const std::string& path, const std::string& format_flag,
-                                     const DeckFlags& flags) {
+                                     const DeckFlags& flags, const std::string& option) {
     cardreader::DeckOptions options;
     options.file_name = path;
     if (!format_flag.empty()) {
@@ -37,13 +39,20 @@ cardreader::DeckOptions deck_options(const std::string& path, const std::string&
                                                        format_flag));
         }
         options.format = *f;
-    } else {
+    } else if (path != "-") {
         auto f = cardreader::format_for_path(path);
         if (!f) {
-            throw DeckError::in_file(path, "cannot tell the deck format from the extension; "
-                                           "give --format cbn, bin, text or listing");
+            throw DeckError::in_file(path, fmt::format("cannot tell the deck format from the "
+                                                       "extension; give {} cbn, bin, text or "
+                                                       "listing",
+                                                       option));
         }
         options.format = *f;
+    } else if (option != "--format") {
+        throw DeckError::in_file("standard output", fmt::format("a deck written to standard "
+                                                                "output needs {} cbn, bin, text "
+                                                                "or listing",
+                                                                option));
     }
     auto code = cardreader::code_named(flags.code);
     if (!code) {
@@ -61,23 +70,48 @@ cardreader::DeckOptions deck_options(const std::string& path, const std::string&
 
 InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
     : options_(deck_options(path, flags.format, flags)) {
+    if (path == "-") {
+        // Standard input, read whole: its format may have to be told from its first bytes.
+        std::string bytes{std::istreambuf_iterator<char>(std::cin),
+                          std::istreambuf_iterator<char>()};
+        if (std::cin.bad()) {
+            throw DeckError::in_file("standard input", "read error");
+        }
+        options_.file_name = "standard input";
+        if (flags.format.empty()) {
+            const auto sniffed = cardreader::sniff_format(std::string_view(bytes).substr(0, 4096));
+            if (!sniffed) {
+                throw DeckError::in_file("standard input",
+                                         bytes.empty() ? "empty: no cards"
+                                                       : "cannot tell the deck format from its "
+                                                         "first bytes; give --format cbn, bin, "
+                                                         "text or listing");
+            }
+            options_.format = *sniffed;
+        }
+        size_bytes_ = static_cast<double>(bytes.size());
+        in_ = std::make_unique<std::istringstream>(std::move(bytes));
+        source_ = cardreader::open_card_source(*in_, options_);
+        return;
+    }
     if (std::filesystem::is_directory(path)) {
         throw DeckError::in_file(path, "is a directory, not a deck");
     }
-    in_.open(path, std::ios::binary);
-    if (!in_) {
+    auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
+    if (!*file) {
         throw DeckError::in_file(path, std::string("cannot open: ") + std::strerror(errno));
     }
+    in_ = std::move(file);
     std::error_code ec;
     size_bytes_ = static_cast<double>(std::filesystem::file_size(path, ec));
-    source_ = cardreader::open_card_source(in_, options_);
+    source_ = cardreader::open_card_source(*in_, options_);
 }
 
 double InputDeck::fraction_read() {
     if (size_bytes_ <= 0) {
         return 0;
     }
-    const auto pos = in_.tellg();
+    const auto pos = in_->tellg();
     return pos < 0 ? 1.0 : std::min(1.0, static_cast<double>(pos) / size_bytes_);
 }
 

@@ -22,9 +22,11 @@ struct DeckFlags {
 
 void add_input_flags(CLI::App& cmd, DeckFlags& flags);
 
-// Resolves format (flag or extension), keypunch code and layout; throws DeckError.
+// Resolves format (flag or extension), keypunch code and layout; throws DeckError. The
+// message for a missing format names `option` (--format for an input, --to for an output).
 cardreader::DeckOptions deck_options(const std::string& path, const std::string& format_flag,
-                                     const DeckFlags& flags);
+                                     const DeckFlags& flags,
+                                     const std::string& option = "--format");
 
 // The whole of a text file; throws DeckError naming the file when it cannot be opened, with
 // `missing` as the reason, or the system's reason when `missing` is empty.
@@ -36,7 +38,8 @@ axes::MachineProfile load_profile(const std::string& file);
 // --limit AXIS=MIN:MAX (repeatable): the soft limits of the job, over the profile's.
 void apply_limits(axes::MachineProfile& profile, const std::vector<std::string>& limits);
 
-// An open input deck: the file and its card reader.
+// An open input deck: the file and its card reader. The name "-" is standard input, its
+// format given by --format or told from its first bytes.
 class InputDeck {
 public:
     InputDeck(const std::string& path, const DeckFlags& flags);
@@ -46,7 +49,7 @@ public:
     double fraction_read();
 
 private:
-    std::ifstream in_;
+    std::unique_ptr<std::istream> in_;
     double size_bytes_ = 0;
     cardreader::DeckOptions options_;
     std::unique_ptr<cardreader::CardSource> source_;

@@ -15,7 +15,7 @@ namespace parsons::cli {
 namespace {
 
 ExitCode run_demo(const std::string& dir) {
-    std::filesystem::create_directories(dir + "/cards");
+    make_folder(dir + "/cards");
     decks::JobDescription description;
     description.airfoil = "naca 2412";
     description.options.chord_in = 6.0;

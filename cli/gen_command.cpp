@@ -62,7 +62,7 @@ namespace {
 void write_cards(const std::vector<cardreader::CardOrders>& cards, const std::string& output,
                  const std::string& to) {
     DeckFlags flags;
-    const auto options = deck_options(output, to, flags);
+    const auto options = deck_options(output, to, flags, "--to");
     OutputFile deck_file(output);
     auto sink = cardreader::open_card_sink(deck_file.stream(), options);
     for (const auto& card : cards) {
@@ -112,7 +112,9 @@ GeneratedJob generate_job(const decks::JobDescription& description,
     } catch (const decks::PlanError& e) {
         throw DeckError(fmt::format("gen airfoil: {}", e.what()));
     }
-    write_file(output + ".job.json", decks::job_to_json(job.description));
+    if (output != "-") { // a deck on standard output has no file to stand beside
+        write_file(output + ".job.json", decks::job_to_json(job.description));
+    }
     if (!centres.empty()) {
         write_file(centres, csv);
     }
@@ -146,34 +148,39 @@ ExitCode run_gen(const GenFlags& f) {
     }
     const auto profile = load_profile(f.profile);
     const GeneratedJob job = generate_job(description, profile, f.output, f.to, f.centres);
+    std::FILE* out = message_stream();
     if (description.kind == decks::JobKind::wing) {
         const auto& w = job.wing;
-        fmt::print("{} tapered wing, root chord {:.3f} in, span {:.3f} in, taper {:.3f}, sweep "
+        fmt::print(out,
+                   "{} tapered wing, root chord {:.3f} in, span {:.3f} in, taper {:.3f}, sweep "
                    "{:.1f} deg, cutter radius {:.3f} in\n",
                    description.airfoil, f.chord_in, f.span_in, f.taper, f.sweep_deg, f.radius_in);
-        fmt::print("  stations         {} (one cut along the span each)\n", w.stations.size());
-        fmt::print("  cards            {} (set the section, then plunge and traverse)\n",
+        fmt::print(out, "  stations         {} (one cut along the span each)\n", w.stations.size());
+        fmt::print(out, "  cards            {} (set the section, then plunge and traverse)\n",
                    w.cards.size());
-        fmt::print("  largest scallop  {:.5f} in (planned, root and tip sections)\n",
+        fmt::print(out, "  largest scallop  {:.5f} in (planned, root and tip sections)\n",
                    w.planned_leftover_in);
-        fmt::print("  zero             cross {:.3f}, table {:.3f}, vertical {:.3f} in\n",
+        fmt::print(out, "  zero             cross {:.3f}, table {:.3f}, vertical {:.3f} in\n",
                    w.zero.x(), w.zero.y(), w.zero.z());
     } else {
         const auto& d = job.deck;
-        fmt::print("{} template, chord {:.3f} in, cutter radius {:.3f} in, {} surface{}\n",
+        fmt::print(out, "{} template, chord {:.3f} in, cutter radius {:.3f} in, {} surface{}\n",
                    description.airfoil, f.chord_in, f.radius_in, f.surface,
                    f.female ? ", female" : "");
-        fmt::print("  stations         {}\n", d.stations.size());
-        fmt::print("  cards            {} ({} to approach, {} slowed for a corner)\n",
+        fmt::print(out, "  stations         {}\n", d.stations.size());
+        fmt::print(out, "  cards            {} ({} to approach, {} slowed for a corner)\n",
                    d.cards.size(), d.cards.size() + 1 - d.stations.size(), d.corner_cards);
-        fmt::print("  largest scallop  {:.5f} in (planned, before quantising to 0.001 in)\n",
+        fmt::print(out, "  largest scallop  {:.5f} in (planned, before quantising to 0.001 in)\n",
                    d.planned_leftover_in);
-        fmt::print("  largest dip      {:.5f} in (staircase traverse into the design)\n",
+        fmt::print(out, "  largest dip      {:.5f} in (staircase traverse into the design)\n",
                    d.planned_gouge_in);
-        fmt::print("  work zero        table {:.3f} in, cross slide {:.3f} in (the leading edge)\n",
+        fmt::print(out,
+                   "  work zero        table {:.3f} in, cross slide {:.3f} in (the leading edge)\n",
                    d.work_zero_in.x(), d.work_zero_in.y());
     }
-    fmt::print("  wrote            {} and {}.job.json{}\n", f.output, f.output,
+    fmt::print(out, "  wrote            {}{}{}\n", f.output == "-" ? "standard output" : f.output,
+               f.output == "-" ? " (no job description: give run --job for --cut)"
+                               : " and " + f.output + ".job.json",
                f.centres.empty() ? "" : " and " + f.centres);
     return ExitCode::ok;
 }

@@ -1,18 +1,35 @@
 // parsons: the punched-card numerical control of Parsons and Stulen (US 2,820,187), emulated.
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
+#include "cli/output_file.hpp"
 
 #include "cardreader/deck_error.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <system_error>
+
+namespace {
+
+// The message for an error, and exit 2: standard output that cannot be written is a
+// failed output like any other.
+int write_error(const std::string& message) {
+    fmt::print(stderr, "parsons: error: {}\n", message);
+    return parsons::cli::to_int(parsons::cli::ExitCode::bad_input);
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     using namespace parsons::cli;
+    // A reader that goes away (a closed pipe or FIFO) is a write error with a message and
+    // exit 2, not a silent death by SIGPIPE.
+    std::signal(SIGPIPE, SIG_IGN);
     CLI::App app{"parsons: an emulator of the 1952 Parsons-Stulen punched-card milling machine "
                  "control (US 2,820,187)"};
     app.require_subcommand(1);
@@ -49,14 +66,27 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         const int code = app.exit(e);
+        try {
+            finish_standard_output();
+        } catch (const parsons::cardreader::DeckError& error) {
+            return write_error(error.what());
+        }
         return code == 0 ? 0 : to_int(ExitCode::bad_input);
     }
     try {
-        return to_int(selected());
+        const ExitCode code = selected();
+        finish_standard_output();
+        return to_int(code);
     } catch (const parsons::cardreader::DeckError& e) {
         std::fflush(stdout);
-        fmt::print(stderr, "parsons: error: {}\n", e.what());
-        return to_int(ExitCode::bad_input);
+        return write_error(e.what());
+    } catch (const std::system_error& e) {
+        // fmt reports a failed write to standard output this way.
+        if (std::ferror(stdout) != 0) {
+            return write_error("standard output: cannot write: " + e.code().message());
+        }
+        fmt::print(stderr, "parsons: internal error: {} (please report this)\n", e.what());
+        return to_int(ExitCode::internal);
     } catch (const std::exception& e) {
         std::fflush(stdout);
         fmt::print(stderr, "parsons: internal error: {} (please report this)\n", e.what());

@@ -21,7 +21,7 @@ ExitCode run_punch(const PunchFlags& f) {
     DeckFlags in = f.deck;
     in.format = "listing";
     InputDeck listing(f.listing, in);
-    const auto out_options = deck_options(f.output, f.to, f.deck);
+    const auto out_options = deck_options(f.output, f.to, f.deck, "--to");
     OutputFile out(f.output);
     auto sink = cardreader::open_card_sink(out.stream(), out_options);
     long cards = 0;
@@ -30,9 +30,9 @@ ExitCode run_punch(const PunchFlags& f) {
         ++cards;
     }
     out.commit();
-    fmt::print("punched {} card{} from {} into {} ({}, layout {})\n", cards, cards == 1 ? "" : "s",
-               f.listing, f.output, cardreader::format_name(out_options.format),
-               out_options.layout->name);
+    fmt::print(message_stream(), "punched {} card{} from {} into {} ({}, layout {})\n", cards,
+               cards == 1 ? "" : "s", f.listing, f.output,
+               cardreader::format_name(out_options.format), out_options.layout->name);
     return ExitCode::ok;
 }
 

@@ -324,12 +324,14 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
                 state_json(result, cabinet.resume_point(), profile, fault_specs, f.input).dump(1) +
                     "\n");
         } else if (!f.quiet) {
-            fmt::print("  state          the deck completed: no state to save ({} not written)\n",
+            fmt::print(message_stream(),
+                       "  state          the deck completed: no state to save ({} not written)\n",
                        f.save_state);
         }
     }
     if (!f.quiet) {
-        fmt::print("{}{}", summary_text(result, f.input, profile.name), cut_summary);
+        fmt::print(message_stream(), "{}{}", summary_text(result, f.input, profile.name),
+                   cut_summary);
     }
     if (result.stop && result.stop->reason == relaylogic::StopReason::interrupted) {
         fmt::print(stderr, "parsons: interrupted: {}\n", result.stop->message);

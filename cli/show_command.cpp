@@ -75,12 +75,7 @@ ExitCode run_show(const ShowFlags& f) {
     InputDeck deck(f.input, f.deck);
     const CardLayout& layout = *deck.options().layout;
     if (!f.svg_dir.empty()) {
-        std::error_code ec;
-        std::filesystem::create_directories(f.svg_dir, ec);
-        if (ec || !std::filesystem::is_directory(f.svg_dir)) {
-            throw DeckError::in_file(f.svg_dir, "cannot create the picture directory: " +
-                                                    (ec ? ec.message() : "not a directory"));
-        }
+        make_folder(f.svg_dir);
     }
     fmt::print("deck {} ({}, layout {})\n\n", f.input, format_name(deck.options().format),
                layout.name);

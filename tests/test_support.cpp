@@ -30,8 +30,29 @@ std::string read_error(const std::string& bytes, cardreader::DeckFormat format,
     return "no error";
 }
 
+namespace {
+
+ProcessResult run_command(const std::string& command);
+
+} // namespace
+
 ProcessResult run_parsons(const std::string& args) {
-    const std::string command = std::string("'") + PARSONS_EXE + "' " + args + " 2>&1";
+    return run_command(std::string("'") + PARSONS_EXE + "' " + args + " 2>&1");
+}
+
+ProcessResult run_shell(const std::string& command_line) {
+    std::string command = "{ " + command_line + " ; } 2>&1";
+    const std::string exe = std::string("'") + PARSONS_EXE + "'";
+    for (auto at = command.find("PARSONS"); at != std::string::npos;
+         at = command.find("PARSONS", at + exe.size())) {
+        command.replace(at, 7, exe);
+    }
+    return run_command(command);
+}
+
+namespace {
+
+ProcessResult run_command(const std::string& command) {
     ProcessResult result;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) {
@@ -46,6 +67,8 @@ ProcessResult run_parsons(const std::string& args) {
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;
 }
+
+} // namespace
 
 TempDir::TempDir() {
     static std::mt19937_64 rng{std::random_device{}()};

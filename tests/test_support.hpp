@@ -27,6 +27,8 @@ std::string read_error(const std::string& bytes, cardreader::DeckFormat format,
 
 // Runs `parsons ARGS` through the shell; ARGS is pasted verbatim.
 ProcessResult run_parsons(const std::string& args);
+// Runs a whole shell command line; the word PARSONS in it stands for the executable.
+ProcessResult run_shell(const std::string& command_line);
 
 // A fresh directory under the system temp dir, removed when the object goes.
 class TempDir {
