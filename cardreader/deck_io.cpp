@@ -7,6 +7,7 @@
 #include "cardreader/text_format.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cctype>
 
 namespace parsons::cardreader {
@@ -82,22 +83,61 @@ std::optional<DeckFormat> format_for_path(std::string_view path) {
     return std::nullopt;
 }
 
+namespace {
+
+// Every first byte of a column's pair has its low four bits clear (the .bin layout).
+bool bin_words(std::string_view bytes) {
+    if (bytes.size() % 2 != 0) {
+        return false;
+    }
+    for (std::size_t i = 0; i < bytes.size(); i += 2) {
+        if ((static_cast<unsigned char>(bytes[i]) & 0x0F) != 0) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// Bytes 2..160 without the card-start mark, every byte (bits 6..0) of odd parity.
+bool cbn_card(std::string_view bytes) {
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        const auto b = static_cast<unsigned char>(bytes[i]);
+        if ((i > 0 && (b & 0x80) != 0) || std::popcount(static_cast<unsigned>(b & 0x7F)) % 2 != 1) {
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace
+
 std::optional<DeckFormat> sniff_format(std::string_view head) {
     if (head.empty()) {
         return std::nullopt;
     }
-    if ((static_cast<unsigned char>(head[0]) & 0x80) != 0 && head.substr(0, 3) != "\xEF\xBB\xBF") {
-        return DeckFormat::cbn;
-    }
     std::string_view text = head;
-    if (text.substr(0, 3) == "\xEF\xBB\xBF") {
-        text.remove_prefix(3); // a spreadsheet's UTF-8 byte-order mark
+    if (text.starts_with("\xEF\xBB\xBF")) {
+        text.remove_prefix(3); // a spreadsheet's UTF-8 byte-order mark: a listing
     }
     std::string start(text.substr(0, 5));
     std::transform(start.begin(), start.end(), start.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (start.starts_with("#") || start == "card,") {
         return DeckFormat::listing;
+    }
+    // As sim_card.c tells them: a first card whose every byte has odd parity and whose first
+    // alone has the card-start mark is column binary; else a whole first card of .bin words is
+    // binary; else a card-start mark still says column binary (a damaged card: its reader
+    // names the fault); anything else is text.
+    const bool mark = (static_cast<unsigned char>(head[0]) & 0x80) != 0;
+    if (mark && head.size() >= 160 && cbn_card(head.substr(0, 160))) {
+        return DeckFormat::cbn;
+    }
+    if (head.size() >= 160 && bin_words(head.substr(0, 160))) {
+        return DeckFormat::bin;
+    }
+    if (mark) {
+        return DeckFormat::cbn;
     }
     const bool printable = std::all_of(text.begin(), text.end(), [](char c) {
         const auto u = static_cast<unsigned char>(c);
@@ -106,12 +146,42 @@ std::optional<DeckFormat> sniff_format(std::string_view head) {
     if (printable) {
         return DeckFormat::text;
     }
-    bool low_bits_clear = head.size() % 2 == 0;
-    for (std::size_t i = 0; low_bits_clear && i < head.size(); i += 2) {
-        low_bits_clear = (static_cast<unsigned char>(head[i]) & 0x0F) == 0;
+    if (bin_words(head)) {
+        return DeckFormat::bin; // a short one: its reader says where it ends
     }
-    if (low_bits_clear) {
-        return DeckFormat::bin;
+    return std::nullopt;
+}
+
+std::optional<std::string> non_deck_kind(std::string_view head) {
+    struct Magic {
+        std::string_view start;
+        const char* kind;
+    };
+    static constexpr Magic kMagic[] = {
+        {"\x89PNG\r\n\x1a\n", "a PNG image"},
+        {"%PDF-", "a PDF document"},
+        {"GIF87a", "a GIF image"},
+        {"GIF89a", "a GIF image"},
+        {"\xFF\xD8\xFF", "a JPEG image"},
+        {"PK\x03\x04", "a ZIP archive (an office document?)"},
+        {"\x1F\x8B", "a gzip-compressed file (gunzip it first)"},
+        {"\xFD"
+         "7zXZ",
+         "an xz-compressed file"},
+        {"\x7F"
+         "ELF",
+         "an ELF executable"},
+        {"<?xml", "an XML file"},
+        {"<svg", "an SVG picture"},
+        {"$date", "a VCD trace"},
+        {"$version", "a VCD trace"},
+        {"$timescale", "a VCD trace"},
+        {"{", "a JSON file (a report, a job or a state?)"},
+    };
+    for (const Magic& m : kMagic) {
+        if (head.starts_with(m.start)) {
+            return std::string(m.kind);
+        }
     }
     return std::nullopt;
 }

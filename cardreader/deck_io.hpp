@@ -29,6 +29,9 @@ std::optional<DeckFormat> format_for_path(std::string_view path);
 // listing, printable characters text card images, and 16-bit words whose low four bits are
 // all clear the .bin format. Nothing when the bytes fit none of them.
 std::optional<DeckFormat> sniff_format(std::string_view head);
+// "a PNG image", "a PDF document" ...: what a common file that is no deck is, from its magic
+// number, so that the error says so. Nothing when the bytes look like none of them.
+std::optional<std::string> non_deck_kind(std::string_view head);
 
 class CardSource {
 public:

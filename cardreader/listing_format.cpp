@@ -223,6 +223,24 @@ private:
 ListingReader::ListingReader(std::istream& in, std::string file)
     : in_(in), file_(std::move(file)) {}
 
+namespace {
+
+// What is wrong with a header line: the first word that differs, or the count.
+template <typename Words>
+std::string header_mismatch(const Words& names, const Words& expected) {
+    for (std::size_t i = 0; i < std::min(names.size(), expected.size()); ++i) {
+        if (names[i] != expected[i]) {
+            return fmt::format("expected the header line '{}' first: its field {} is '{}', not "
+                               "'{}'",
+                               kListingHeader, i + 1, names[i], expected[i]);
+        }
+    }
+    return fmt::format("expected the header line '{}' first: it has {} fields, not {}",
+                       kListingHeader, names.size(), expected.size());
+}
+
+} // namespace
+
 std::optional<std::string> ListingReader::next_data_line() {
     std::string line;
     while (true) {
@@ -244,6 +262,9 @@ std::optional<std::string> ListingReader::next_data_line() {
             return std::nullopt;
         }
         ++line_;
+        if (line_ == 1 && line.starts_with("\xEF\xBB\xBF")) {
+            line.erase(0, 3); // a spreadsheet's "CSV UTF-8" begins with a byte-order mark
+        }
         if (!line.empty() && line.back() == '\r') {
             line.pop_back();
         }
@@ -256,9 +277,7 @@ std::optional<std::string> ListingReader::next_data_line() {
             auto names = split_fields(data);
             auto expected = split_fields(kListingHeader);
             if (names != expected) {
-                throw DeckError::at_line(
-                    file_, line_,
-                    fmt::format("expected the header line '{}' first", kListingHeader));
+                throw DeckError::at_line(file_, line_, header_mismatch(names, expected));
             }
             header_seen_ = true;
             continue;

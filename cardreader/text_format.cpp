@@ -4,7 +4,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <istream>
+#include <optional>
 #include <ostream>
 #include <streambuf>
 
@@ -18,29 +20,154 @@ std::string describe_char(int ch) {
     return fmt::format("byte {:#04x}", ch);
 }
 
+// SIMH's end-of-record card, ~eor: rows 7, 8, 9 in column 1 alone (sim_card.c). Its ~eof
+// (rows 6, 7, 9) and ~eoi (rows 6, 7, 8, 9) end a deck here, so they are never written.
+constexpr ColumnWord kEndOfRecord = 07;
+
+bool only_column_1(const Card& card, ColumnWord word) {
+    if (card.column(1) != word) {
+        return false;
+    }
+    for (int c = 2; c <= kColumns; ++c) {
+        if (card.column(c) != 0) {
+            return false;
+        }
+    }
+    return true;
+}
+
+std::string lower(std::string_view text) {
+    std::string out(text);
+    for (char& c : out) {
+        c = (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+    }
+    return out;
+}
+
 class TextSource : public CardSource {
 public:
     TextSource(std::istream& in, std::string file, KeypunchCode code)
         : buf_(*in.rdbuf()), file_(std::move(file)), code_(code) {}
 
     std::optional<Card> next() override {
+        if (ended_) {
+            return std::nullopt;
+        }
+        const std::optional<std::string> line = read_line();
+        if (!line) {
+            return std::nullopt;
+        }
+        if (!line->empty() && (*line)[0] == '~') {
+            return control_line(*line);
+        }
+        return characters(*line);
+    }
+
+private:
+    // The next line without its end (LF, or CRLF); nothing at the end of the file.
+    std::optional<std::string> read_line() {
         using traits = std::streambuf::traits_type;
         int ch = buf_.sbumpc();
         if (ch == traits::eof()) {
             return std::nullopt;
         }
         ++line_;
-        Card card;
-        int col = 0; // columns filled so far
+        std::string line;
         for (; ch != traits::eof() && ch != '\n'; ch = buf_.sbumpc()) {
             if (ch == '\r') {
-                int after = buf_.sgetc();
+                const int after = buf_.sgetc();
                 if (after == '\n' || after == traits::eof()) {
                     continue;
                 }
-                throw DeckError::at_line_column(file_, line_, col + 1,
+                throw DeckError::at_line_column(file_, line_, column_of(line) + 1,
                                                 "carriage return inside a line");
             }
+            line += static_cast<char>(ch);
+        }
+        return line;
+    }
+
+    // The card column a character at the end of `line` would fall in (tabs expanded).
+    static int column_of(const std::string& line) {
+        int col = 0;
+        for (char c : line) {
+            col = c == '\t' ? (col | 7) + 1 : col + 1;
+        }
+        return col;
+    }
+
+    // SIMH's lines that begin with '~' (sim_card.c): "~raw" and 80 octal column words, the
+    // control cards ~eor, ~eof, ~eoi, and a lone '~' that ends the deck.
+    std::optional<Card> control_line(const std::string& line) {
+        const std::string rest = line.substr(1);
+        if (rest.find_first_not_of(" \t") == std::string::npos) {
+            ended_ = true; // a lone '~': the end of the file, as SIMH's EOF flag
+            return std::nullopt;
+        }
+        const std::string word = lower(rest.substr(0, 3));
+        const std::string after = rest.substr(std::min<std::size_t>(3, rest.size()));
+        const bool bare = after.find_first_not_of(" \t") == std::string::npos;
+        if (word == "raw") {
+            return raw_card(after);
+        }
+        if (bare && word == "eor") {
+            Card card;
+            card.set_column(1, kEndOfRecord);
+            return card;
+        }
+        if (bare && (word == "eof" || word == "eoi")) {
+            // An end-of-file or end-of-input card closes the deck: the hopper's end.
+            ended_ = true;
+            return std::nullopt;
+        }
+        throw DeckError::at_line_column(
+            file_, line_, 1,
+            fmt::format("'{}' is no SIMH control line (~raw followed by octal column words, "
+                        "~eor, ~eof, ~eoi, or a lone ~); '~' is no keypunch character",
+                        line.substr(0, 12)));
+    }
+
+    // "~raw": four octal digits a column, rows 12 .. 9, as many columns as given (at most 80).
+    Card raw_card(const std::string& digits) {
+        Card card;
+        int col = 0;
+        int got = 0;
+        ColumnWord word = 0;
+        for (std::size_t i = 0; i < digits.size(); ++i) {
+            const char c = digits[i];
+            if (c < '0' || c > '7') {
+                throw DeckError::at_line_column(
+                    file_, line_, static_cast<int>(i) + 5,
+                    fmt::format("{} in a ~raw card: each column is four octal digits 0-7 (rows "
+                                "12-11-0 .. 7-8-9)",
+                                describe_char(static_cast<unsigned char>(c))));
+            }
+            if (col >= kColumns) {
+                throw DeckError::at_line_column(
+                    file_, line_, static_cast<int>(i) + 5,
+                    "a ~raw card has more than 80 columns (320 octal digits)");
+            }
+            word = static_cast<ColumnWord>(word << 3 | (c - '0'));
+            if (++got == 4) { // four octal digits: 12 bits, every row and nothing more
+                card.set_column(++col, word);
+                word = 0;
+                got = 0;
+            }
+        }
+        if (got != 0) {
+            throw DeckError::at_line_column(
+                file_, line_, static_cast<int>(digits.size()) + 4,
+                fmt::format("a ~raw card ends inside a column word ({} of its 4 octal digits)",
+                            got));
+        }
+        return card;
+    }
+
+    Card characters(const std::string& line) {
+        Card card;
+        int col = 0; // columns filled so far
+        for (char c : line) {
+            const int ch = static_cast<unsigned char>(c);
             if (ch == '\t') {
                 col = (col | 7) + 1;
                 if (col > kColumns) {
@@ -65,7 +192,6 @@ public:
         return card;
     }
 
-private:
     DeckError too_long() const {
         return DeckError::at_line_column(
             file_, line_, kColumns + 1,
@@ -76,6 +202,7 @@ private:
     std::string file_;
     KeypunchCode code_;
     long line_ = 0;
+    bool ended_ = false;
 };
 
 class TextSink : public CardSink {
@@ -85,23 +212,45 @@ public:
 
     void write(const Card& card) override {
         ++card_;
+        if (only_column_1(card, kEndOfRecord)) {
+            out_ << "~eor\n";
+        } else if (auto line = as_characters(card)) {
+            out_ << *line << '\n';
+        } else {
+            out_ << raw_line(card) << '\n';
+        }
+        if (!out_) {
+            throw DeckError::in_file(file_, "write error");
+        }
+    }
+
+    // The card as keypunch characters, trailing blanks trimmed; nothing when a column holds
+    // holes no key makes, or when the line would read back as a SIMH control line.
+    std::optional<std::string> as_characters(const Card& card) const {
         std::string line;
         for (int c = 1; c <= kColumns; ++c) {
             const CodeEntry* e = entry_for_punches(card.column(c), code_);
             if (!e) {
-                throw DeckError::at_card_column(
-                    file_, card_, c,
-                    fmt::format("punches {} are no character of the IBM {} keypunch, so this card "
-                                "cannot be written as a text card image (use .cbn or .bin)",
-                                punches_text(card.column(c)), code_name(code_)));
+                return std::nullopt;
             }
             line += e->ascii;
         }
         line.erase(line.find_last_not_of(' ') + 1);
-        out_ << line << '\n';
-        if (!out_) {
-            throw DeckError::in_file(file_, "write error");
+        if (!line.empty() && line[0] == '~') {
+            return std::nullopt;
         }
+        return line;
+    }
+
+    // As SIMH's punch writes a card that is not all characters: "~raw" and 80 four-digit
+    // octal column words (an end-of-file or end-of-input card too, which as ~eof or ~eoi
+    // would end the deck when read back).
+    static std::string raw_line(const Card& card) {
+        std::string line = "~raw";
+        for (int c = 1; c <= kColumns; ++c) {
+            line += fmt::format("{:04o}", card.column(c));
+        }
+        return line;
     }
 
 private:

@@ -17,10 +17,20 @@ namespace parsons::cli {
 
 using cardreader::DeckError;
 
+namespace {
+
+// Where --format auto (the default) finds no extension it knows: the first bytes decide.
+constexpr auto kFormatFromBytes = static_cast<cardreader::DeckFormat>(0xFF);
+constexpr std::size_t kHeadBytes = 4096;
+
+} // namespace
+
 void add_input_flags(CLI::App& cmd, DeckFlags& flags) {
-    cmd.add_option("--format", flags.format,
-                   "Input deck format: cbn, bin, text or listing (default: from the extension: "
-                   ".cbn .bin .txt/.crd/.card/.cards .csv/.lst)");
+    cmd.add_option(
+        "--format", flags.format,
+        "Input deck format: auto, cbn, bin, text or listing (auto, the default: from the "
+        "extension .cbn .bin .txt/.crd/.card/.cards .csv/.lst, else from the first "
+        "bytes as SIMH tells them; - reads standard input)");
     cmd.add_option("--code", flags.code, "Keypunch code of text card images: 029 or 026")
         ->capture_default_str();
     cmd.add_option("--layout", flags.layout, "Card layout (the reader's plugboard)")
@@ -31,28 +41,29 @@ cardreader::DeckOptions deck_options(const std::string& path, const std::string&
                                      const DeckFlags& flags, const std::string& option) {
     cardreader::DeckOptions options;
     options.file_name = path;
-    if (!format_flag.empty()) {
+    const bool output = option != "--format";
+    if (!format_flag.empty() && format_flag != "auto") {
         auto f = cardreader::format_named(format_flag);
         if (!f) {
-            throw DeckError::in_file(path, fmt::format("unknown format '{}' (cbn, bin, text or "
-                                                       "listing)",
-                                                       format_flag));
+            throw DeckError::in_file(path,
+                                     fmt::format("unknown format '{}' for {} (cbn, bin, "
+                                                 "text or listing{})",
+                                                 format_flag, option, output ? "" : ", or auto"));
         }
         options.format = *f;
-    } else if (path != "-") {
-        auto f = cardreader::format_for_path(path);
-        if (!f) {
-            throw DeckError::in_file(path, fmt::format("cannot tell the deck format from the "
-                                                       "extension; give {} cbn, bin, text or "
-                                                       "listing",
-                                                       option));
-        }
+    } else if (auto f = cardreader::format_for_path(path); f && path != "-") {
         options.format = *f;
-    } else if (option != "--format") {
-        throw DeckError::in_file("standard output", fmt::format("a deck written to standard "
-                                                                "output needs {} cbn, bin, text "
-                                                                "or listing",
-                                                                option));
+    } else if (output) {
+        throw DeckError::in_file(
+            path == "-" ? "standard output" : path,
+            path == "-" ? fmt::format("a deck written to standard output needs {} cbn, bin, "
+                                      "text or listing",
+                                      option)
+                        : fmt::format("cannot tell the deck format from the extension; give {} "
+                                      "cbn, bin, text or listing",
+                                      option));
+    } else {
+        options.format = kFormatFromBytes;
     }
     auto code = cardreader::code_named(flags.code);
     if (!code) {
@@ -70,6 +81,8 @@ cardreader::DeckOptions deck_options(const std::string& path, const std::string&
 
 InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
     : options_(deck_options(path, flags.format, flags)) {
+    const bool from_bytes = options_.format == kFormatFromBytes;
+    std::string head;
     if (path == "-") {
         // Standard input, read whole: its format may have to be told from its first bytes.
         std::string bytes{std::istreambuf_iterator<char>(std::cin),
@@ -78,32 +91,42 @@ InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
             throw DeckError::in_file("standard input", "read error");
         }
         options_.file_name = "standard input";
-        if (flags.format.empty()) {
-            const auto sniffed = cardreader::sniff_format(std::string_view(bytes).substr(0, 4096));
-            if (!sniffed) {
-                throw DeckError::in_file("standard input",
-                                         bytes.empty() ? "empty: no cards"
-                                                       : "cannot tell the deck format from its "
-                                                         "first bytes; give --format cbn, bin, "
-                                                         "text or listing");
-            }
-            options_.format = *sniffed;
-        }
+        head = bytes.substr(0, kHeadBytes);
         size_bytes_ = static_cast<double>(bytes.size());
         in_ = std::make_unique<std::istringstream>(std::move(bytes));
-        source_ = cardreader::open_card_source(*in_, options_);
-        return;
+    } else {
+        if (std::filesystem::is_directory(path)) {
+            throw DeckError::in_file(path, "is a directory, not a deck");
+        }
+        auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
+        if (!*file) {
+            throw DeckError::in_file(path, std::string("cannot open: ") + std::strerror(errno));
+        }
+        head.resize(kHeadBytes);
+        file->read(head.data(), static_cast<std::streamsize>(head.size()));
+        head.resize(static_cast<std::size_t>(file->gcount()));
+        file->clear();
+        file->seekg(0);
+        in_ = std::move(file);
+        std::error_code ec;
+        size_bytes_ = static_cast<double>(std::filesystem::file_size(path, ec));
     }
-    if (std::filesystem::is_directory(path)) {
-        throw DeckError::in_file(path, "is a directory, not a deck");
+    if (auto kind = cardreader::non_deck_kind(head)) {
+        throw DeckError::in_file(options_.file_name, "this is " + *kind + ", not a deck of cards");
     }
-    auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
-    if (!*file) {
-        throw DeckError::in_file(path, std::string("cannot open: ") + std::strerror(errno));
+    if (from_bytes) {
+        const auto sniffed = cardreader::sniff_format(head);
+        if (!sniffed) {
+            throw DeckError::in_file(options_.file_name,
+                                     head.empty()
+                                         ? std::string("empty file: no cards")
+                                         : fmt::format("cannot tell the deck format from {}its "
+                                                       "first bytes; give --format cbn, bin, "
+                                                       "text or listing",
+                                                       path == "-" ? "" : "the extension or "));
+        }
+        options_.format = *sniffed;
     }
-    in_ = std::move(file);
-    std::error_code ec;
-    size_bytes_ = static_cast<double>(std::filesystem::file_size(path, ec));
     source_ = cardreader::open_card_source(*in_, options_);
 }
 

@@ -152,14 +152,21 @@ TEST_CASE("CLI: bad input files give exit 2, a message naming where, and no outp
     }
 }
 
-TEST_CASE("CLI: a text deck that cannot hold a fig8 card is refused by card and column",
-          "[cli][bad-input]") {
+TEST_CASE("CLI: a fig8 deck goes into a text deck as SIMH ~raw cards and comes back the same",
+          "[cli][simh]") {
     TempDir dir;
-    auto r = run_parsons("punch " + q(source_path(kSample)) + " -o " + q(dir.str("s.txt")));
-    CHECK(r.exit_code == 2);
-    CHECK(r.output.find("s.txt: card 1, column 2: punches 12-0 are no character of the IBM 029 "
-                        "keypunch") != std::string::npos);
-    CHECK_FALSE(std::filesystem::exists(dir.path("s.txt")));
+    REQUIRE(
+        run_parsons("punch " + q(source_path(kSample)) + " -o " + q(dir.str("s.cbn"))).exit_code ==
+        0);
+    auto r = run_parsons("convert " + q(dir.str("s.cbn")) + " -o " + q(dir.str("s.txt")));
+    REQUIRE(r.exit_code == 0);
+    const std::string text = read_bytes(dir.path("s.txt"));
+    CHECK(std::count(text.begin(), text.end(), '\n') == 4);
+    CHECK(text.starts_with("~raw"));
+    REQUIRE(
+        run_parsons("convert " + q(dir.str("s.txt")) + " -o " + q(dir.str("back.cbn"))).exit_code ==
+        0);
+    CHECK(read_bytes(dir.path("back.cbn")) == read_bytes(dir.path("s.cbn")));
 }
 
 TEST_CASE("CLI: usage errors exit 2, --help exits 0 with an example", "[cli]") {
@@ -173,10 +180,18 @@ TEST_CASE("CLI: usage errors exit 2, --help exits 0 with an example", "[cli]") {
     auto missing = run_parsons("show /nonexistent/deck.cbn");
     CHECK(missing.exit_code == 2);
     CHECK(missing.output.find("/nonexistent/deck.cbn: cannot open") != std::string::npos);
-    auto unknown = run_parsons("show deck.xyz");
+    TempDir dir;
+    write_bytes(dir.path("deck.xyz"), std::string("\x01\x02\x03\x04", 4));
+    auto unknown = run_parsons("show " + q(dir.str("deck.xyz")));
     CHECK(unknown.exit_code == 2);
-    CHECK(unknown.output.find("deck.xyz: cannot tell the deck format from the extension") !=
+    CHECK(unknown.output.find("deck.xyz: cannot tell the deck format from the extension or its "
+                              "first bytes; give --format cbn, bin, text or listing") !=
           std::string::npos);
+    auto unknown_out =
+        run_parsons("convert " + q(source_path(kSample)) + " -o " + q(dir.str("out.xyz")));
+    CHECK(unknown_out.exit_code == 2);
+    CHECK(unknown_out.output.find("out.xyz: cannot tell the deck format from the extension; give "
+                                  "--to cbn") != std::string::npos);
     for (const char* cmd : {"punch", "show", "convert"}) {
         INFO(cmd);
         auto help = run_parsons(std::string(cmd) + " --help");

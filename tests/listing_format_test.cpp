@@ -126,7 +126,8 @@ TEST_CASE("Listing: a second slow-down where the layout has none names the row",
 TEST_CASE("Listing: other malformed rows are named by line", "[listing][bad-input]") {
     CHECK(read_error("card,axis\n") ==
           "deck.csv:1: expected the header line "
-          "'card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq' first");
+          "'card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq' first: its field 2 is "
+          "'axis', not 'spindle'");
     CHECK(read_error(kHeader + "1,0,table,+,3\n") ==
           "deck.csv:2: expected 10 comma-separated fields "
           "(card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq), found 5");
@@ -151,4 +152,22 @@ TEST_CASE("Listing: other malformed rows are named by line", "[listing][bad-inpu
 TEST_CASE("Listing: an empty file, or a header alone, is an error", "[listing][bad-input]") {
     CHECK(read_error("") == "deck.csv: empty file: the deck has no cards");
     CHECK(read_error(kHeader) == "deck.csv: empty file: the deck has no cards");
+}
+
+TEST_CASE("Listing: a spreadsheet's UTF-8 byte-order mark is read past", "[listing]") {
+    const std::string listing = kHeader + card_rows(1);
+    CHECK(round_trip("\xEF\xBB\xBF" + listing) == round_trip(listing));
+    // Only at the very start: anywhere else it is a bad field.
+    CHECK(read_error(kHeader + "\xEF\xBB\xBF" + card_rows(1)) != "no error");
+}
+
+TEST_CASE("Listing: a header with a typo names the wrong word", "[listing][bad-input]") {
+    CHECK(read_error("card,spindle,axsi,motion,speed,slow1,slow2,stop,check,seq\n") ==
+          "deck.csv:1: expected the header line "
+          "'card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq' first: its field 3 is "
+          "'axsi', not 'axis'");
+    CHECK(read_error("card,spindle,axis,motion,speed,slow1,slow2,stop,check\n") ==
+          "deck.csv:1: expected the header line "
+          "'card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq' first: it has 9 fields, "
+          "not 10");
 }

@@ -98,20 +98,82 @@ TEST_CASE("Text cards: the 026 code reads its own characters", "[text]") {
     CHECK(cards[0].column(2) == (row_bit(Row::r0) | row_bit(Row::r8) | row_bit(Row::r4)));
 }
 
-TEST_CASE("Text cards: a column no key makes is refused, never altered", "[text][bad-input]") {
+TEST_CASE("Text cards: a card no keys make is written as SIMH's ~raw and read back the same",
+          "[text][simh]") {
     Card card;
     card.set_column(1, ch('A'));
     card.set_column(7, row_bit(Row::r12) | row_bit(Row::r0)); // 12-0: no 029 key
+    card.set_column(80, kAllRowsMask);                        // every row: a lace punch
     std::ostringstream out;
     auto sink = make_text_sink(out, "out.txt", KeypunchCode::ibm029);
-    try {
-        sink->write(card);
-        FAIL("the text writer accepted a column no key makes");
-    } catch (const DeckError& e) {
-        CHECK(std::string(e.what()) ==
-              "out.txt: card 1, column 7: punches 12-0 are no character of the IBM 029 keypunch, "
-              "so this card cannot be written as a text card image (use .cbn or .bin)");
+    sink->write(card);
+    // 80 column words of four octal digits, rows 12 .. 9: 'A' is 12-1 = 4400 octal.
+    std::string expected =
+        "~raw4400" + std::string(5 * 4, '0') + "5000" + std::string(72 * 4, '0') + "7777\n";
+    CHECK(out.str() == expected);
+    const auto back = read_text(out.str());
+    REQUIRE(back.size() == 1);
+    CHECK(back[0] == card);
+}
+
+TEST_CASE("Text cards: ~raw with fewer words leaves the rest blank, any case", "[text][simh]") {
+    const auto cards = read_text("~RAW00070001\n~raw\n");
+    REQUIRE(cards.size() == 2);
+    CHECK(cards[0].column(1) == 07);
+    CHECK(cards[0].column(2) == row_bit(Row::r9));
+    for (int c = 3; c <= kColumns; ++c) {
+        CHECK(cards[0].column(c) == 0);
     }
+    CHECK(cards[1].blank());
+}
+
+TEST_CASE("Text cards: a bad ~raw line is named by line and column", "[text][simh][bad-input]") {
+    CHECK(read_error("~raw0008\n") == "deck.txt:1:8: '8' in a ~raw card: each column is four "
+                                      "octal digits 0-7 (rows 12-11-0 .. 7-8-9)");
+    CHECK(read_error("A\n~raw00 7\n") == "deck.txt:2:7: byte 0x20 in a ~raw card: each column "
+                                         "is four octal digits 0-7 (rows 12-11-0 .. 7-8-9)");
+    CHECK(read_error("~raw000\n") ==
+          "deck.txt:1:7: a ~raw card ends inside a column word (3 of its 4 octal digits)");
+    CHECK(read_error("~raw" + std::string(320, '0') + "0\n") ==
+          "deck.txt:1:325: a ~raw card has more than 80 columns (320 octal digits)");
+    CHECK(read_text("~raw" + std::string(320, '1') + "\n").size() == 1);
+    CHECK(read_error("~frob\n") ==
+          "deck.txt:1:1: '~frob' is no SIMH control line (~raw followed by octal column words, "
+          "~eor, ~eof, ~eoi, or a lone ~); '~' is no keypunch character");
+}
+
+TEST_CASE("Text cards: ~eor is the 7-8-9 card, written back as ~eor", "[text][simh]") {
+    const auto cards = read_text("A\n~eor\nB\n");
+    REQUIRE(cards.size() == 3);
+    CHECK(cards[1].column(1) == (row_bit(Row::r7) | row_bit(Row::r8) | row_bit(Row::r9)));
+    for (int c = 2; c <= kColumns; ++c) {
+        CHECK(cards[1].column(c) == 0);
+    }
+    std::ostringstream out;
+    auto sink = make_text_sink(out, "out.txt", KeypunchCode::ibm029);
+    for (const Card& c : cards) {
+        sink->write(c);
+    }
+    CHECK(out.str() == "A\n~eor\nB\n");
+}
+
+TEST_CASE("Text cards: ~eof, ~eoi and a lone ~ end the deck, nothing after them is read",
+          "[text][simh]") {
+    for (const char* end : {"~eof", "~EOI", "~", "~  \t"}) {
+        INFO(end);
+        const auto cards = read_text(std::string("A\nB\n") + end + "\nC\nD\n");
+        REQUIRE(cards.size() == 2);
+        CHECK(cards[1].column(1) == ch('B'));
+    }
+    // An end-of-file card of holes (6-7-9) is written as ~raw, so that it reads back as a card
+    // rather than ending the deck.
+    Card eof_card;
+    eof_card.set_column(1, 015);
+    std::ostringstream out;
+    auto sink = make_text_sink(out, "out.txt", KeypunchCode::ibm029);
+    sink->write(eof_card);
+    CHECK(out.str().starts_with("~raw0015"));
+    CHECK(read_text(out.str()) == std::vector<Card>{eof_card});
 }
 
 TEST_CASE("Text cards: writing then reading gives the same cards, trailing blanks trimmed",
