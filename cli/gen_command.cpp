@@ -8,9 +8,11 @@
 #include "cardreader/layout.hpp"
 #include "decks/job_file.hpp"
 #include "decks/move_planner.hpp"
+#include "decks/number_text.hpp"
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <memory>
 
 namespace parsons::cli {
@@ -27,6 +29,7 @@ struct GenFlags {
     int stations = 60;
     std::string spacing = "cosine";
     double scallop_in = 0;
+    bool scallop_given = false;
     std::string surface = "upper";
     bool female = false;
     bool no_corner_slowdown = false;
@@ -75,6 +78,18 @@ void write_cards(const std::vector<cardreader::CardOrders>& cards, const std::st
     deck_file.commit();
 }
 
+// A scallop target finer than the finest stations the generator makes is refused, with the
+// smallest scallop the job can have, rather than a deck that misses it.
+void refuse_unreachable_scallop(double target_in, double planned_in, const char* finest) {
+    if (target_in > 0 && planned_in > target_in + 1e-9) {
+        throw DeckError(fmt::format("gen airfoil: --scallop {}: this job cannot hold a scallop "
+                                    "that small; with the finest stations the generator makes "
+                                    "({}) the smallest possible is {:.5f} in",
+                                    target_in, finest,
+                                    std::ceil(planned_in * 1e5) / 1e5));
+    }
+}
+
 } // namespace
 
 GeneratedJob generate_job(const decks::JobDescription& description,
@@ -87,6 +102,8 @@ GeneratedJob generate_job(const decks::JobDescription& description,
         if (description.kind == decks::JobKind::wing) {
             job.wing = decks::make_wing_deck(*airfoil, description.wing, profile);
             job.description.wing_zero_in = job.wing.zero;
+            refuse_unreachable_scallop(description.wing.scallop_in, job.wing.planned_leftover_in,
+                                       "at most 400 stations along the chord");
             write_cards(job.wing.cards, output, to);
             job.cards = job.wing.cards.size();
             csv = "u,root_cx,root_cy,root_cz,tip_cx,tip_cy,tip_cz,tilt_deg,swivel_deg\n";
@@ -100,6 +117,8 @@ GeneratedJob generate_job(const decks::JobDescription& description,
         } else {
             job.deck = decks::make_template_deck(*airfoil, description.options, profile);
             job.description.work_zero_in = job.deck.work_zero_in;
+            refuse_unreachable_scallop(description.options.scallop_in, job.deck.planned_leftover_in,
+                                       "at least 0.0001 of the path apart");
             write_cards(job.deck.cards, output, to);
             job.cards = job.deck.cards.size();
             for (const auto& s : job.deck.stations) {
@@ -145,6 +164,12 @@ ExitCode run_gen(const GenFlags& f) {
         description.wing.stations = f.stations;
         description.wing.spacing = description.options.spacing;
         description.wing.scallop_in = f.scallop_in;
+    }
+    if (f.scallop_given && !(f.scallop_in > 0 && std::isfinite(f.scallop_in))) {
+        throw DeckError(fmt::format("gen airfoil: --scallop {}: the scallop (the cusp left "
+                                    "standing between two passes) must be a positive number of "
+                                    "inches, e.g. 0.002",
+                                    f.scallop_in));
     }
     const auto profile = load_profile(f.profile);
     const GeneratedJob job = generate_job(description, profile, f.output, f.to, f.centres);
@@ -204,8 +229,9 @@ void add_gen_command(CLI::App& app, Command& selected) {
     cmd->add_option("--spacing", flags->spacing, "Station spacing along the chord")
         ->check(CLI::IsMember({"cosine", "uniform"}))
         ->capture_default_str();
-    cmd->add_option("--scallop", flags->scallop_in,
-                    "Instead of --stations: keep the scallop under this many inches");
+    CLI::Option* scallop =
+        cmd->add_option("--scallop", flags->scallop_in,
+                        "Instead of --stations: keep the scallop under this many inches");
     cmd->add_option("--surface", flags->surface, "Which surface to cut")
         ->check(CLI::IsMember({"upper", "lower", "both"}))
         ->capture_default_str();
@@ -230,7 +256,10 @@ void add_gen_command(CLI::App& app, Command& selected) {
                 "  parsons gen airfoil --naca 0012 --job wing --chord 4 --span 5 --taper 0.6 "
                 "--sweep 10 --scallop 0.002 -o wing.cbn\n"
                 "  parsons run naca2412.cbn --cut cut.svg");
-    cmd->callback([&selected, flags] { selected = [flags] { return run_gen(*flags); }; });
+    cmd->callback([&selected, flags, scallop] {
+        flags->scallop_given = scallop->count() > 0;
+        selected = [flags] { return run_gen(*flags); };
+    });
 }
 
 } // namespace parsons::cli

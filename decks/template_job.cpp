@@ -1,6 +1,7 @@
 #include "decks/template_job.hpp"
 
 #include "decks/move_planner.hpp"
+#include "decks/number_text.hpp"
 
 #include <fmt/format.h>
 
@@ -332,10 +333,10 @@ TemplateDeck make_template_deck(const Airfoil& airfoil, const TemplateOptions& o
     const Vector2d extent = hi - lo;
     const double room = 9.999 - 2 * o.margin_in;
     if (extent.x() > room || extent.y() > room) {
-        throw JobError(fmt::format("the cutter path spans {:.3f} x {:.3f} in, more than the {:.3f} "
-                                   "in the four-digit counters leave inside a {:.3f} in margin: "
-                                   "use a shorter chord",
-                                   extent.x(), extent.y(), room, o.margin_in));
+        throw JobError(fmt::format("the cutter path spans {} x {} in, more than the {:.3f} in the "
+                                   "four-digit counters leave inside a {:.3f} in margin: use a "
+                                   "shorter chord",
+                                   fixed(extent.x()), fixed(extent.y()), room, o.margin_in));
     }
     auto machine = [&](const Vector2d& p) {
         const Vector2d m = p + deck.work_zero_in;

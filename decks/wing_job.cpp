@@ -3,6 +3,7 @@
 #include "decks/cut_proof.hpp"
 #include "decks/cut_svg.hpp"
 #include "decks/move_planner.hpp"
+#include "decks/number_text.hpp"
 
 #include <Eigen/Geometry>
 #include <fmt/format.h>
@@ -207,10 +208,10 @@ WingDeck make_wing_deck(const Airfoil& airfoil, const WingOptions& o,
     const Vector3d extent = hi - lo;
     const double room = 9.999 - 2 * o.margin_in;
     if (extent.maxCoeff() > room) {
-        throw JobError(fmt::format("wing: the job spans {:.3f} x {:.3f} x {:.3f} in (cross, "
-                                   "table, vertical), more than the {:.3f} in the counters "
-                                   "leave: use a smaller wing",
-                                   extent.x(), extent.y(), extent.z(), room));
+        throw JobError(fmt::format("wing: the job spans {} x {} x {} in (cross, table, "
+                                   "vertical), more than the {:.3f} in the counters leave: use a "
+                                   "smaller wing",
+                                   fixed(extent.x()), fixed(extent.y()), fixed(extent.z()), room));
     }
     for (std::size_t i = 0; i < settings.size(); ++i) {
         const Setting& s = settings[i];

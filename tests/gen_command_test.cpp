@@ -2,6 +2,7 @@
 #include "tests/test_support.hpp"
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -102,4 +103,53 @@ TEST_CASE("Demo: the default job writes its deck, cards, report, trace, plot and
         INFO(f);
         CHECK(std::filesystem::exists(dir.path("demo/" + std::string(f))));
     }
+}
+
+TEST_CASE("Gen: a scallop of zero or less is refused, not taken as 'use --stations'",
+          "[gen][cli][bad-input]") {
+    TempDir dir;
+    for (const char* bad : {"0", "-0.002", "nan"}) {
+        INFO(bad);
+        auto r = run_parsons(std::string("gen airfoil --naca 2412 --scallop ") + bad + " -o " +
+                             q(dir.str("n.cbn")));
+        CHECK(r.exit_code == 2);
+        CHECK(r.output.find("must be a positive number of inches") != std::string::npos);
+        CHECK_FALSE(std::filesystem::exists(dir.path("n.cbn")));
+    }
+}
+
+TEST_CASE("Gen: a scallop finer than the finest stations is refused with the smallest possible, "
+          "and that smallest one is accepted",
+          "[gen][cli][bad-input]") {
+    TempDir dir;
+    for (const char* job : {"template", "wing"}) {
+        INFO(job);
+        const std::string gen = std::string("gen airfoil --naca 2412 --job ") + job + " -o " +
+                                q(dir.str("n.cbn")) + " --scallop ";
+        std::filesystem::remove(dir.path("n.cbn"));
+        auto r = run_parsons(gen + "0.00001");
+        REQUIRE(r.exit_code == 2);
+        CHECK_FALSE(std::filesystem::exists(dir.path("n.cbn")));
+        const std::string marker = "the smallest possible is ";
+        const auto at = r.output.find(marker);
+        REQUIRE(at != std::string::npos);
+        const double smallest = std::stod(r.output.substr(at + marker.size()));
+        CHECK(smallest > 0.00001);
+        auto ok = run_parsons(gen + fmt::format("{:.5f}", smallest));
+        INFO(ok.output);
+        CHECK(ok.exit_code == 0);
+        // And the deck made for it keeps its promise.
+        const auto planned = ok.output.find("largest scallop  ");
+        REQUIRE(planned != std::string::npos);
+        CHECK(std::stod(ok.output.substr(planned + 17)) <= smallest + 1e-9);
+    }
+}
+
+TEST_CASE("Gen: a huge number is said in engineering form, not hundreds of digits",
+          "[gen][cli][bad-input]") {
+    TempDir dir;
+    auto r = run_parsons("gen airfoil --naca 2412 --chord 1e300 -o " + q(dir.str("n.cbn")));
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find("the cutter path spans 1.000e300 x 79.200e297 in") != std::string::npos);
+    CHECK(r.output.size() < 300);
 }

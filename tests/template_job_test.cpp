@@ -8,6 +8,7 @@
 #include "cardreader/deck_review.hpp"
 #include "decks/cut_proof.hpp"
 #include "decks/move_planner.hpp"
+#include "decks/number_text.hpp"
 #include "decks/template_job.hpp"
 
 #include <catch2/catch.hpp>
@@ -244,4 +245,17 @@ TEST_CASE("Template: both surfaces run round the fitted leading edge of a coordi
         least_x = std::min(least_x, p.x());
     }
     CHECK(least_x == Approx(le_x * o.chord_in).margin(1e-12));
+}
+
+TEST_CASE("Messages: the machine's figures in fixed decimals, huge ones in engineering form",
+          "[gen][messages]") {
+    using parsons::decks::fixed;
+    CHECK(fixed(2.5) == "2.500");
+    CHECK(fixed(-0.0004, 4) == "-0.0004");
+    CHECK(fixed(999999.0) == "999999.000");
+    CHECK(fixed(1e6) == "1.000e6");
+    CHECK(fixed(-7.92e305) == "-792.000e303");
+    CHECK(fixed(1.0e300) == "1.000e300");
+    CHECK(fixed(999.9996e6) == "1.000e9"); // not "1000.000e6"
+    CHECK(fixed(12345678.0, 1) == "12.3e6");
 }
