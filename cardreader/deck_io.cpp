@@ -6,9 +6,12 @@
 #include "cardreader/listing_format.hpp"
 #include "cardreader/text_format.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <bit>
 #include <cctype>
+#include <istream>
 
 namespace parsons::cardreader {
 namespace {
@@ -16,13 +19,15 @@ namespace {
 // Refuses a deck with no cards at all: an empty file is a mistake, not an empty job.
 class NonEmptySource : public CardSource {
 public:
-    NonEmptySource(std::unique_ptr<CardSource> inner, std::string file)
-        : inner_(std::move(inner)), file_(std::move(file)) {}
+    NonEmptySource(std::unique_ptr<CardSource> inner, std::string file, bool empty_file)
+        : inner_(std::move(inner)), file_(std::move(file)), empty_file_(empty_file) {}
 
     std::optional<Card> next() override {
         auto card = inner_->next();
         if (!card && !any_) {
-            throw DeckError::in_file(file_, "empty file: the deck has no cards");
+            throw DeckError::in_file(file_, empty_file_ ? "empty file: the deck has no cards"
+                                                        : "no cards: the file holds nothing but a "
+                                                          "header, comments or blank lines");
         }
         any_ = true;
         return card;
@@ -31,10 +36,25 @@ public:
 private:
     std::unique_ptr<CardSource> inner_;
     std::string file_;
+    bool empty_file_ = false;
     bool any_ = false;
 };
 
 } // namespace
+
+void DeckFingerprint::add(const Card& card) {
+    for (int c = 1; c <= kColumns; ++c) {
+        const ColumnWord w = card.column(c);
+        for (const unsigned byte : {w & 0xFFu, (w >> 8) & 0xFFu}) {
+            hash_ = (hash_ ^ byte) * 0x100000001b3ULL;
+        }
+    }
+    ++cards_;
+}
+
+std::string DeckFingerprint::hex() const {
+    return fmt::format("{:016x}", hash_);
+}
 
 std::string_view format_name(DeckFormat f) {
     switch (f) {
@@ -187,6 +207,10 @@ std::optional<std::string> non_deck_kind(std::string_view head) {
 }
 
 std::unique_ptr<CardSource> open_card_source(std::istream& in, const DeckOptions& options) {
+    const bool empty_file = in.peek() == std::char_traits<char>::eof();
+    if (empty_file) {
+        in.clear(); // the peek's end-of-file: each reader finds it again
+    }
     std::unique_ptr<CardSource> inner;
     switch (options.format) {
     case DeckFormat::cbn:
@@ -202,7 +226,7 @@ std::unique_ptr<CardSource> open_card_source(std::istream& in, const DeckOptions
         inner = make_listing_source(in, options.file_name, *options.layout);
         break;
     }
-    return std::make_unique<NonEmptySource>(std::move(inner), options.file_name);
+    return std::make_unique<NonEmptySource>(std::move(inner), options.file_name, empty_file);
 }
 
 std::unique_ptr<CardSink> open_card_sink(std::ostream& out, const DeckOptions& options) {

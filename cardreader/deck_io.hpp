@@ -33,6 +33,19 @@ std::optional<DeckFormat> sniff_format(std::string_view head);
 // number, so that the error says so. Nothing when the bytes look like none of them.
 std::optional<std::string> non_deck_kind(std::string_view head);
 
+// Which deck this is, for a job description written beside it: the number of cards and a
+// 64-bit FNV-1a hash of every column word in order (not for security: for a mix-up).
+class DeckFingerprint {
+public:
+    void add(const Card& card);
+    long cards() const { return cards_; }
+    std::string hex() const;
+
+private:
+    long cards_ = 0;
+    std::uint64_t hash_ = 0xcbf29ce484222325ULL;
+};
+
 class CardSource {
 public:
     virtual ~CardSource() = default;

@@ -62,8 +62,9 @@ decks::TemplateOptions options_from(const GenFlags& f) {
 
 namespace {
 
-void write_cards(const std::vector<cardreader::CardOrders>& cards, const std::string& output,
-                 const std::string& to) {
+cardreader::DeckFingerprint write_cards(const std::vector<cardreader::CardOrders>& cards,
+                                        const std::string& output, const std::string& to) {
+    cardreader::DeckFingerprint fingerprint;
     DeckFlags flags;
     const auto options = deck_options(output, to, flags, "--to");
     OutputFile deck_file(output);
@@ -74,8 +75,10 @@ void write_cards(const std::vector<cardreader::CardOrders>& cards, const std::st
             throw DeckError(fmt::format("gen airfoil: card {}: {}", card.number, *punched.error));
         }
         sink->write(punched.card);
+        fingerprint.add(punched.card);
     }
     deck_file.commit();
+    return fingerprint;
 }
 
 // A scallop target finer than the finest stations the generator makes is refused, with the
@@ -85,8 +88,7 @@ void refuse_unreachable_scallop(double target_in, double planned_in, const char*
         throw DeckError(fmt::format("gen airfoil: --scallop {}: this job cannot hold a scallop "
                                     "that small; with the finest stations the generator makes "
                                     "({}) the smallest possible is {:.5f} in",
-                                    target_in, finest,
-                                    std::ceil(planned_in * 1e5) / 1e5));
+                                    target_in, finest, std::ceil(planned_in * 1e5) / 1e5));
     }
 }
 
@@ -96,6 +98,7 @@ GeneratedJob generate_job(const decks::JobDescription& description,
                           const axes::MachineProfile& profile, const std::string& output,
                           const std::string& to, const std::string& centres) {
     GeneratedJob job{description, {}, {}, 0};
+    cardreader::DeckFingerprint fingerprint;
     std::string csv = "x,y,cx,cy\n";
     try {
         const auto airfoil = decks::open_airfoil(description);
@@ -104,7 +107,7 @@ GeneratedJob generate_job(const decks::JobDescription& description,
             job.description.wing_zero_in = job.wing.zero;
             refuse_unreachable_scallop(description.wing.scallop_in, job.wing.planned_leftover_in,
                                        "at most 400 stations along the chord");
-            write_cards(job.wing.cards, output, to);
+            fingerprint = write_cards(job.wing.cards, output, to);
             job.cards = job.wing.cards.size();
             csv = "u,root_cx,root_cy,root_cz,tip_cx,tip_cy,tip_cz,tilt_deg,swivel_deg\n";
             for (const auto& s : job.wing.stations) {
@@ -119,7 +122,7 @@ GeneratedJob generate_job(const decks::JobDescription& description,
             job.description.work_zero_in = job.deck.work_zero_in;
             refuse_unreachable_scallop(description.options.scallop_in, job.deck.planned_leftover_in,
                                        "at least 0.0001 of the path apart");
-            write_cards(job.deck.cards, output, to);
+            fingerprint = write_cards(job.deck.cards, output, to);
             job.cards = job.deck.cards.size();
             for (const auto& s : job.deck.stations) {
                 csv += fmt::format("{:.6f},{:.6f},{:.6f},{:.6f}\n", s.work.x(), s.work.y(),
@@ -131,6 +134,8 @@ GeneratedJob generate_job(const decks::JobDescription& description,
     } catch (const decks::PlanError& e) {
         throw DeckError(fmt::format("gen airfoil: {}", e.what()));
     }
+    job.description.deck_cards = fingerprint.cards();
+    job.description.deck_fingerprint = fingerprint.hex();
     if (output != "-") { // a deck on standard output has no file to stand beside
         write_file(output + ".job.json", decks::job_to_json(job.description));
     }

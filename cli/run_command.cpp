@@ -21,12 +21,17 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <memory>
 #include <sstream>
 #include <unistd.h>
+#include <utility>
 
 namespace parsons::cli {
 namespace {
@@ -58,15 +63,34 @@ private:
     std::unique_ptr<Writer> writer_;
 };
 
-decks::JobDescription read_job(const std::string& file) {
+// The job description of a generated deck; refused when it was written for another deck.
+decks::JobDescription read_job(const std::string& file, const std::string& deck_path,
+                               const DeckFlags& deck_flags) {
     const std::string text =
         read_text_file(file, "cannot open the job description (written by 'parsons gen airfoil' "
                              "beside the deck; or give --job FILE)");
+    decks::JobDescription job;
     try {
-        return decks::job_from_json(text);
+        job = decks::job_from_json(text);
     } catch (const decks::JobError& e) {
         throw DeckError::in_file(file, e.what());
     }
+    if (!job.deck_fingerprint.empty() && deck_path != "-") {
+        InputDeck deck(deck_path, deck_flags);
+        cardreader::DeckFingerprint fingerprint;
+        while (auto card = deck.cards().next()) {
+            fingerprint.add(*card);
+        }
+        if (fingerprint.hex() != job.deck_fingerprint) {
+            throw DeckError::in_file(
+                file, fmt::format("this job description was written for another deck ({} cards, "
+                                  "fingerprint {}), not {} ({} cards, fingerprint {}): give the "
+                                  "job the deck was generated with (--job FILE)",
+                                  job.deck_cards, job.deck_fingerprint, deck_path,
+                                  fingerprint.cards(), fingerprint.hex()));
+        }
+    }
+    return job;
 }
 
 // A progress line on stderr, only when stderr is a terminal.
@@ -173,7 +197,33 @@ nlohmann::json state_json(const relaylogic::RunResult& r, const nlohmann::json& 
 
 } // namespace
 
+// An output named for another format than the one written: said, not silently mislabelled.
+void warn_format(const std::string& path, const std::string& option, const char* format,
+                 std::initializer_list<const char*> extensions, const char* advice) {
+    if (path.empty() || path == "-") {
+        return;
+    }
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    for (const char* known : extensions) {
+        if (ext == known) {
+            fmt::print(stderr,
+                       "parsons: warning: {} writes {}: {} will hold {}, whatever its "
+                       "name says ({})\n",
+                       option, format, path, format, advice);
+            return;
+        }
+    }
+}
+
 ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
+    for (const auto& [path, option] : {std::pair{f.plot, "--plot"}, std::pair{f.cut, "--cut"}}) {
+        warn_format(path, option, "SVG", {".png", ".jpg", ".jpeg", ".gif", ".pdf", ".eps", ".ps"},
+                    "name it .svg; rsvg-convert or any browser turns SVG into PNG or PDF");
+    }
+    warn_format(f.trace, "--trace", "VCD", {".fst", ".ghw", ".lxt", ".lxt2", ".vzt", ".fsdb"},
+                "name it .vcd; GTKWave's vcd2fst turns it into FST");
     // A resumed run takes the profile and the faults the state was saved with (its --limit
     // widens or narrows the movement range, as an operator would before going on).
     nlohmann::json state;
@@ -239,7 +289,7 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     decks::JobDescription job;
     std::unique_ptr<WingPath> wing_path;
     if (!f.cut.empty()) {
-        job = read_job(f.job.empty() ? f.input + ".job.json" : f.job);
+        job = read_job(f.job.empty() ? f.input + ".job.json" : f.job, f.input, f.deck);
         if (job.kind == decks::JobKind::wing) {
             wing_path = std::make_unique<WingPath>(job.wing_zero_in, profile);
             observers.add(wing_path.get());

@@ -35,6 +35,9 @@ std::string job_to_json(const JobDescription& job) {
         j["female"] = o.female;
         j["work_zero_in"] = {job.work_zero_in.x(), job.work_zero_in.y()};
     }
+    if (!job.deck_fingerprint.empty()) {
+        j["deck"] = {{"cards", job.deck_cards}, {"fingerprint", job.deck_fingerprint}};
+    }
     return j.dump(2) + "\n";
 }
 
@@ -43,6 +46,10 @@ JobDescription job_from_json(const std::string& text) {
     try {
         const json j = json::parse(text);
         const std::string kind = j.at("job").get<std::string>();
+        if (j.contains("deck")) { // written since the check that a job matches its deck
+            job.deck_cards = j.at("deck").at("cards").get<long>();
+            job.deck_fingerprint = j.at("deck").at("fingerprint").get<std::string>();
+        }
         job.airfoil = j.at("airfoil").get<std::string>();
         job.closed_trailing_edge = j.at("closed_trailing_edge").get<bool>();
         if (kind == "wing") {

@@ -22,6 +22,9 @@ struct JobDescription {
     Eigen::Vector2d work_zero_in = Eigen::Vector2d::Zero();
     WingOptions wing; // the wing job, and its zero (cross, table, vertical)
     Eigen::Vector3d wing_zero_in = Eigen::Vector3d::Zero();
+    // The deck it was generated with (cardreader::DeckFingerprint); empty in older files.
+    long deck_cards = 0;
+    std::string deck_fingerprint;
 };
 
 std::string job_to_json(const JobDescription& job);

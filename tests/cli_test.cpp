@@ -225,3 +225,59 @@ TEST_CASE("Suite: no test name holds a semicolon (ctest would split it and run n
         CHECK(t.getTestCaseInfo().name.find(';') == std::string::npos);
     }
 }
+
+TEST_CASE("CLI: a listing of nothing but its header says no cards, an empty file says empty",
+          "[cli][bad-input]") {
+    TempDir dir;
+    write_bytes(dir.path("header.csv"),
+                "# a job not yet written\ncard,spindle,axis,motion,speed,slow1,slow2,stop,check,"
+                "seq\n\n");
+    write_bytes(dir.path("empty.csv"), "");
+    auto header = run_parsons("show " + q(dir.str("header.csv")));
+    CHECK(header.exit_code == 2);
+    CHECK(header.output.find("header.csv: no cards: the file holds nothing but a header, "
+                             "comments or blank lines") != std::string::npos);
+    auto empty = run_parsons("show " + q(dir.str("empty.csv")));
+    CHECK(empty.exit_code == 2);
+    CHECK(empty.output.find("empty.csv: empty file: the deck has no cards") != std::string::npos);
+}
+
+TEST_CASE("CLI: --plot x.png and --trace x.fst say the file is SVG or VCD", "[cli]") {
+    TempDir dir;
+    auto r = run_parsons("run " + q(source_path(kSample)) + " -q --plot " + q(dir.str("p.PNG")) +
+                         " --trace " + q(dir.str("t.fst")));
+    CHECK(r.exit_code == 0);
+    CHECK(r.output.find("parsons: warning: --plot writes SVG: " + dir.str("p.PNG") +
+                        " will hold SVG") != std::string::npos);
+    CHECK(r.output.find("parsons: warning: --trace writes VCD: " + dir.str("t.fst") +
+                        " will hold VCD") != std::string::npos);
+    CHECK(read_bytes(dir.path("p.PNG")).find("<svg") != std::string::npos);
+    auto plain = run_parsons("run " + q(source_path(kSample)) + " -q --plot " +
+                             q(dir.str("p.svg")) + " --trace " + q(dir.str("t.vcd")));
+    CHECK(plain.exit_code == 0);
+    CHECK(plain.output.find("warning") == std::string::npos);
+}
+
+TEST_CASE("CLI: a --job written for another deck is refused, whatever format the deck is in",
+          "[cli][bad-input]") {
+    TempDir dir;
+    const std::string gen = "gen airfoil --chord 2 --stations 10 ";
+    REQUIRE(run_parsons(gen + "--naca 0012 -o " + q(dir.str("a.cbn"))).exit_code == 0);
+    REQUIRE(run_parsons(gen + "--naca 2412 -o " + q(dir.str("b.cbn"))).exit_code == 0);
+    auto wrong = run_parsons("run " + q(dir.str("a.cbn")) + " -q --cut " + q(dir.str("c.svg")) +
+                             " --job " + q(dir.str("b.cbn.job.json")));
+    CHECK(wrong.exit_code == 2);
+    CHECK(wrong.output.find("b.cbn.job.json: this job description was written for another deck") !=
+          std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir.path("c.svg")));
+    // The deck's own job, and the same cards in another format, are accepted.
+    REQUIRE(
+        run_parsons("convert " + q(dir.str("a.cbn")) + " -o " + q(dir.str("a.bin"))).exit_code ==
+        0);
+    for (const char* deck : {"a.cbn", "a.bin"}) {
+        INFO(deck);
+        CHECK(run_parsons("run " + q(dir.str(deck)) + " -q --cut " + q(dir.str("c.svg")) +
+                          " --job " + q(dir.str("a.cbn.job.json")))
+                  .exit_code == 0);
+    }
+}
