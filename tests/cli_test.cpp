@@ -84,7 +84,7 @@ TEST_CASE("CLI: show warns about a wrong check and the shared-bank hazard", "[cl
                 "1,0,tilt,+,3,,,0.000,0.000,5\n");
     auto shown = run_parsons("show " + q(dir.str("hazard.csv")));
     CHECK(shown.exit_code == 0);
-    CHECK(shown.output.find("warning: table: check 9.000 but the stop moves 9.050") !=
+    CHECK(shown.output.find("warning: table: check 9.000 but the stop 9.050 is 9.050 from") !=
           std::string::npos);
     CHECK(shown.output.find("warning: table: shared-bank hazard: the absolute banks 350-356 also "
                             "compare equal at 8.050") != std::string::npos);
