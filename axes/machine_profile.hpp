@@ -52,6 +52,14 @@ struct MachineProfile {
     double reader_cycle_s = 0.6;
     double first_bank_s = 0.15;
     double second_bank_s = 0.30;
+    // Of each card cycle, the first feed_gap_s pass while the gap between two separate cards
+    // (the picker taking the next card from the hopper) goes by the brushes; brush times above
+    // count from the start of the cycle, gap included.
+    double feed_gap_s = 0.10;
+    // Fig. 9: cards "secured end to end to form an elongated ribbon or tape" (and perforated
+    // tape, col. 6). The next card follows the last with no gap, so every card after the first
+    // is sensed feed_gap_s sooner. Off: separate cards from the hopper.
+    bool ribbon_feed = false;
     // Relays (holding relays of Fig. 13, stepping relay 256): operate and release times.
     double relay_operate_s = 0.010;
     double relay_release_s = 0.008;

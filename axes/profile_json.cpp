@@ -197,6 +197,13 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
             p.first_bank_s = duration(value, key);
         } else if (key == "second_bank_s") {
             p.second_bank_s = duration(value, key);
+        } else if (key == "feed_gap_s") {
+            p.feed_gap_s = duration(value, key);
+        } else if (key == "ribbon_feed") {
+            if (!value.is_boolean()) {
+                throw ProfileError("ribbon_feed: expected true or false");
+            }
+            p.ribbon_feed = value.get<bool>();
         } else if (key == "relay_operate_s") {
             p.relay_operate_s = duration(value, key);
         } else if (key == "relay_release_s") {
@@ -230,6 +237,10 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
                            "banks sense the card, its relays pick and the speed switches step "
                            "within one card cycle)");
     }
+    if (!(p.feed_gap_s < p.first_bank_s)) {
+        throw ProfileError("feed_gap_s < first_bank_s must hold (the gap between two cards "
+                           "passes the brushes before the first bank senses the card)");
+    }
     return p;
 }
 
@@ -242,6 +253,8 @@ std::string profile_to_json(const MachineProfile& p) {
            {"reader_cycle_s", p.reader_cycle_s},
            {"first_bank_s", p.first_bank_s},
            {"second_bank_s", p.second_bank_s},
+           {"feed_gap_s", p.feed_gap_s},
+           {"ribbon_feed", p.ribbon_feed},
            {"relay_operate_s", p.relay_operate_s},
            {"relay_release_s", p.relay_release_s},
            {"stepping_switch_step_s", p.stepping_switch_step_s},

@@ -3,7 +3,9 @@
 #include "cardreader/bin_format.hpp"
 #include "cardreader/cbn_format.hpp"
 #include "cardreader/deck_error.hpp"
+#include "cardreader/five_card_format.hpp"
 #include "cardreader/listing_format.hpp"
+#include "cardreader/tape_format.hpp"
 #include "cardreader/text_format.hpp"
 
 #include <fmt/format.h>
@@ -25,9 +27,10 @@ public:
     std::optional<Card> next() override {
         auto card = inner_->next();
         if (!card && !any_) {
-            throw DeckError::in_file(file_, empty_file_ ? "empty file: the deck has no cards"
-                                                        : "no cards: the file holds nothing but a "
-                                                          "header, comments or blank lines");
+            throw DeckError::in_file(file_, empty_file_
+                                                ? "empty file: the deck has no cards"
+                                                : "no cards: the file holds nothing but a "
+                                                  "header, comments, blank lines or blank tape");
         }
         any_ = true;
         return card;
@@ -66,12 +69,20 @@ std::string_view format_name(DeckFormat f) {
         return "text";
     case DeckFormat::listing:
         return "listing";
+    case DeckFormat::tape:
+        return "tape";
+    case DeckFormat::five:
+        return "five";
     }
     return "cbn";
 }
 
+bool format_is_continuous(DeckFormat f) {
+    return f == DeckFormat::tape;
+}
+
 std::optional<DeckFormat> format_named(std::string_view name) {
-    for (DeckFormat f : {DeckFormat::cbn, DeckFormat::bin, DeckFormat::text, DeckFormat::listing}) {
+    for (DeckFormat f : kDeckFormats) {
         if (format_name(f) == name) {
             return f;
         }
@@ -99,6 +110,12 @@ std::optional<DeckFormat> format_for_path(std::string_view path) {
     }
     if (ext == "csv" || ext == "lst") {
         return DeckFormat::listing;
+    }
+    if (ext == "tape" || ext == "ptp") {
+        return DeckFormat::tape;
+    }
+    if (ext == "five") {
+        return DeckFormat::five;
     }
     return std::nullopt;
 }
@@ -225,6 +242,12 @@ std::unique_ptr<CardSource> open_card_source(std::istream& in, const DeckOptions
     case DeckFormat::listing:
         inner = make_listing_source(in, options.file_name, *options.layout);
         break;
+    case DeckFormat::tape:
+        inner = make_tape_source(in, options.file_name);
+        break;
+    case DeckFormat::five:
+        inner = make_five_card_source(in, options.file_name, *options.layout);
+        break;
     }
     return std::make_unique<NonEmptySource>(std::move(inner), options.file_name, empty_file);
 }
@@ -237,6 +260,10 @@ std::unique_ptr<CardSink> open_card_sink(std::ostream& out, const DeckOptions& o
         return make_text_sink(out, options.file_name, options.code);
     case DeckFormat::listing:
         return make_listing_sink(out, options.file_name, *options.layout);
+    case DeckFormat::tape:
+        return make_tape_sink(out, options.file_name);
+    case DeckFormat::five:
+        return make_five_card_sink(out, options.file_name, *options.layout);
     case DeckFormat::cbn:
         break;
     }

@@ -5,12 +5,15 @@
 //   .bin          IBM 1130 / bitsavers binary, 12-bit row word << 4, LE     (bin_format.hpp)
 //   .txt .crd .card .cards  80-column text card images in IBM 029 (or 026) code (text_format.hpp)
 //   .csv .lst     the listing: one row per axis per card                     (listing_format.hpp)
+//   .tape .ptp    eight-channel perforated tape, 161 frames a card            (tape_format.hpp)
+//   .five         column binary, five per-axis cards a step (col. 6)        (five_card_format.hpp)
 #pragma once
 
 #include "cardreader/card.hpp"
 #include "cardreader/hollerith.hpp"
 #include "cardreader/layout.hpp"
 
+#include <array>
 #include <iosfwd>
 #include <memory>
 #include <optional>
@@ -19,7 +22,13 @@
 
 namespace parsons::cardreader {
 
-enum class DeckFormat : std::uint8_t { cbn, bin, text, listing };
+enum class DeckFormat : std::uint8_t { cbn, bin, text, listing, tape, five };
+inline constexpr std::array<DeckFormat, 6> kDeckFormats = {DeckFormat::cbn,  DeckFormat::bin,
+                                                           DeckFormat::text, DeckFormat::listing,
+                                                           DeckFormat::tape, DeckFormat::five};
+
+// A format whose cards follow one another with no feed gap (Fig. 9's ribbon; tape).
+bool format_is_continuous(DeckFormat f);
 
 std::string_view format_name(DeckFormat f);
 std::optional<DeckFormat> format_named(std::string_view name);

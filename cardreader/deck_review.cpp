@@ -3,12 +3,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace parsons::cardreader {
 namespace {
 
 constexpr int kCounterModulus = 10000; // four decimal stepping switches wrap 9.999 -> 0.000
+// A coast of a thousandth or more is counted by commutator 102: the counter ends past the stop.
+constexpr double kCoastWarning_in = 0.001;
 
 std::vector<Thousandths> punched_numbers(const AxisOrder& order) {
     std::vector<Thousandths> numbers;
@@ -43,14 +46,104 @@ std::string list_inches(const std::vector<Thousandths>& values) {
 // True if the counters, counting from `from` in the motion's direction, reach `value`
 // strictly before they reach `stop`.
 bool passed_before_stop(Thousandths value, Thousandths from, Thousandths stop, Motion motion) {
-    auto distance = [motion, from](Thousandths to) {
-        int d = motion == Motion::forward ? to - from : from - to;
-        return (d % kCounterModulus + kCounterModulus) % kCounterModulus;
-    };
-    return distance(value) < distance(stop);
+    return travel_in_motion(from, value, motion) < travel_in_motion(from, stop, motion);
+}
+
+// v^2 after `inches` of running toward `target` at `a`: it rises or falls by 2 a per inch, and
+// no further than the target.
+double approach_v2(double v2, double target, double a, double inches) {
+    const double t2 = target * target;
+    return v2 < t2 ? std::min(t2, v2 + 2 * a * inches) : std::max(t2, v2 - 2 * a * inches);
+}
+
+std::string axis_list(const std::vector<Axis>& axes) {
+    std::string text;
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+        text += (i == 0 ? "" : i + 1 == axes.size() ? " and " : ", ");
+        text += axis_name(axes[i]);
+    }
+    return text.empty() ? "none" : text;
+}
+
+bool punched_at(SequencePattern pattern, int position) {
+    return (pattern & (1U << static_cast<unsigned>(position - 1))) != 0;
+}
+
+// One way the card's sequence can run: which axes stopped, in order, and where it stalled.
+struct SequenceRun {
+    std::vector<Axis> stopped;
+    int stall_at = 0; // 0: the shaft went home
+};
+
+// Replays stepping shaft 280 (rule 8): at each position the axes punched there that have not
+// stopped run; an axis whose travel is zero stops at once (together with any other such axis:
+// unit 284 counts each), otherwise any running axis may stop first. Each stop is one impulse,
+// one position. Every possible order is followed (at most 5! of them).
+void replay(const CardOrders& orders, const std::array<std::optional<Thousandths>, 5>& travel,
+            int position, SequenceRun run, std::vector<SequenceRun>& runs) {
+    if (position > kSequencePositions) {
+        runs.push_back(std::move(run));
+        return;
+    }
+    std::vector<Axis> idle;
+    std::vector<Axis> moving;
+    for (Axis a : kAxes) {
+        const bool stopped =
+            std::find(run.stopped.begin(), run.stopped.end(), a) != run.stopped.end();
+        if (!stopped && punched_at(orders.axis(a).sequence, position)) {
+            (travel.at(axis_index(a)) == Thousandths{0} ? idle : moving).push_back(a);
+        }
+    }
+    if (!idle.empty()) {
+        run.stopped.insert(run.stopped.end(), idle.begin(), idle.end());
+        replay(orders, travel, position + static_cast<int>(idle.size()), std::move(run), runs);
+        return;
+    }
+    if (moving.empty()) {
+        run.stall_at = position;
+        runs.push_back(std::move(run));
+        return;
+    }
+    for (Axis a : moving) {
+        SequenceRun next = run;
+        next.stopped.push_back(a);
+        replay(orders, travel, position + 1, std::move(next), runs);
+    }
 }
 
 } // namespace
+
+Thousandths travel_in_motion(Thousandths from, Thousandths to, Motion motion) {
+    const int d = motion == Motion::forward ? to - from : from - to;
+    return static_cast<Thousandths>((d % kCounterModulus + kCounterModulus) % kCounterModulus);
+}
+
+double speed_at_stop(const AxisOrder& order, Thousandths from, const AxisDynamics& dynamics) {
+    const Thousandths travel = travel_in_motion(from, order.stop, order.motion);
+    std::vector<Thousandths> events; // distances from `from` of the slow-downs passed
+    for (const auto& sd : order.slow_down) {
+        if (sd && passed_before_stop(*sd, from, order.stop, order.motion)) {
+            events.push_back(travel_in_motion(from, *sd, order.motion));
+        }
+    }
+    std::sort(events.begin(), events.end());
+    events.push_back(travel);
+    double v2 = 0; // every axis starts a card at rest
+    int speed = std::clamp(order.start_speed, 1, 3);
+    int at = 0;
+    for (Thousandths e : events) {
+        v2 = approach_v2(v2, dynamics.speed_in_per_s.at(static_cast<std::size_t>(speed - 1)),
+                         dynamics.acceleration_in_per_s2, (e - at) / 1000.0);
+        at = e;
+        speed = std::min(speed + 1, 3); // each slow-down steps switch 236 one speed slower
+    }
+    return std::sqrt(v2);
+}
+
+double coast_in(const AxisOrder& order, Thousandths from, const AxisDynamics& dynamics) {
+    const double v = speed_at_stop(order, from, dynamics);
+    return v * v / (2 * dynamics.braking_in_per_s2);
+}
 
 std::vector<Thousandths> shared_bank_matches(const AxisOrder& order) {
     // Bank 350 holds the inch digit, 352 tenths, 354 hundredths, 356 thousandths.
@@ -105,6 +198,7 @@ std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
     }
     previous_number_ = orders.number;
 
+    std::array<std::optional<Thousandths>, kAxisCount> travel{};
     for (Axis a : kAxes) {
         const AxisOrder& o = orders.axis(a);
         auto note = [&](std::string message) { notes.push_back({a, std::move(message)}); };
@@ -117,23 +211,22 @@ std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
             continue; // after an unreadable card the starting point is unknown
         }
         const Thousandths from = *known_from;
-        const int travel = o.stop > from ? o.stop - from : from - o.stop;
+        const Thousandths moves = travel_in_motion(from, o.stop, o.motion);
+        travel.at(axis_index(a)) = moves;
 
-        if (o.check != travel) {
-            note(fmt::format("check {} but the stop moves {} from the previous stop {} (check = "
-                             "|stop - previous stop|): the increment comparer will disagree with "
-                             "the absolute one and the machine stops",
-                             format_inches(o.check),
-                             format_inches(static_cast<Thousandths>(travel)), format_inches(from)));
-        }
-        if ((o.motion == Motion::forward && o.stop < from) ||
-            (o.motion == Motion::reverse && o.stop > from)) {
-            note(fmt::format("motion {} but the stop {} is {} the previous stop {}: the counters "
-                             "count the long way round through {}",
-                             o.motion == Motion::forward ? "+ (forward)" : "- (reverse)",
-                             format_inches(o.stop), o.motion == Motion::forward ? "below" : "above",
+        if (o.check != moves) {
+            const auto other_way =
+                static_cast<Thousandths>((kCounterModulus - moves) % kCounterModulus);
+            note(fmt::format("check {} but the stop {} is {} from the previous stop {} counting {} "
+                             "(the counters wrap at 9.999 / 0.000): the increment comparer will "
+                             "disagree with the absolute one and the machine stops{}",
+                             format_inches(o.check), format_inches(o.stop), format_inches(moves),
                              format_inches(from),
-                             o.motion == Motion::forward ? "9.999 to 0.000" : "0.000 to 9.999"));
+                             o.motion == Motion::forward ? "up (motion +)" : "down (motion -)",
+                             o.check == other_way && moves != 0
+                                 ? "; the check is the travel the other way round: is the motion "
+                                   "column wrong?"
+                                 : ""));
         }
         const int slow_downs = static_cast<int>(o.slow_down[0].has_value()) +
                                static_cast<int>(o.slow_down[1].has_value());
@@ -159,8 +252,76 @@ std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
                              "than one digit)",
                              list_inches(spurious), format_inches(from), format_inches(o.stop)));
         }
+        if (dynamics_ && moves != 0) {
+            const AxisDynamics& dyn = dynamics_->at(axis_index(a));
+            const double v = speed_at_stop(o, from, dyn);
+            const double coast = coast_in(o, from, dyn);
+            if (coast >= kCoastWarning_in) {
+                note(
+                    fmt::format("slow-down too close to the stop: it reaches the stop {} still at "
+                                "{:.2f} in/min (speed 3 is {:.2f}) and coasts about {:.3f} in past "
+                                "it (v^2/2a, braking {} in/s^2); the counters count the coast and "
+                                "the next card's check will disagree",
+                                format_inches(o.stop), v * 60, dyn.speed_in_per_s[2] * 60, coast,
+                                dyn.braking_in_per_s2));
+            }
+        }
     }
+    review_sequence(orders, travel, notes);
     return notes;
+}
+
+void DeckReviewer::review_sequence(const CardOrders& orders,
+                                   const std::array<std::optional<Thousandths>, kAxisCount>& travel,
+                                   std::vector<ReviewNote>& notes) const {
+    // Axes punched together at one position only: only one of them can stop there.
+    for (int p = 1; p <= kSequencePositions; ++p) {
+        std::vector<Axis> only_here;
+        for (Axis a : kAxes) {
+            if (orders.axis(a).sequence ==
+                    static_cast<SequencePattern>(1U << static_cast<unsigned>(p - 1)) &&
+                travel.at(axis_index(a)) != Thousandths{0}) {
+                only_here.push_back(a);
+            }
+        }
+        if (only_here.size() >= 2) {
+            notes.push_back({std::nullopt,
+                             fmt::format("{} are punched at position {} only: the first of them to "
+                                         "stop steps shaft 280 on to {}, and the others are left "
+                                         "short of their stops (sequence stall)",
+                                         axis_list(only_here), p, p + 1)});
+        }
+    }
+    std::vector<SequenceRun> runs;
+    replay(orders, travel, 1, SequenceRun{}, runs);
+    const auto stalled = std::count_if(runs.begin(), runs.end(),
+                                       [](const SequenceRun& r) { return r.stall_at != 0; });
+    if (stalled == 0) {
+        return;
+    }
+    const auto first = *std::find_if(runs.begin(), runs.end(),
+                                     [](const SequenceRun& r) { return r.stall_at != 0; });
+    std::vector<Axis> waiting;
+    for (Axis a : kAxes) {
+        if (std::find(first.stopped.begin(), first.stopped.end(), a) == first.stopped.end()) {
+            waiting.push_back(a);
+        }
+    }
+    const std::string after = first.stopped.empty()
+                                  ? std::string{}
+                                  : fmt::format("after {} stop{}, ", axis_list(first.stopped),
+                                                first.stopped.size() == 1 ? "s" : "");
+    const std::string what =
+        fmt::format("{}position {} of stepping shaft 280 is answered by no running axis (still "
+                    "waiting: {}): no impulse comes and the shaft never returns home",
+                    after, first.stall_at, axis_list(waiting));
+    if (stalled == static_cast<long>(runs.size())) {
+        notes.push_back({std::nullopt, "sequence stall: " + what});
+    } else {
+        notes.push_back({std::nullopt, "sequence may stall, depending on which axis stops "
+                                       "first: if they stop in this order, " +
+                                           what});
+    }
 }
 
 } // namespace parsons::cardreader

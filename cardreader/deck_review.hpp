@@ -7,8 +7,13 @@
 //  - a check that is not |stop - previous stop| (the increment comparer 122'' disagrees);
 //  - a card number that is not the previous one + 1 (card-number check, 136);
 //  - a start speed that does not match the slow-downs punched (3 - start speed of them);
-//  - a slow-down the counters never pass before the stop, a motion against the stop;
-//  - an axis with no sequence position (it never runs: a sequence stall).
+//  - a slow-down the counters never pass before the stop;
+//  - the sequence pattern replayed on stepping shaft 280: a position no running axis answers
+//    (a sequence stall), an axis with no position, axes punched together at one position only;
+//  - with the machine's dynamics: the speed an axis still has when it reaches its stop, and
+//    the coast v^2 / 2a after it (a slow-down too close to its stop).
+// Travel is counted as the counters count it: modulo 10 inches in the direction of motion, so
+// a move across 9.999 / 0.000 is judged by its real length.
 // Emulation note: this is a static reading of the cards, not a run; the machine itself
 // (relaylogic/) is what decides what happens.
 #pragma once
@@ -30,6 +35,27 @@ std::vector<Thousandths> shared_bank_matches(const AxisOrder& order);
 // `from` to the stop in the motion's direction (start included, stop excluded).
 std::vector<Thousandths> spurious_matches_on_path(const AxisOrder& order, Thousandths from);
 
+// Travel from `from` to `to` in the motion's direction, as the counters count it (0 .. 9.999:
+// they wrap 9.999 -> 0.000 forward and 0.000 -> 9.999 in reverse).
+Thousandths travel_in_motion(Thousandths from, Thousandths to, Motion motion);
+
+// What the review needs of an axis's motor (from the machine profile; cardreader/ does not
+// depend on axes/): speeds 1..3 of switch 236, the rate of change between them, the braking
+// deceleration once switched off.
+struct AxisDynamics {
+    std::array<double, 3> speed_in_per_s{};
+    double acceleration_in_per_s2 = 0;
+    double braking_in_per_s2 = 0;
+};
+
+// The speed (in/s) an axis has when its counters reach the stop, starting from rest at `from`:
+// it runs toward the start speed and toward each slower speed from each slow-down it passes,
+// changing speed at the acceleration (v^2 changes by 2 a per inch).
+double speed_at_stop(const AxisOrder& order, Thousandths from, const AxisDynamics& dynamics);
+
+// How far past the stop it coasts once switched off there: v^2 / (2 braking).
+double coast_in(const AxisOrder& order, Thousandths from, const AxisDynamics& dynamics);
+
 struct ReviewNote {
     std::optional<Axis> axis; // none for whole-card notes (card number)
     std::string message;
@@ -39,12 +65,22 @@ struct ReviewNote {
 // deck at the reference zero) and the previous card number.
 class DeckReviewer {
 public:
+    DeckReviewer() = default;
+    // With the machine's dynamics, the review also estimates each stop's coast.
+    explicit DeckReviewer(const std::array<AxisDynamics, kAxisCount>& dynamics)
+        : dynamics_(dynamics) {}
+
     std::vector<ReviewNote> review(const CardOrders& orders);
     // A card that could not be read in full: its numbers are unknown, so the next card's
     // number and checks are not judged against a guess.
     void skip();
 
 private:
+    void review_sequence(const CardOrders& orders,
+                         const std::array<std::optional<Thousandths>, kAxisCount>& travel,
+                         std::vector<ReviewNote>& notes) const;
+
+    std::optional<std::array<AxisDynamics, kAxisCount>> dynamics_;
     std::optional<int> previous_number_;
     std::array<std::optional<Thousandths>, kAxisCount> position_{
         Thousandths{0}, Thousandths{0}, Thousandths{0}, Thousandths{0}, Thousandths{0}};

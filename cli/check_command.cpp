@@ -34,7 +34,7 @@ ExitCode run_check(const CheckFlags& f) {
     apply_limits(profile, f.limits);
     InputDeck deck(f.input, f.deck);
     const CardLayout& layout = *deck.options().layout;
-    DeckReviewer reviewer;
+    DeckReviewer reviewer(review_dynamics(profile));
     std::array<double, kAxisCount> at{};
     long index = 0;
     long passing = 0;

@@ -39,6 +39,7 @@ struct RunRequest {
     std::string cut;
     std::string job;
     std::string profile;
+    std::string feed; // cards | ribbon; empty: as the profile (and the deck's format) say
     std::vector<std::string> faults;
     std::vector<std::string> limits;
     std::string save_state;

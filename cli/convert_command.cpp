@@ -42,7 +42,7 @@ void add_convert_command(CLI::App& app, Command& selected) {
     cmd->add_option("DECK", flags->input, "The deck to read")->required();
     cmd->add_option("-o,--output", flags->output, "The deck to write; format from the extension")
         ->required();
-    cmd->add_option("--to", flags->to, "Output format: cbn, bin, text or listing");
+    cmd->add_option("--to", flags->to, "Output format: cbn, bin, text, listing, tape or five");
     add_input_flags(*cmd, flags->deck);
     cmd->footer("Examples:\n"
                 "  parsons convert deck.cbn -o deck.bin\n"

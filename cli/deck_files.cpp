@@ -28,9 +28,9 @@ constexpr std::size_t kHeadBytes = 4096;
 void add_input_flags(CLI::App& cmd, DeckFlags& flags) {
     cmd.add_option(
         "--format", flags.format,
-        "Input deck format: auto, cbn, bin, text or listing (auto, the default: from the "
-        "extension .cbn .bin .txt/.crd/.card/.cards .csv/.lst, else from the first "
-        "bytes as SIMH tells them; - reads standard input)");
+        "Input deck format: auto, cbn, bin, text, listing, tape or five (auto, the default: from "
+        "the extension .cbn .bin .txt/.crd/.card/.cards .csv/.lst .tape/.ptp .five, else from "
+        "the first bytes as SIMH tells them; - reads standard input)");
     cmd.add_option("--code", flags.code, "Keypunch code of text card images: 029 or 026")
         ->capture_default_str();
     cmd.add_option("--layout", flags.layout, "Card layout (the reader's plugboard)")
@@ -47,7 +47,7 @@ cardreader::DeckOptions deck_options(const std::string& path, const std::string&
         if (!f) {
             throw DeckError::in_file(path,
                                      fmt::format("unknown format '{}' for {} (cbn, bin, "
-                                                 "text or listing{})",
+                                                 "text, listing, tape or five{})",
                                                  format_flag, option, output ? "" : ", or auto"));
         }
         options.format = *f;
@@ -57,10 +57,10 @@ cardreader::DeckOptions deck_options(const std::string& path, const std::string&
         throw DeckError::in_file(
             path == "-" ? "standard output" : path,
             path == "-" ? fmt::format("a deck written to standard output needs {} cbn, bin, "
-                                      "text or listing",
+                                      "text, listing, tape or five",
                                       option)
                         : fmt::format("cannot tell the deck format from the extension; give {} "
-                                      "cbn, bin, text or listing",
+                                      "cbn, bin, text, listing, tape or five",
                                       option));
     } else {
         options.format = kFormatFromBytes;
@@ -77,6 +77,35 @@ cardreader::DeckOptions deck_options(const std::string& path, const std::string&
                                  fmt::format("unknown card layout '{}' (fig8)", flags.layout));
     }
     return options;
+}
+
+std::array<cardreader::AxisDynamics, cardreader::kAxisCount>
+review_dynamics(const axes::MachineProfile& profile) {
+    std::array<cardreader::AxisDynamics, cardreader::kAxisCount> out{};
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        const axes::AxisProfile& a = profile.axes.at(i);
+        for (std::size_t k = 0; k < 3; ++k) {
+            out.at(i).speed_in_per_s.at(k) = a.speed_in_per_min.at(k) / 60.0;
+        }
+        out.at(i).acceleration_in_per_s2 = a.acceleration_in_per_s2;
+        out.at(i).braking_in_per_s2 = a.braking_in_per_s2;
+    }
+    return out;
+}
+
+void apply_feed(axes::MachineProfile& profile, const std::string& feed,
+                const cardreader::DeckOptions& deck) {
+    if (cardreader::format_is_continuous(deck.format)) {
+        if (feed == "cards") {
+            throw DeckError::in_file(deck.file_name,
+                                     fmt::format("--feed cards: a {} deck has no separate cards "
+                                                 "to feed (it always feeds as a ribbon)",
+                                                 cardreader::format_name(deck.format)));
+        }
+        profile.ribbon_feed = true;
+    } else if (!feed.empty()) {
+        profile.ribbon_feed = feed == "ribbon";
+    }
 }
 
 InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
@@ -122,7 +151,7 @@ InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
                                          ? std::string("empty file: no cards")
                                          : fmt::format("cannot tell the deck format from {}its "
                                                        "first bytes; give --format cbn, bin, "
-                                                       "text or listing",
+                                                       "text, listing, tape or five",
                                                        path == "-" ? "" : "the extension or "));
         }
         options_.format = *sniffed;

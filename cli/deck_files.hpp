@@ -3,6 +3,7 @@
 
 #include "axes/machine_profile.hpp"
 #include "cardreader/deck_io.hpp"
+#include "cardreader/deck_review.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -37,6 +38,15 @@ std::string read_text_file(const std::string& file, const std::string& missing =
 axes::MachineProfile load_profile(const std::string& file);
 // --limit AXIS=MIN:MAX (repeatable): the soft limits of the job, over the profile's.
 void apply_limits(axes::MachineProfile& profile, const std::vector<std::string>& limits);
+
+// The motor figures the deck review needs to estimate each stop's coast.
+std::array<cardreader::AxisDynamics, cardreader::kAxisCount>
+review_dynamics(const axes::MachineProfile& profile);
+
+// --feed cards|ribbon over the profile's ribbon_feed; a continuous format (tape) always feeds as
+// a ribbon, and --feed cards on one is refused (DeckError).
+void apply_feed(axes::MachineProfile& profile, const std::string& feed,
+                const cardreader::DeckOptions& deck);
 
 // An open input deck: the file and its card reader. The name "-" is standard input, its
 // format given by --format or told from its first bytes.

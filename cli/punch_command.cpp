@@ -47,7 +47,7 @@ void add_punch_command(CLI::App& app, Command& selected) {
     cmd->add_option("-o,--output", flags->output,
                     "The deck to punch; format from the extension (.cbn .bin .txt/.crd .csv/.lst)")
         ->required();
-    cmd->add_option("--to", flags->to, "Output format: cbn, bin, text or listing");
+    cmd->add_option("--to", flags->to, "Output format: cbn, bin, text, listing, tape or five");
     cmd->add_option("--code", flags->deck.code, "Keypunch code for text card images: 029 or 026")
         ->capture_default_str();
     cmd->add_option("--layout", flags->deck.layout, "Card layout")->capture_default_str();

@@ -255,6 +255,7 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
         }
     }
     InputDeck deck(f.input, f.deck);
+    apply_feed(profile, f.feed, deck.options());
     relaylogic::ControlCabinet cabinet(profile, *deck.options().layout);
     for (const auto& fault : faults) {
         cabinet.add_fault(fault);
@@ -417,6 +418,10 @@ void add_run_command(CLI::App& app, Command& selected) {
                     "skip-step:AXIS:SWITCH:N, feed-twice:N, swap-cards:N, short-card:N, "
                     "slip:AXIS:N:M");
     cmd->add_option("--profile", flags->profile, "Machine profile JSON (see 'parsons profile')");
+    cmd->add_option("--feed", flags->feed,
+                    "cards (separate cards, a feed gap each) or ribbon (Fig. 9: cards end to end, "
+                    "no gap); a tape deck always feeds as a ribbon")
+        ->check(CLI::IsMember({"cards", "ribbon"}));
     cmd->add_option("--limit", flags->limits,
                     "Soft limits of the job, AXIS=MIN:MAX inches (e.g. table=0:9.5): the machine "
                     "stops with soft_limit before the part passes one");

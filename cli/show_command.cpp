@@ -22,6 +22,7 @@ using namespace parsons::cardreader;
 struct ShowFlags {
     std::string input;
     std::string svg_dir;
+    std::string profile;
     DeckFlags deck;
 };
 
@@ -72,6 +73,7 @@ void print_card(long index, const DecodeResult& decoded, const CardLayout& layou
 }
 
 ExitCode run_show(const ShowFlags& f) {
+    const axes::MachineProfile profile = load_profile(f.profile);
     InputDeck deck(f.input, f.deck);
     const CardLayout& layout = *deck.options().layout;
     if (!f.svg_dir.empty()) {
@@ -80,7 +82,7 @@ ExitCode run_show(const ShowFlags& f) {
     fmt::print("deck {} ({}, layout {})\n\n", f.input, format_name(deck.options().format),
                layout.name);
 
-    DeckReviewer reviewer;
+    DeckReviewer reviewer(review_dynamics(profile));
     long index = 0;
     long notes = 0;
     std::optional<std::string> first_bad;
@@ -142,6 +144,8 @@ void add_show_command(CLI::App& app, Command& selected) {
     cmd->add_option("DECK", flags->input, "The deck to read")->required();
     cmd->add_option("--svg", flags->svg_dir,
                     "Write one picture per card, DIR/card-0001.svg, ... (created if missing)");
+    cmd->add_option("--profile", flags->profile,
+                    "Machine profile JSON, for the coast estimate (see 'parsons profile')");
     add_input_flags(*cmd, flags->deck);
     cmd->footer("Examples:\n"
                 "  parsons show decks/samples/patent-example.csv\n"

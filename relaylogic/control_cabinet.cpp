@@ -428,9 +428,11 @@ void ControlCabinet::feed() {
     orders_.number = -1;
     tracer_.set(reader_card_, static_cast<std::uint32_t>(cards_read_));
     tracer_.set(reader_feeding_, 1);
-    schedule(now_ + profile_.first_bank_s, EventKind::first_bank);
-    schedule(now_ + profile_.second_bank_s, EventKind::second_bank);
-    schedule(now_ + profile_.reader_cycle_s, EventKind::read_complete);
+    // Fig. 9: on a ribbon (or tape) the next card follows with no gap; it is sensed sooner.
+    const double gap = profile_.ribbon_feed && cards_read_ > 1 ? profile_.feed_gap_s : 0.0;
+    schedule(now_ + (profile_.first_bank_s - gap), EventKind::first_bank);
+    schedule(now_ + (profile_.second_bank_s - gap), EventKind::second_bank);
+    schedule(now_ + (profile_.reader_cycle_s - gap), EventKind::read_complete);
 }
 
 void ControlCabinet::first_bank() {
@@ -885,7 +887,9 @@ RunResult ControlCabinet::result() const {
         AxisResult& a = r.axes.at(i);
         a.counter_in = c.absolute_counter.value() / 1000.0;
         a.real_in = c.plant.real_in();
-        a.error_in = std::remainder(a.real_in - a.counter_in, 10.0);
+        // The counters read 0 .. 9.999 and wrap; the error counts the wraps (switch 104's turns),
+        // so a part 10 inches from where the counters say is not reported as on the spot.
+        a.error_in = a.real_in - static_cast<double>(c.absolute_counter.unwrapped_value()) / 1000.0;
         a.impulses = c.plant.impulses();
         a.lost_steps = c.absolute_counter.lost() + c.increment_counter.lost();
         if (orders_.number >= 0) {

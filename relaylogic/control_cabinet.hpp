@@ -36,7 +36,7 @@ namespace parsons::relaylogic {
 struct AxisResult {
     double counter_in = 0;                   // what absolute counter 104-110 reads
     double real_in = 0;                      // where the part really is
-    double error_in = 0;                     // real - counter (modulo the counters' 10 inches)
+    double error_in = 0;                     // real - counter, the counter's wraps counted
     long impulses = 0;                       // commutator 102 impulses the screw produced
     long lost_steps = 0;                     // impulses the stepping switches could not follow
     std::optional<double> fixture_angle_deg; // swivel and tilt

@@ -28,9 +28,10 @@ AbsoluteCounter::AbsoluteCounter(Tracer& tracer, const std::string& scope) : tra
     }
 }
 
-void AbsoluteCounter::jump(const Digits& positions, const std::array<double, 4>& last_step_s) {
+void AbsoluteCounter::jump(const Digits& positions, const std::array<double, 4>& last_step_s,
+                           long inch_turns) {
     for (std::size_t i = 0; i < 4; ++i) {
-        switches_.at(i).jump(positions.at(i), last_step_s.at(i));
+        switches_.at(i).jump(positions.at(i), last_step_s.at(i), i == 0 ? inch_turns : 0);
         tracer_.set(signals_.at(i), static_cast<std::uint32_t>(positions.at(i)));
     }
 }

@@ -178,11 +178,15 @@ void jump_quiet_impulses(AxisCircuit& c, long n) {
     // (the crossing's upper reading), in the sense reversing control 214 set.
     Digits absolute{};
     std::array<double, 4> absolute_last{};
+    long inch_turns = 0; // switch 104's net passes 9 -> 0, as one-by-one stepping counts them
     for (std::size_t i = 0; i < 4; ++i) {
         const long m = kUnits.at(i);
         const SteppingSwitch& sw = c.absolute_counter.stepping_switch(i);
         const long steps = d * (floor_div(kn, m) - floor_div(k0, m));
         absolute.at(i) = mod10(sw.position() + c.direction * steps);
+        if (i == 0) {
+            inch_turns = floor_div(sw.position() + c.direction * steps, 10);
+        }
         absolute_last.at(i) = sw.last_step_s();
         if (steps > 0) {
             // The last impulse of the stretch whose upper reading is a multiple of m.
@@ -203,7 +207,7 @@ void jump_quiet_impulses(AxisCircuit& c, long n) {
         }
     }
     const double t_last = plant.impulse_time(n);
-    c.absolute_counter.jump(absolute, absolute_last);
+    c.absolute_counter.jump(absolute, absolute_last, inch_turns);
     c.increment_counter.jump(increment, increment_last);
     plant.skip_impulses(n);
     c.contact_set_a += n;

@@ -54,11 +54,9 @@ json save_each(const std::array<T, N>& parts) {
 } // namespace
 
 json SteppingSwitch::save() const {
-    return json{{"position", position_},
-                {"last_step_s", exact(last_step_s_)},
-                {"lost", lost_},
-                {"steps", steps_},
-                {"skip_at", skip_at_}};
+    return json{{"position", position_}, {"last_step_s", exact(last_step_s_)},
+                {"lost", lost_},         {"steps", steps_},
+                {"skip_at", skip_at_},   {"turns", turns_}};
 }
 
 void SteppingSwitch::load(const json& j) {
@@ -67,6 +65,7 @@ void SteppingSwitch::load(const json& j) {
     lost_ = read<long>(j, "lost");
     steps_ = read<long>(j, "steps");
     skip_at_ = read<long>(j, "skip_at");
+    turns_ = j.contains("turns") ? read<long>(j, "turns") : 0; // states saved before it: 0
 }
 
 json AbsoluteCounter::save() const {

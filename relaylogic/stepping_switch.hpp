@@ -23,6 +23,10 @@ public:
 
     int position() const { return position_; }
     long lost() const { return lost_; }
+    // Net whole turns of the wiper: +1 each time it passes 9 -> 0, -1 each 0 -> 9. Not a part
+    // of the 1952 switch: the emulator keeps it so that a report can tell a counter that
+    // wrapped round from one that is 10 inches out (counters 104-110 read 0 .. 9.999 only).
+    long turns() const { return turns_; }
 
     Step step(int direction, double t, double min_interval_s) {
         if (t - last_step_s_ < min_interval_s) {
@@ -49,9 +53,10 @@ public:
     // Fast-forward: after a stretch of impulses that all found the switch ready, it stands on
     // `position`, and took its last step at time `last_step_s`.
     double last_step_s() const { return last_step_s_; }
-    void jump(int position, double last_step_s) {
+    void jump(int position, double last_step_s, long turns = 0) {
         position_ = position;
         last_step_s_ = last_step_s;
+        turns_ += turns;
     }
 
     // The state a saved machine keeps (relaylogic/machine_state.cpp).
@@ -64,10 +69,12 @@ private:
         if (direction >= 0) {
             const bool carry = position_ == 9;
             position_ = carry ? 0 : position_ + 1;
+            turns_ += carry ? 1 : 0;
             return carry;
         }
         const bool carry = position_ == 0;
         position_ = carry ? 9 : position_ - 1;
+        turns_ -= carry ? 1 : 0;
         return carry;
     }
 
@@ -76,6 +83,7 @@ private:
     long skip_at_ = 0; // 0: no fault
     double last_step_s_ = -std::numeric_limits<double>::infinity();
     long lost_ = 0;
+    long turns_ = 0; // net wraps (see turns())
 };
 
 } // namespace parsons::relaylogic

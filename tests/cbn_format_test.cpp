@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <fmt/format.h>
+
 #include <random>
 #include <sstream>
 
@@ -135,4 +137,24 @@ TEST_CASE("Column binary: a parity error names card, byte and column", "[cbn][ba
 
 TEST_CASE("Column binary: an empty file is an error, not an empty deck", "[cbn][bad-input]") {
     CHECK(read_error("") == "deck.cbn: empty file: the deck has no cards");
+}
+
+// The kind of the .bin low-bit check (issue 11, item 7): no single wrong hole is read silently.
+TEST_CASE("Column binary: any one bit flipped in any byte of a card is refused, never read",
+          "[cbn][bad-input]") {
+    std::mt19937 rng(1130);
+    const Card card = random_card(rng);
+    const std::string good = write_deck({card, card});
+    for (std::size_t i = 0; i < 160; ++i) {
+        for (int bit = 0; bit < 7; ++bit) {
+            std::string bytes = good;
+            bytes.at(160 + i) = static_cast<char>(bytes.at(160 + i) ^ (1 << bit));
+            INFO("byte " << i << ", bit " << bit);
+            const std::string error = read_error(bytes);
+            CHECK(
+                error.find(fmt::format("deck.cbn: card 2, byte {} (offset {:#x}): parity error in "
+                                       "column {} ",
+                                       160 + i + 1, 160 + i, i / 2 + 1)) == 0);
+        }
+    }
 }

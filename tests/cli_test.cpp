@@ -84,7 +84,7 @@ TEST_CASE("CLI: show warns about a wrong check and the shared-bank hazard", "[cl
                 "1,0,tilt,+,3,,,0.000,0.000,5\n");
     auto shown = run_parsons("show " + q(dir.str("hazard.csv")));
     CHECK(shown.exit_code == 0);
-    CHECK(shown.output.find("warning: table: check 9.000 but the stop moves 9.050") !=
+    CHECK(shown.output.find("warning: table: check 9.000 but the stop 9.050 is 9.050 from") !=
           std::string::npos);
     CHECK(shown.output.find("warning: table: shared-bank hazard: the absolute banks 350-356 also "
                             "compare equal at 8.050") != std::string::npos);
@@ -185,7 +185,7 @@ TEST_CASE("CLI: usage errors exit 2, --help exits 0 with an example", "[cli]") {
     auto unknown = run_parsons("show " + q(dir.str("deck.xyz")));
     CHECK(unknown.exit_code == 2);
     CHECK(unknown.output.find("deck.xyz: cannot tell the deck format from the extension or its "
-                              "first bytes; give --format cbn, bin, text or listing") !=
+                              "first bytes; give --format cbn, bin, text, listing, tape or five") !=
           std::string::npos);
     auto unknown_out =
         run_parsons("convert " + q(source_path(kSample)) + " -o " + q(dir.str("out.xyz")));
@@ -236,7 +236,7 @@ TEST_CASE("CLI: a listing of nothing but its header says no cards, an empty file
     auto header = run_parsons("show " + q(dir.str("header.csv")));
     CHECK(header.exit_code == 2);
     CHECK(header.output.find("header.csv: no cards: the file holds nothing but a header, "
-                             "comments or blank lines") != std::string::npos);
+                             "comments, blank lines or blank tape") != std::string::npos);
     auto empty = run_parsons("show " + q(dir.str("empty.csv")));
     CHECK(empty.exit_code == 2);
     CHECK(empty.output.find("empty.csv: empty file: the deck has no cards") != std::string::npos);

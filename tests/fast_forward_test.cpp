@@ -11,10 +11,12 @@
 // The decks are plausible rather than valid: moves of every length, slow-downs well placed or
 // too close, a wrong check or card number now and then, patterns that stall. The profiles vary
 // speeds (some faster than the switches can step), stepping rate, acceleration, delay 258,
-// screw error, travel limits, soft limits, separate registers, hundredths-only counting and
-// every kind of injected fault, so every kind of stretch end is met.
+// screw error, travel limits, soft limits, separate registers, hundredths-only counting, the
+// ribbon feed of Fig. 9 and every kind of injected fault, so every kind of stretch end is met;
+// each deck is fed on cards, on five cards a step or on perforated tape (col. 6).
 #include "tests/machine_support.hpp"
 
+#include "cardreader/deck_io.hpp"
 #include "cardreader/deck_review.hpp"
 #include "relaylogic/fast_forward.hpp"
 
@@ -22,7 +24,9 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <random>
+#include <sstream>
 
 using namespace parsons;
 using namespace parsons::cardreader;
@@ -74,6 +78,9 @@ struct Case {
     axes::MachineProfile profile = axes::default_profile();
     std::vector<CardOrders> cards;
     std::vector<Fault> faults;
+    // The medium the deck is fed on (Fig. 9 / col. 6): it is written to this format and read
+    // back by its reader before the run, so the new readers stand in the random decks too.
+    DeckFormat medium = DeckFormat::cbn;
 };
 
 Case random_case(std::mt19937& rng) {
@@ -119,6 +126,9 @@ Case random_case(std::mt19937& rng) {
     }
     p.separate_registers = chance(0.2);
     p.count_hundredths_at_speed_1 = chance(0.15);
+    p.ribbon_feed = chance(0.3); // Fig. 9: cards end to end, no feed gap
+    c.medium = std::array{DeckFormat::cbn, DeckFormat::tape, DeckFormat::five}.at(
+        static_cast<std::size_t>(pick(0, 2)));
 
     // Half the decks are valid; the others have one mistake, on one card and axis.
     const int mistake = chance(0.5) ? 0 : pick(1, 6);
@@ -191,7 +201,21 @@ RunResult run_at(const Case& c, Pace pace, MachineObserver* observer) {
     for (const auto& o : c.cards) {
         punched.push_back(encode(o, fig8_layout()).card);
     }
-    test::VectorDeck deck(punched);
+    std::ostringstream medium;
+    DeckOptions options;
+    options.format = c.medium;
+    auto sink = open_card_sink(medium, options);
+    for (const Card& card : punched) {
+        sink->write(card);
+    }
+    std::istringstream fed(medium.str());
+    auto source = open_card_source(fed, options);
+    std::vector<Card> sensed;
+    while (auto card = source->next()) {
+        sensed.push_back(*card);
+    }
+    REQUIRE(sensed == punched);
+    test::VectorDeck deck(sensed);
     ControlCabinet cabinet(c.profile, fig8_layout());
     for (const auto& f : c.faults) {
         cabinet.add_fault(f);

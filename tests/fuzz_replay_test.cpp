@@ -86,6 +86,14 @@ TEST_CASE("Fuzz replay: every kept listing gives cards or a DeckError", "[fuzz][
     replay("listing");
 }
 
+TEST_CASE("Fuzz replay: every kept perforated tape gives cards or a DeckError", "[fuzz][tape]") {
+    replay("tape");
+}
+
+TEST_CASE("Fuzz replay: every kept five-card deck gives cards or a DeckError", "[fuzz][five]") {
+    replay("five");
+}
+
 TEST_CASE("Fuzz replay: every kept airfoil file gives a smooth airfoil or a DeckError",
           "[fuzz][airfoil]") {
     replay("airfoil");

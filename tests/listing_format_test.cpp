@@ -152,7 +152,7 @@ TEST_CASE("Listing: other malformed rows are named by line", "[listing][bad-inpu
 TEST_CASE("Listing: an empty file, or a header alone, is an error", "[listing][bad-input]") {
     CHECK(read_error("") == "deck.csv: empty file: the deck has no cards");
     CHECK(read_error(kHeader) == "deck.csv: no cards: the file holds nothing but a header, "
-                                 "comments or blank lines");
+                                 "comments, blank lines or blank tape");
 }
 
 TEST_CASE("Listing: a spreadsheet's UTF-8 byte-order mark is read past", "[listing]") {

@@ -5,11 +5,13 @@
 namespace parsons::fuzz {
 namespace {
 
-constexpr std::array<FuzzTarget, 7> kTargets = {{
+constexpr std::array<FuzzTarget, 9> kTargets = {{
     {"cbn", "column-binary decks (.cbn), as SIMH writes them", fuzz_cbn},
     {"bin", "IBM 1130 binary decks (.bin)", fuzz_bin},
     {"text", "80-column text card images, in 029 and 026 code", fuzz_text},
     {"listing", "the listing (.csv): one row per axis per card", fuzz_listing},
+    {"tape", "eight-channel perforated tape (.tape), 161 frames a card", fuzz_tape},
+    {"five", "five per-axis cards a step (.five), reassembled into one", fuzz_five},
     {"airfoil", "airfoil coordinate files (.dat), Selig and Lednicer", fuzz_airfoil},
     {"profile", "machine profiles (JSON), then a short run with the profile", fuzz_profile},
     {"machine", "a short valid-looking deck, some punches flipped, run on the machine",

@@ -44,6 +44,8 @@ void fuzz_cbn(Bytes input);
 void fuzz_bin(Bytes input);
 void fuzz_text(Bytes input);
 void fuzz_listing(Bytes input);
+void fuzz_tape(Bytes input);
+void fuzz_five(Bytes input);
 void fuzz_airfoil(Bytes input);
 void fuzz_profile(Bytes input);
 void fuzz_machine(Bytes input);

@@ -10,8 +10,10 @@
 #include "cardreader/deck_error.hpp"
 #include "cardreader/deck_io.hpp"
 #include "cardreader/deck_review.hpp"
+#include "cardreader/five_card_format.hpp"
 #include "cardreader/layout.hpp"
 #include "cardreader/listing_format.hpp"
+#include "cardreader/tape_format.hpp"
 #include "cardreader/text_format.hpp"
 
 #include <fmt/format.h>
@@ -103,6 +105,28 @@ void fuzz_bin(Bytes input) {
         round_trip(
             card, "bin", [](std::ostream& out) { return make_bin_sink(out, "out"); },
             [](std::istream& in) { return make_bin_source(in, "out"); });
+    });
+}
+
+void fuzz_tape(Bytes input) {
+    DeckOptions options;
+    options.format = DeckFormat::tape;
+    read_deck(input, options, [](const Card& card) {
+        round_trip(
+            card, "tape", [](std::ostream& out) { return make_tape_sink(out, "out"); },
+            [](std::istream& in) { return make_tape_source(in, "out"); });
+    });
+}
+
+void fuzz_five(Bytes input) {
+    DeckOptions options;
+    options.format = DeckFormat::five;
+    read_deck(input, options, [](const Card& card) {
+        // A card reassembled from five per-axis cards splits into five again, and back.
+        round_trip(
+            card, "five",
+            [](std::ostream& out) { return make_five_card_sink(out, "out", fig8_layout()); },
+            [](std::istream& in) { return make_five_card_source(in, "out", fig8_layout()); });
     });
 }
 

@@ -1,0 +1,349 @@
+// The media of Fig. 9 and col. 6: a ribbon of cards (no feed gap), five separate cards a step
+// (one per lead screw) and perforated tape. Each feeds the same orders (DESIGN §4 rule 13).
+#include "tests/machine_support.hpp"
+#include "tests/test_support.hpp"
+
+#include "cardreader/deck_error.hpp"
+#include "cardreader/five_card_format.hpp"
+#include "cardreader/tape_format.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <bit>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+using namespace parsons;
+using namespace parsons::cardreader;
+using parsons::test::q;
+using parsons::test::read_bytes;
+using parsons::test::read_error;
+using parsons::test::run_parsons;
+using parsons::test::source_path;
+using parsons::test::TempDir;
+using parsons::test::write_bytes;
+
+namespace {
+
+std::vector<Card> random_cards(std::mt19937& rng, int n) {
+    std::vector<Card> cards;
+    for (int i = 0; i < n; ++i) {
+        cards.push_back(encode(test::random_orders(rng, fig8_layout()), fig8_layout()).card);
+    }
+    return cards;
+}
+
+std::string write_deck(const std::vector<Card>& cards, DeckFormat format) {
+    std::ostringstream out;
+    DeckOptions options;
+    options.format = format;
+    auto sink = open_card_sink(out, options);
+    for (const Card& c : cards) {
+        sink->write(c);
+    }
+    return out.str();
+}
+
+std::vector<Card> read_deck(const std::string& bytes, DeckFormat format) {
+    std::istringstream in(bytes);
+    DeckOptions options;
+    options.format = format;
+    auto source = open_card_source(in, options);
+    std::vector<Card> cards;
+    while (auto c = source->next()) {
+        cards.push_back(*c);
+    }
+    return cards;
+}
+
+std::string tape_of(const Card& card) {
+    const auto frames = tape_encode(card);
+    return {frames.begin(), frames.end()};
+}
+
+relaylogic::RunResult run_sample(axes::MachineProfile profile, relaylogic::Pace pace) {
+    std::ifstream in(source_path("decks/samples/patent-example.csv"));
+    DeckOptions options;
+    options.format = DeckFormat::listing;
+    auto deck = open_card_source(in, options);
+    relaylogic::ControlCabinet cabinet(std::move(profile), fig8_layout());
+    cabinet.set_pace(pace);
+    cabinet.record_card_times(true);
+    return cabinet.run(*deck);
+}
+
+} // namespace
+
+TEST_CASE("Tape: a column is two frames, rows 12-3 then 4-9 in channels 6..1, odd parity in "
+          "channel 7, channel 8 ends the card",
+          "[tape][media]") {
+    Card card;
+    card.set_column(1, 0x801); // rows 12 and 9
+    card.set_column(2, 0x0C0); // rows 2 and 3: two holes, check channel punched
+    card.set_column(80, 0xFFF);
+    const auto frames = tape_encode(card);
+    REQUIRE(frames.size() == 161);
+    CHECK(frames.at(0) == 0x20);   // row 12 in channel 6
+    CHECK(frames.at(1) == 0x01);   // row 9 in channel 1
+    CHECK(frames.at(2) == 0x43);   // rows 2, 3 in channels 2, 1, and the check hole
+    CHECK(frames.at(3) == 0x40);   // a blank half column still has a hole (channel 7)
+    CHECK(frames.at(158) == 0x7F); // six holes: check channel punched
+    CHECK(frames.at(159) == 0x7F);
+    CHECK(frames.at(160) == 0x80);
+    for (std::size_t i = 0; i < 160; ++i) {
+        INFO("frame " << i + 1);
+        CHECK(std::popcount(static_cast<unsigned>(frames.at(i))) % 2 == 1);
+        CHECK((frames.at(i) & 0x80) == 0);
+    }
+}
+
+TEST_CASE("Tape: a deck reads back card for card, leader and trailer between cards ignored",
+          "[tape][media]") {
+    std::mt19937 rng(1952);
+    const auto cards = random_cards(rng, 12);
+    std::string bytes(20, '\0'); // leader
+    for (const Card& c : cards) {
+        bytes += tape_of(c) + std::string(3, '\0');
+    }
+    CHECK(read_deck(bytes, DeckFormat::tape) == cards);
+    CHECK(read_deck(write_deck(cards, DeckFormat::tape), DeckFormat::tape) == cards);
+}
+
+TEST_CASE("Tape: bad frames are refused naming the frame and the channel",
+          "[tape][media][bad-input]") {
+    Card card;
+    card.set_column(3, 0x400); // row 11
+    const std::string good = tape_of(card);
+    auto error_of = [](const std::string& bytes) {
+        return read_error(bytes, DeckFormat::tape, "deck.tape");
+    };
+    std::string parity = std::string(2, '\0') + good + good;
+    parity.at(2 + 161 + 4) = 0x03; // card 2, column 3, rows 12-3: two holes, no check hole
+    CHECK(error_of(parity) ==
+          "deck.tape: frame 168, channel 7 (card 2, column 3, rows 12-3): check channel wrong: "
+          "frame 0x03 has an even number of holes in channels 1-7 (odd parity)");
+    std::string blank = good;
+    blank.at(9) = '\0';
+    CHECK(error_of(blank) == "deck.tape: frame 10, channel 7 (card 1, column 5, rows 4-9): check "
+                             "channel wrong: frame 0x00 has an even number of holes in channels "
+                             "1-7 (odd parity); blank tape inside a card");
+    std::string early_end = good;
+    early_end.at(40) = static_cast<char>(0x80);
+    CHECK(error_of(early_end) ==
+          "deck.tape: frame 41, channel 8 (card 1, column 21, rows 12-3): end of card (channel "
+          "8) after only 40 of the card's 160 data frames: a frame is missing");
+    std::string marked = good;
+    marked.at(7) = static_cast<char>(0xC0); // a data frame with channel 8 too
+    CHECK(error_of(marked).find("deck.tape: frame 8, channel 8 (card 1, column 4, rows 4-9)") == 0);
+    std::string no_end = good;
+    no_end.at(160) = 0x40;
+    CHECK(error_of(no_end) == "deck.tape: frame 161, channel 8: card 1 has 160 data frames but "
+                              "frame 0x40 is not the end of card (channel 8 alone)");
+    CHECK(error_of(good.substr(0, 160)) == "deck.tape: frame 161: the tape ends where card 1's "
+                                           "end-of-card frame (channel 8) should be");
+    CHECK(error_of(good + good.substr(0, 50)) ==
+          "deck.tape: frame 212: the tape ends inside card 2 after 50 of its 160 data frames");
+    CHECK(error_of(std::string(5, '\0') + "\x80") ==
+          "deck.tape: frame 6, channel 8: end of card where no card has begun");
+    CHECK(error_of(std::string(30, '\0')) == "deck.tape: no cards: the file holds nothing but a "
+                                             "header, comments, blank lines or blank tape");
+}
+
+TEST_CASE("Five cards: one card per lead screw, marked in column 76, the axis's columns from 2",
+          "[five][media]") {
+    std::mt19937 rng(70);
+    const Card card = random_cards(rng, 1).front();
+    const FiveCards five = split_into_five(card, fig8_layout());
+    REQUIRE_FALSE(five.error);
+    // fig8: table 2-19, cross 20-33, vertical 34-47, swivel 48-61, tilt 62-75.
+    const std::array<int, 5> first = {2, 20, 34, 48, 62};
+    const std::array<int, 5> width = {18, 14, 14, 14, 14};
+    for (std::size_t a = 0; a < 5; ++a) {
+        INFO(axis_name(kAxes.at(a)));
+        const Card& c = five.cards.at(a);
+        CHECK(c.column(76) == row_bit(digit_row(static_cast<int>(a) + 1)));
+        CHECK(c.column(1) == card.column(1));
+        for (int col = 77; col <= 80; ++col) {
+            CHECK(c.column(col) == card.column(col));
+        }
+        for (int i = 0; i < width.at(a); ++i) {
+            CHECK(c.column(2 + i) == card.column(first.at(a) + i));
+        }
+        for (int col = 2 + width.at(a); col < 76; ++col) {
+            CHECK(c.column(col) == 0);
+        }
+    }
+    Card with_76 = card;
+    with_76.set_column(76, row_bit(Row::r3));
+    CHECK(split_into_five(with_76, fig8_layout()).error ==
+          "column 76 is punched, but the five-card layout carries no field of that column "
+          "(column 76 holds the axis mark)");
+}
+
+TEST_CASE("Five cards: the reader reassembles each step, in any order within it", "[five][media]") {
+    std::mt19937 rng(71);
+    const auto cards = random_cards(rng, 6);
+    const std::string bytes = write_deck(cards, DeckFormat::five);
+    REQUIRE(bytes.size() == cards.size() * 5 * 160);
+    CHECK(read_deck(bytes, DeckFormat::five) == cards);
+    // Step 2 (cards 6-10) shuffled: tilt first, table last.
+    std::string shuffled = bytes;
+    for (int k = 0; k < 5; ++k) {
+        shuffled.replace(static_cast<std::size_t>((5 + k) * 160), 160,
+                         bytes.substr(static_cast<std::size_t>((9 - k) * 160), 160));
+    }
+    CHECK(read_deck(shuffled, DeckFormat::five) == cards);
+}
+
+TEST_CASE("Five cards: a missing, doubled or disagreeing card is refused by card and column",
+          "[five][media][bad-input]") {
+    std::mt19937 rng(72);
+    const auto cards = random_cards(rng, 2);
+    auto physical = [&](std::size_t step) {
+        return split_into_five(cards.at(step), fig8_layout()).cards;
+    };
+    auto deck_of = [](const std::vector<Card>& cs) { return write_deck(cs, DeckFormat::cbn); };
+    auto error_of = [](const std::string& bytes) {
+        return read_error(bytes, DeckFormat::five, "deck.five");
+    };
+    auto s1 = physical(0);
+    auto s2 = physical(1);
+    std::vector<Card> deck(s1.begin(), s1.end());
+    deck.insert(deck.end(), s2.begin(), s2.end());
+
+    auto doubled = deck;
+    doubled.at(7) = doubled.at(6); // card 8 is a second cross card
+    CHECK(error_of(deck_of(doubled)) ==
+          "deck.five: card 8, column 76: a second cross card in step 2 "
+          "(the first is card 7): each step has one card per lead "
+          "screw");
+    auto unmarked = deck;
+    unmarked.at(2).set_column(76, 0);
+    CHECK(error_of(deck_of(unmarked)) == "deck.five: card 3, column 76: axis mark 0x000 is not one "
+                                         "punch in rows 1-5 (1 table, 2 cross, 3 vertical, 4 "
+                                         "swivel, 5 tilt)");
+    auto two_marks = deck;
+    two_marks.at(2).set_column(76, row_bit(Row::r1) | row_bit(Row::r2));
+    CHECK(error_of(deck_of(two_marks)).find("deck.five: card 3, column 76: axis mark") == 0);
+    auto number = deck;
+    number.at(8).set_column(80, number.at(8).column(80) ^ row_bit(Row::r12));
+    CHECK(error_of(deck_of(number)) == "deck.five: card 9, column 80: differs from the table card "
+                                       "(card 6) of the same step: the five cards carry one card "
+                                       "number");
+    auto spindle = deck;
+    spindle.at(1).set_column(1, spindle.at(1).column(1) ^ row_bit(Row::r5));
+    CHECK(error_of(deck_of(spindle))
+              .find("deck.five: card 2, column 1: differs from the table "
+                    "card (card 1)") == 0);
+    auto stray = deck;
+    stray.at(1).set_column(20, row_bit(Row::r4)); // the cross card ends at column 15
+    CHECK(error_of(deck_of(stray)) == "deck.five: card 2, column 20: punched, but the cross card "
+                                      "has no field here");
+    auto short_deck = deck;
+    short_deck.pop_back();
+    CHECK(error_of(deck_of(short_deck)) == "deck.five: the deck ends after 4 of the five cards of "
+                                           "step 2 (cards 6-9): five cards a step, one per lead "
+                                           "screw");
+}
+
+TEST_CASE("Media: card -> five-card -> tape -> card gives identical cards (parsons convert)",
+          "[media][cli]") {
+    TempDir dir;
+    REQUIRE(run_parsons("punch " + q(source_path("decks/samples/patent-example.csv")) + " -o " +
+                        q(dir.str("deck.cbn")))
+                .exit_code == 0);
+    auto step = [&](const std::string& from, const std::string& to) {
+        auto r = run_parsons("convert " + q(dir.str(from)) + " -o " + q(dir.str(to)));
+        INFO(r.output);
+        REQUIRE(r.exit_code == 0);
+    };
+    step("deck.cbn", "deck.five");
+    step("deck.five", "deck.tape");
+    step("deck.tape", "back.cbn");
+    CHECK(read_bytes(dir.path("deck.five")).size() == 4 * 5 * 160);
+    CHECK(read_bytes(dir.path("deck.tape")).size() == 4 * 161);
+    CHECK(read_bytes(dir.path("back.cbn")) == read_bytes(dir.path("deck.cbn")));
+    // and the other way round
+    step("deck.cbn", "deck2.tape");
+    step("deck2.tape", "deck2.five");
+    step("deck2.five", "back2.cbn");
+    CHECK(read_bytes(dir.path("back2.cbn")) == read_bytes(dir.path("deck.cbn")));
+}
+
+TEST_CASE("Media: a bad tape is refused with exit 2 and a message naming the frame",
+          "[media][cli][bad-input]") {
+    TempDir dir;
+    std::mt19937 rng(73);
+    std::string bytes = write_deck(random_cards(rng, 2), DeckFormat::tape);
+    bytes.at(9) = static_cast<char>(bytes.at(9) ^ 0x04); // card 1, frame 10
+    write_bytes(dir.path("bad.tape"), bytes);
+    for (const char* cmd : {"convert", "run", "check", "show"}) {
+        INFO(cmd);
+        const std::string extra = std::string(cmd) == "convert" ? " -o " + q(dir.str("x.cbn")) : "";
+        auto r = run_parsons(std::string(cmd) + " " + q(dir.str("bad.tape")) + extra);
+        CHECK(r.exit_code == 2);
+        CHECK(r.output.find("bad.tape: frame 10, channel 7 (card 1, column 5, rows 4-9): check "
+                            "channel wrong") != std::string::npos);
+    }
+    CHECK_FALSE(std::filesystem::exists(dir.path("x.cbn")));
+}
+
+TEST_CASE("Ribbon: a deck fed as a ribbon (Fig. 9) takes exactly the feed gaps less machine "
+          "time, and ends the same",
+          "[media][ribbon][cabinet]") {
+    auto profile = axes::default_profile();
+    profile.feed_gap_s = GENERATE(0.10, 0.037);
+    const auto pace = GENERATE(relaylogic::Pace::fast_forward, relaylogic::Pace::impulse_level);
+    const auto cards = run_sample(profile, pace);
+    profile.ribbon_feed = true;
+    const auto ribbon = run_sample(profile, pace);
+    REQUIRE(cards.completed);
+    REQUIRE(ribbon.completed);
+    REQUIRE(ribbon.cards_read == cards.cards_read);
+    const double gaps = static_cast<double>(cards.cards_read - 1) * profile.feed_gap_s;
+    CHECK(cards.machine_seconds - ribbon.machine_seconds == Approx(gaps).margin(1e-9));
+    REQUIRE(ribbon.cards.size() == cards.cards.size());
+    for (std::size_t i = 0; i < cards.cards.size(); ++i) {
+        INFO("card " << i + 1);
+        const double long_card = cards.cards.at(i).end_s - cards.cards.at(i).start_s;
+        const double short_card = ribbon.cards.at(i).end_s - ribbon.cards.at(i).start_s;
+        CHECK(long_card - short_card == Approx(i == 0 ? 0.0 : profile.feed_gap_s).margin(1e-9));
+    }
+    for (std::size_t a = 0; a < 5; ++a) {
+        CHECK(ribbon.axes.at(a).counter_in == cards.axes.at(a).counter_in);
+        CHECK(ribbon.axes.at(a).real_in == Approx(cards.axes.at(a).real_in).margin(1e-12));
+        CHECK(ribbon.axes.at(a).impulses == cards.axes.at(a).impulses);
+    }
+}
+
+TEST_CASE("Ribbon: run --feed ribbon and a tape deck save the feed gaps, --feed cards on tape is "
+          "refused",
+          "[media][ribbon][cli]") {
+    TempDir dir;
+    REQUIRE(run_parsons("punch " + q(source_path("decks/samples/patent-example.csv")) + " -o " +
+                        q(dir.str("deck.cbn")))
+                .exit_code == 0);
+    REQUIRE(run_parsons("convert " + q(dir.str("deck.cbn")) + " -o " + q(dir.str("deck.tape")))
+                .exit_code == 0);
+    auto seconds = [&](const std::string& args) {
+        auto r = run_parsons("run -q " + args + " --report " + q(dir.str("r.json")));
+        INFO(r.output);
+        REQUIRE(r.exit_code == 0);
+        const std::string report = read_bytes(dir.path("r.json"));
+        const auto key = report.rfind("\"machine_seconds\""); // the deck's, after the cards'
+        REQUIRE(key != std::string::npos);
+        return std::stod(report.substr(report.find(':', key) + 1));
+    };
+    const double cards = seconds(q(dir.str("deck.cbn")));
+    const double ribbon = seconds(q(dir.str("deck.cbn")) + " --feed ribbon");
+    const double tape = seconds(q(dir.str("deck.tape")));
+    const double gap = axes::default_profile().feed_gap_s;
+    CHECK(cards - ribbon == Approx(3 * gap).margin(1e-6));
+    CHECK(tape == Approx(ribbon).margin(1e-9));
+    CHECK(seconds(q(dir.str("deck.cbn")) + " --feed cards") == Approx(cards).margin(1e-9));
+    auto refused = run_parsons("run " + q(dir.str("deck.tape")) + " --feed cards");
+    CHECK(refused.exit_code == 2);
+    CHECK(refused.output.find("deck.tape: --feed cards: a tape deck has no separate cards") !=
+          std::string::npos);
+}
