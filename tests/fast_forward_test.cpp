@@ -39,7 +39,8 @@ public:
         const std::string& n = info.name;
         const bool driven = n.find("counter_") != std::string::npos ||
                             n.find("comparer") != std::string::npos || n == "stepping_relay_256" ||
-                            n == "delay_device_258";
+                            n == "delay_device_258" || n.find("commutator_") == 0 ||
+                            n.find("lamp_27") == 0;
         driven_.push_back(driven);
         values_.push_back(initial);
         if (n == "zeroizing_circuit_292") {
@@ -287,12 +288,11 @@ TEST_CASE("Fast-forward: a jump leaves every stepping switch, its last-step time
         INFO("trial " << trial);
         Tracer tracer_a;
         Tracer tracer_b;
-        axes::AxisProfile profile = axes::default_profile().axes.at(0);
-        profile.travel_min_in = -1e6;
-        profile.travel_max_in = 1e6;
-        const bool separate = false;
-        AxisCircuit a(tracer_a, profile, Axis::table, separate);
-        AxisCircuit b(tracer_b, profile, Axis::table, separate);
+        axes::MachineProfile profile = axes::default_profile();
+        profile.axes.at(0).travel_min_in = -1e6;
+        profile.axes.at(0).travel_max_in = 1e6;
+        AxisCircuit a(tracer_a, profile, Axis::table);
+        AxisCircuit b(tracer_b, profile, Axis::table);
         const int motion = pick(0, 1) != 0 ? +1 : -1;
         const int counting = pick(0, 3) != 0 ? motion : -motion; // coast counted the wrong way
         const Digits start_abs = value_digits(static_cast<int>(pick(0, 9999)));
