@@ -75,6 +75,8 @@ struct Case {
     axes::MachineProfile profile = axes::default_profile();
     std::vector<CardOrders> cards;
     std::vector<Fault> faults;
+    // Extra holes punched after encoding: (card, column, digit), a double punch.
+    std::vector<std::tuple<std::size_t, int, int>> extra_punches;
 };
 
 Case random_case(std::mt19937& rng) {
@@ -120,9 +122,14 @@ Case random_case(std::mt19937& rng) {
     }
     p.separate_registers = chance(0.2);
     p.count_hundredths_at_speed_1 = chance(0.15);
+    // The readings of the patent and the additions (MachineProfile's last group).
+    p.incremental_equality_stops_at_any_speed = chance(0.2);
+    p.delay_258_waits_for_equality_to_leave = chance(0.2);
+    p.lamps_only_on_trip = chance(0.2);
+    p.refuse_double_punch = chance(0.3);
 
     // Half the decks are valid; the others have one mistake, on one card and axis.
-    const int mistake = chance(0.5) ? 0 : pick(1, 6);
+    const int mistake = chance(0.5) ? 0 : pick(1, 7);
     const int cards = pick(1, 8);
     const int bad_card = pick(0, cards - 1);
     const auto bad_axis = kAxes.at(static_cast<std::size_t>(pick(0, 4)));
@@ -170,6 +177,15 @@ Case random_case(std::mt19937& rng) {
             from = to;
         }
         c.cards.push_back(o);
+        if (mistake == 7 && n == bad_card) {
+            // A double punch in one digit column of a number field of the bad axis (fig8:
+            // table columns 4-19, the other axes 14 columns further on per axis).
+            const int first = bad_axis == Axis::table
+                                  ? 4
+                                  : 22 + 14 * (static_cast<int>(axis_index(bad_axis)) - 1);
+            const int last = bad_axis == Axis::table ? 19 : first + 11;
+            c.extra_punches.emplace_back(c.cards.size() - 1, pick(first, last), pick(0, 9));
+        }
     }
     if (chance(0.25)) {
         const std::string axis(axis_name(kAxes.at(static_cast<std::size_t>(pick(0, 4)))));
@@ -191,6 +207,9 @@ RunResult run_at(const Case& c, Pace pace, MachineObserver* observer) {
     std::vector<Card> punched;
     for (const auto& o : c.cards) {
         punched.push_back(encode(o, fig8_layout()).card);
+    }
+    for (const auto& [card, column, digit] : c.extra_punches) {
+        punched.at(card).punch(column, digit_row(digit));
     }
     test::VectorDeck deck(punched);
     ControlCabinet cabinet(c.profile, fig8_layout());
@@ -245,6 +264,8 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
     long impulses = 0;
     int stopped = 0;
     int lost = 0;
+    int sensed_two_relays = 0; // parsons-1952 reading a double punch into two relays
+    int interpretations = 0;
     for (int n = 0; n < 240; ++n) {
         const Case c = random_case(rng);
         INFO("deck " << n);
@@ -268,12 +289,21 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
             lost += a.lost_steps > 0 ? 1 : 0;
         }
         stopped += reference.stop ? 1 : 0;
+        const bool reader_refused =
+            reference.stop && reference.stop->reason == StopReason::bad_punch;
+        sensed_two_relays += !c.extra_punches.empty() && !reader_refused ? 1 : 0;
+        interpretations += c.profile.incremental_equality_stops_at_any_speed ||
+                                   c.profile.delay_258_waits_for_equality_to_leave
+                               ? 1
+                               : 0;
     }
     // The decks did what they are for: long runs, stops of several kinds, lost steps.
     CHECK(impulses > 1'000'000);
     CHECK(stopped > 40);
     CHECK(stopped < 200);
     CHECK(lost >= 3);
+    CHECK(sensed_two_relays >= 3);
+    CHECK(interpretations >= 40);
 }
 
 TEST_CASE("Fast-forward: a jump leaves every stepping switch, its last-step time and the screw "
