@@ -23,8 +23,8 @@ void BalancingCircuit::trip() {
     }
     master_closed_ = false;
     tracer_.set(magnet_265_, 1);
+    tracer_.set(master_204_, 0); // electromagnet 265 opens it
     tracer_.set(indicator_268_, 1);
-    tracer_.set(master_204_, 0);
     lamps_.insert(lamps_.begin(), "indicator 268");
 }
 
