@@ -187,6 +187,23 @@ TEST_CASE("Lamps 270 and 272: both light on a good stop while 236 stands on off,
     }
     CHECK(lit_t == stop_t);
 
+    SECTION("never lit while 236 stands on a speed, not even at a slow-down's equality") {
+        Recorder slow;
+        REQUIRE(run_orders({table_card(1, 2785, 2885, 2985, 2985)}, default_profile(), &slow)
+                    .completed);
+        std::uint32_t position = 0;
+        int rises = 0;
+        for (const auto& ch : slow.changes) {
+            if (ch.signal == "table.speed_switch_236") {
+                position = ch.new_value;
+            }
+            if (ch.signal == "table.lamp_270" && ch.new_value == 1) {
+                CHECK(position == 0);
+                ++rises;
+            }
+        }
+        CHECK(rises == 1); // at the stop only
+    }
     SECTION("the interpretation lamps_only_on_trip keeps them dark on a good stop, lit on a trip") {
         MachineProfile p = default_profile();
         p.lamps_only_on_trip = true;
