@@ -19,4 +19,21 @@ MachineProfile default_profile() {
     return p;
 }
 
+MachineProfile safe_profile() {
+    MachineProfile p = default_profile();
+    p.name = "parsons-safe";
+    p.refuse_double_punch = true;
+    return p;
+}
+
+std::optional<MachineProfile> builtin_profile(const std::string& name) {
+    if (name == "parsons-1952") {
+        return default_profile();
+    }
+    if (name == "parsons-safe") {
+        return safe_profile();
+    }
+    return std::nullopt;
+}
+
 } // namespace parsons::axes

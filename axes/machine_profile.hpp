@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -67,10 +68,12 @@ struct MachineProfile {
     // fastest impulse rate they follow. Impulses closer together than 1/rate are lost.
     double stepping_switch_step_s = 0.010;
     double max_stepping_rate_per_s = 100.0;
-    // Delay device 258: the least time it holds channel 257 open after speed switch 236 steps
-    // (it also holds until the comparer has left the equality). Longer than the time between
-    // two impulses at speed 1 (11 ms by default) and the switch misses the next number.
-    double delay_258_s = 0.005;
+    // Delay device 258: how long it holds channel 257 open after speed switch 236 steps. It
+    // must outlast an equality at the slowest speed (0.001 in at speed 3, 0.6 in/min: 100 ms;
+    // the first impulse from rest, 0.001 in at 0.2 in/s2, also 100 ms), or one equality steps
+    // the switch twice (DESIGN.md 4.5). It also hides every number the axis passes during the
+    // hold: 0.135 in at speed 1 needs slow-downs at least 0.014 in apart.
+    double delay_258_s = 0.150;
     // Motor 278 moving stepping shaft 280 one position.
     double sequence_shaft_step_s = 0.100;
     // Departure from the patent, off by default: each slow-down and the stop get their own
@@ -82,9 +85,32 @@ struct MachineProfile {
     // 110 and 310 stand still and commutator 100 steps 312 directly. The thousandths they
     // skip are right again only where the move passes whole hundredths the way it started.
     bool count_hundredths_at_speed_1 = false;
+
+    // ---- Readings of the patent and additions to it (DESIGN.md 4, rules 5, 6, 12, 14) ----
+    // The built-in profiles parsons-1952 (the default) and parsons-safe differ only here;
+    // docs/machine-profile.md tells each option's story.
+    //
+    // Interpretations: earlier readings of columns 10-11, off in both built-in profiles.
+    // "An incremental equality stops at any speed": an equality of comparer 122'' sends speed
+    // switch 236 straight to off, whatever speed it stands on.
+    bool incremental_equality_stops_at_any_speed = false;
+    // Delay 258 holds channel 257 open until its time has passed AND the comparer has left the
+    // equality that stepped the switch (one equality can never step it twice).
+    bool delay_258_waits_for_equality_to_leave = false;
+    // Lamps 270 and 272 light only when balancing circuit 266 trips (not on a good stop).
+    bool lamps_only_on_trip = false;
+    // Additions (not in the patent), named as such in messages. The card reader refuses a card
+    // with two punches in one digit column (stop bad_punch) instead of closing two relays of
+    // the bank as a 1952 reader would. On in parsons-safe.
+    bool refuse_double_punch = false;
 };
 
-// The built-in profile, with the five axes named table, cross, vertical, swivel, tilt.
+// The built-in profile, with the five axes named table, cross, vertical, swivel, tilt:
+// parsons-1952, the patent as written.
 MachineProfile default_profile();
+// parsons-safe: parsons-1952 with the emulator's protective additions on.
+MachineProfile safe_profile();
+// The built-in profile of this name (parsons-1952, parsons-safe), if there is one.
+std::optional<MachineProfile> builtin_profile(const std::string& name);
 
 } // namespace parsons::axes

@@ -157,6 +157,36 @@ json axis_json(const AxisProfile& a) {
         {"level_in", a.level_in}};
 }
 
+// ---- Readings of the patent and additions (MachineProfile's last group) ----
+bool flag(const json& j, const std::string& key) {
+    if (!j.is_boolean()) {
+        throw ProfileError(fmt::format("{}: expected true or false", key));
+    }
+    return j.get<bool>();
+}
+
+bool apply_reading(MachineProfile& p, const std::string& key, const json& value) {
+    if (key == "incremental_equality_stops_at_any_speed") {
+        p.incremental_equality_stops_at_any_speed = flag(value, key);
+    } else if (key == "delay_258_waits_for_equality_to_leave") {
+        p.delay_258_waits_for_equality_to_leave = flag(value, key);
+    } else if (key == "lamps_only_on_trip") {
+        p.lamps_only_on_trip = flag(value, key);
+    } else if (key == "refuse_double_punch") {
+        p.refuse_double_punch = flag(value, key);
+    } else {
+        return false;
+    }
+    return true;
+}
+
+void put_readings(json& j, const MachineProfile& p) {
+    j["incremental_equality_stops_at_any_speed"] = p.incremental_equality_stops_at_any_speed;
+    j["delay_258_waits_for_equality_to_leave"] = p.delay_258_waits_for_equality_to_leave;
+    j["lamps_only_on_trip"] = p.lamps_only_on_trip;
+    j["refuse_double_punch"] = p.refuse_double_punch;
+}
+
 } // namespace
 
 MachineProfile profile_from_json(const std::string& json_text, MachineProfile p) {
@@ -171,7 +201,21 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
     if (!j.is_object()) {
         throw ProfileError("the profile must be a JSON object");
     }
+    // "base": a built-in profile to start from, whatever the caller passed (applied first).
+    if (j.contains("base")) {
+        const json& base = j.at("base");
+        auto builtin = base.is_string() ? builtin_profile(base.get<std::string>()) : std::nullopt;
+        if (!builtin) {
+            throw ProfileError(fmt::format("base: expected \"parsons-1952\" or \"parsons-safe\", "
+                                           "not {}",
+                                           base.dump()));
+        }
+        p = *builtin;
+    }
     for (const auto& [key, value] : j.items()) {
+        if (key == "base") {
+            continue;
+        }
         if (key == "name") {
             if (!value.is_string()) {
                 throw ProfileError("name: expected a string");
@@ -226,6 +270,8 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
                 throw ProfileError("separate_registers: expected true or false");
             }
             p.separate_registers = value.get<bool>();
+        } else if (apply_reading(p, key, value)) {
+            // an interpretation or an addition (below)
         } else {
             throw ProfileError(fmt::format("{}: unknown key", key));
         }
@@ -264,6 +310,7 @@ std::string profile_to_json(const MachineProfile& p) {
            {"separate_registers", p.separate_registers},
            {"count_hundredths_at_speed_1", p.count_hundredths_at_speed_1},
            {"axes", axes}};
+    put_readings(j, p);
     return j.dump(2) + "\n";
 }
 

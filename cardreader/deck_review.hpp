@@ -5,7 +5,7 @@
 //    (Fig. 12), one bank of ten relays per digit, so the absolute comparer also conducts at
 //    every number whose digits each stand on a closed relay (DESIGN.md 4.2);
 //  - a check that is not |stop - previous stop| (the increment comparer 122'' disagrees);
-//  - a card number that is not the previous one + 1 (card-number check, 136);
+//  - a card number that is not the previous one + 1 (the card-number check: no numeral);
 //  - a start speed that does not match the slow-downs punched (3 - start speed of them);
 //  - a slow-down the counters never pass before the stop;
 //  - the sequence pattern replayed on stepping shaft 280: a position no running axis answers

@@ -1,8 +1,8 @@
 // What one card orders the machine to do, once the brushes have sensed it: the spindle
-// direction (column 165 of Fig. 8), the card number (checked by card-number storage 136) and,
-// for each of the five lead-screw axes, its motion, start speed, slow-downs, stop, check and
-// sequence pattern (222). Numbers are kept as the card holds them: four decimal digits,
-// thousandths of an inch.
+// direction (column 165 of Fig. 8), the card number (for the card-number check, which the
+// patent gives no numeral) and, for each of the five lead-screw axes, its motion, start speed,
+// slow-downs, stop, check and sequence pattern (222). Numbers are kept as the card holds them:
+// four decimal digits, thousandths of an inch.
 #pragma once
 
 #include <array>

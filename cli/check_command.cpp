@@ -14,6 +14,7 @@
 #include "cardreader/deck_error.hpp"
 #include "cardreader/deck_review.hpp"
 #include "cardreader/layout.hpp"
+#include "relaylogic/card_reader.hpp"
 
 #include <fmt/format.h>
 
@@ -42,13 +43,24 @@ ExitCode run_check(const CheckFlags& f) {
     long bad = 0;
     while (auto card = deck.cards().next()) {
         ++index;
-        const DecodeResult decoded = decode(*card, layout);
+        // The reader as the profile has it: parsons-1952 senses a double punch as two relays.
+        const relaylogic::SensedCard sensed =
+            relaylogic::sense_card(*card, layout, profile.refuse_double_punch);
+        const DecodeResult& decoded = sensed.decoded;
         if (!decoded) {
             ++bad;
-            fmt::print("card {}: BAD PUNCH: column {}: {} (the reader stops the machine here)\n",
+            fmt::print("card {}: BAD PUNCH: column {}: {} (the reader stops the machine here: "
+                       "bad-punch refusal, an addition of this emulator)\n",
                        index, decoded.bad_punch->column, decoded.bad_punch->what);
             reviewer.skip();
             continue;
+        }
+        for (int column : sensed.double_columns) {
+            ++warnings;
+            fmt::print("card {}: warning: column {}: double punch: the reader closes two relays "
+                       "of the bank, as a 1952 reader would (profile {}; parsons-safe refuses "
+                       "the card)\n",
+                       index, column, profile.name);
         }
         const CardOrders& o = decoded.orders;
         for (const ReviewNote& n : reviewer.review(o)) {

@@ -182,6 +182,10 @@ axes::MachineProfile load_profile(const std::string& file) {
     if (file.empty()) {
         return axes::default_profile();
     }
+    // A built-in profile by name (parsons-1952, parsons-safe), unless a file of that name exists.
+    if (auto builtin = axes::builtin_profile(file); builtin && !std::filesystem::exists(file)) {
+        return *builtin;
+    }
     const std::string text = read_text_file(file);
     try {
         return axes::profile_from_json(text, axes::default_profile());

@@ -18,15 +18,16 @@ std::string_view motor_numeral(cardreader::Axis axis) {
     return "38";
 }
 
-AxisCircuit::AxisCircuit(Tracer& t, const axes::AxisProfile& profile, cardreader::Axis a,
-                         bool separate_registers)
-    : tracer(t), axis(a), plant(profile),
-      absolute_storage(t, std::string(cardreader::axis_name(a)), separate_registers),
+AxisCircuit::AxisCircuit(Tracer& t, const axes::MachineProfile& profile, cardreader::Axis a)
+    : tracer(t), axis(a), plant(profile.axes.at(cardreader::axis_index(a))),
+      absolute_storage(t, std::string(cardreader::axis_name(a)), profile.separate_registers),
       incremental_storage(t, std::string(cardreader::axis_name(a))),
       absolute_counter(t, std::string(cardreader::axis_name(a))),
       increment_counter(t, std::string(cardreader::axis_name(a))),
-      speed_switch(t, std::string(cardreader::axis_name(a))),
-      sequence_switch(t, std::string(cardreader::axis_name(a))) {
+      speed_switch(t, std::string(cardreader::axis_name(a)),
+                   profile.delay_258_waits_for_equality_to_leave),
+      sequence_switch(t, std::string(cardreader::axis_name(a))),
+      lamps_only_on_trip_(profile.lamps_only_on_trip) {
     const std::string scope(cardreader::axis_name(a));
     reversing_214_ =
         t.define(scope, "reversing_control_214", "reversing control (1 = reverse)", "214", 1);
@@ -40,6 +41,21 @@ AxisCircuit::AxisCircuit(Tracer& t, const axes::AxisProfile& profile, cardreader
                                      "122''", 1);
     motor_ = t.define(scope, "motor_" + std::string(motor_numeral(a)), "lead-screw motor running",
                       std::string(motor_numeral(a)), 1);
+    const std::array<const char*, 4> commutators = {"96", "98", "100", "102"};
+    for (std::size_t i = 0; i < 4; ++i) {
+        for (std::size_t set = 0; set < 2; ++set) {
+            const std::string ab = set == 0 ? "a" : "b";
+            contacts_.at(2 * i + set) = t.define(
+                scope, std::string("commutator_") + commutators.at(i) + ".contact_set_" + ab,
+                std::string("commutator ") + commutators.at(i) + " contact set " +
+                    (set == 0 ? "A" : "B") + " (changes over at each impulse)",
+                commutators.at(i), 1);
+        }
+    }
+    lamp_270_ = t.define(scope, "lamp_270", "lamp: absolute comparer 122' conducting, 236 on off",
+                         "270", 1);
+    lamp_272_ = t.define(scope, "lamp_272",
+                         "lamp: incremental comparer 122'' conducting, 236 on off", "272", 1);
 }
 
 void AxisCircuit::set_direction(cardreader::Motion motion) {
@@ -50,6 +66,17 @@ void AxisCircuit::set_direction(cardreader::Motion motion) {
 void AxisCircuit::set_powered(bool on) {
     powered = on;
     tracer.set(motor_, on ? 1 : 0);
+}
+
+void AxisCircuit::trace_contacts() {
+    static constexpr std::array<long, 4> kUnits = {1000, 100, 10, 1}; // 96, 98, 100, 102
+    const long k = plant.commutator_index();
+    for (std::size_t i = 0; i < 4; ++i) {
+        const long a = axes::floor_div(k, kUnits.at(i));
+        const long b = i == 3 ? a - (contact_set_a - contact_set_b) : a;
+        tracer.set(contacts_.at(2 * i), static_cast<std::uint32_t>(a & 1));
+        tracer.set(contacts_.at(2 * i + 1), static_cast<std::uint32_t>(b & 1));
+    }
 }
 
 } // namespace parsons::relaylogic

@@ -1,11 +1,12 @@
 // The control circuit of one lead screw (Fig. 10 draws the table's and the cross slide's; the
 // other three are the same): reversing control 214, absolute storage 350-356 and incremental
 // storage 318-324, absolute counter 104-110 and increment counter 112, comparers 122' and
-// 122'', speed switch 236, sequence switch 224, the motor, and the duplicate contact sets of
-// commutator 102. The plant it drives is an axes::LeadScrewAxis.
+// 122'', speed switch 236, lamps 270 and 272, sequence switch 224, the motor, and the duplicate
+// contact sets of commutator 102. The plant it drives is an axes::LeadScrewAxis.
 #pragma once
 
 #include "axes/lead_screw_axis.hpp"
+#include "axes/machine_profile.hpp"
 #include "cardreader/orders.hpp"
 #include "relaylogic/counters.hpp"
 #include "relaylogic/sequence_control.hpp"
@@ -19,8 +20,7 @@ namespace parsons::relaylogic {
 std::string_view motor_numeral(cardreader::Axis axis);
 
 struct AxisCircuit {
-    AxisCircuit(Tracer& tracer, const axes::AxisProfile& profile, cardreader::Axis axis,
-                bool separate_registers);
+    AxisCircuit(Tracer& tracer, const axes::MachineProfile& profile, cardreader::Axis axis);
 
     // Reversing control 214 (row 0 forward, row 1 reverse), also setting the counters' sense.
     void set_direction(cardreader::Motion motion);
@@ -30,8 +30,27 @@ struct AxisCircuit {
         incremental_conducting = incremental_storage.conducts(increment_counter.digits());
         tracer.set(comparer_absolute_, absolute_conducting ? 1 : 0);
         tracer.set(comparer_incremental_, incremental_conducting ? 1 : 0);
+        show_lamps();
+    }
+    // Lamps 270 (absolute comparer 122' conducting) and 272 (incremental comparer 122''
+    // conducting) light whenever speed switch 236 stands on off (contact 238) and their
+    // comparer conducts (col. 11). With the interpretation lamps_only_on_trip they light only
+    // once balancing circuit 266 has tripped (tripped = true).
+    void show_lamps() {
+        const bool lit = speed_switch.off() && (!lamps_only_on_trip_ || tripped);
+        tracer.set(lamp_270_, lit && absolute_conducting ? 1 : 0);
+        tracer.set(lamp_272_, lit && incremental_conducting ? 1 : 0);
     }
     void set_powered(bool on);
+    // Commutators 96, 98, 100, 102 (gear train 82-92), each with two contact sets A and B: a
+    // set's contact changes over at each impulse it sends (segments alternate round the
+    // commutator), so its state is the parity of the commutator's position in its unit (1, 0.1,
+    // 0.01, 0.001 in). Set B of 102 lags A by the impulses it missed. Traced only.
+    void show_contacts() {
+        if (tracer.observer() != nullptr) {
+            trace_contacts();
+        }
+    }
     // The state a saved machine keeps (relaylogic/machine_state.cpp).
     nlohmann::json save() const;
     void load(const nlohmann::json& j);
@@ -51,15 +70,22 @@ struct AxisCircuit {
     bool incremental_conducting = false; // comparer 122''
     bool powered = false;                // current through cable 248 to the motor
     bool stopped = false;                // reached its stop on this card
+    bool tripped = false;                // balancing circuit 266 tripped at this axis's stop
     long contact_set_a = 0;              // impulses seen by each contact set of commutator 102
     long contact_set_b = 0;
     cardreader::AxisOrder order;
 
 private:
+    void trace_contacts();
+
     SignalId reversing_214_;
     SignalId comparer_absolute_;
     SignalId comparer_incremental_;
     SignalId motor_;
+    std::array<SignalId, 8> contacts_{}; // 96 A, 96 B, 98 A, 98 B, 100 A, 100 B, 102 A, 102 B
+    SignalId lamp_270_;
+    SignalId lamp_272_;
+    bool lamps_only_on_trip_;
 };
 
 } // namespace parsons::relaylogic

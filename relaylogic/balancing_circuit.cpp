@@ -13,12 +13,9 @@ BalancingCircuit::BalancingCircuit(Tracer& tracer)
                                    "audible indicator in circuit "
                                    "262-264",
                                    "268", 1)),
-      lamp_270_(tracer.define("cabinet", "lamp_270", "lamp: absolute comparer 122' conducting",
-                              "270", 1)),
-      lamp_272_(tracer.define("cabinet", "lamp_272",
-                              "lamp: incremental comparer 122'' "
-                              "conducting",
-                              "272", 1)) {}
+      circuit_266_(tracer.define("cabinet", "balancing_circuit_266",
+                                 "balancing circuit 266 unbalanced (one comparer at contact 238)",
+                                 "266", 1)) {}
 
 void BalancingCircuit::trip() {
     if (!master_closed_) {
@@ -26,8 +23,8 @@ void BalancingCircuit::trip() {
     }
     master_closed_ = false;
     tracer_.set(magnet_265_, 1);
+    tracer_.set(master_204_, 0); // electromagnet 265 opens it
     tracer_.set(indicator_268_, 1);
-    tracer_.set(master_204_, 0);
     lamps_.insert(lamps_.begin(), "indicator 268");
 }
 
@@ -35,14 +32,10 @@ bool BalancingCircuit::check_at_stop(bool absolute, bool incremental) {
     if (absolute == incremental) {
         return absolute; // both conducting: balanced (neither cannot reach contact 238)
     }
+    tracer_.set(circuit_266_, 1); // the cause, then its effects: 265, 204, 268
     trip();
-    if (absolute) {
-        tracer_.set(lamp_270_, 1);
-        lamps_.push_back("lamp 270 (absolute comparer 122' conducting)");
-    } else {
-        tracer_.set(lamp_272_, 1);
-        lamps_.push_back("lamp 272 (incremental comparer 122'' conducting)");
-    }
+    lamps_.push_back(absolute ? "lamp 270 (absolute comparer 122' conducting)"
+                              : "lamp 272 (incremental comparer 122'' conducting)");
     return false;
 }
 

@@ -1,12 +1,14 @@
 // Checking and warning (Fig. 10): balancing circuit 266 with electromagnet 265 on master
-// switch 204, indicator 268, and lamps 270 and 272.
+// switch 204, and indicator 268. Lamps 270 and 272 belong to each axis's circuit
+// (relaylogic/axis_circuit.hpp).
 //
 // When speed switch 236 reaches off (contact 238) both comparers must conduct at that moment.
 // If only one does, the vacuum-tube balancing circuit 266 closes circuit 262-264: indicator
-// 268 sounds, electromagnet 265 opens master switch 204 (every motor loses power), and with
-// the switch on off, lamp 270 lights if absolute comparer 122' is conducting, lamp 272 if
-// incremental comparer 122'' is. The other checks (card number, duplicate contacts, limit
-// switches) open the master switch the same way and light a lamp of their own.
+// 268 sounds and electromagnet 265 opens master switch 204 (every motor loses power). With the
+// switch on off, lamp 270 is lit if absolute comparer 122' is conducting, lamp 272 if
+// incremental comparer 122'' is: the dark one shows which comparer was not functioning. The
+// other checks (card number, duplicate contacts, limit switches) open the master switch the
+// same way and light a lamp of their own.
 #pragma once
 
 #include "relaylogic/tracer.hpp"
@@ -22,7 +24,7 @@ public:
 
     bool master_switch_closed() const { return master_closed_; }
 
-    // At contact 238: returns true if balanced; otherwise trips and lights lamp 270 / 272.
+    // At contact 238: returns true if balanced; otherwise trips and names the lit lamp.
     bool check_at_stop(bool absolute_conducting, bool incremental_conducting);
     // Another check fired: open the master switch and sound indicator 268.
     void trip();
@@ -37,8 +39,7 @@ private:
     SignalId master_204_;
     SignalId magnet_265_;
     SignalId indicator_268_;
-    SignalId lamp_270_;
-    SignalId lamp_272_;
+    SignalId circuit_266_;
 };
 
 } // namespace parsons::relaylogic

@@ -1,5 +1,6 @@
 #include "relaylogic/control_cabinet.hpp"
 
+#include "relaylogic/card_reader.hpp"
 #include "relaylogic/fast_forward.hpp"
 
 #include "axes/state_json.hpp"
@@ -35,8 +36,11 @@ ControlCabinet::ControlCabinet(axes::MachineProfile profile, const cardreader::C
                                   "134", 32);
     reader_feeding_ =
         tracer_.define("cabinet", "card_reader_134.reading", "card reader cycle", "134", 1);
-    card_number_136_ =
-        tracer_.define("cabinet", "card_number_storage_136", "card-number storage", "136", 14);
+    // The card-number check: the patent names it (col. 8) but gives it no numeral.
+    card_number_check_ = tracer_.define("cabinet", "card_number_check",
+                                        "card-number check: the last card number accepted "
+                                        "(no numeral in the patent)",
+                                        "", 14);
     spindle_165_ = tracer_.define("cabinet", "spindle_control_165",
                                   "spindle (0 off, 1 forward, 2 "
                                   "reverse)",
@@ -47,9 +51,20 @@ ControlCabinet::ControlCabinet(axes::MachineProfile profile, const cardreader::C
                               "165", 1);
     zeroizing_ =
         tracer_.define("cabinet", "zeroizing_circuit_292", "zeroizing circuit 292-304", "292", 1);
+    channel_294_ = tracer_.define("cabinet", "channel_294",
+                                  "zeroizing: clearing channel 294 (absolute storage)", "294", 1);
+    channel_298_ =
+        tracer_.define("cabinet", "channel_298",
+                       "zeroizing: channel 298 (incremental storage and counter)", "298", 1);
+    channel_300_ = tracer_.define("cabinet", "channel_300",
+                                  "zeroizing: channel 300 (sequence contacts open)", "300", 1);
+    channel_302_ =
+        tracer_.define("cabinet", "channel_302", "zeroizing: channel 302 (device 288)", "302", 1);
+    channel_304_ =
+        tracer_.define("cabinet", "channel_304",
+                       "zeroizing: channel 304 (reader indexes the next card)", "304", 1);
     for (Axis a : cardreader::kAxes) {
-        circuits_.push_back(std::make_unique<AxisCircuit>(
-            tracer_, profile_.axes.at(cardreader::axis_index(a)), a, profile_.separate_registers));
+        circuits_.push_back(std::make_unique<AxisCircuit>(tracer_, profile_, a));
     }
 }
 
@@ -388,6 +403,7 @@ void ControlCabinet::handle(const Event& e) {
     case EventKind::speed_step_252: {
         AxisCircuit& c = *circuits_.at(static_cast<std::size_t>(e.axis));
         c.speed_switch.step_from_card();
+        c.show_lamps();
         update_motor(c); // the motor runs at whatever speed the switch stands on
         break;
     }
@@ -414,6 +430,10 @@ void ControlCabinet::feed() {
         resume_point_ = capture();
     }
     tracer_.set(zeroizing_, 0);
+    for (SignalId channel :
+         {channel_294_, channel_298_, channel_300_, channel_302_, channel_304_}) {
+        tracer_.set(channel, 0);
+    }
     card_ = deck_->next();
     if (!card_) {
         deck_finished_ = true;
@@ -436,34 +456,38 @@ void ControlCabinet::feed() {
 }
 
 void ControlCabinet::first_bank() {
-    cardreader::DecodeResult decoded = cardreader::decode(*card_, layout_);
-    if (!decoded) {
-        const auto& bad = *decoded.bad_punch;
+    SensedCard sensed = sense_card(*card_, layout_, profile_.refuse_double_punch);
+    if (!sensed.decoded) {
+        const auto& bad = *sensed.decoded.bad_punch;
         machine_stop(StopReason::bad_punch, std::nullopt,
-                     fmt::format("card {}, column {}: {}: the reader stops the machine",
+                     fmt::format("card {}, column {}: {}: the reader stops the machine (bad-punch "
+                                 "refusal, an addition of this emulator: a 1952 reader would "
+                                 "sense the holes as they are)",
                                  cards_read_, bad.column, bad.what),
-                     "card reader 134 check lamp");
+                     "card reader 134 check lamp (an addition)");
         return;
     }
-    orders_ = decoded.orders;
+    orders_ = sensed.decoded.orders;
+    extra_relays_ = sensed.extra;
     if (record_times_) {
         timings_.back().number = orders_.number;
     }
     if (tracer_.observer() != nullptr) {
         tracer_.observer()->on_card(now_, cards_read_, orders_);
     }
-    // Card-number storage 136: each card must be the previous one + 1 (0000 follows 9999).
+    // The card-number check (col. 8, no numeral): each card must be the previous one + 1
+    // (0000 follows 9999).
     if (previous_number_ && orders_.number != (*previous_number_ + 1) % 10000) {
         machine_stop(StopReason::out_of_order_card, std::nullopt,
                      fmt::format("{}: card number {:04} follows {:04} (expected {:04}); stopped "
                                  "before any axis moved",
                                  card_name(), orders_.number, *previous_number_,
                                  (*previous_number_ + 1) % 10000),
-                     "card-number lamp (storage 136)");
+                     "card-number lamp");
         return;
     }
     previous_number_ = orders_.number;
-    tracer_.set(card_number_136_, static_cast<std::uint32_t>(orders_.number));
+    tracer_.set(card_number_check_, static_cast<std::uint32_t>(orders_.number));
     if (!move_within_soft_limits()) {
         return;
     }
@@ -487,11 +511,13 @@ bool ControlCabinet::move_within_soft_limits() {
             machine_stop(StopReason::soft_limit, c->axis,
                          fmt::format("{}, {}: this card moves it {:+.3f} in, from {:.4f} to {:.4f} "
                                      "in, past its soft limit {:.3f} in (movement range {:.3f} .. "
-                                     "{:.3f} in); stopped before any axis moved",
+                                     "{:.3f} in); stopped before any axis moved (soft limits are "
+                                     "an addition of this emulator, after Mitsubishi's movement "
+                                     "range)",
                                      card_name(), axis_name(c->axis), move, from, to,
                                      to > p.soft_max_in ? p.soft_max_in : p.soft_min_in,
                                      p.soft_min_in, p.soft_max_in),
-                         fmt::format("soft-limit lamp ({})", axis_name(c->axis)));
+                         fmt::format("soft-limit lamp ({}; an addition)", axis_name(c->axis)));
             return false;
         }
     }
@@ -514,6 +540,20 @@ void ControlCabinet::relays_pick() {
         numbers.at(count++) = c->order.stop;
         c->absolute_storage.store(std::span<const int>(numbers.data(), count));
         c->incremental_storage.store(c->order.check);
+        // A double-punched digit column picks a second relay of its bank (parsons-1952).
+        const auto& extra = extra_relays_.at(cardreader::axis_index(c->axis));
+        for (std::size_t field = 0; field < kNumberFields; ++field) {
+            for (std::size_t i = 0; i < 4; ++i) {
+                HoldingRelayBank& bank = field < 3
+                                             ? c->absolute_storage.bank(static_cast<int>(i))
+                                             : c->incremental_storage.bank(static_cast<int>(i));
+                for (int d = 0; d < 10; ++d) {
+                    if ((extra.at(field).at(i) >> d & 1U) != 0) {
+                        bank.pick(d);
+                    }
+                }
+            }
+        }
         c->sequence_switch.close_pattern(c->order.sequence);
         for (int p = 5; p >= 1; --p) {
             if (c->sequence_switch.closed(p)) {
@@ -545,6 +585,7 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     if (faults_.empty() || !fault_drops(c)) {
         ++c.contact_set_b;
     }
+    c.show_contacts(); // the contacts, then the switches they step
     // The patent's answer to stepping-rate loss (col. 8), a profile option: while the speed
     // switch stands on speed 1, count only every hundredth until the first slow-down.
     const bool hundredths_only =
@@ -621,11 +662,12 @@ void ControlCabinet::soft_limit_watch(AxisCircuit& c) {
     machine_stop(StopReason::soft_limit, c.axis,
                  fmt::format("{}, {}: at {:.4f} in, moving {} at {:.3f} in/min, the part could "
                              "no longer brake to rest inside its soft limit {:.3f} in (movement "
-                             "range {:.3f} .. {:.3f} in): switched off",
+                             "range {:.3f} .. {:.3f} in): switched off (soft limits are an "
+                             "addition of this emulator, after Mitsubishi's movement range)",
                              card_name(), axis_name(c.axis), c.plant.real_in(), up ? "up" : "down",
                              c.plant.speed_in_per_s() * 60, up ? p.soft_max_in : p.soft_min_in,
                              p.soft_min_in, p.soft_max_in),
-                 fmt::format("soft-limit lamp ({})", axis_name(c.axis)));
+                 fmt::format("soft-limit lamp ({}; an addition)", axis_name(c.axis)));
     c.compare();
 }
 
@@ -633,10 +675,11 @@ void ControlCabinet::travel_limit(AxisCircuit& c) {
     const auto& p = c.plant.profile();
     machine_stop(StopReason::soft_limit, c.axis,
                  fmt::format("{}, {}: the part reached its travel limit at {:.4f} in (limit "
-                             "switches at {:.3f} .. {:.3f} in)",
+                             "switches at {:.3f} .. {:.3f} in; travel-limit switches are an "
+                             "addition of this emulator: the patent shows none)",
                              card_name(), axis_name(c.axis), c.plant.real_in(), p.travel_min_in,
                              p.travel_max_in),
-                 fmt::format("limit-switch lamp ({})", axis_name(c.axis)));
+                 fmt::format("limit-switch lamp ({}; an addition)", axis_name(c.axis)));
     c.compare();
 }
 
@@ -656,14 +699,17 @@ bool ControlCabinet::evaluate(AxisCircuit& c) {
         }
         return false;
     }
-    if (c.incremental_conducting || c.speed_switch.position() == 3) {
+    // One impulse to stepping relay 256, one step of speed switch 236, whichever comparer sent
+    // it: from speed 3 the step is to off (contact 238), the stop (col. 10-11).
+    if (c.speed_switch.position() == 3 ||
+        (profile_.incremental_equality_stops_at_any_speed && c.incremental_conducting)) {
         stop_axis(c);
         return false;
     }
-    c.speed_switch.step_slower(now_, profile_.delay_258_s); // stepping relay 256, channel 257
+    c.speed_switch.impulse_256(now_, profile_.delay_258_s);
     update_motor(c);
-    // When delay 258 closes channel 257 again, the comparer is read again: an equality that
-    // still stands then must not step the switch a second time (it has not been left).
+    // When delay 258 closes channel 257 again the comparer is read again: an equality that
+    // still stands then steps the switch once more (a delay too short for the speed).
     schedule(c.speed_switch.hold_until(), EventKind::delay_258_release,
              static_cast<int>(cardreader::axis_index(c.axis)));
     return false;
@@ -672,10 +718,19 @@ bool ControlCabinet::evaluate(AxisCircuit& c) {
 void ControlCabinet::stop_axis(AxisCircuit& c) {
     const bool absolute = c.absolute_conducting;
     const bool incremental = c.incremental_conducting;
-    c.speed_switch.to_off(now_, profile_.delay_258_s); // contact 238
+    if (c.speed_switch.position() == 3) {
+        c.speed_switch.impulse_256(now_, profile_.delay_258_s); // 3 -> off: contact 238
+    } else {
+        c.speed_switch.to_off(now_, profile_.delay_258_s); // the interpretation: from 1 or 2
+    }
+    schedule(c.speed_switch.hold_until(), EventKind::delay_258_release,
+             static_cast<int>(cardreader::axis_index(c.axis)));
     c.stopped = true;
+    c.show_lamps();
     update_motor(c);
     if (!balancing_.check_at_stop(absolute, incremental)) {
+        c.tripped = true;
+        c.show_lamps();
         const std::string which = absolute ? "only the absolute comparer 122' conducted"
                                            : "only the incremental "
                                              "comparer 122'' conducted";
@@ -711,18 +766,31 @@ void ControlCabinet::shaft_step() {
     }
 }
 
+// Contact 290 closed circuit 292-294: the zeroizing circuit, one channel after the other, each
+// signal set before the relays it acts on (col. 11). Emulation note: the speed switches stand
+// on off already (every axis stopped); the cabinet resets their delay devices here.
 void ControlCabinet::zeroize() {
     tracer_.set(zeroizing_, 1);
+    tracer_.set(channel_294_, 1); // clears absolute storage 350-356 (122')
     for (auto& c : circuits_) {
-        c->absolute_storage.clear();    // clearing channel 294
-        c->incremental_storage.clear(); // channel 298
-        c->increment_counter.clear();   // channel 298
-        c->sequence_switch.open_all();  // channel 300
+        c->absolute_storage.clear();
+    }
+    tracer_.set(channel_298_, 1); // clears number and counter of the incremental comparer 122''
+    for (auto& c : circuits_) {
+        c->incremental_storage.clear();
+        c->increment_counter.clear();
+    }
+    tracer_.set(channel_300_, 1); // opens every contact of the sequence switches 224
+    for (auto& c : circuits_) {
+        c->sequence_switch.open_all();
         c->speed_switch.reset();
         c->stopped = false;
+        c->tripped = false;
         c->compare();
     }
-    shaft_.reset(); // device 288, channel 302
+    tracer_.set(channel_302_, 1); // resets device 288, closing circuit 274
+    shaft_.reset();
+    tracer_.set(channel_304_, 1); // indexes card reader 134 to the next card
     reading_complete_ = false;
     update_motors();
     if (record_times_) {
@@ -788,10 +856,12 @@ void ControlCabinet::sequence_stall() {
         }
     }
     machine_stop(StopReason::sequence_stall, std::nullopt,
-                 fmt::format("{}: stepping shaft 280 stands at position {} and no axis that has "
-                             "not stopped is enabled there; waiting: {}",
+                 fmt::format("{}: sequence stall (an addition of this emulator: the 1952 "
+                             "machine would stand idle for good): stepping shaft 280 stands at "
+                             "position {} and no axis that has not stopped is enabled there; "
+                             "waiting: {}",
                              card_name(), shaft_.position(), waiting),
-                 "sequence lamp (stepping shaft 280)");
+                 "sequence lamp (stepping shaft 280; an addition)");
 }
 
 bool ControlCabinet::interrupted() {
@@ -823,9 +893,8 @@ nlohmann::json ControlCabinet::capture() const {
     return nlohmann::json{{"machine_seconds", exact(now_)},
                           {"event_sequence", seq_},
                           {"cards_read", cards_read_},
-                          {"card_number_storage_136", previous_number_
-                                                          ? nlohmann::json(*previous_number_)
-                                                          : nlohmann::json(nullptr)},
+                          {"card_number_check", previous_number_ ? nlohmann::json(*previous_number_)
+                                                                 : nlohmann::json(nullptr)},
                           {"last_card_number", orders_.number},
                           {"spindle", static_cast<int>(orders_.spindle)},
                           {"last_sequence_position", last_sequence_position_},
@@ -843,7 +912,7 @@ void ControlCabinet::resume(const nlohmann::json& j) {
     now_ = exact(member(j, "machine_seconds"));
     seq_ = read<std::uint64_t>(j, "event_sequence");
     cards_read_ = read<long>(j, "cards_read");
-    const auto& number = member(j, "card_number_storage_136");
+    const auto& number = member(j, "card_number_check");
     previous_number_ = number.is_null() ? std::nullopt : std::optional(number.get<int>());
     orders_ = cardreader::CardOrders{};
     orders_.number = read<int>(j, "last_card_number");

@@ -1,4 +1,4 @@
-// Control cabinet 52: five axis circuits wired to card reader 134, card-number storage 136,
+// Control cabinet 52: five axis circuits wired to card reader 134, the card-number check,
 // the stepping shaft 280 of the sequence control, balancing circuit 266 and the zeroizing
 // circuit 290-304, run event by event in machine time.
 //
@@ -6,7 +6,7 @@
 //   feed ........ reader 134 takes the next card (zeroizing, channel 304, indexed it)
 //   first bank .. spindle 165, motion -> reversing control 214, slow-downs and stop -> banks
 //                 350-356, check -> banks 318-324, sequence pattern 222 -> switches 224; the
-//                 card number is compared with storage 136; a bad punch stops the reader
+//                 card number is checked (no numeral in the patent); a bad punch stops the reader
 //   second bank . speed columns -> sensing circuit 250 -> stepping device 252 steps each
 //                 speed switch 236 one, two or three times
 //   cycle end ... every axis whose contact is closed under rotary member 282 runs; each stop
@@ -179,7 +179,9 @@ private:
     cardreader::CardSource* deck_ = nullptr;
     std::optional<cardreader::Card> card_;
     cardreader::CardOrders orders_;
-    std::optional<int> previous_number_; // card-number storage 136
+    // Relays a double-punched digit column picks beyond the orders' digit (card_reader.hpp).
+    std::array<std::array<std::array<std::uint16_t, 4>, 4>, cardreader::kAxisCount> extra_relays_{};
+    std::optional<int> previous_number_; // the card-number check (no numeral)
     bool reading_complete_ = false;
     bool deck_finished_ = false;
     int last_sequence_position_ = 5;
@@ -190,10 +192,15 @@ private:
 
     SignalId reader_card_;
     SignalId reader_feeding_;
-    SignalId card_number_136_;
+    SignalId card_number_check_;
     SignalId spindle_165_;
     SignalId cutting_;
     SignalId zeroizing_;
+    SignalId channel_294_;
+    SignalId channel_298_;
+    SignalId channel_300_;
+    SignalId channel_302_;
+    SignalId channel_304_;
 };
 
 } // namespace parsons::relaylogic

@@ -212,6 +212,7 @@ void jump_quiet_impulses(AxisCircuit& c, long n) {
     plant.skip_impulses(n);
     c.contact_set_a += n;
     c.contact_set_b += n;
+    c.show_contacts();
     c.compare();
     c.speed_switch.equality_left(t_last);
 }

@@ -122,7 +122,8 @@ void IncrementalStorage::load(const json& j) {
 json SpeedSwitch::save() const {
     return json{{"position", position_},
                 {"hold_until", exact(hold_until_)},
-                {"left_equality", left_equality_}};
+                {"left_equality", left_equality_},
+                {"held", held_}};
 }
 
 void SpeedSwitch::load(const json& j) {
@@ -132,6 +133,7 @@ void SpeedSwitch::load(const json& j) {
     }
     hold_until_ = exact(member(j, "hold_until"));
     left_equality_ = read<bool>(j, "left_equality");
+    held_ = read<bool>(j, "held");
 }
 
 json SequenceSwitch::save() const {

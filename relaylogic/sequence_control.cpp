@@ -42,6 +42,13 @@ SteppingShaft::SteppingShaft(Tracer& tracer)
                                                    "stepping shaft and rotary "
                                                    "members 282 (position 1-5)",
                                                    "280", 3, 1)),
+      channel_274_(tracer.define("cabinet", "channel_274",
+                                 "channel 274: a stop impulse from contact 238 via circuit 268",
+                                 "274", 1)),
+      circuit_276_(tracer.define("cabinet", "circuit_276",
+                                 "circuit 276 delivering current to motor 278", "276", 1)),
+      motor_278_(
+          tracer.define("cabinet", "motor_278", "motor 278 turning stepping shaft 280", "278", 1)),
       unit_284_(tracer.define("cabinet", "unit_284",
                               "unit 284: added an impulse for a "
                               "simultaneous stop",
@@ -59,26 +66,32 @@ bool SteppingShaft::impulse(double t) {
     const bool together = pending_ > 0 && t == last_impulse_t_;
     last_impulse_t_ = t;
     ++pending_;
+    tracer_.set(channel_274_, 1);
     if (together) {
         tracer_.set(unit_284_, 1);
     }
+    tracer_.set(channel_274_, 0); // the impulse has passed on to circuit 276
     return together;
 }
 
 void SteppingShaft::begin_step() {
     busy_ = true;
+    tracer_.set(circuit_276_, 1);
+    tracer_.set(motor_278_, 1);
     tracer_.set(device_288_, 1);
 }
 
 bool SteppingShaft::finish_step() {
     busy_ = false;
     --pending_;
+    position_ = position_ == 5 ? 1 : position_ + 1;
+    tracer_.set(shaft_signal_, static_cast<std::uint32_t>(position_));
+    tracer_.set(motor_278_, 0);
+    tracer_.set(circuit_276_, 0);
     tracer_.set(device_288_, 0);
     if (pending_ == 0) {
         tracer_.set(unit_284_, 0);
     }
-    position_ = position_ == 5 ? 1 : position_ + 1;
-    tracer_.set(shaft_signal_, static_cast<std::uint32_t>(position_));
     const bool home = position_ == 1;
     if (home) {
         tracer_.set(contact_290_, 1);
@@ -89,6 +102,8 @@ bool SteppingShaft::finish_step() {
 void SteppingShaft::reset() {
     pending_ = 0;
     busy_ = false;
+    tracer_.set(motor_278_, 0);
+    tracer_.set(circuit_276_, 0);
     tracer_.set(contact_290_, 0);
     tracer_.set(unit_284_, 0);
     tracer_.set(device_288_, 0);

@@ -6,11 +6,12 @@
 // every switch sits on shaft 280, driven by motor 278: it sweeps positions 1 -> 5, and an axis
 // runs while the contact under the member is closed and it has not yet stopped.
 //
-// Each axis that stops sends one impulse through contact 238, channel 274 and circuit 276 to
-// motor 278. Unit 284 senses two impulses arriving together and adds one, so simultaneous
-// stops count as separate impulses; device 288 breaks circuit 276 after each impulse, so each
-// stop steps the shaft exactly once. After the fifth impulse the members return to position
-// 1, engaging contact 290: the zeroizing circuit 292-304 fires.
+// Each axis that stops sends one impulse through contact 238, circuit 268, channel 274 and
+// circuit 276 to motor 278 (traced: channel_274 carries the impulse, circuit_276 conducts and
+// motor_278 runs while the shaft takes its step). Unit 284 senses two impulses arriving together
+// and adds one, so simultaneous stops count as separate impulses; device 288 breaks circuit 276
+// after each impulse, so each stop steps the shaft exactly once. After the fifth impulse the
+// members return to position 1, engaging contact 290: the zeroizing circuit 292-304 fires.
 #pragma once
 
 #include "cardreader/orders.hpp"
@@ -68,6 +69,9 @@ private:
     bool busy_ = false;
     double last_impulse_t_ = -1;
     SignalId shaft_signal_;
+    SignalId channel_274_;
+    SignalId circuit_276_;
+    SignalId motor_278_;
     SignalId unit_284_;
     SignalId device_288_;
     SignalId contact_290_;

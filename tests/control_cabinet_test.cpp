@@ -185,23 +185,6 @@ TEST_CASE("Checks: a check too small stops early with only the incremental compa
     CHECK(r.axes.at(0).counter_in == Approx(0.090));
 }
 
-TEST_CASE("Checks: an incremental equality stops the axis at any speed, here still on speed 1",
-          "[cabinet][check][fig10]") {
-    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
-    c.axis(Axis::table) = order(0, 2985, 1, 2785, 2885, 1);
-    c.axis(Axis::table).check = 1000;
-    Recorder rec;
-    RunResult r = run_orders({c}, parsons::axes::default_profile(), &rec);
-    REQUIRE(r.stop);
-    CHECK(r.stop->reason == StopReason::check_mismatch);
-    CHECK(r.stop->lamps.back() == "lamp 272 (incremental comparer 122'' conducting)");
-    const auto steps = rec.of("table.speed_switch_236");
-    REQUIRE(steps.size() == 2);
-    CHECK(steps[1].old_value == 1); // straight from speed 1 to off
-    CHECK(steps[1].new_value == 0);
-    CHECK(counter_when(rec, "table.speed_switch_236", 0).front() == 1000);
-}
-
 TEST_CASE("Duplicate contacts: an impulse missed by one contact set stops with missed_impulse",
           "[cabinet][faults]") {
     CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
@@ -243,9 +226,15 @@ TEST_CASE("Shared banks: with separate registers (a departure) the same card com
     CHECK(r.axes.at(0).counter_in == Approx(9.050));
 }
 
-TEST_CASE("Coast: slow-downs 0.002 and 0.001 before the stop overshoot and the next card stops "
-          "with check_mismatch, 0.200 and 0.100 before complete",
+TEST_CASE("Coast: with a heavy table, slow-downs 0.040 and 0.020 before the stop overshoot and the "
+          "next card stops with check_mismatch, 0.200 and 0.100 before complete",
           "[cabinet][coast]") {
+    // Delay 258 (0.150 s) hides the numbers passed during its hold, so slow-downs must lie
+    // some 0.013 in apart at speed 1; with the default 0.2 in/s2 the table then always brakes
+    // in time. A heavy fixture (0.05 in/s2 to change speed, 0.1 to coast to rest) shows rule 7.
+    auto heavy = parsons::axes::default_profile();
+    heavy.axes.at(0).acceleration_in_per_s2 = 0.05;
+    heavy.axes.at(0).braking_in_per_s2 = 0.1;
     auto deck = [](int slow1, int slow2) {
         CardOrders one = idle_card(1, {0, 0, 0, 0, 0});
         one.axis(Axis::table) = order(0, 2985, 1, slow1, slow2, 1);
@@ -253,12 +242,13 @@ TEST_CASE("Coast: slow-downs 0.002 and 0.001 before the stop overshoot and the n
         two.axis(Axis::table) = order(2985, 3985, 3, {}, {}, 1);
         return std::vector<CardOrders>{one, two};
     };
-    RunResult close = run_orders(deck(2983, 2984));
+    // 2.945 / 2.965 / 2.985 differ in one digit only: no spurious matches in the shared banks.
+    RunResult close = run_orders(deck(2945, 2965), heavy);
     REQUIRE(close.stop);
     CHECK(close.stop->reason == StopReason::check_mismatch);
     CHECK(close.stop->card == 2);
     CHECK(close.stop->axis == Axis::table);
-    RunResult proper = run_orders(deck(2785, 2885));
+    RunResult proper = run_orders(deck(2785, 2885), heavy);
     CHECK(proper.completed);
     CHECK(proper.axes.at(0).counter_in == Approx(3.985));
     CHECK(std::abs(proper.axes.at(0).error_in) < 0.0005);
@@ -315,32 +305,69 @@ TEST_CASE("Travel limits: an axis that runs past its limit stops the machine", "
     CHECK(r.axes.at(0).real_in <= -0.5);
 }
 
-TEST_CASE("Bad punch: a card the reader cannot read stops the machine naming card and column",
-          "[cabinet]") {
+TEST_CASE("Bad punch: in parsons-safe a double punch stops the machine naming card and column, "
+          "as an addition",
+          "[cabinet][bad-punch]") {
     Card card = encode(idle_card(1, {0, 0, 0, 0, 0}), fig8_layout()).card;
     card.punch(13, Row::r5);
     card.punch(13, Row::r7);
     VectorDeck deck({card});
-    ControlCabinet cabinet(parsons::axes::default_profile(), fig8_layout());
+    ControlCabinet cabinet(parsons::axes::safe_profile(), fig8_layout());
     RunResult r = cabinet.run(deck);
     REQUIRE(r.stop);
     CHECK(r.stop->reason == StopReason::bad_punch);
     CHECK(r.stop->message.find("card 1, column 13: double punch") != std::string::npos);
+    CHECK(r.stop->message.find("an addition of this emulator") != std::string::npos);
 }
 
-TEST_CASE("Delay 258: held longer than the time between impulses, the switch misses the next "
-          "number and the table runs on past its stop",
-          "[cabinet][speed-switch]") {
-    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
-    c.axis(Axis::table) = order(0, 2985, 1, 2983, 2984, 1);
-    RunResult normal = run_orders({c});
-    CHECK(normal.completed); // 5 ms hold: each equality is served as it comes
-    auto slow_delay = parsons::axes::default_profile();
-    slow_delay.delay_258_s = 0.050; // 50 ms; impulses come every 11 ms at speed 1
-    RunResult r = run_orders({c}, slow_delay);
+TEST_CASE("Bad punch: in parsons-1952 a double punch in a digit column closes two relays of its "
+          "bank, and the comparer conducts at both (rule 12)",
+          "[cabinet][bad-punch][fig13]") {
+    // Table: speed 3 to 0.300, check 0.300; column 13 (the stop's tenths) also punched in row 1:
+    // bank 352 holds relays 1 and 3, so the comparer conducts at 0.100 already.
+    CardOrders o = idle_card(1, {0, 0, 0, 0, 0});
+    o.axis(Axis::table) = order(0, 300, 3, {}, {}, 1);
+    Card card = encode(o, fig8_layout()).card;
+    card.punch(13, Row::r1);
+    REQUIRE_FALSE(decode(card, fig8_layout()));
+    Recorder rec;
+    VectorDeck deck({card});
+    ControlCabinet cabinet(parsons::axes::default_profile(), fig8_layout());
+    cabinet.attach(&rec);
+    RunResult r = cabinet.run(deck);
     REQUIRE(r.stop);
-    CHECK(r.stop->reason == StopReason::soft_limit);
-    CHECK(r.axes.at(0).real_in > 10.0);
+    CHECK(r.stop->reason == StopReason::check_mismatch); // stopped at 0.100, check 0.300
+    CHECK(r.axes.at(0).counter_in == Approx(0.100));
+    CHECK(rec.value.at("table.absolute_storage_352.relay_1") == 1);
+    CHECK(rec.value.at("table.absolute_storage_352.relay_3") == 1);
+    CHECK(rec.value.at("table.absolute_storage_352.relay_2") == 0);
+
+    SECTION("a double punch in the check closes two relays of the incremental bank") {
+        Card checked = encode(o, fig8_layout()).card;
+        checked.punch(17, Row::r1); // check 0.300 also 0.100: 322 holds 1 and 3
+        VectorDeck d2({checked});
+        ControlCabinet c2(parsons::axes::default_profile(), fig8_layout());
+        Recorder r2;
+        c2.attach(&r2);
+        RunResult rr = c2.run(d2);
+        REQUIRE(rr.stop); // at 0.100 comparer 122'' alone conducts: speed 3 steps to off
+        CHECK(rr.stop->reason == StopReason::check_mismatch);
+        CHECK(rr.stop->lamps.back() == "lamp 272 (incremental comparer 122'' conducting)");
+        CHECK(rr.axes.at(0).counter_in == Approx(0.100));
+        CHECK(r2.value.at("table.incremental_storage_322.relay_1") == 1);
+        CHECK(r2.value.at("table.incremental_storage_322.relay_3") == 1);
+    }
+    SECTION("any other bad punch still stops the reader, named as an addition") {
+        Card stray = encode(o, fig8_layout()).card;
+        stray.punch(76, Row::r4);
+        VectorDeck d3({stray});
+        ControlCabinet c3(parsons::axes::default_profile(), fig8_layout());
+        RunResult s3 = c3.run(d3);
+        REQUIRE(s3.stop);
+        CHECK(s3.stop->reason == StopReason::bad_punch);
+        CHECK(s3.stop->message.find("column 76") != std::string::npos);
+        CHECK(s3.stop->message.find("an addition of this emulator") != std::string::npos);
+    }
 }
 
 TEST_CASE("Screw error: the part is where the screw plus the residual error of cam 160 puts it, "
@@ -411,8 +438,11 @@ TEST_CASE("Counters count as the motion column set them: coast that runs on afte
     one.axis(Axis::tilt).sequence = 0b00001;
     CardOrders two = idle_card(2, {1000, 0, 0, 0, 0});
     two.axis(Axis::table) = order(1000, 900, 3, {}, {}, 0b00001);
+    // The earlier reading lets the stop come at speed 1 (incremental equality), so it coasts.
+    auto p = parsons::axes::default_profile();
+    p.incremental_equality_stops_at_any_speed = true;
     Recorder rec;
-    run_orders({one, two}, parsons::axes::default_profile(), &rec);
+    run_orders({one, two}, p, &rec);
     const double reverse_set = first_time(rec, "table.reversing_control_214", 1);
     const double motor_on_again = [&] {
         for (const auto& ch : rec.of("table.motor_38")) {

@@ -62,12 +62,14 @@ TEST_CASE("Fault stuck-relay: a relay stuck closed in absolute storage makes a s
 TEST_CASE("Fault dead-relay: a relay that never picks leaves the stop unstored, the balancing "
           "circuit catches it (only the incremental comparer conducts)",
           "[faults]") {
-    const Outcome o = run_with("dead-relay:table:356:5");
+    // Relay 9 of 352 holds only the stop's tenths (8.985; the slow-downs are 8.785, 8.885):
+    // the table slows down twice, and at 8.985 the incremental equality steps it to off.
+    const Outcome o = run_with("dead-relay:table:352:9");
     CHECK(o.exit_code == 3);
     CHECK(o.report["stop"]["reason"] == "check_mismatch");
     CHECK_THAT(o.report["stop"]["message"].get<std::string>(),
                Catch::Contains("only the incremental comparer 122'' conducted"));
-    CHECK_THAT(effect(o), Catch::Contains("relay 5 of table bank 356 failed to pick"));
+    CHECK_THAT(effect(o), Catch::Contains("relay 9 of table bank 352 failed to pick"));
 }
 
 TEST_CASE("Fault skip-step: a skipping switch of the increment counter stops at the check, one "

@@ -169,15 +169,18 @@ TEST_CASE("Run: lost stepping-switch steps are reported as position error", "[ru
 
 TEST_CASE("Run: a completed run whose axis ends off its counters says so", "[run][cli]") {
     TempDir dir;
-    // Slow-downs equal to the stop: the table reaches it still on speed 1 and coasts on; the
-    // last card, so no later check can catch it.
+    // Slow-downs equal to the stop, and a delay 258 too short for them: the one equality steps
+    // the switch three times, from speed 1 to off, and the table coasts on; the last card, so
+    // no later check can catch it.
+    write_bytes(dir.path("short.json"), R"({"delay_258_s": 0.002})");
     write_bytes(dir.path("over.csv"), "card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq\n"
                                       "1,0,table,+,1,0.500,0.500,0.500,0.500,1\n"
                                       "1,0,cross,+,3,,,0.000,0.000,2\n"
                                       "1,0,vertical,+,3,,,0.000,0.000,3\n"
                                       "1,0,swivel,+,3,,,0.000,0.000,4\n"
                                       "1,0,tilt,+,3,,,0.000,0.000,5\n");
-    auto r = run_parsons("run " + q(dir.str("over.csv")));
+    auto r =
+        run_parsons("run " + q(dir.str("over.csv")) + " --profile " + q(dir.str("short.json")));
     CHECK(r.exit_code == 0);
     CHECK(r.output.find("warning: table ends") != std::string::npos);
 }

@@ -170,9 +170,18 @@ TEST_CASE("Template: the same deck with its slow-downs stripped stops with check
         }
     }
     REQUIRE(stripped > 0);
+    // As the patent words it, the stop number then only slows the axis (one impulse, one step)
+    // and it runs on past its stop: the machine stops, somewhere it should not have gone.
     const auto run = run_orders(deck.cards);
     REQUIRE(run.stop);
-    CHECK(run.stop->reason == relaylogic::StopReason::check_mismatch);
+    CHECK(run.stop->reason != relaylogic::StopReason::out_of_order_card);
+    // The earlier reading (an incremental equality stops at any speed) stops it at speed 1:
+    // it coasts past the stop and a later card's check fails.
+    auto earlier = axes::default_profile();
+    earlier.incremental_equality_stops_at_any_speed = true;
+    const auto old = run_orders(deck.cards, earlier);
+    REQUIRE(old.stop);
+    CHECK(old.stop->reason == relaylogic::StopReason::check_mismatch);
 }
 
 TEST_CASE("Template: where the path turns sharply the card is made at the lowest speed "

@@ -1,0 +1,86 @@
+#include "relaylogic/card_reader.hpp"
+
+namespace parsons::relaylogic {
+
+namespace {
+
+using cardreader::ColumnWord;
+using cardreader::FieldKind;
+
+int field_slot(FieldKind kind) {
+    switch (kind) {
+    case FieldKind::slow_down_1:
+        return 0;
+    case FieldKind::slow_down_2:
+        return 1;
+    case FieldKind::stop:
+        return 2;
+    case FieldKind::check:
+        return 3;
+    default:
+        return -1;
+    }
+}
+
+std::uint16_t digit_mask(ColumnWord word) {
+    std::uint16_t mask = 0;
+    for (int d = 0; d < 10; ++d) {
+        if ((word & cardreader::row_bit(cardreader::digit_row(d))) != 0) {
+            mask = static_cast<std::uint16_t>(mask | (1U << d));
+        }
+    }
+    return mask;
+}
+
+} // namespace
+
+SensedCard sense_card(const cardreader::Card& card, const cardreader::CardLayout& layout,
+                      bool refuse_double_punch) {
+    SensedCard sensed;
+    sensed.decoded = cardreader::decode(card, layout);
+    if (sensed.decoded || refuse_double_punch) {
+        return sensed;
+    }
+    // As a 1952 reader: every punched row of a digit column picks its relay. The orders are
+    // read from a copy that keeps only each column's lowest punched row.
+    cardreader::Card lowest = card;
+    for (const cardreader::LayoutField& f : layout.fields) {
+        const int slot = field_slot(f.kind);
+        if (slot < 0 || !f.axis || f.width != 4) {
+            continue;
+        }
+        for (int i = 0; i < 4; ++i) {
+            const int c = f.first_column + i;
+            const std::uint16_t mask = digit_mask(card.column(c));
+            if (mask == 0 || (mask & (mask - 1)) == 0) {
+                continue; // blank or a single digit
+            }
+            const int low = __builtin_ctz(mask);
+            ColumnWord word = card.column(c);
+            for (int d = low + 1; d < 10; ++d) {
+                word =
+                    static_cast<ColumnWord>(word & ~cardreader::row_bit(cardreader::digit_row(d)));
+            }
+            lowest.set_column(c, word);
+            sensed.extra.at(cardreader::axis_index(*f.axis))
+                .at(static_cast<std::size_t>(slot))
+                .at(static_cast<std::size_t>(i)) =
+                static_cast<std::uint16_t>(mask & ~(1U << static_cast<unsigned>(low)));
+            sensed.double_columns.push_back(c);
+        }
+    }
+    if (sensed.double_columns.empty()) {
+        return sensed; // a bad punch of another kind
+    }
+    cardreader::DecodeResult clean = cardreader::decode(lowest, layout);
+    if (!clean) {
+        sensed.decoded = std::move(clean); // another problem besides the double punches
+        sensed.extra = {};
+        sensed.double_columns.clear();
+        return sensed;
+    }
+    sensed.decoded = std::move(clean);
+    return sensed;
+}
+
+} // namespace parsons::relaylogic
