@@ -60,11 +60,12 @@ void LeadScrewAxis::command(int direction, int speed_position) {
         target_dir_ = dir;
         return; // the motor is already doing this: the phase goes on unchanged
     }
+    const double u = speed_in_per_s(); // the speed now, before the target changes
     target_dir_ = dir;
     target_speed_ = speed;
     target_u_ =
         speed > 0 ? profile_.speed_in_per_min.at(static_cast<std::size_t>(speed - 1)) / 60.0 : 0.0;
-    start_phase(speed_in_per_s());
+    start_phase(u);
 }
 
 double LeadScrewAxis::accel_toward_target(double u) const {
@@ -107,9 +108,14 @@ void LeadScrewAxis::start_phase(double u) {
 
 void LeadScrewAxis::advance_slowly(double t) {
     if (t >= next_time_) {
-        // End of a speed change: exactly at the target, or at rest.
-        t_ = phase_end_;
-        s_ = position_at(phase_end_);
+        // End of a speed change: exactly at the target, or at rest. If the screw already
+        // stands at that instant (an impulse came at the very moment the speed change ends),
+        // it keeps the place the impulse gave it: the state at one instant never depends on
+        // the order in which that instant's events reached the plant.
+        if (phase_end_ > t_) {
+            t_ = phase_end_;
+            s_ = position_at(phase_end_);
+        }
         start_phase(phase_end_speed());
         return;
     }
@@ -166,7 +172,13 @@ double LeadScrewAxis::position_at(double t) const {
 }
 
 double LeadScrewAxis::speed_in_per_s() const {
-    return std::max(0.0, u0_ + a_ * (std::min(t_, phase_end_) - t0_));
+    // At or past the end of a speed change the speed is the target itself, not u0 + a tau
+    // rounded: so a command at that instant starts from the same speed whether or not the
+    // phase's end was taken first (the fuzz finding of issue 11).
+    if (t_ >= phase_end_) {
+        return phase_end_speed();
+    }
+    return std::max(0.0, u0_ + a_ * (t_ - t0_));
 }
 
 double LeadScrewAxis::real_in() const {

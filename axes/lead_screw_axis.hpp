@@ -17,7 +17,11 @@
 // Every impulse time is a pure function of the phase (its start time, place, speed and
 // acceleration) and of the integer index of the half-thousandth crossed, so the n-th impulse
 // from now has the same time whether the impulses before it were taken one by one or skipped
-// in one jump (fast-forward); the two modes of the cabinet agree to the last bit.
+// in one jump (fast-forward); the two modes of the cabinet agree to the last bit. The state at
+// one instant is likewise a function of the phase and that instant alone, whatever order the
+// instant's events reach the plant in: at the end of a speed change the speed is the target
+// itself, and a screw standing on an impulse's crossing keeps that crossing's place (the
+// fuzz finding of issue 11, tests/fuzz/regressions/machine/tilt-real-position-differs).
 //
 // The real part position is s plus the residual screw error left after compensating cam 160
 // (a table in the profile); the counters only ever see s. Motion goes through one gateway,
