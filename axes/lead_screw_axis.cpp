@@ -12,7 +12,29 @@ constexpr double kPi = 3.14159265358979323846;
 
 } // namespace
 
-LeadScrewAxis::LeadScrewAxis(const AxisProfile& profile) : profile_(profile) {
+LeadScrewAxis::LeadScrewAxis(const AxisProfile& profile)
+    : profile_(profile), shaft_(profile),
+      nut_(profile.backlash_in, ScrewErrorTable(profile.lead_error_in)) {
+    measure_by(MeasuringChain::instrument_shaft_74);
+}
+
+void LeadScrewAxis::measure_by(MeasuringChain chain) {
+    chain_ = chain;
+    const AxisProfile& p = profile_;
+    if (chain == MeasuringChain::screw_turns) {
+        // The counters read screw turns: cam 160 corrects the main screw, and the part stands
+        // off the screw by everything the screw gets wrong.
+        nut_.set_part_table(ScrewErrorTable::sum(
+            {{&p.screw_error_in, 1}, {&p.lead_error_in, 1}, {&p.cam_160_in, -1}}));
+        linear_ = true;
+        s_ = 0;
+    } else {
+        nut_.set_part_table(ScrewErrorTable(p.lead_error_in));
+        linear_ = shaft_.exact() && p.lead_error_in.empty();
+        // The reference zero: where the counters read 0, the part stands at r(0).
+        s_ = nut_.sigma_at_part(shaft_.part_at_reading(0));
+    }
+    nut_.reset_at(s_);
     set_limit_range();
     last_h_ = std::clamp(1L, h_lo_, std::max(h_lo_, h_hi_));
     start_phase(0);
@@ -21,7 +43,7 @@ LeadScrewAxis::LeadScrewAxis(const AxisProfile& profile) : profile_(profile) {
 void LeadScrewAxis::set_limit_range() {
     // The crossings inside the travel limits, found by bisection (the part's position is
     // monotonic in the screw's): h = 2m + 1.
-    auto real = [this](long m) { return with_screw_error(crossing_in(2 * m + 1)) + slip_in_; };
+    auto real = [this](long m) { return real_at_crossing(2 * m + 1); };
     constexpr long kFar = 1L << 40;
     long lo = -kFar; // smallest m inside the lower limit
     long hi = kFar;
@@ -47,10 +69,13 @@ void LeadScrewAxis::set_limit_range() {
     h_hi_ = 2 * lo + 1;
 }
 
-void LeadScrewAxis::slip() {
-    slip_in_ -= d_ * kInchesPerImpulse;
-    --slip_left_;
-    set_limit_range();
+void LeadScrewAxis::begin_slip() {
+    nut_.rebase(s_, d_, slip_len_in_);
+    slip_len_in_ = 0;
+    if (chain_ == MeasuringChain::screw_turns) {
+        set_limit_range();
+    }
+    plan_constants();
 }
 
 void LeadScrewAxis::command(int direction, int speed_position) {
@@ -60,11 +85,12 @@ void LeadScrewAxis::command(int direction, int speed_position) {
         target_dir_ = dir;
         return; // the motor is already doing this: the phase goes on unchanged
     }
+    const double u = speed_in_per_s(); // the speed now, before the target changes
     target_dir_ = dir;
     target_speed_ = speed;
     target_u_ =
         speed > 0 ? profile_.speed_in_per_min.at(static_cast<std::size_t>(speed - 1)) / 60.0 : 0.0;
-    start_phase(speed_in_per_s());
+    start_phase(u);
 }
 
 double LeadScrewAxis::accel_toward_target(double u) const {
@@ -94,22 +120,38 @@ void LeadScrewAxis::start_phase(double u) {
     if (u == 0 && target_u_ > 0) {
         d_ = target_dir_;
     }
+    // A new stretch of nut 78: the dead travel used so far is booked (nothing, if the screw
+    // has not moved since the last stretch began).
+    nut_.rebase(s_, d_);
+    if (chain_ == MeasuringChain::screw_turns) {
+        set_limit_range();
+    }
     a_ = accel_toward_target(u);
     // Where the phase ends: at the target speed, or at rest when braking or reversing.
     phase_end_ = a_ == 0 ? kNever : t0_ + (phase_end_speed() - u0_) / a_;
-    if (a_ == 0 && u0_ > 0) {
-        // t0 + ((k + d/2) 0.001 - s0) d / u, as a + b k.
-        time_per_index_ = d_ * kInchesPerImpulse / u0_;
-        time_at_index0_ = t0_ + (0.5 * d_ * kInchesPerImpulse - s0_) * d_ / u0_;
-    }
+    plan_constants();
     plan_impulse();
+}
+
+void LeadScrewAxis::plan_constants() {
+    if (a_ == 0 && u0_ > 0 && linear_) {
+        // t0 + ((k + d/2) 0.001 + offset - s0) d / u, as a + b k.
+        const double offset = chain_ == MeasuringChain::screw_turns ? 0.0 : nut_.o_end();
+        time_per_index_ = d_ * kInchesPerImpulse / u0_;
+        time_at_index0_ = t0_ + (0.5 * d_ * kInchesPerImpulse + offset - s0_) * d_ / u0_;
+    }
 }
 
 void LeadScrewAxis::advance_slowly(double t) {
     if (t >= next_time_) {
-        // End of a speed change: exactly at the target, or at rest.
-        t_ = phase_end_;
-        s_ = position_at(phase_end_);
+        // End of a speed change: exactly at the target, or at rest. If the screw already
+        // stands at that instant (an impulse came at the very moment the speed change ends),
+        // it keeps the place the impulse gave it: the state at one instant never depends on
+        // the order in which that instant's events reached the plant.
+        if (phase_end_ > t_) {
+            t_ = phase_end_;
+            s_ = position_at(phase_end_);
+        }
         start_phase(phase_end_speed());
         return;
     }
@@ -127,10 +169,10 @@ long LeadScrewAxis::impulses_by(double t) const {
     if (!next_is_impulse_ || next_time_ > t) {
         return 0;
     }
-    const double tau = std::min(t, phase_end_) - t0_;
-    const double covered = u0_ * tau + 0.5 * a_ * tau * tau;
-    const double first = ((static_cast<double>(k_) + 0.5 * d_) * kInchesPerImpulse - s0_) * d_;
-    const double estimate = std::floor((covered - first) / kInchesPerImpulse) + 1;
+    // An estimate from what the counters would read then, made exact by the loops below.
+    const double reading = reading_at_screw(position_at(std::min(t, phase_end_)));
+    const double first = crossing_in(2 * k_ + d_);
+    const double estimate = std::floor((reading - first) * d_ / kInchesPerImpulse) + 1;
     long n = estimate >= 1 && estimate < 1e15 ? static_cast<long>(estimate) : 1;
     while (n > 1 && impulse_time(n) > t) {
         --n;
@@ -144,9 +186,9 @@ long LeadScrewAxis::impulses_by(double t) const {
 void LeadScrewAxis::skip_impulses(long n) {
     t_ = impulse_time(n);
     k_ += d_ * (n - 1); // the last one is taken as any impulse is
+    impulses_ += n - 1;
     next_time_ = t_;
     take_impulse();
-    impulses_ += n - 1;
 }
 
 long LeadScrewAxis::impulses_to_limit() const {
@@ -166,36 +208,28 @@ double LeadScrewAxis::position_at(double t) const {
 }
 
 double LeadScrewAxis::speed_in_per_s() const {
-    return std::max(0.0, u0_ + a_ * (std::min(t_, phase_end_) - t0_));
+    // At or past the end of a speed change the speed is the target itself, not u0 + a tau
+    // rounded: so a command at that instant starts from the same speed whether or not the
+    // phase's end was taken first (the fuzz finding of issue 11).
+    if (t_ >= phase_end_) {
+        return phase_end_speed();
+    }
+    return std::max(0.0, u0_ + a_ * (t_ - t0_));
 }
 
 double LeadScrewAxis::real_in() const {
-    return with_screw_error(s_) + slip_in_;
+    // On a crossing the part is where that crossing puts it (a function of h alone).
+    if (has_crossing_ && s_ == last_crossing_s_) {
+        return real_at_crossing(last_h_);
+    }
+    return nut_.part_at_screw(s_);
 }
 
 double LeadScrewAxis::real_in_at(double t) const {
     if (t <= t_) {
         return real_in();
     }
-    return with_screw_error(position_at(std::min(t, next_time_))) + slip_in_;
-}
-
-double LeadScrewAxis::with_screw_error(double s) const {
-    const auto& table = profile_.screw_error_in;
-    if (table.empty()) {
-        return s;
-    }
-    if (s <= table.front().first) {
-        return s + table.front().second;
-    }
-    if (s >= table.back().first) {
-        return s + table.back().second;
-    }
-    auto it = std::upper_bound(table.begin(), table.end(), s,
-                               [](double x, const auto& p) { return x < p.first; });
-    const auto& [x1, e1] = *it;
-    const auto& [x0, e0] = *(it - 1);
-    return s + e0 + (e1 - e0) * (s - x0) / (x1 - x0);
+    return nut_.part_at_screw(position_at(std::min(t, next_time_)));
 }
 
 double LeadScrewAxis::fixture_angle_deg(bool sine_plate) const {
@@ -224,8 +258,10 @@ nlohmann::json LeadScrewAxis::save() const {
                           {"next_is_impulse", next_is_impulse_},
                           {"impulses", impulses_},
                           {"slip_from", slip_from_},
-                          {"slip_left", slip_left_},
-                          {"slip_in", exact(slip_in_)},
+                          {"slip_length", exact(slip_len_in_)},
+                          {"last_crossing_s", exact(last_crossing_s_)},
+                          {"has_crossing", has_crossing_},
+                          {"nut_78", nut_.save()},
                           {"real_in", exact(real_in())}};
 }
 
@@ -249,8 +285,10 @@ void LeadScrewAxis::load(const nlohmann::json& j) {
     next_is_impulse_ = read<bool>(j, "next_is_impulse");
     impulses_ = read<long>(j, "impulses");
     slip_from_ = read<long>(j, "slip_from");
-    slip_left_ = read<long>(j, "slip_left");
-    slip_in_ = exact(member(j, "slip_in"));
+    slip_len_in_ = exact(member(j, "slip_length"));
+    last_crossing_s_ = exact(member(j, "last_crossing_s"));
+    has_crossing_ = read<bool>(j, "has_crossing");
+    nut_.load(member(j, "nut_78"));
     if (target_speed_ < 0 || target_speed_ > 3) {
         throw StateError("target_speed must be 0..3");
     }

@@ -17,15 +17,30 @@
 // Every impulse time is a pure function of the phase (its start time, place, speed and
 // acceleration) and of the integer index of the half-thousandth crossed, so the n-th impulse
 // from now has the same time whether the impulses before it were taken one by one or skipped
-// in one jump (fast-forward); the two modes of the cabinet agree to the last bit.
+// in one jump (fast-forward); the two modes of the cabinet agree to the last bit. The state at
+// one instant is likewise a function of the phase and that instant alone, whatever order the
+// instant's events reach the plant in: at the end of a speed change the speed is the target
+// itself, and a screw standing on an impulse's crossing keeps that crossing's place (the
+// fuzz finding of issue 11, tests/fuzz/regressions/machine/tilt-real-position-differs).
 //
-// The real part position is s plus the residual screw error left after compensating cam 160
-// (a table in the profile); the counters only ever see s. Motion goes through one gateway,
-// advance_to(), which is where impulses, coast and the travel limits are all decided.
+// s is the main screw's travel (turns x lead). What the commutators count depends on the
+// measuring chain (MachineProfile::measuring_chain): in the patent's (Fig. 3) they are turned
+// by instrument shaft 74 from the part itself, so the half-thousandth crossings are those of
+// the counters' reading q, tied to the part by the instrument's residual error
+// (axes/instrument_shaft.hpp), and the part to the screw through nut 78 (lead error, backlash,
+// slip: axes/lead_screw_nut.hpp). The screw position of crossing h is then
+//     s_h = o_end + G^-1(q_h + r(q_h)),   q_h = h x 0.0005 in,
+// a pure function of h within a stretch of the nut. Counting screw turns instead (a departure)
+// the crossings are the screw's own, s_h = q_h, and the part lags by whatever nut 78 and the
+// drive lose. Either way the part's position at a crossing is a pure function of h, never a
+// sum of increments. Motion goes through one gateway, advance_to(), which is where impulses,
+// coast and the travel limits are all decided.
 // Emulation note: the two contact sets of each commutator are the duplicate-contact check of
 // relaylogic/; here an impulse is one event seen by both.
 #pragma once
 
+#include "axes/instrument_shaft.hpp"
+#include "axes/lead_screw_nut.hpp"
 #include "axes/machine_profile.hpp"
 
 #include <nlohmann/json.hpp>
@@ -81,6 +96,10 @@ inline double crossing_in(long h) {
 class LeadScrewAxis {
 public:
     explicit LeadScrewAxis(const AxisProfile& profile);
+    // What the commutators count (before any motion): the part through instrument shaft 74
+    // (the default, the patent), or the main screw's turns (a departure).
+    void measure_by(MeasuringChain chain);
+    MeasuringChain measuring_chain() const { return chain_; }
 
     // The motor: direction +1 / -1 and one of the three speeds (1..3), or switched off (0).
     // Takes effect at the current time; the speed changes at the profile's rates. Asking for
@@ -114,7 +133,7 @@ public:
     void skip_impulses(long n);
 
     double screw_in() const { return s_; }
-    double real_in() const; // the part: screw plus residual screw error (cam 160)
+    double real_in() const; // the part: where nut 78 really stands
     // Where the part is at time t (t_ <= t <= next_event_time()), without moving anything.
     double real_in_at(double t) const;
     double speed_in_per_s() const;
@@ -136,19 +155,17 @@ public:
     long impulses_to_limit() const;
     const AxisProfile& profile() const { return profile_; }
     // The part's position at the crossing of the j-th coming impulse (j >= 1).
-    double real_at_impulse(long j) const {
-        return with_screw_error(crossing_in(2 * (k_ + d_ * (j - 1)) + d_)) + slip_in_;
-    }
+    double real_at_impulse(long j) const { return real_at_crossing(2 * (k_ + d_ * (j - 1)) + d_); }
 
-    // Fault: from its nth impulse (from 1) the screw slips in the part for `count` impulses:
-    // the commutators turn, the part does not move.
+    // Fault: from its nth impulse (from 1) the drive slips for `count` thousandths of screw
+    // travel: the screw turns, the part stands (axes/lead_screw_nut.hpp).
     void slip_from(long n, long count) {
         slip_from_ = n;
-        slip_left_ = count;
+        slip_len_in_ = static_cast<double>(count) * kInchesPerImpulse;
     }
-    bool slipping_ahead() const { return slip_left_ > 0; }
-    long impulses_to_slip() const { return slip_left_ > 0 ? slip_from_ - impulses_ : 0; }
-    double slip_in() const { return slip_in_; } // how far the part lags the screw
+    bool slipping_ahead() const { return slip_len_in_ > 0 && slip_from_ > impulses_; }
+    long impulses_to_slip() const { return slipping_ahead() ? slip_from_ - impulses_ : 0; }
+    double slip_in() const { return nut_.slip_in(); } // how far the part lags the screw
     // The first coming impulse (1-based) whose crossing puts the part where trips(x) holds,
     // for a trips that, once true, stays true further along the motion; 0 if none ever does.
     template <typename Trips>
@@ -183,11 +200,13 @@ private:
     [[gnu::always_inline]] Impulse take_impulse() {
         t_ = next_time_;
         last_h_ = 2 * k_ + d_;
-        s_ = crossing_in(last_h_);
+        s_ = crossing_screw(last_h_);
+        last_crossing_s_ = s_;
+        has_crossing_ = true;
         k_ += d_;
         ++impulses_;
-        if (slip_left_ > 0 && impulses_ >= slip_from_) {
-            slip(); // the fault: the screw turns, the part stays
+        if (slip_len_in_ > 0 && impulses_ == slip_from_) {
+            begin_slip(); // the fault: from here the screw turns, the part stands
         }
         Impulse impulse;
         impulse.direction = d_;
@@ -202,9 +221,31 @@ private:
         return impulse;
     }
     void advance_slowly(double t);
-    void slip();
-    void set_limit_range();     // h_lo_, h_hi_ for the limits and the slip so far
+    void begin_slip();
+    void set_limit_range();     // h_lo_, h_hi_ for the limits (and, counting turns, the nut)
     void start_phase(double u); // a new phase of constant acceleration from (t_, s_, u)
+    void plan_constants();      // the constant-speed crossing times of this phase
+    // The screw position at which the commutators' crossing h comes, in this stretch of nut
+    // 78, and where the part then is.
+    [[gnu::always_inline]] double crossing_screw(long h) const {
+        if (chain_ == MeasuringChain::screw_turns) {
+            return crossing_in(h);
+        }
+        if (linear_) {
+            return crossing_in(h) + nut_.o_end();
+        }
+        return nut_.screw_at(nut_.sigma_at_part(shaft_.part_at_reading(crossing_in(h))));
+    }
+    double real_at_crossing(long h) const {
+        return chain_ == MeasuringChain::screw_turns ? nut_.part_at_screw(crossing_in(h))
+                                                     : shaft_.part_at_reading(crossing_in(h));
+    }
+    // What the counters would read with the screw at s (no crossing rounding).
+    double reading_at_screw(double s) const {
+        return chain_ == MeasuringChain::screw_turns
+                   ? s
+                   : shaft_.reading_at_part(nut_.part_at_screw(s));
+    }
     // The time of the next impulse in this phase.
     [[gnu::always_inline]] void plan_impulse() {
         const double t = boundary_time(k_);
@@ -212,26 +253,29 @@ private:
         next_time_ = next_is_impulse_ ? t : phase_end_;
     }
     [[gnu::always_inline]] double boundary_time(long k_from) const {
-        if (a_ == 0) {
+        if (a_ == 0 && linear_) {
             // At constant speed the crossing times are linear in the index: t0 + (boundary -
             // s0) / u, with the constants worked out once a phase. Never before the phase.
             return u0_ > 0 ? std::max(t0_, time_at_index0_ +
                                                time_per_index_ * static_cast<double>(k_from))
                            : kNever;
         }
-        if (u0_ == 0 && a_ < 0) {
+        if (u0_ == 0 && a_ <= 0) {
             return kNever;
         }
-        const double boundary = (static_cast<double>(k_from) + 0.5 * d_) * kInchesPerImpulse;
+        const double boundary = crossing_screw(2 * k_from + d_);
         const double D = std::max(0.0, (boundary - s0_) * d_);
         const double t = t0_ + time_to_cover(D, u0_, a_);
         return t <= phase_end_ ? t : kNever;
     }
     double position_at(double t) const;
-    double with_screw_error(double s) const;
     double accel_toward_target(double u) const;
 
     AxisProfile profile_;
+    MeasuringChain chain_ = MeasuringChain::instrument_shaft_74;
+    InstrumentShaft shaft_; // instrument shaft 74, cam 160
+    LeadScrewNut nut_;      // lead screw 22, nut 78, the drive's slip
+    bool linear_ = true;    // crossing_screw(h) = crossing_in(h) + offset (no error tables)
     // The current phase: from time t0_ at screw position s0_ and speed u0_ (>= 0), moving in
     // direction d_ with acceleration a_ (signed along d_) until phase_end_.
     double t0_ = 0;
@@ -255,9 +299,10 @@ private:
     long impulses_ = 0;
     long h_lo_ = 0; // crossings inside the travel limits: h_lo_ <= h <= h_hi_ (odd)
     long h_hi_ = 0;
-    long slip_from_ = 0; // the slip fault: from this impulse,
-    long slip_left_ = 0; // this many more impulses
-    double slip_in_ = 0; // the part's lag behind the screw so far
+    long slip_from_ = 0;         // the slip fault: from this impulse,
+    double slip_len_in_ = 0;     // this much screw travel (0 once begun)
+    double last_crossing_s_ = 0; // the screw position of the last crossing taken
+    bool has_crossing_ = false;
 };
 
 } // namespace parsons::axes

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <optional>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,6 +45,23 @@ struct AxisProfile {
     // turned both ways within the counters' 0 .. 9.999 in.
     double pivot_to_screw_in = 10.0;
     double level_in = 0.0;
+
+    // --- The measuring chain of Fig. 3 (lead screw 22, nut 78, instrument shaft 74, cam 160;
+    // axes/lead_screw_nut.hpp, axes/instrument_shaft.hpp). All (position, error) tables in
+    // inches as screw_error_in; empty = perfect. ---
+    // Lead error of lead screw 22: the part stands at screw travel + this, the nut engaged.
+    std::vector<std::pair<double, double>> lead_error_in;
+    // Backlash in nut 78: screw travel with the part standing when the motion reverses.
+    double backlash_in = 0.0;
+    // The error of instrument shaft 74's own screw, and the correction cam 160 gives it.
+    std::vector<std::pair<double, double>> instrument_error_in;
+    std::vector<std::pair<double, double>> cam_160_in;
+};
+
+// What the counters measure (DESIGN.md 4.3).
+enum class MeasuringChain : std::uint8_t {
+    instrument_shaft_74, // the patent: the part's position, through shaft 74 and follower 76
+    screw_turns,         // departure from the patent: the turns of the main screw
 };
 
 struct MachineProfile {
@@ -85,6 +103,11 @@ struct MachineProfile {
     // 110 and 310 stand still and commutator 100 steps 312 directly. The thousandths they
     // skip are right again only where the move passes whole hundredths the way it started.
     bool count_hundredths_at_speed_1 = false;
+
+    // --- The measuring chain (Fig. 3; claims 8-10, 23) ---
+    // The patent's counters measure the part through instrument shaft 74; counting the turns
+    // of the main screw instead is a departure, kept to show what the chain is for.
+    MeasuringChain measuring_chain = MeasuringChain::instrument_shaft_74;
 
     // ---- Readings of the patent and additions to it (DESIGN.md 4, rules 5, 6, 12, 14) ----
     // The built-in profiles parsons-1952 (the default) and parsons-safe differ only here;

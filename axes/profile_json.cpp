@@ -1,9 +1,12 @@
 #include "axes/profile_json.hpp"
 
+#include "axes/screw_error_table.hpp"
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace parsons::axes {
@@ -23,6 +26,8 @@ constexpr double kMaxDurationS = 60;
 constexpr double kMinSpeedInPerMin = 0.1;
 constexpr double kMaxSpeedInPerMin = 1000;
 constexpr double kMinAccelerationInPerS2 = 0.001;
+// Backlash in nut 78: a worn nut might have a few thousandths; a tenth of an inch is no nut.
+constexpr double kMostBacklashIn = 0.1;
 
 double positive(const json& j, const std::string& key) {
     if (!j.is_number()) {
@@ -53,6 +58,67 @@ double finite(const json& j, const std::string& key) {
         throw ProfileError(fmt::format("{}: expected a number", key));
     }
     return j.get<double>();
+}
+
+ErrorPoints error_points(const json& value, const std::string& k) {
+    if (!value.is_array()) {
+        throw ProfileError(fmt::format("{}: expected [[position, error], ...]", k));
+    }
+    ErrorPoints points;
+    for (const auto& pair : value) {
+        if (!pair.is_array() || pair.size() != 2) {
+            throw ProfileError(fmt::format("{}: expected [[position, error], ...]", k));
+        }
+        const double x = finite(pair.at(0), k);
+        const double e = finite(pair.at(1), k);
+        if (!points.empty() && x <= points.back().first) {
+            throw ProfileError(fmt::format("{}: positions must increase", k));
+        }
+        if (std::abs(x) > kScrewPositionLimitIn || std::abs(e) > kScrewErrorLimitIn) {
+            throw ProfileError(fmt::format(
+                "{}: [{}, {}]: positions must lie within +-{} in and errors within +-{} in", k, x,
+                e, kScrewPositionLimitIn, kScrewErrorLimitIn));
+        }
+        points.emplace_back(x, e);
+    }
+    return points;
+}
+
+json points_json(const ErrorPoints& points) {
+    json out = json::array();
+    for (const auto& [x, e] : points) {
+        out.push_back({x, e});
+    }
+    return out;
+}
+
+// --- The measuring chain of Fig. 3: lead screw 22, nut 78, instrument shaft 74, cam 160 ---
+bool apply_chain_key(const std::string& key, const json& value, AxisProfile& a,
+                     const std::string& k) {
+    if (key == "lead_error_in") {
+        a.lead_error_in = error_points(value, k);
+    } else if (key == "instrument_error_in") {
+        a.instrument_error_in = error_points(value, k);
+    } else if (key == "cam_160_in") {
+        a.cam_160_in = error_points(value, k);
+    } else if (key == "backlash_in") {
+        if (!value.is_number() || !(value.get<double>() >= 0) ||
+            value.get<double>() > kMostBacklashIn) {
+            throw ProfileError(fmt::format("{}: must be a number from 0 to {} in, not {}", k,
+                                           kMostBacklashIn, value.dump()));
+        }
+        a.backlash_in = value.get<double>();
+    } else {
+        return false;
+    }
+    return true;
+}
+
+void chain_json(const AxisProfile& a, json& j) {
+    j["lead_error_in"] = points_json(a.lead_error_in);
+    j["backlash_in"] = a.backlash_in;
+    j["instrument_error_in"] = points_json(a.instrument_error_in);
+    j["cam_160_in"] = points_json(a.cam_160_in);
 }
 
 void apply_axis(const json& j, AxisProfile& a, const std::string& where) {
@@ -94,27 +160,8 @@ void apply_axis(const json& j, AxisProfile& a, const std::string& where) {
         } else if (key == "level_in") {
             a.level_in = finite(value, k);
         } else if (key == "screw_error_in") {
-            if (!value.is_array()) {
-                throw ProfileError(fmt::format("{}: expected [[position, error], ...]", k));
-            }
-            a.screw_error_in.clear();
-            for (const auto& pair : value) {
-                if (!pair.is_array() || pair.size() != 2) {
-                    throw ProfileError(fmt::format("{}: expected [[position, error], ...]", k));
-                }
-                const double x = finite(pair.at(0), k);
-                const double e = finite(pair.at(1), k);
-                if (!a.screw_error_in.empty() && x <= a.screw_error_in.back().first) {
-                    throw ProfileError(fmt::format("{}: positions must increase", k));
-                }
-                if (std::abs(x) > kScrewPositionLimitIn || std::abs(e) > kScrewErrorLimitIn) {
-                    throw ProfileError(fmt::format(
-                        "{}: [{}, {}]: positions must lie within +-{} in and errors within +-{} in",
-                        k, x, e, kScrewPositionLimitIn, kScrewErrorLimitIn));
-                }
-                a.screw_error_in.emplace_back(x, e);
-            }
-        } else if (key != "name") {
+            a.screw_error_in = error_points(value, k);
+        } else if (!apply_chain_key(key, value, a, k) && key != "name") {
             throw ProfileError(fmt::format("{}: unknown key", k));
         }
     }
@@ -126,35 +173,42 @@ void apply_axis(const json& j, AxisProfile& a, const std::string& where) {
             fmt::format("{}: soft_limits_in: the minimum must be below the maximum", where));
     }
     // The part's position must grow with the screw's (1 + the error's slope > 0), or a limit
-    // could be passed and found again further on.
-    for (std::size_t i = 1; i < a.screw_error_in.size(); ++i) {
-        const auto& [x0, e0] = a.screw_error_in.at(i - 1);
-        const auto& [x1, e1] = a.screw_error_in.at(i);
-        if ((x1 + e1) - (x0 + e0) <= 0) {
-            throw ProfileError(fmt::format("{}: screw_error_in: the error falls faster than the "
-                                           "screw advances between {} and {} in",
-                                           where, x0, x1));
+    // could be passed and found again further on: for each table, and for what the measuring
+    // chain makes of them together, whichever chain counts.
+    const std::array<std::pair<const char*, ScrewErrorTable>, 4> tables = {{
+        {"screw_error_in", ScrewErrorTable(a.screw_error_in)},
+        {"lead_error_in", ScrewErrorTable(a.lead_error_in)},
+        {"screw_error_in + instrument_error_in - cam_160_in",
+         ScrewErrorTable::sum(
+             {{&a.screw_error_in, 1}, {&a.instrument_error_in, 1}, {&a.cam_160_in, -1}})},
+        {"screw_error_in + lead_error_in - cam_160_in",
+         ScrewErrorTable::sum(
+             {{&a.screw_error_in, 1}, {&a.lead_error_in, 1}, {&a.cam_160_in, -1}})},
+    }};
+    for (const auto& [what, table] : tables) {
+        if (auto x = table.falls_after()) {
+            throw ProfileError(fmt::format("{}: {}: the error falls faster than the screw "
+                                           "advances after {} in",
+                                           where, what, *x));
         }
     }
 }
 
 json axis_json(const AxisProfile& a) {
-    json errors = json::array();
-    for (const auto& [x, e] : a.screw_error_in) {
-        errors.push_back({x, e});
-    }
-    return json{
-        {"name", a.name},
-        {"speed_in_per_min", a.speed_in_per_min},
-        {"acceleration_in_per_s2", a.acceleration_in_per_s2},
-        {"braking_in_per_s2", a.braking_in_per_s2},
-        {"travel_min_in", a.travel_min_in},
-        {"travel_max_in", a.travel_max_in},
-        {"soft_limits_in", a.soft_limits ? json{a.soft_min_in, a.soft_max_in} : json(nullptr)},
-        {"screw_lead_in_per_rev", a.screw_lead_in_per_rev},
-        {"screw_error_in", errors},
-        {"pivot_to_screw_in", a.pivot_to_screw_in},
-        {"level_in", a.level_in}};
+    const json errors = points_json(a.screw_error_in);
+    json j{{"name", a.name},
+           {"speed_in_per_min", a.speed_in_per_min},
+           {"acceleration_in_per_s2", a.acceleration_in_per_s2},
+           {"braking_in_per_s2", a.braking_in_per_s2},
+           {"travel_min_in", a.travel_min_in},
+           {"travel_max_in", a.travel_max_in},
+           {"soft_limits_in", a.soft_limits ? json{a.soft_min_in, a.soft_max_in} : json(nullptr)},
+           {"screw_lead_in_per_rev", a.screw_lead_in_per_rev},
+           {"screw_error_in", errors},
+           {"pivot_to_screw_in", a.pivot_to_screw_in},
+           {"level_in", a.level_in}};
+    chain_json(a, j);
+    return j;
 }
 
 // ---- Readings of the patent and additions (MachineProfile's last group) ----
@@ -265,6 +319,16 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
                 throw ProfileError("count_hundredths_at_speed_1: expected true or false");
             }
             p.count_hundredths_at_speed_1 = value.get<bool>();
+        } else if (key == "measuring_chain") {
+            const std::string chain = value.is_string() ? value.get<std::string>() : "";
+            if (chain == "instrument_shaft_74") {
+                p.measuring_chain = MeasuringChain::instrument_shaft_74;
+            } else if (chain == "screw_turns") {
+                p.measuring_chain = MeasuringChain::screw_turns;
+            } else {
+                throw ProfileError("measuring_chain: expected \"instrument_shaft_74\" (the "
+                                   "patent) or \"screw_turns\" (a departure)");
+            }
         } else if (key == "separate_registers") {
             if (!value.is_boolean()) {
                 throw ProfileError("separate_registers: expected true or false");
@@ -309,6 +373,9 @@ std::string profile_to_json(const MachineProfile& p) {
            {"sequence_shaft_step_s", p.sequence_shaft_step_s},
            {"separate_registers", p.separate_registers},
            {"count_hundredths_at_speed_1", p.count_hundredths_at_speed_1},
+           {"measuring_chain", p.measuring_chain == MeasuringChain::screw_turns
+                                   ? "screw_turns"
+                                   : "instrument_shaft_74"},
            {"axes", axes}};
     put_readings(j, p);
     return j.dump(2) + "\n";

@@ -9,6 +9,15 @@ namespace parsons::cli {
 using cardreader::Axis;
 using cardreader::axis_name;
 
+namespace {
+
+// The main screw's travel less what the counters read, modulo their 10 inches.
+double screw_vs_counters(const relaylogic::AxisResult& x) {
+    return std::remainder(x.screw_in - x.counter_in, 10.0);
+}
+
+} // namespace
+
 nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachineProfile& profile,
                            const std::string& deck) {
     using nlohmann::json;
@@ -18,6 +27,9 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachinePr
     j["status"] = r.completed ? "completed" : "stopped";
     j["cards_read"] = r.cards_read;
     j["machine_seconds"] = r.machine_seconds;
+    j["measuring_chain"] = profile.measuring_chain == axes::MeasuringChain::screw_turns
+                               ? "screw_turns"
+                               : "instrument_shaft_74";
     if (r.stop) {
         const auto& s = *r.stop;
         j["stop"] = json{{"reason", relaylogic::stop_reason_name(s.reason)},
@@ -35,6 +47,10 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachinePr
         json ax{{"position", x.counter_in},     {"real_position", x.real_in},
                 {"position_error", x.error_in}, {"impulses", x.impulses},
                 {"lost_steps", x.lost_steps},   {"screw_slip", x.slip_in}};
+        // The two readings of Fig. 3: the part as the counters measured it (position) and the
+        // main screw's turns (turns x lead), and how far apart they are.
+        ax["screw_turns_position"] = x.screw_in;
+        ax["screw_turns_minus_position"] = screw_vs_counters(x);
         if (x.fixture_angle_deg) {
             ax["fixture_angle_deg"] = *x.fixture_angle_deg;
         }
@@ -93,7 +109,13 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
     }
     for (Axis a : cardreader::kAxes) {
         const auto& x = r.axes.at(cardreader::axis_index(a));
-        if (x.slip_in != 0) {
+        if (std::abs(screw_vs_counters(x)) >= 0.0005 && std::abs(x.error_in) < 0.0005) {
+            line(fmt::format("  note: {} screw turns read {:.4f} in, the counters {:.3f} in: the "
+                             "{:+.4f} in between (slip, backlash in nut 78, lead error) was "
+                             "measured through instrument shaft 74",
+                             axis_name(a), x.screw_in, x.counter_in, screw_vs_counters(x)));
+        }
+        if (x.slip_in != 0 && std::abs(x.error_in) >= 0.0005) {
             line(fmt::format("  warning: {} lead screw slipped: the part is {:+.4f} in from where "
                              "its counters say, and the 1952 checks could not see it",
                              axis_name(a), x.error_in));

@@ -65,6 +65,7 @@ ControlCabinet::ControlCabinet(axes::MachineProfile profile, const cardreader::C
                        "zeroizing: channel 304 (reader indexes the next card)", "304", 1);
     for (Axis a : cardreader::kAxes) {
         circuits_.push_back(std::make_unique<AxisCircuit>(tracer_, profile_, a));
+        circuits_.back()->plant.measure_by(profile_.measuring_chain); // Fig. 3
     }
 }
 
@@ -249,18 +250,32 @@ void ControlCabinet::report_faults() {
             e.effect = fmt::format("{} stepping switch {} skipped a position on its step {}", axis,
                                    f.numeral, f.n);
         } else if (f.kind == FaultKind::slip && c.plant.slip_in() != 0) {
-            const long slipped = std::lround(std::abs(c.plant.slip_in()) / axes::kInchesPerImpulse);
             e.acted = true;
-            e.effect = fmt::format(
-                "the {} lead screw slipped for {} impulse{} from its impulse {}: "
-                "the part lags the counters by {:.3f} in, which no 1952 check "
-                "can see",
-                axis, slipped, slipped == 1 ? "" : "s", f.n, std::abs(c.plant.slip_in()));
+            e.effect = slip_effect(f, c);
         }
         if (!e.acted && e.effect.empty()) {
             e.effect = "never came into play in this run";
         }
     }
+}
+
+// What a slip did depends on what the counters measure (DESIGN.md 4.3).
+std::string ControlCabinet::slip_effect(const Fault& f, const AxisCircuit& c) const {
+    const double slipped = std::abs(c.plant.slip_in());
+    const long thousandths = std::lround(slipped / axes::kInchesPerImpulse);
+    const std::string what =
+        fmt::format("the {} drive slipped for {:.3f} in of screw travel from its impulse {}",
+                    axis_name(f.axis), slipped, f.n);
+    if (c.plant.measuring_chain() == axes::MeasuringChain::screw_turns) {
+        return fmt::format("{}: the counters counted {} impulse{} of screw turns the part never "
+                           "made and it lags them by {:.3f} in, which no 1952 check can see "
+                           "(screw-turn counting, a departure from the patent)",
+                           what, thousandths, thousandths == 1 ? "" : "s", slipped);
+    }
+    return fmt::format("{}: the part stood while the screw turned; instrument shaft 74 follows "
+                       "the part, so the counters did not count it and the axis ran on to the "
+                       "real position its card asked for (Fig. 3, claims 8-10)",
+                       what);
 }
 
 double ControlCabinet::next_axis_event(std::size_t i) const {
@@ -965,6 +980,7 @@ RunResult ControlCabinet::result() const {
             a.last_stop_in = c.order.stop / 1000.0;
         }
         a.slip_in = c.plant.slip_in();
+        a.screw_in = c.plant.screw_in();
         for (std::size_t k = 0; k < 4; ++k) {
             a.skipped_steps += c.absolute_counter.stepping_switch(k).skipped() ? 1 : 0;
             a.skipped_steps += c.increment_counter.stepping_switch(k).skipped() ? 1 : 0;

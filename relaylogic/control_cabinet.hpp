@@ -42,6 +42,7 @@ struct AxisResult {
     std::optional<double> fixture_angle_deg; // swivel and tilt
     std::optional<double> last_stop_in;      // the stop of the last card read, if any
     double slip_in = 0;                      // a slip fault: how far the part lags the screw
+    double screw_in = 0;                     // the main screw's travel (turns x lead)
     int skipped_steps = 0;                   // skip faults that acted on its switches
 };
 
@@ -134,6 +135,7 @@ private:
     bool fault_drops(const AxisCircuit& c);
     void apply_faults(cardreader::CardSource& deck);
     void report_faults();
+    std::string slip_effect(const Fault& f, const AxisCircuit& c) const;
     HoldingRelayBank& bank_numbered(AxisCircuit& c, int numeral);
     SteppingSwitch& switch_numbered(AxisCircuit& c, int numeral);
     [[gnu::cold]] void missed_impulse(AxisCircuit& c);

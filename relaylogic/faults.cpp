@@ -107,11 +107,17 @@ Fault parse_fault(const std::string& spec) {
                                         : FaultKind::short_card;
         f.n = count_from_1(spec, p[1], "N");
     } else if (kind == "slip") {
-        expect(4, "slip:AXIS:N:M (e.g. slip:table:2000:25, 25 impulses from the 2000th)");
+        expect(4, "slip:AXIS:N:M (e.g. slip:table:2000:25, 0.025 in of screw travel from the "
+                  "2000th impulse)");
         f.kind = FaultKind::slip;
         f.axis = axis_of(spec, p[1]);
         f.n = count_from_1(spec, p[2], "N");
         f.count = count_from_1(spec, p[3], "M");
+        if (f.count > 10000) {
+            throw FaultSpecError(fmt::format("--fault '{}': M is at most 10000 (thousandths of "
+                                             "screw travel: the counters' whole 10 inches)",
+                                             spec));
+        }
     } else {
         throw FaultSpecError(fmt::format("--fault '{}': unknown fault (one of {})", spec, kForms));
     }

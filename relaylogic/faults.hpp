@@ -11,8 +11,11 @@
 //   swap-cards:N                 the deck's cards N and N+1 come in the other order
 //   short-card:N                 the deck's Nth card is short: columns 61-80 never reach the
 //                                brushes (the card number among them)
-//   slip:AXIS:N:M                the lead screw slips for M impulses from the axis's Nth: the
-//                                commutators turn and the counters count, the part stands
+//   slip:AXIS:N:M                from the axis's Nth impulse the drive slips for M
+//                                thousandths of screw travel (M <= 10000): the screw turns,
+//                                the part stands. Instrument shaft 74 follows the part, so the
+//                                patent's counters do not count it; counting screw turns (a
+//                                departure) they do, and the part lags them
 //
 // Impulses and steps count from 1 over the whole run; cards by their place in the deck.
 #pragma once
@@ -44,7 +47,7 @@ struct Fault {
     long n = 1;      // the impulse, the step or the card (deck position), from 1
     int numeral = 0; // the bank or the stepping switch
     int digit = 0;   // the relay of the bank
-    long count = 0;  // slip: impulses the part does not follow
+    long count = 0;  // slip: thousandths of screw travel the part does not follow
     std::string spec;
 };
 

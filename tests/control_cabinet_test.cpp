@@ -380,11 +380,12 @@ TEST_CASE("Screw error: the part is where the screw plus the residual error of c
     RunResult r = run_orders({c}, profile);
     REQUIRE(r.completed);
     CHECK(r.axes.at(0).counter_in == Approx(2.500));
-    // The stop impulse comes at screw 2.4995, the coast adds 0.00025: screw 2.49975, and the
-    // error there is 0.004 * 2.49975 / 5.
-    const double screw = 2.49975;
-    CHECK(r.axes.at(0).real_in == Approx(screw + 0.004 * screw / 5).margin(1e-7));
-    CHECK(r.axes.at(0).error_in == Approx(screw + 0.004 * screw / 5 - 2.5).margin(1e-7));
+    // The counters read through instrument shaft 74: the stop impulse comes as they pass
+    // 2.4995, with the part at 2.4995 plus the residual error there, 0.004 * 2.4995 / 5; the
+    // coast then moves the part itself 0.00025 on.
+    const double part = 2.4995 + 0.004 * 2.4995 / 5 + 0.00025;
+    CHECK(r.axes.at(0).real_in == Approx(part).margin(1e-9));
+    CHECK(r.axes.at(0).error_in == Approx(part - 2.5).margin(1e-9));
 }
 
 TEST_CASE("Sine plate: the report gives the fixture angles of swivel and tilt", "[cabinet][axes]") {

@@ -12,8 +12,10 @@
 // too close, a wrong check or card number now and then, patterns that stall. The profiles vary
 // speeds (some faster than the switches can step), stepping rate, acceleration, delay 258,
 // screw error, travel limits, soft limits, separate registers, hundredths-only counting, the
-// ribbon feed of Fig. 9 and every kind of injected fault, so every kind of stretch end is met;
-// each deck is fed on cards, on five cards a step or on perforated tape (col. 6).
+// ribbon feed of Fig. 9, the readings of the patent and the additions, the measuring chain
+// (backlash, lead error, instrument error and cam 160, screw-turn counting) and every kind of
+// injected fault, so every kind of stretch end is met; each deck is fed on cards, on five
+// cards a step or on perforated tape (col. 6).
 #include "tests/machine_support.hpp"
 
 #include "cardreader/deck_io.hpp"
@@ -111,6 +113,20 @@ Case random_case(std::mt19937& rng) {
                                 {5.0, real(-0.002, 0.002)},
                                 {10.0, real(-0.002, 0.002)}};
         }
+        // The measuring chain of Fig. 3: backlash in nut 78, lead screw 22's error,
+        // instrument shaft 74's error and cam 160.
+        if (chance(0.2)) {
+            a.backlash_in = real(0, 0.004);
+        }
+        if (chance(0.1)) {
+            a.lead_error_in = {{0.0, real(-0.003, 0.003)},
+                               {4.0, real(-0.003, 0.003)},
+                               {10.0, real(-0.003, 0.003)}};
+        }
+        if (chance(0.1)) {
+            a.instrument_error_in = {{0.0, real(-0.002, 0.002)}, {10.0, real(-0.002, 0.002)}};
+            a.cam_160_in = {{1.0, real(-0.002, 0.002)}, {6.0, real(-0.002, 0.002)}};
+        }
         if (chance(0.05)) {
             a.travel_min_in = real(-0.5, -0.001);
             a.travel_max_in = real(4.0, 10.5);
@@ -137,6 +153,8 @@ Case random_case(std::mt19937& rng) {
     p.delay_258_waits_for_equality_to_leave = chance(0.2);
     p.lamps_only_on_trip = chance(0.2);
     p.refuse_double_punch = chance(0.3);
+    p.measuring_chain =
+        chance(0.3) ? axes::MeasuringChain::screw_turns : axes::MeasuringChain::instrument_shaft_74;
 
     // Half the decks are valid; the others have one mistake, on one card and axis.
     const int mistake = chance(0.5) ? 0 : pick(1, 7);
@@ -196,6 +214,11 @@ Case random_case(std::mt19937& rng) {
             const int last = bad_axis == Axis::table ? 19 : first + 11;
             c.extra_punches.emplace_back(c.cards.size() - 1, pick(first, last), pick(0, 9));
         }
+    }
+    if (chance(0.1)) { // a slip of the drive, often while the chain has backlash too
+        const std::string axis(axis_name(kAxes.at(static_cast<std::size_t>(pick(0, 4)))));
+        c.faults.push_back(
+            parse_fault(fmt::format("slip:{}:{}:{}", axis, pick(1, 400), pick(1, 300))));
     }
     if (chance(0.25)) {
         const std::string axis(axis_name(kAxes.at(static_cast<std::size_t>(pick(0, 4)))));
@@ -267,6 +290,7 @@ void require_same(const RunResult& a, const RunResult& b) {
         REQUIRE(a.axes.at(i).impulses == b.axes.at(i).impulses);
         REQUIRE(a.axes.at(i).lost_steps == b.axes.at(i).lost_steps);
         REQUIRE(a.axes.at(i).slip_in == b.axes.at(i).slip_in);
+        REQUIRE(a.axes.at(i).screw_in == b.axes.at(i).screw_in);
     }
     REQUIRE(a.faults.size() == b.faults.size());
     for (std::size_t i = 0; i < a.faults.size(); ++i) {
@@ -396,4 +420,46 @@ TEST_CASE("Fast-forward: a jump leaves every stepping switch, its last-step time
             REQUIRE(ia.last_step_s() == ib.last_step_s());
         }
     }
+}
+
+TEST_CASE("Fast-forward: decks that run into the lower limit switch stop on the same impulse, "
+          "at the same place, as at impulse level",
+          "[fastforward][limits]") {
+    std::mt19937 rng(1954);
+    auto pick = [&rng](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    auto real = [&rng](double lo, double hi) {
+        return std::uniform_real_distribution<double>(lo, hi)(rng);
+    };
+    int at_limit = 0;
+    for (int n = 0; n < 80; ++n) {
+        INFO("deck " << n);
+        Case c;
+        const auto axis = kAxes.at(static_cast<std::size_t>(pick(0, 4)));
+        auto& a = c.profile.axes.at(axis_index(axis));
+        // Back to 0.000 at speed 1 with no slow-down: the part coasts some 0.020 in below zero,
+        // onto a limit switch a little below it.
+        a.travel_min_in = -real(0.0001, 0.025);
+        a.backlash_in = pick(0, 1) != 0 ? real(0, 0.003) : 0.0;
+        c.profile.measuring_chain = pick(0, 2) == 0 ? axes::MeasuringChain::screw_turns
+                                                    : axes::MeasuringChain::instrument_shaft_74;
+        const int to = pick(400, 3000);
+        std::array<int, 5> at{};
+        CardOrders out = test::idle_card(1, at);
+        out.axis(axis) = axis == Axis::table ? test::order(0, to, 1, to - 200, to - 100)
+                                             : test::order(0, to, 2, to - 100);
+        out.axis(axis).sequence = test::idle_card(1, at).axis(axis).sequence;
+        at.at(axis_index(axis)) = to;
+        CardOrders back = test::idle_card(2, at);
+        back.axis(axis) = test::order(to, 0, 1);
+        back.axis(axis).sequence = out.axis(axis).sequence;
+        c.cards = {out, back};
+        const RunResult reference = run_at(c, Pace::impulse_level, nullptr);
+        const RunResult jumped = run_at(c, Pace::fast_forward, nullptr);
+        require_same(reference, jumped);
+        if (reference.stop && reference.stop->reason == StopReason::soft_limit) {
+            ++at_limit;
+            CHECK_THAT(reference.stop->message, Catch::Contains("travel limit"));
+        }
+    }
+    CHECK(at_limit > 40); // the decks did reach the switch
 }

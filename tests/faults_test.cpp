@@ -119,24 +119,56 @@ TEST_CASE("Fault short-card: the reader finds blank columns where numbers belong
     CHECK_THAT(effect(o), Catch::Contains("columns 61-80 never reached the brushes"));
 }
 
-TEST_CASE("Fault slip: the lead screw slips, every check passes and only the report tells the "
-          "real position",
-          "[faults]") {
+TEST_CASE("Fault slip: the drive slips, instrument shaft 74 follows the part, the table stops "
+          "at its real stop and the report gives both readings (Fig. 3, claims 8-10)",
+          "[faults][chain]") {
     const Outcome o = run_with("slip:table:2000:25");
-    CHECK(o.exit_code == 0); // the 1952 machine cannot see it
+    CHECK(o.exit_code == 0);
     CHECK(o.report["status"] == "completed");
-    CHECK(o.report["axes"]["table"]["position"].get<double>() == Approx(0.100));
-    CHECK(o.report["axes"]["table"]["screw_slip"].get<double>() == Approx(-0.025));
-    CHECK(o.report["axes"]["table"]["position_error"].get<double>() == Approx(-0.02475));
-    CHECK_THAT(effect(o), Catch::Contains("slipped for 25 impulses from its impulse 2000") &&
-                              Catch::Contains("no 1952 check can see"));
-    CHECK_THAT(o.output, Catch::Contains("warning: table lead screw slipped"));
+    CHECK(o.report["measuring_chain"] == "instrument_shaft_74");
+    const auto& table = o.report["axes"]["table"];
+    CHECK(table["position"].get<double>() == Approx(0.100));
+    CHECK(table["screw_slip"].get<double>() == Approx(-0.025));
+    // The part is where the counters say (only the last coast, 0.00025 in, between them)...
+    CHECK(table["position_error"].get<double>() == Approx(0.00025).margin(1e-9));
+    // ...and the screw turned 0.025 in more than the part moved.
+    CHECK(table["screw_turns_minus_position"].get<double>() == Approx(0.025 + 0.00025));
+    CHECK(table["screw_turns_position"].get<double>() == Approx(0.12525));
+    CHECK_THAT(effect(o), Catch::Contains("slipped for 0.025 in of screw travel from its impulse "
+                                          "2000") &&
+                              Catch::Contains("instrument shaft 74 follows the part"));
+    CHECK_THAT(o.output,
+               Catch::Contains("note: table screw turns read 0.1253 in, the counters 0.100 in"));
+    CHECK_THAT(o.output, !Catch::Contains("warning: table lead screw slipped"));
+}
+
+TEST_CASE("Fault slip: counting screw turns (a departure) the counters count the slip, every "
+          "check passes and only the report tells the real position",
+          "[faults][chain]") {
+    TempDir dir;
+    parsons::test::write_bytes(dir.path("p.json"), R"({"measuring_chain": "screw_turns"})");
+    auto r = run_parsons("run " + q(source_path("decks/samples/patent-example.csv")) +
+                         " --profile " + q(dir.str("p.json")) +
+                         " --fault slip:table:2000:25 --report " + q(dir.str("r.json")));
+    const auto report = nlohmann::json::parse(read_bytes(dir.path("r.json")));
+    CHECK(r.exit_code == 0); // the 1952 checks cannot see it
+    CHECK(report["measuring_chain"] == "screw_turns");
+    const auto& table = report["axes"]["table"];
+    CHECK(table["position"].get<double>() == Approx(0.100));
+    CHECK(table["screw_slip"].get<double>() == Approx(-0.025));
+    CHECK(table["position_error"].get<double>() == Approx(-0.02475));
+    CHECK(table["screw_turns_minus_position"].get<double>() == Approx(0.00025).margin(1e-9));
+    CHECK_THAT(report["faults"][0]["effect"].get<std::string>(),
+               Catch::Contains("counted 25 impulses of screw turns the part never made") &&
+                   Catch::Contains("no 1952 check can see"));
+    CHECK_THAT(r.output, Catch::Contains("warning: table lead screw slipped"));
 }
 
 TEST_CASE("Faults: a bad spec is a usage error naming it, faults combine", "[faults][cli]") {
     const std::string sample = q(source_path("decks/samples/patent-example.csv"));
-    for (const std::string bad : {"stuck-relay:table:351:1", "skip-step:table:111:3",
-                                  "slip:table:0:5", "feed-twice:x", "melt:table"}) {
+    for (const std::string bad :
+         {"stuck-relay:table:351:1", "skip-step:table:111:3", "slip:table:0:5",
+          "slip:table:1:10001", "feed-twice:x", "melt:table"}) {
         auto r = run_parsons("run " + sample + " --fault " + bad);
         CHECK(r.exit_code == 2);
         CHECK_THAT(r.output, Catch::Contains("--fault '" + bad + "'"));

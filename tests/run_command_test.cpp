@@ -1,9 +1,14 @@
 // parsons run as a user types it: exit codes, the summary, the report, the output files.
 #include "tests/test_support.hpp"
 
+#include "axes/machine_profile.hpp"
+
 #include <catch2/catch.hpp>
+
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <filesystem>
 
 using parsons::test::q;
@@ -183,4 +188,60 @@ TEST_CASE("Run: a completed run whose axis ends off its counters says so", "[run
         run_parsons("run " + q(dir.str("over.csv")) + " --profile " + q(dir.str("short.json")));
     CHECK(r.exit_code == 0);
     CHECK(r.output.find("warning: table ends") != std::string::npos);
+}
+
+TEST_CASE("Run report: each card's time is the one the profile gives, worked out by hand (card "
+          "cycle, speed-up, travel at speed 3, the five steps of shaft 280, relay release)",
+          "[cli][report]") {
+    TempDir dir;
+    // Only the table moves, at speed 3, in sequence position 1; every other axis stands.
+    std::string listing = "card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq\n";
+    const std::array<const char*, 3> table = {"+,3,,,0.000,0.000", "+,3,,,0.100,0.100",
+                                              "+,3,,,0.300,0.200"};
+    const std::array<const char*, 4> others = {"cross", "vertical", "swivel", "tilt"};
+    for (int card = 1; card <= 3; ++card) {
+        listing += std::to_string(card) + ",,table," + table.at(card - 1) + ",1\n";
+        for (int i = 0; i < 4; ++i) {
+            listing += std::to_string(card) + ",," + others.at(i) + ",+,3,,,0.000,0.000," +
+                       std::to_string(i + 2) + "\n";
+        }
+    }
+    write_bytes(dir.path("deck.csv"), listing);
+    const double cycle = 0.75, shaft = 0.07, release = 0.008, v = 1.2 / 60, accel = 0.3,
+                 braking = 0.25;
+    write_bytes(dir.path("p.json"),
+                R"({"reader_cycle_s": 0.75, "sequence_shaft_step_s": 0.07,
+                    "axes": {"table": {"speed_in_per_min": [5.4, 1.8, 1.2],
+                                       "acceleration_in_per_s2": 0.3,
+                                       "braking_in_per_s2": 0.25}}})");
+    auto r = run_parsons("run " + q(dir.str("deck.csv")) + " --profile " + q(dir.str("p.json")) +
+                         " --report " + q(dir.str("r.json")));
+    REQUIRE(r.exit_code == 0);
+    const auto report = nlohmann::json::parse(read_bytes(dir.path("r.json")));
+    const auto& cards = report["cards"];
+    REQUIRE(cards.size() == 3);
+    // A move from rest at x0 to the stop's crossing c (half a thousandth before the stop):
+    // speed-up to v at `accel`, the rest at v; after it the table coasts v^2 / 2 braking on.
+    auto move_s = [&](double x0, double c) {
+        return v / accel + (c - x0 - v * v / (2 * accel)) / v;
+    };
+    const double coast = v * v / (2 * braking);
+    const std::array<double, 3> expected = {
+        cycle + 5 * shaft,
+        cycle + move_s(0, 0.0995) + 5 * shaft,
+        cycle + move_s(0.0995 + coast, 0.2995) + 5 * shaft,
+    };
+    double start = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        INFO("card " << i + 1);
+        CHECK(cards[i]["start_seconds"].get<double>() == Approx(start).margin(1e-9));
+        CHECK(cards[i]["machine_seconds"].get<double>() == Approx(expected.at(i)).margin(1e-9));
+        start += expected.at(i) + release;
+    }
+    // The reader finds no card; the clock ends there, or where delay 258's hold after the last
+    // stop (tilt's, one step of shaft 280 before the last card ends) runs out, if later.
+    const double delay_258 = parsons::axes::default_profile().delay_258_s;
+    const double last_stop = start - release - shaft;
+    CHECK(report["machine_seconds"].get<double>() ==
+          Approx(std::max(start, last_stop + delay_258)).margin(1e-9));
 }

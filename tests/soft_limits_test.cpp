@@ -89,3 +89,33 @@ TEST_CASE("Soft limits: parsons check lists every card that would pass a limit, 
         CHECK_THAT(e.output, Catch::Contains("--limit '" + bad + "'"));
     }
 }
+
+TEST_CASE("Soft limits: a move that ends exactly on the limit is allowed, one 0.001 in past it "
+          "is stopped before any axis moves",
+          "[softlimit]") {
+    for (Pace pace : {Pace::fast_forward, Pace::impulse_level}) {
+        CardOrders on = idle_card(1, {0, 0, 0, 0, 0});
+        on.axis(Axis::table) = order(0, 500, 3);
+        const RunResult allowed = run_orders({on}, with_table_range(-0.4, 0.5), nullptr, {}, pace);
+        CHECK(allowed.completed);
+        CHECK(allowed.axes.at(0).counter_in == Approx(0.500));
+        CHECK(allowed.axes.at(0).real_in <= 0.5);
+        // Going down onto the lower limit, too: the card is judged from where the part really
+        // stands (0.49975 after the coast), so the limit is put exactly where -0.400 ends.
+        CardOrders down = idle_card(2, {500, 0, 0, 0, 0});
+        down.axis(Axis::table) = order(500, 100, 3);
+        const double low_end = allowed.axes.at(0).real_in + (-400 / 1000.0);
+        CHECK(run_orders({on, down}, with_table_range(low_end, 0.5), nullptr, {}, pace).completed);
+        const RunResult low =
+            run_orders({on, down}, with_table_range(low_end + 0.001, 0.5), nullptr, {}, pace);
+        REQUIRE(low.stop);
+        CHECK(low.stop->reason == StopReason::soft_limit);
+        CHECK(low.stop->card == 2);
+        CardOrders past = idle_card(1, {0, 0, 0, 0, 0});
+        past.axis(Axis::table) = order(0, 501, 3);
+        const RunResult r = run_orders({past}, with_table_range(-0.4, 0.5), nullptr, {}, pace);
+        REQUIRE(r.stop);
+        CHECK(r.stop->reason == StopReason::soft_limit);
+        CHECK(r.axes.at(0).impulses == 0);
+    }
+}

@@ -56,7 +56,7 @@ private:
 };
 
 RunResult run_once(const std::string& deck_file, const axes::MachineProfile& profile, Pace pace,
-                   bool observe) {
+                   bool observe, const std::vector<relaylogic::Fault>& faults) {
     std::istringstream in(deck_file);
     DeckOptions options;
     options.format = DeckFormat::cbn;
@@ -64,6 +64,9 @@ RunResult run_once(const std::string& deck_file, const axes::MachineProfile& pro
     auto deck = open_card_source(in, options);
     relaylogic::ControlCabinet cabinet(profile, fig8_layout());
     cabinet.set_pace(pace);
+    for (const auto& f : faults) {
+        cabinet.add_fault(f);
+    }
     RunChecker checker(pace == Pace::impulse_level);
     if (observe) {
         cabinet.attach(&checker);
@@ -126,7 +129,7 @@ bool same_run(const RunResult& a, const RunResult& b) {
         const auto& x = a.axes.at(i);
         const auto& y = b.axes.at(i);
         if (x.counter_in != y.counter_in || x.real_in != y.real_in || x.impulses != y.impulses ||
-            x.lost_steps != y.lost_steps) {
+            x.lost_steps != y.lost_steps || x.screw_in != y.screw_in || x.slip_in != y.slip_in) {
             return false;
         }
     }
@@ -135,16 +138,16 @@ bool same_run(const RunResult& a, const RunResult& b) {
 
 } // namespace
 
-void run_machine(const std::vector<Card>& cards, const axes::MachineProfile& profile,
-                 bool observe) {
+void run_machine(const std::vector<Card>& cards, const axes::MachineProfile& profile, bool observe,
+                 const std::vector<relaylogic::Fault>& faults) {
     std::ostringstream file;
     auto sink = make_cbn_sink(file, "fuzz.cbn");
     for (const Card& card : cards) {
         sink->write(card);
     }
-    const RunResult fast = run_once(file.str(), profile, Pace::fast_forward, observe);
+    const RunResult fast = run_once(file.str(), profile, Pace::fast_forward, observe, faults);
     check_run(fast, cards.size());
-    const RunResult reference = run_once(file.str(), profile, Pace::impulse_level, observe);
+    const RunResult reference = run_once(file.str(), profile, Pace::impulse_level, observe, faults);
     check_run(reference, cards.size());
     if (!same_run(fast, reference)) {
         throw Finding("machine: fast-forward and impulse level end differently:\n  fast-forward: " +

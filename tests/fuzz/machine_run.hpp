@@ -3,6 +3,7 @@
 
 #include "axes/machine_profile.hpp"
 #include "cardreader/card.hpp"
+#include "relaylogic/faults.hpp"
 
 #include <vector>
 
@@ -14,6 +15,6 @@ namespace parsons::fuzz {
 // with a reason, having read no more cards than the deck holds, in finite machine time that
 // never runs backwards, and the two runs end the same.
 void run_machine(const std::vector<cardreader::Card>& cards, const axes::MachineProfile& profile,
-                 bool observe);
+                 bool observe, const std::vector<relaylogic::Fault>& faults = {});
 
 } // namespace parsons::fuzz

@@ -9,7 +9,10 @@
 //
 //   byte 0       cards: 1 + b % 6 (the bound that keeps every input fast)
 //   byte 1       bit 0 separate registers, bit 1 count hundredths at speed 1, bit 2 attach an
-//                observer, bit 3 switches that follow only 50 steps a second (lost impulses)
+//                observer, bit 3 switches that follow only 50 steps a second (lost impulses),
+//                bit 4 count screw turns (the departure from Fig. 3), bit 5 backlash 0.002 in
+//                in every nut 78, bit 6 lead-screw, instrument-shaft and cam 160 tables, bit 7
+//                a slip of the table's drive (0.030 in from its 40th impulse)
 //   bytes 2-3    first card number, big-endian, modulo 10000
 //   per card     1 byte spindle (b % 3), then 4 bytes per axis (table .. tilt):
 //                  flags  bits 0-1 start speed 1 + b % 3; bit 2 moves x16; bit 3 a wrong
@@ -27,6 +30,7 @@
 #include "axes/machine_profile.hpp"
 #include "cardreader/deck_review.hpp"
 #include "cardreader/layout.hpp"
+#include "relaylogic/faults.hpp"
 
 #include <algorithm>
 #include <array>
@@ -176,7 +180,24 @@ void fuzz_machine(Bytes input) {
     if (machine & 0x08) {
         profile.max_stepping_rate_per_s = 50;
     }
-    run_machine(cards, profile, (machine & 0x04) != 0);
+    if (machine & 0x10) {
+        profile.measuring_chain = axes::MeasuringChain::screw_turns;
+    }
+    for (auto& a : profile.axes) {
+        if (machine & 0x20) {
+            a.backlash_in = 0.002;
+        }
+        if (machine & 0x40) {
+            a.lead_error_in = {{0.0, 0.0}, {5.0, 0.003}, {10.0, -0.001}};
+            a.instrument_error_in = {{0.0, 0.001}, {10.0, 0.002}};
+            a.cam_160_in = {{2.0, 0.0005}, {8.0, 0.0015}};
+        }
+    }
+    std::vector<relaylogic::Fault> faults;
+    if (machine & 0x80) {
+        faults.push_back(relaylogic::parse_fault("slip:table:40:30"));
+    }
+    run_machine(cards, profile, (machine & 0x04) != 0, faults);
 }
 
 } // namespace parsons::fuzz

@@ -1,0 +1,218 @@
+// The measuring chain of Fig. 3 (DESIGN.md 4.3; claims 8-10, 23): lead screw 22 and nut 78
+// (lead error, backlash, slip), instrument shaft 74 and cam 160, and what the counters measure
+// with the patent's chain and with screw-turn counting (a departure).
+#include "tests/machine_support.hpp"
+
+#include "axes/instrument_shaft.hpp"
+#include "axes/lead_screw_nut.hpp"
+#include "axes/profile_json.hpp"
+#include "axes/screw_error_table.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <random>
+
+using namespace parsons;
+using namespace parsons::cardreader;
+using namespace parsons::relaylogic;
+using namespace parsons::test;
+using axes::MeasuringChain;
+
+namespace {
+
+axes::MachineProfile chain_profile(MeasuringChain chain) {
+    auto p = axes::default_profile();
+    p.measuring_chain = chain;
+    return p;
+}
+
+// The table out to 1.000 and back to 0.500 at speed 3, every other axis idle.
+std::vector<CardOrders> out_and_back() {
+    CardOrders out = idle_card(1, {0, 0, 0, 0, 0});
+    out.axis(Axis::table) = order(0, 1000, 3);
+    CardOrders back = idle_card(2, {1000, 0, 0, 0, 0});
+    back.axis(Axis::table) = order(1000, 500, 3);
+    return {out, back};
+}
+
+} // namespace
+
+TEST_CASE("Screw error table: interpolates, holds its ends, inverts, and sums exactly at its "
+          "positions",
+          "[axes][chain]") {
+    const axes::ScrewErrorTable t({{0.0, 0.001}, {5.0, -0.002}, {10.0, 0.004}});
+    CHECK(t.apply(0.0) == 0.001);
+    CHECK(t.apply(-3.0) == -3.0 + 0.001);
+    CHECK(t.apply(12.0) == 12.0 + 0.004);
+    CHECK(t.apply(2.5) == Approx(2.5 - 0.0005).margin(1e-15));
+    CHECK(t.error_at(7.5) == Approx(0.001).margin(1e-15));
+    std::mt19937 rng(74);
+    for (int i = 0; i < 200; ++i) {
+        const double x = std::uniform_real_distribution<double>(-2, 12)(rng);
+        CHECK(t.invert(t.apply(x)) == Approx(x).margin(1e-12));
+    }
+    const axes::ErrorPoints a = {{0.0, 0.002}, {10.0, 0.004}};
+    const axes::ErrorPoints b = {{5.0, 0.001}};
+    const auto sum = axes::ScrewErrorTable::sum({{&a, 1}, {&b, -1}});
+    REQUIRE(sum.points().size() == 3);
+    CHECK(sum.points().at(1).first == 5.0);
+    CHECK(sum.points().at(1).second == Approx(0.003 - 0.001).margin(1e-15));
+    CHECK(sum.points().at(0).second == Approx(0.002 - 0.001).margin(1e-15));
+    // One table alone comes back to the last bit.
+    const axes::ErrorPoints empty;
+    CHECK(axes::ScrewErrorTable::sum({{&a, 1}, {&empty, -1}}).points() == a);
+    CHECK(axes::ScrewErrorTable({{0.0, 0.0}, {1.0, -1.0}}).falls_after() == 0.0);
+}
+
+TEST_CASE("Nut 78: backlash is screw travel with the part standing, a slip is used up once, "
+          "and a stretch begun twice at one place is the same stretch",
+          "[axes][chain]") {
+    axes::LeadScrewNut nut(0.002, axes::ScrewErrorTable());
+    nut.reset_at(0);
+    nut.rebase(0, +1);
+    CHECK(nut.sigma_at(0.5) == 0.5);
+    nut.rebase(0.5, -1); // reverse: the screw must turn back 0.002 first
+    CHECK(nut.sigma_at(0.499) == 0.5);
+    CHECK(nut.sigma_at(0.498) == 0.5);
+    CHECK(nut.sigma_at(0.497) == Approx(0.499).margin(1e-15));
+    CHECK(nut.screw_at(0.499) == Approx(0.497).margin(1e-15));
+    const double o_end = nut.o_end();
+    nut.rebase(0.4985, -1);
+    nut.rebase(0.4985, -1);
+    CHECK(nut.o_end() == o_end);
+    CHECK(nut.sigma_at(0.4975) == Approx(0.4995).margin(1e-15));
+    nut.rebase(0.3, +1); // forward again: the gap again, then the part follows
+    CHECK(nut.sigma_at(0.302) == Approx(0.302).margin(1e-15));
+    CHECK(nut.sigma_at(0.301) == Approx(0.302).margin(1e-15));
+
+    axes::LeadScrewNut slipping(0, axes::ScrewErrorTable());
+    slipping.reset_at(1.0);
+    slipping.rebase(1.0, +1, 0.010); // the drive slips for 0.010 in of screw travel
+    CHECK(slipping.sigma_at(1.006) == 1.0);
+    CHECK(slipping.sigma_at(1.012) == Approx(1.002).margin(1e-15));
+    slipping.rebase(1.004, -1); // reversed after 0.004: 0.006 still to slip, going back
+    CHECK(slipping.slip_in() == Approx(-0.004).margin(1e-15));
+    CHECK(slipping.slip_left_in() == Approx(0.006).margin(1e-15));
+    CHECK(slipping.sigma_at(0.999) == 1.0);
+    CHECK(slipping.sigma_at(0.997) == Approx(0.999).margin(1e-15));
+    slipping.rebase(0.99, +1);
+    CHECK(slipping.slip_left_in() == 0);
+    CHECK(slipping.slip_in() == Approx(-0.004 + 0.006).margin(1e-15));
+}
+
+TEST_CASE("Measuring chain: backlash in nut 78 is counted by instrument shaft 74 and the part "
+          "stops on its number, counting screw turns it ends a backlash off, unseen",
+          "[cabinet][chain]") {
+    for (MeasuringChain chain :
+         {MeasuringChain::instrument_shaft_74, MeasuringChain::screw_turns}) {
+        auto profile = chain_profile(chain);
+        profile.axes.at(0).backlash_in = 0.003;
+        const RunResult r = run_orders(out_and_back(), profile);
+        const RunResult perfect = run_orders(out_and_back(), chain_profile(chain));
+        REQUIRE(r.completed); // every 1952 check passes either way
+        CHECK(r.axes.at(0).counter_in == Approx(0.500));
+        if (chain == MeasuringChain::instrument_shaft_74) {
+            // Stop impulse at 0.5005 going down, coast 0.00025: the part at 0.50025.
+            CHECK(r.axes.at(0).real_in == Approx(0.50025).margin(1e-12));
+            CHECK(r.axes.at(0).screw_in == Approx(0.50025 - 0.003).margin(1e-12));
+            // The screw turned 0.003 in more, at speed 3 (0.01 in/s): 0.3 s longer.
+            CHECK(r.machine_seconds - perfect.machine_seconds == Approx(0.3).margin(1e-9));
+        } else {
+            CHECK(r.axes.at(0).screw_in == Approx(0.50025).margin(1e-12));
+            CHECK(r.axes.at(0).real_in == Approx(0.50325).margin(1e-12));
+            CHECK(r.axes.at(0).error_in == Approx(0.00325).margin(1e-12));
+            CHECK(r.machine_seconds == Approx(perfect.machine_seconds).margin(1e-12));
+        }
+    }
+}
+
+TEST_CASE("Measuring chain: lead screw 22's lead error is measured, counting its turns it is "
+          "not",
+          "[cabinet][chain]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 2000, 3);
+    for (MeasuringChain chain :
+         {MeasuringChain::instrument_shaft_74, MeasuringChain::screw_turns}) {
+        auto profile = chain_profile(chain);
+        profile.axes.at(0).lead_error_in = {{0.0, 0.0}, {10.0, 0.010}}; // 1 thousandth an inch
+        const RunResult r = run_orders({c}, profile);
+        REQUIRE(r.completed);
+        CHECK(r.axes.at(0).counter_in == Approx(2.000));
+        if (chain == MeasuringChain::instrument_shaft_74) {
+            CHECK(r.axes.at(0).real_in == Approx(1.9995 + 1.001 * 0.00025).margin(1e-12));
+            CHECK(r.axes.at(0).screw_in == Approx(1.9995 / 1.001 + 0.00025).margin(1e-12));
+        } else {
+            CHECK(r.axes.at(0).screw_in == Approx(1.99975).margin(1e-12));
+            CHECK(r.axes.at(0).real_in == Approx(1.001 * 1.99975).margin(1e-12));
+        }
+    }
+}
+
+TEST_CASE("Measuring chain: cam 160 corrects instrument shaft 74's own error, which the counters "
+          "cannot see",
+          "[cabinet][chain]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 2500, 3);
+    auto profile = axes::default_profile();
+    profile.axes.at(0).instrument_error_in = {{0.0, 0.0}, {10.0, 0.004}};
+    const RunResult uncorrected = run_orders({c}, profile);
+    // The stop impulse as the counters pass 2.4995, the part 0.004 x 2.4995 / 10 beyond; the
+    // coast 0.00025 on: the error against the counters' 2.500.
+    CHECK(uncorrected.axes.at(0).error_in == Approx(0.004 * 2.4995 / 10 - 0.00025).margin(1e-12));
+    profile.axes.at(0).cam_160_in = {{0.0, 0.0}, {10.0, 0.004}};
+    const RunResult corrected = run_orders({c}, profile);
+    CHECK(corrected.axes.at(0).error_in == Approx(-0.00025).margin(1e-12));
+    CHECK(corrected.axes.at(0).real_in == Approx(2.49975).margin(1e-12));
+}
+
+TEST_CASE("Measuring chain: a slip of the drive makes the axis run on to its real stop with the "
+          "patent's chain, counting screw turns the part ends short",
+          "[cabinet][chain][faults]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 1000, 3);
+    const std::vector<Fault> slip = {parse_fault("slip:table:200:40")};
+    const RunResult patent =
+        run_orders({c}, chain_profile(MeasuringChain::instrument_shaft_74), nullptr, slip);
+    REQUIRE(patent.completed);
+    CHECK(patent.axes.at(0).real_in == Approx(0.99975).margin(1e-12));
+    CHECK(patent.axes.at(0).screw_in == Approx(1.03975).margin(1e-12));
+    CHECK(patent.axes.at(0).slip_in == Approx(-0.040).margin(1e-12));
+    const RunResult turns =
+        run_orders({c}, chain_profile(MeasuringChain::screw_turns), nullptr, slip);
+    REQUIRE(turns.completed);
+    CHECK(turns.axes.at(0).real_in == Approx(0.95975).margin(1e-12));
+    CHECK(turns.axes.at(0).error_in == Approx(-0.04025).margin(1e-12));
+    // The patent's machine ran 0.040 in of screw travel longer, at speed 3.
+    CHECK(patent.machine_seconds - turns.machine_seconds == Approx(4.0).margin(1e-9));
+}
+
+TEST_CASE("Profile: the measuring chain's keys round-trip and bad values are refused by name",
+          "[profile][chain]") {
+    auto p = axes::profile_from_json(
+        R"({"measuring_chain": "screw_turns", "axes": {"tilt": {"backlash_in": 0.002,
+            "lead_error_in": [[0, 0], [10, 0.01]], "instrument_error_in": [[0, 0.001]],
+            "cam_160_in": [[0, 0.0005]]}}})",
+        axes::default_profile());
+    CHECK(p.measuring_chain == MeasuringChain::screw_turns);
+    CHECK(p.axes.at(4).backlash_in == 0.002);
+    const auto again = axes::profile_from_json(axes::profile_to_json(p), axes::default_profile());
+    CHECK(again.measuring_chain == MeasuringChain::screw_turns);
+    CHECK(again.axes.at(4).lead_error_in == p.axes.at(4).lead_error_in);
+    CHECK(again.axes.at(4).cam_160_in == p.axes.at(4).cam_160_in);
+    CHECK(again.axes.at(4).instrument_error_in == p.axes.at(4).instrument_error_in);
+    CHECK(axes::profile_from_json("{}", axes::default_profile()).measuring_chain ==
+          MeasuringChain::instrument_shaft_74);
+    for (const char* bad :
+         {R"({"measuring_chain": "screw"})", R"({"axes": {"table": {"backlash_in": -0.001}}})",
+          R"({"axes": {"table": {"backlash_in": 0.2}}})",
+          R"({"axes": {"table": {"cam_160_in": [[0, 0], [1, 1.5]]}}})",
+          R"({"axes": {"table": {"instrument_error_in": [[0, 0], [1, -0.6]],
+                                 "cam_160_in": [[0, 0], [1, 0.6]]}}})"}) {
+        INFO(bad);
+        CHECK_THROWS_AS(axes::profile_from_json(bad, axes::default_profile()), axes::ProfileError);
+    }
+    CHECK(axes::profile_from_json(R"({"axes": {"table": {"backlash_in": 0.1}}})",
+                                  axes::default_profile())
+              .axes.at(0)
+              .backlash_in == 0.1);
+}
