@@ -32,6 +32,8 @@ public:
     double part_at_reading(double q) const { return residual_.apply(q); }
     double reading_at_part(double p) const { return residual_.invert(p); }
     bool exact() const { return residual_.empty(); }
+    // The least part travel per unit of reading (the residual's least slope).
+    double least_part_per_reading() const { return residual_.slope_range().first; }
 
 private:
     ScrewErrorTable residual_;

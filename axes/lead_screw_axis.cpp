@@ -27,10 +27,13 @@ void LeadScrewAxis::measure_by(MeasuringChain chain) {
         nut_.set_part_table(ScrewErrorTable::sum(
             {{&p.screw_error_in, 1}, {&p.lead_error_in, 1}, {&p.cam_160_in, -1}}));
         linear_ = true;
+        least_screw_per_impulse_ = kInchesPerImpulse;
         s_ = 0;
     } else {
         nut_.set_part_table(ScrewErrorTable(p.lead_error_in));
         linear_ = shaft_.exact() && p.lead_error_in.empty();
+        least_screw_per_impulse_ =
+            kInchesPerImpulse * shaft_.least_part_per_reading() / nut_.greatest_part_per_screw();
         // The reference zero: where the counters read 0, the part stands at r(0).
         s_ = nut_.sigma_at_part(shaft_.part_at_reading(0));
     }

@@ -143,6 +143,11 @@ public:
     double phase_start_speed() const { return u0_; }
     double phase_end_speed() const;
     double phase_end_time() const { return phase_end_; }
+    // The least screw travel between two impulses anywhere: 0.001 in counting screw turns;
+    // through instrument shaft 74, less where the error tables make the part (and so the
+    // reading) run ahead of the screw. The fastest the impulses can come is this over the
+    // screw's speed.
+    double least_screw_per_impulse() const { return least_screw_per_impulse_; }
     bool at_rest() const { return speed_in_per_s() == 0 && target_u_ == 0; }
     long impulses() const { return impulses_; }
     long commutator_index() const { return k_; } // thousandths the commutator has passed
@@ -276,6 +281,7 @@ private:
     InstrumentShaft shaft_; // instrument shaft 74, cam 160
     LeadScrewNut nut_;      // lead screw 22, nut 78, the drive's slip
     bool linear_ = true;    // crossing_screw(h) = crossing_in(h) + offset (no error tables)
+    double least_screw_per_impulse_ = kInchesPerImpulse;
     // The current phase: from time t0_ at screw position s0_ and speed u0_ (>= 0), moving in
     // direction d_ with acceleration a_ (signed along d_) until phase_end_.
     double t0_ = 0;

@@ -74,6 +74,8 @@ public:
     double part_at_screw(double s) const { return part_.apply(sigma_at(s)); }
     double sigma_at_part(double p) const { return part_.invert(p); }
     double o_end() const { return o_end_; }
+    // The greatest part travel per unit of engaged screw travel (G's greatest slope).
+    double greatest_part_per_screw() const { return part_.slope_range().second; }
     // How far the part lags the screw through slipping so far (negative going forward), and
     // the slip still to come.
     double slip_in() const { return slipped_; }

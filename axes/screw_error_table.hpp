@@ -117,6 +117,21 @@ public:
         return x0 + (y - (x0 + e0)) * (x1 - x0) / ((x1 + e1) - (x0 + e0));
     }
 
+    // The least and the greatest slope of x + e(x) over the whole line (1 beyond the ends, and
+    // everywhere for an empty table): how much faster or slower than the screw the driven
+    // thing can move.
+    std::pair<double, double> slope_range() const {
+        double least = 1;
+        double greatest = 1;
+        for (std::size_t i = 1; i < points_.size(); ++i) {
+            const auto& [x0, e0] = points_.at(i - 1);
+            const auto& [x1, e1] = points_.at(i);
+            const double slope = ((x1 + e1) - (x0 + e0)) / (x1 - x0);
+            least = std::min(least, slope);
+            greatest = std::max(greatest, slope);
+        }
+        return {least, greatest};
+    }
     // The first position after which x + e(x) does not rise, if any.
     std::optional<double> falls_after() const {
         for (std::size_t i = 1; i < points_.size(); ++i) {

@@ -121,11 +121,13 @@ long quiet_impulses(const AxisCircuit& c, const QuietConditions& q) {
         return 0;
     }
     // No switch may be asked to step sooner than it can: every impulse of this phase comes at
-    // least 0.001 in / (its fastest speed) after the one before, and the first one after every
-    // switch's last step.
+    // least (the least screw travel between impulses) / (its fastest speed) after the one
+    // before, and the first one after every switch's last step. Through instrument shaft 74
+    // an error table can bring the impulses closer than 0.001 in of screw travel (the
+    // profile fuzz finding of issue 11, tests/fuzz/regressions/profile/).
     const double u_max = std::max(plant.phase_start_speed(), plant.phase_end_speed());
     const double ready = q.min_interval_s * (1 + 1e-6);
-    if (u_max <= 0 || axes::kInchesPerImpulse / u_max < ready) {
+    if (u_max <= 0 || plant.least_screw_per_impulse() / u_max < ready) {
         return 0;
     }
     double last_step = -axes::kNever;

@@ -4,12 +4,14 @@
 #include "tests/machine_support.hpp"
 
 #include "axes/instrument_shaft.hpp"
+#include "axes/lead_screw_axis.hpp"
 #include "axes/lead_screw_nut.hpp"
 #include "axes/profile_json.hpp"
 #include "axes/screw_error_table.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <optional>
 #include <random>
 
 using namespace parsons;
@@ -215,4 +217,32 @@ TEST_CASE("Profile: the measuring chain's keys round-trip and bad values are ref
                                   axes::default_profile())
               .axes.at(0)
               .backlash_in == 0.1);
+}
+
+TEST_CASE("Measuring chain: error tables bring the impulses closer than 0.001 in of screw travel, "
+          "and the axis says by how much",
+          "[axes][chain]") {
+    auto p = axes::default_profile().axes.at(0);
+    CHECK(axes::ScrewErrorTable({{0.0, 1.0}, {5.0, 0.0}, {10.0, 1.0}}).slope_range() ==
+          std::pair<double, double>(0.8, 1.2));
+    p.screw_error_in = {{0.0, 0.5}, {5.0, -0.5}}; // the part runs 0.8 in a reading inch
+    p.lead_error_in = {{0.0, 0.0}, {4.0, 1.0}};   // and 1.25 in a screw inch
+    axes::LeadScrewAxis axis(p);
+    CHECK(axis.least_screw_per_impulse() == Approx(0.001 * 0.8 / 1.25).epsilon(1e-12));
+    axis.command(+1, 3);
+    std::optional<double> last; // the screw at the last crossing (the first is half a step)
+    double least = 1;
+    for (int i = 0; i < 6000 && axis.next_event_time() < axes::kNever; ++i) {
+        if (axis.advance_to(axis.next_event_time())) {
+            if (last) {
+                least = std::min(least, axis.screw_in() - *last);
+            }
+            last = axis.screw_in();
+        }
+    }
+    // The bound holds, and it is reached where both tables are at their steepest.
+    CHECK(least >= axis.least_screw_per_impulse() * (1 - 1e-9));
+    CHECK(least == Approx(axis.least_screw_per_impulse()).epsilon(1e-6));
+    axis.measure_by(MeasuringChain::screw_turns);
+    CHECK(axis.least_screw_per_impulse() == axes::kInchesPerImpulse);
 }
