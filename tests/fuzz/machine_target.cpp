@@ -22,8 +22,16 @@
 //                  gap    slow-down spacing 0.020 + 0.004 b in; the error of a wrong check
 //                  seq    bit 5 set: the pattern is bits 0-4 (0 = never runs); otherwise the
 //                         single position 1 + (bits 0-4) % 5
+//   then         1 byte, the cabinet's readings and additions (MachineProfile's last group):
+//                bit 0 the incremental comparer stops at any speed, bit 1 delay 258 waits for
+//                the equality to leave, bit 2 lamps only on a trip, bit 3 the reader refuses a
+//                double punch, bit 4 ribbon feed (Fig. 9), bit 5 delay 258 of 0.005 s (too
+//                short: a double step), bit 6 the table's travel limits at -0.05 and 2.5 in,
+//                bit 7 a steep screw-error table on the table (the part runs 0.8 in a reading
+//                inch: impulses closer than 0.001 in of screw travel)
 //   then         up to 8 triples (card, column, row): flip that punch
-// Missing bytes read as zero: an empty input is one card on which nothing moves.
+// Missing bytes read as zero: an empty input is one card on which nothing moves, and every
+// reading the patent's.
 #include "tests/fuzz/fuzz_targets.hpp"
 #include "tests/fuzz/machine_run.hpp"
 
@@ -137,7 +145,27 @@ AxisOrder axis_order(Recipe& recipe, Axis axis, int& at) {
     return o;
 }
 
-std::vector<Card> deck_from_recipe(Recipe& recipe) {
+// The cabinet byte: the readings of the patent the profile can change, and additions.
+void cabinet_options(std::uint8_t bits, axes::MachineProfile& profile) {
+    profile.incremental_equality_stops_at_any_speed = (bits & 0x01) != 0;
+    profile.delay_258_waits_for_equality_to_leave = (bits & 0x02) != 0;
+    profile.lamps_only_on_trip = (bits & 0x04) != 0;
+    profile.refuse_double_punch = (bits & 0x08) != 0;
+    profile.ribbon_feed = (bits & 0x10) != 0;
+    if (bits & 0x20) {
+        profile.delay_258_s = 0.005;
+    }
+    auto& table = profile.axes.at(0);
+    if (bits & 0x40) {
+        table.travel_min_in = -0.05;
+        table.travel_max_in = 2.5;
+    }
+    if (bits & 0x80) {
+        table.screw_error_in = {{0.0, 0.5}, {5.0, -0.5}};
+    }
+}
+
+std::vector<Card> deck_from_recipe(Recipe& recipe, axes::MachineProfile& profile) {
     const int count = 1 + recipe.next() % kMaxCards;
     recipe.next(); // the profile byte, read by the caller
     const int hi = recipe.next();
@@ -159,6 +187,7 @@ std::vector<Card> deck_from_recipe(Recipe& recipe) {
         }
         cards.push_back(punched.card);
     }
+    cabinet_options(recipe.next(), profile);
     for (int flip = 0; flip < kMaxFlips && !recipe.done(); ++flip) {
         Card& card = cards.at(recipe.next() % cards.size());
         const int column = 1 + recipe.next() % kColumns;
@@ -172,9 +201,9 @@ std::vector<Card> deck_from_recipe(Recipe& recipe) {
 
 void fuzz_machine(Bytes input) {
     Recipe recipe(input);
-    const std::vector<Card> cards = deck_from_recipe(recipe);
-    const std::uint8_t machine = input.size() > 1 ? input[1] : 0;
     axes::MachineProfile profile = axes::default_profile();
+    const std::vector<Card> cards = deck_from_recipe(recipe, profile);
+    const std::uint8_t machine = input.size() > 1 ? input[1] : 0;
     profile.separate_registers = (machine & 0x01) != 0;
     profile.count_hundredths_at_speed_1 = (machine & 0x02) != 0;
     if (machine & 0x08) {
