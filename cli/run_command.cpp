@@ -308,7 +308,7 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
         observers.add(&values_kept);
     }
     if (!observers.empty()) {
-        cabinet.attach(&observers);
+        cabinet.attach(observers.attachable());
     }
 
     // Ctrl-C and SIGTERM stop the machine at its next event; the outputs are then written

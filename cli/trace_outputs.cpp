@@ -207,7 +207,8 @@ void VcdWriter::write_header() {
             // Identifier codes in the order of declaration: "!", "\"", ... as a reader scans.
             v.code = vcd_identifier_code(declared++);
             Hot& h = hot_[id];
-            std::copy(v.code.begin(), v.code.end(), h.code.begin());
+            std::copy(v.code.begin(), v.code.end(), h.tail.begin());
+            h.tail.at(v.code.size()) = '\n';
             h.code_len = static_cast<std::uint8_t>(v.code.size());
             h.width = static_cast<std::uint8_t>(v.width);
             if (!taken.insert(v.reference).second) {
@@ -237,9 +238,14 @@ void VcdWriter::write_header() {
     }
     buf_.put("$end\n");
     last_us_ = 0;
+    last_seconds_ = -1;
 }
 
 void VcdWriter::advance_time(double seconds) {
+    if (seconds == last_seconds_) {
+        return;
+    }
+    last_seconds_ = seconds;
     const double us = std::round(seconds * 1e6);
     if (!(us > static_cast<double>(last_us_))) {
         return; // same microsecond (or NaN): one timestamp for all its changes
@@ -263,11 +269,8 @@ void VcdWriter::put_value(const Hot& h, std::uint32_t value) {
         }
         *p++ = ' ';
     }
-    for (std::uint8_t i = 0; i < h.code_len; ++i) {
-        *p++ = h.code[i];
-    }
-    *p++ = '\n';
-    buf_.commit(p);
+    std::memcpy(p, h.tail.data(), h.tail.size()); // claimed room for it: 48 >= 1 + 34 + 8
+    buf_.commit(p + h.code_len + 1);
 }
 
 void VcdWriter::on_signal(double seconds, SignalId id, std::uint32_t /*old_value*/,

@@ -559,11 +559,15 @@ void ControlCabinet::relays_pick() {
         const auto& extra = extra_relays_.at(cardreader::axis_index(c->axis));
         for (std::size_t field = 0; field < kNumberFields; ++field) {
             for (std::size_t i = 0; i < 4; ++i) {
+                const unsigned mask = extra.at(field).at(i);
+                if (mask == 0) {
+                    continue; // the common case: one punch a column
+                }
                 HoldingRelayBank& bank = field < 3
                                              ? c->absolute_storage.bank(static_cast<int>(i))
                                              : c->incremental_storage.bank(static_cast<int>(i));
                 for (int d = 0; d < 10; ++d) {
-                    if ((extra.at(field).at(i) >> d & 1U) != 0) {
+                    if ((mask >> d & 1U) != 0) {
                         bank.pick(d);
                     }
                 }

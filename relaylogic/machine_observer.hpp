@@ -78,6 +78,9 @@ class ObserverFanOut : public MachineObserver {
 public:
     void add(MachineObserver* o) { observers_.push_back(o); }
     bool empty() const { return observers_.empty(); }
+    // What to attach: the one observer itself when there is only one (no relay of every
+    // event through this fan-out), else the fan-out.
+    MachineObserver* attachable() { return observers_.size() == 1 ? observers_.front() : this; }
     bool follows_impulses() const override {
         for (auto* o : observers_) {
             if (o->follows_impulses()) {

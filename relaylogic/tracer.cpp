@@ -49,9 +49,6 @@ void Tracer::attach(MachineObserver* observer) {
 
 void Tracer::report(SignalId id, std::uint32_t value) {
     std::uint32_t& old = values_.at(id);
-    if (old == value) {
-        return;
-    }
     observer_->on_signal(now_, id, old, value);
     old = value;
 }

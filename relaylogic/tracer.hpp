@@ -26,7 +26,10 @@ public:
     double now() const { return now_; }
 
     void set(SignalId id, std::uint32_t value) {
-        if (observer_ != nullptr) {
+        // An unchanged value is no event: judged here, where the call is inlined, so that the
+        // many set() calls that change nothing cost a comparison (the commutator contact sets
+        // are re-set at every impulse).
+        if (observer_ != nullptr && values_[id] != value) {
             report(id, value);
         }
     }
