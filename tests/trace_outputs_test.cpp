@@ -16,7 +16,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <sys/wait.h>
@@ -581,4 +583,48 @@ TEST_CASE("Plot: a long run keeps at most 4 points a bucket, and the extremes of
         REQUIRE(path[i].t >= path[i - 1].t);
     }
     CHECK(count(plot.svg(), "<g class=\"panel\"") == 5);
+}
+
+TEST_CASE("Patent map: every numeral a trace signal carries is listed in docs/patent-map.md, on a "
+          "row that names the file it lives in",
+          "[docs][trace]") {
+    // The numerals the map lists: every whole number in the first cell of a table row, kept
+    // only where the row names a source file.
+    std::ifstream map(std::string(PARSONS_SOURCE_DIR) + "/docs/patent-map.md");
+    REQUIRE(map);
+    const std::regex row(R"(^\|([^|]*)\|.*\|\s*$)");
+    const std::regex source_file(R"(`[a-z_0-9/]+\.(hpp|cpp)`)");
+    const std::regex number(R"(\d+)");
+    const std::regex range("(\\d+)\\s*(?:–|-)\\s*(\\d+)");
+    std::set<std::string> listed;
+    std::string line;
+    while (std::getline(map, line)) {
+        std::smatch m;
+        if (!std::regex_match(line, m, row) || !std::regex_search(line, source_file)) {
+            continue;
+        }
+        const std::string first = m[1];
+        for (std::sregex_iterator it(first.begin(), first.end(), number), end; it != end; ++it) {
+            listed.insert(it->str());
+        }
+        // A range ("226–234", "292–304") lists every numeral in it.
+        for (std::sregex_iterator it(first.begin(), first.end(), range), end; it != end; ++it) {
+            for (int n = std::stoi((*it)[1]); n <= std::stoi((*it)[2]); ++n) {
+                listed.insert(std::to_string(n));
+            }
+        }
+    }
+    REQUIRE(listed.size() > 50);
+    for (const bool separate : {false, true}) {
+        auto profile = axes::default_profile();
+        profile.separate_registers = separate;
+        const relaylogic::ControlCabinet cabinet(profile, cardreader::fig8_layout());
+        for (const auto& s : cabinet.tracer().signals()) {
+            for (std::sregex_iterator it(s.numeral.begin(), s.numeral.end(), number), end;
+                 it != end; ++it) {
+                INFO(s.scope << "." << s.name << " carries numeral " << s.numeral);
+                CHECK(listed.count(it->str()) == 1);
+            }
+        }
+    }
 }
