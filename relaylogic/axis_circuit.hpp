@@ -30,7 +30,9 @@ struct AxisCircuit {
         incremental_conducting = incremental_storage.conducts(increment_counter.digits());
         tracer.set(comparer_absolute_, absolute_conducting ? 1 : 0);
         tracer.set(comparer_incremental_, incremental_conducting ? 1 : 0);
-        show_lamps();
+        if (tracer.observer() != nullptr) {
+            show_lamps(); // the lamps are only seen (no circuit reads them)
+        }
     }
     // Lamps 270 (absolute comparer 122' conducting) and 272 (incremental comparer 122''
     // conducting) light whenever speed switch 236 stands on off (contact 238) and their
