@@ -181,6 +181,7 @@ std::vector<Thousandths> spurious_matches_on_path(const AxisOrder& order, Thousa
 
 void DeckReviewer::skip() {
     previous_number_.reset();
+    coast_.fill(0);
     position_.fill(std::nullopt);
 }
 
@@ -189,11 +190,12 @@ std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
     if (previous_number_) {
         const int expected = (*previous_number_ + 1) % kCounterModulus;
         if (orders.number != expected) {
-            notes.push_back(
-                {std::nullopt, fmt::format("card number {:04} follows {:04} (expected {:04}): the "
-                                           "card-number check stops the machine before any axis "
-                                           "moves",
-                                           orders.number, *previous_number_, expected)});
+            notes.push_back({std::nullopt,
+                             fmt::format("card number {:04} follows {:04} (expected {:04}): the "
+                                         "card-number check stops the machine before any axis "
+                                         "moves",
+                                         orders.number, *previous_number_, expected),
+                             true});
         }
     }
     previous_number_ = orders.number;
@@ -201,7 +203,9 @@ std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
     std::array<std::optional<Thousandths>, kAxisCount> travel{};
     for (Axis a : kAxes) {
         const AxisOrder& o = orders.axis(a);
-        auto note = [&](std::string message) { notes.push_back({a, std::move(message)}); };
+        auto note = [&](std::string message, bool stops = false) {
+            notes.push_back({a, std::move(message), stops});
+        };
         if (o.sequence == 0) {
             note("no sequence position punched: the axis never runs (sequence stall)");
         }
@@ -213,6 +217,15 @@ std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
         const Thousandths from = *known_from;
         const Thousandths moves = travel_in_motion(from, o.stop, o.motion);
         travel.at(axis_index(a)) = moves;
+        double& coast_before = coast_.at(axis_index(a));
+        if (coast_before > 0) {
+            note(fmt::format("the previous card's stop coasts about {:.3f} in past {} (see its "
+                             "warning): the counters count the coast, so this card's check {} "
+                             "disagrees and the machine stops",
+                             coast_before, format_inches(from), format_inches(o.check)),
+                 true);
+            coast_before = 0;
+        }
 
         if (o.check != moves) {
             const auto other_way =
@@ -226,7 +239,8 @@ std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
                              o.check == other_way && moves != 0
                                  ? "; the check is the travel the other way round: is the motion "
                                    "column wrong?"
-                                 : ""));
+                                 : ""),
+                 true);
         }
         const int slow_downs = static_cast<int>(o.slow_down[0].has_value()) +
                                static_cast<int>(o.slow_down[1].has_value());
@@ -264,6 +278,7 @@ std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
                                 "the next card's check will disagree",
                                 format_inches(o.stop), v * 60, dyn.speed_in_per_s[2] * 60, coast,
                                 dyn.braking_in_per_s2));
+                coast_before = coast;
             }
         }
     }
@@ -316,7 +331,7 @@ void DeckReviewer::review_sequence(const CardOrders& orders,
                     "waiting: {}): no impulse comes and the shaft never returns home",
                     after, first.stall_at, axis_list(waiting));
     if (stalled == static_cast<long>(runs.size())) {
-        notes.push_back({std::nullopt, "sequence stall: " + what});
+        notes.push_back({std::nullopt, "sequence stall: " + what, true});
     } else {
         notes.push_back({std::nullopt, "sequence may stall, depending on which axis stops "
                                        "first: if they stop in this order, " +

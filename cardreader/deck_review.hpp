@@ -59,6 +59,10 @@ double coast_in(const AxisOrder& order, Thousandths from, const AxisDynamics& dy
 struct ReviewNote {
     std::optional<Axis> axis; // none for whole-card notes (card number)
     std::string message;
+    // The machine will stop on it (a card number out of order, a check that is not the
+    // travel, a sequence stall in every order, a coast the next check will count), not
+    // only a risk: `parsons check` then exits 3. The coast is a STOP on the card after it.
+    bool stops = false;
 };
 
 // Reviews a deck card by card, remembering where each axis stands (every axis starts the
@@ -82,6 +86,9 @@ private:
 
     std::optional<std::array<AxisDynamics, kAxisCount>> dynamics_;
     std::optional<int> previous_number_;
+    // The coast the previous card's stop leaves on each axis (0 where none is warned of): the
+    // counters count it, so this card's check disagrees.
+    std::array<double, kAxisCount> coast_{};
     std::array<std::optional<Thousandths>, kAxisCount> position_{
         Thousandths{0}, Thousandths{0}, Thousandths{0}, Thousandths{0}, Thousandths{0}};
 };

@@ -450,7 +450,8 @@ void add_bench_command(CLI::App& app, Command& selected) {
     cmd->add_option("--child-report", o->child_report)->group("");
     cmd->add_flag("--child-impulse-level", o->child_impulse_level)->group("");
     cmd->add_option("--child-trace", o->child_trace)->group("");
-    cmd->footer("Examples:\n  parsons bench\n  parsons bench --runs 7 --json > bench.json");
+    cmd->footer(exit_codes_help({{ExitCode::ok, "the figures were printed"}}) +
+                "Examples:\n  parsons bench\n  parsons bench --runs 7 --json > bench.json");
     cmd->callback([&selected, o] { selected = [o] { return run_bench(*o); }; });
 }
 

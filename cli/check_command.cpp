@@ -7,8 +7,10 @@
 // column, from where the last card left it (every axis starts the deck at zero). Coast and
 // screw error are the run's business, not the check's.
 //
-// Exit 0: no card passes a limit. Exit 3: some card would (the machine would stop there).
-// Exit 2: the deck or a flag cannot be read.
+// Exit 0: the deck will run through (warnings of risks may stand). Exit 3: the machine will
+// stop on it: a card passes a limit, a bad punch, or a review finding marked STOP (a card
+// number out of order, a check that is not the travel, a certain sequence stall, the coast of
+// the card before). Exit 2: the deck or a flag cannot be read.
 #include "cli/commands.hpp"
 
 #include "cardreader/deck_error.hpp"
@@ -40,6 +42,7 @@ ExitCode run_check(const CheckFlags& f) {
     long index = 0;
     long passing = 0;
     long warnings = 0;
+    long stops = 0; // findings the machine will stop on
     long bad = 0;
     while (auto card = deck.cards().next()) {
         ++index;
@@ -64,8 +67,9 @@ ExitCode run_check(const CheckFlags& f) {
         }
         const CardOrders& o = decoded.orders;
         for (const ReviewNote& n : reviewer.review(o)) {
-            ++warnings;
-            fmt::print("card {} (number {:04}): warning: {}{}\n", index, o.number,
+            ++(n.stops ? stops : warnings);
+            fmt::print("card {} (number {:04}): {}: {}{}\n", index, o.number,
+                       n.stops ? "STOP" : "warning",
                        n.axis ? fmt::format("{}: ", axis_name(*n.axis)) : "", n.message);
         }
         for (Axis a : kAxes) {
@@ -92,10 +96,11 @@ ExitCode run_check(const CheckFlags& f) {
             pos = to;
         }
     }
-    fmt::print("{} card{} checked: {} move{} past a limit, {} with bad punches, {} warning{}\n",
-               index, index == 1 ? "" : "s", passing, passing == 1 ? "" : "s", bad, warnings,
-               warnings == 1 ? "" : "s");
-    return passing > 0 || bad > 0 ? ExitCode::machine_stop : ExitCode::ok;
+    fmt::print("{} card{} checked: {} move{} past a limit, {} with bad punches, {} other "
+               "finding{} the machine stops on, {} warning{}\n",
+               index, index == 1 ? "" : "s", passing, passing == 1 ? "" : "s", bad, stops,
+               stops == 1 ? "" : "s", warnings, warnings == 1 ? "" : "s");
+    return passing > 0 || bad > 0 || stops > 0 ? ExitCode::machine_stop : ExitCode::ok;
 }
 
 } // namespace
@@ -110,8 +115,11 @@ void add_check_command(CLI::App& app, Command& selected) {
     cmd->add_option("--limit", flags->limits,
                     "Soft limits of the job, AXIS=MIN:MAX inches (e.g. table=0:9.5)");
     add_input_flags(*cmd, flags->deck);
-    cmd->footer("Exit status: 0 no card passes a limit, 3 some card would (listed), 2 unreadable "
-                "input.\n"
+    cmd->footer(exit_codes_help({{ExitCode::ok, "the deck will run through (warnings of risks "
+                                                "may stand)"},
+                                 {ExitCode::machine_stop,
+                                  "the machine will stop on the deck: a card passes a limit, a "
+                                  "bad punch, or a finding marked STOP"}}) +
                 "Examples:\n"
                 "  parsons check deck.cbn --limit table=0:9.5\n"
                 "  parsons check decks/samples/patent-example.csv --limit cross=0:2");

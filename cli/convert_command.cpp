@@ -44,7 +44,8 @@ void add_convert_command(CLI::App& app, Command& selected) {
         ->required();
     cmd->add_option("--to", flags->to, "Output format: cbn, bin, text, listing, tape or five");
     add_input_flags(*cmd, flags->deck);
-    cmd->footer("Examples:\n"
+    cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was converted"}}) +
+                "Examples:\n"
                 "  parsons convert deck.cbn -o deck.bin\n"
                 "  parsons convert deck.cbn -o deck.csv      (back to a listing)\n"
                 "  parsons convert cards.dat --format text -o cards.cbn");

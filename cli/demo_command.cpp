@@ -57,7 +57,11 @@ void add_demo_command(CLI::App& app, Command& selected) {
     CLI::App* cmd = app.add_subcommand(
         "demo", "The default job: generate a NACA 2412 template deck, run it, prove the cut");
     cmd->add_option("--out", *dir, "Folder for everything the demo writes")->capture_default_str();
-    cmd->footer("Example:\n  parsons demo            (then open out/demo/cut.svg and plot.svg)");
+    cmd->footer(exit_codes_help({{ExitCode::ok, "the demo ran and its deck completed"},
+                                 {ExitCode::machine_stop, "the machine stopped on the demo's deck"},
+                                 {ExitCode::interrupted, "stopped by the operator with Ctrl-C"},
+                                 {ExitCode::terminated, "stopped by SIGTERM"}}) +
+                "Example:\n  parsons demo            (then open out/demo/cut.svg and plot.svg)");
     cmd->callback([&selected, dir] { selected = [dir] { return run_demo(*dir); }; });
 }
 

@@ -1,6 +1,12 @@
 // The exit codes of `parsons` (DESIGN.md section 6).
 #pragma once
 
+#include <fmt/format.h>
+
+#include <initializer_list>
+#include <string>
+#include <utility>
+
 namespace parsons::cli {
 
 enum class ExitCode : int {
@@ -14,6 +20,24 @@ enum class ExitCode : int {
 
 inline int to_int(ExitCode code) {
     return static_cast<int>(code);
+}
+
+// What a command can return, with what each code means for it (2 and 1 are added to every
+// command's list: any command can be given bad input, and any can have a bug).
+using ExitCodeMeanings = std::initializer_list<std::pair<ExitCode, const char*>>;
+
+// The "Exit codes:" section of a command's --help, from the one list the tests also read.
+inline std::string exit_codes_help(ExitCodeMeanings codes) {
+    std::string text = "Exit codes:\n";
+    for (const auto& [code, meaning] : codes) {
+        text += fmt::format("  {:<4} {}\n", to_int(code), meaning);
+    }
+    text += fmt::format("  {:<4} {}\n", to_int(ExitCode::bad_input),
+                        "bad usage or input that cannot be read or written (the message names "
+                        "the file and where)");
+    text += fmt::format("  {:<4} {}\n", to_int(ExitCode::internal),
+                        "internal error: a bug in parsons (the message asks you to report it)");
+    return text + "\n";
 }
 
 } // namespace parsons::cli

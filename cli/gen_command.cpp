@@ -221,6 +221,7 @@ void add_gen_command(CLI::App& app, Command& selected) {
     auto flags = std::make_shared<GenFlags>();
     CLI::App* gen = app.add_subcommand("gen", "Generate a deck by the 1952 arithmetic");
     gen->require_subcommand(1);
+    gen->footer(exit_codes_help({{ExitCode::ok, "the deck was written"}}));
     CLI::App* cmd = gen->add_subcommand(
         "airfoil", "A template deck for an airfoil: stations, cutter offset, one card a station");
     cmd->add_option("--naca", flags->naca, "NACA 4-digit section, e.g. 2412");
@@ -255,7 +256,8 @@ void add_gen_command(CLI::App& app, Command& selected) {
     cmd->add_option("--centres", flags->centres,
                     "Write x,y,cx,cy per station (work point and cutter centre, inches)");
     cmd->add_option("--profile", flags->profile, "Machine profile JSON");
-    cmd->footer("Examples:\n"
+    cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was written"}}) +
+                "Examples:\n"
                 "  parsons gen airfoil --naca 2412 --chord 6 --cutter-radius 0.25 -o naca2412.cbn\n"
                 "  parsons gen airfoil --dat clarky.dat --scallop 0.002 --surface both -o y.cbn\n"
                 "  parsons gen airfoil --naca 0012 --job wing --chord 4 --span 5 --taper 0.6 "

@@ -65,13 +65,26 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        const int code = app.exit(e);
+        if (e.get_exit_code() != 0) {
+            // CLI11's own message, worded as ours: prefix, the command to ask, exit 2.
+            std::string command = "parsons";
+            for (const CLI::App* sub = &app; sub != nullptr;) {
+                const auto chosen = sub->get_subcommands();
+                sub = chosen.empty() ? nullptr : chosen.front();
+                if (sub != nullptr) {
+                    command += " " + sub->get_name();
+                }
+            }
+            fmt::print(stderr, "parsons: error: {} (see '{} --help')\n", e.what(), command);
+            return to_int(ExitCode::bad_input);
+        }
+        app.exit(e); // --help: the help text, exit 0
         try {
             finish_standard_output();
         } catch (const parsons::cardreader::DeckError& error) {
             return write_error(error.what());
         }
-        return code == 0 ? 0 : to_int(ExitCode::bad_input);
+        return 0;
     }
     try {
         const ExitCode code = selected();

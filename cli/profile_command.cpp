@@ -23,7 +23,8 @@ void add_profile_command(CLI::App& app, Command& selected) {
     CLI::App* cmd = app.add_subcommand(
         "profile", "Print the machine profile (every time and rate of the machine) as JSON");
     cmd->add_option("--profile", *file, "A profile file to apply over the built-in default");
-    cmd->footer("Examples:\n"
+    cmd->footer(exit_codes_help({{ExitCode::ok, "the profile was printed"}}) +
+                "Examples:\n"
                 "  parsons profile > my-machine.json     (then edit it)\n"
                 "  parsons run deck.cbn --profile my-machine.json");
     cmd->callback([&selected, file] { selected = [file] { return run_profile(*file); }; });

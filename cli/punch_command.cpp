@@ -51,7 +51,8 @@ void add_punch_command(CLI::App& app, Command& selected) {
     cmd->add_option("--code", flags->deck.code, "Keypunch code for text card images: 029 or 026")
         ->capture_default_str();
     cmd->add_option("--layout", flags->deck.layout, "Card layout")->capture_default_str();
-    cmd->footer("Example:\n  parsons punch decks/samples/patent-example.csv -o deck.cbn");
+    cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was punched"}}) +
+                "Example:\n  parsons punch decks/samples/patent-example.csv -o deck.cbn");
     cmd->callback([&selected, flags] { selected = [flags] { return run_punch(*flags); }; });
 }
 

@@ -436,8 +436,11 @@ void add_run_command(CLI::App& app, Command& selected) {
                   "Take every commutator impulse one by one (the reference) instead of "
                   "fast-forwarding between comparer equalities; the result is the same");
     add_input_flags(*cmd, flags->deck);
-    cmd->footer("Exit status: 0 the deck completed, 3 the machine stopped itself (a check "
-                "fired), 2 unreadable input.\n"
+    cmd->footer(exit_codes_help({{ExitCode::ok, "the deck completed"},
+                                 {ExitCode::machine_stop,
+                                  "the machine stopped itself (a check fired; docs/stop-codes.md)"},
+                                 {ExitCode::interrupted, "stopped by the operator with Ctrl-C"},
+                                 {ExitCode::terminated, "stopped by SIGTERM"}}) +
                 "Examples:\n"
                 "  parsons run decks/samples/patent-example.csv --report out/report.json\n"
                 "  parsons run deck.cbn --trace out/run.vcd --plot out/run.svg\n"

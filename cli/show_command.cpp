@@ -147,7 +147,9 @@ void add_show_command(CLI::App& app, Command& selected) {
     cmd->add_option("--profile", flags->profile,
                     "Machine profile JSON, for the coast estimate (see 'parsons profile')");
     add_input_flags(*cmd, flags->deck);
-    cmd->footer("Examples:\n"
+    cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was shown (its warnings do not "
+                                                "change the code; 'parsons check' judges)"}}) +
+                "Examples:\n"
                 "  parsons show decks/samples/patent-example.csv\n"
                 "  parsons show deck.cbn --svg out/cards");
     cmd->callback([&selected, flags] { selected = [flags] { return run_show(*flags); }; });

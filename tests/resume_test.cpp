@@ -26,40 +26,6 @@ using nlohmann::json;
 
 namespace {
 
-// A deck of long moves on every axis, as a listing: each card shuttles the table 9 inches at
-// speed 1 (patent slow-downs), the cross 1.9 in at speed 2, and so on.
-std::string long_listing(int cards) {
-    struct Shuttle {
-        const char* axis;
-        int a, b, speed;
-        const char* seq;
-    };
-    const std::array<Shuttle, 5> shuttles = {{{"table", 485, 9485, 1, "12"},
-                                              {"cross", 1085, 2985, 2, "12"},
-                                              {"vertical", 500, 1500, 2, "34"},
-                                              {"swivel", 200, 400, 3, "34"},
-                                              {"tilt", 100, 200, 3, "5"}}};
-    std::string out = "card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq\n";
-    std::array<int, 5> at{};
-    for (int n = 0; n < cards; ++n) {
-        for (std::size_t i = 0; i < 5; ++i) {
-            const Shuttle& s = shuttles.at(i);
-            const int to = n % 2 == 0 ? s.b : s.a;
-            const int from = at.at(i);
-            const int sign = to >= from ? 1 : -1;
-            const int speed = from == to ? 3 : s.speed;
-            auto in = [](int t) { return fmt::format("{}.{:03}", t / 1000, t % 1000); };
-            const std::string slow1 = speed <= 2 ? in(to - sign * (speed == 1 ? 200 : 100)) : "";
-            const std::string slow2 = speed == 1 ? in(to - sign * 100) : "";
-            out += fmt::format("{},1,{},{},{},{},{},{},{},{}\n", (n + 1) % 10000, s.axis,
-                               sign > 0 ? "+" : "-", speed, slow1, slow2, in(to),
-                               in(std::abs(to - from)), s.seq);
-            at.at(i) = to;
-        }
-    }
-    return out;
-}
-
 json read_json(const std::filesystem::path& p) {
     return json::parse(read_bytes(p));
 }

@@ -73,7 +73,8 @@ TEST_CASE("Show: warns on a sequence stall the machine then stops on", "[show][c
     CHECK(show.output.find("warning: sequence stall: after table stops, position 2 of stepping "
                            "shaft 280 is answered by no running axis") != std::string::npos);
     auto check = run_parsons("check " + q(dir.str("stall.csv")));
-    CHECK(check.output.find("warning: sequence stall") != std::string::npos);
+    CHECK(check.output.find("STOP: sequence stall") != std::string::npos);
+    CHECK(check.exit_code == 3);
     auto run = run_parsons("run " + q(dir.str("stall.csv")) + " --report " + q(dir.str("r.json")));
     CHECK(run.exit_code == 3);
     CHECK(read_bytes(dir.path("r.json")).find("sequence_stall") != std::string::npos);
@@ -95,9 +96,11 @@ TEST_CASE("Show: warns on slow-downs too close to the stop, from the profile's b
                                          idle_rest(2));
     auto close = run_parsons("show " + q(dir.str("close.csv")));
     INFO(close.output);
-    CHECK(count(close.output, "warning:") == 1);
+    CHECK(count(close.output, "warning:") == 2); // on the card that coasts, and the next
     CHECK(close.output.find("warning: table: slow-down too close to the stop: it reaches the stop "
                             "8.985 still at ") != std::string::npos);
+    CHECK(close.output.find("warning: table: the previous card's stop coasts about") !=
+          std::string::npos);
     auto far = run_parsons("show " + q(dir.str("far.csv")));
     CHECK(count(far.output, "warning:") == 0);
     // The machine agrees: the close deck stops on the next card's check, the far one completes.

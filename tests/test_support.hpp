@@ -51,4 +51,8 @@ std::string source_path(const std::string& relative); // a file of the source tr
 // Random orders a layout can hold (a second slow-down only where the layout has the field).
 cardreader::CardOrders random_orders(std::mt19937& rng, const cardreader::CardLayout& layout);
 
+// A deck of long moves on every axis, as a listing: each card shuttles the table 9 inches at
+// speed 1 (patent slow-downs), the cross 1.9 in at speed 2, and so on.
+std::string long_listing(int cards);
+
 } // namespace parsons::test

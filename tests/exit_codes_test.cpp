@@ -1,0 +1,194 @@
+// Exit codes that mean what the docs say (issue 17, item 2): every command's --help lists the
+// codes it can return, each command really returns each of them, CLI11's own messages are
+// worded as ours with exit 2, and `check` exits 3 exactly when the machine will stop.
+#include "tests/test_support.hpp"
+
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+
+using parsons::test::long_listing;
+using parsons::test::q;
+using parsons::test::run_parsons;
+using parsons::test::run_shell;
+using parsons::test::TempDir;
+using parsons::test::write_bytes;
+
+namespace {
+
+const char* kHeader = "card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq\n";
+const std::string kSample = std::string(PARSONS_SOURCE_DIR) + "/decks/samples/patent-example.csv";
+
+// Every axis but the table idle at 0.000, each at its own position 2 .. 5.
+std::string idle_rest(int card) {
+    return fmt::format("{0},0,cross,+,3,,,0.000,0.000,2\n{0},0,vertical,+,3,,,0.000,0.000,3\n"
+                       "{0},0,swivel,+,3,,,0.000,0.000,4\n{0},0,tilt,+,3,,,0.000,0.000,5\n",
+                       card);
+}
+
+// The codes listed under "Exit codes:" in a help text.
+std::set<int> listed_codes(const std::string& help) {
+    std::set<int> codes;
+    std::istringstream in(help.substr(help.find("Exit codes:")));
+    std::string line;
+    std::getline(in, line);
+    while (std::getline(in, line) && !line.empty()) {
+        codes.insert(std::stoi(line));
+    }
+    return codes;
+}
+
+} // namespace
+
+TEST_CASE("Exit codes: every command's --help lists exactly the codes it can return, 2 and 1 "
+          "included",
+          "[cli][exit-codes]") {
+    const std::map<std::string, std::set<int>> expected = {{"run", {0, 1, 2, 3, 130, 143}},
+                                                           {"check", {0, 1, 2, 3}},
+                                                           {"demo", {0, 1, 2, 3, 130, 143}},
+                                                           {"show", {0, 1, 2}},
+                                                           {"punch", {0, 1, 2}},
+                                                           {"convert", {0, 1, 2}},
+                                                           {"gen", {0, 1, 2}},
+                                                           {"gen airfoil", {0, 1, 2}},
+                                                           {"profile", {0, 1, 2}},
+                                                           {"bench", {0, 1, 2}}};
+    for (const auto& [command, codes] : expected) {
+        const auto help = run_parsons(command + " --help");
+        INFO(command << ":\n" << help.output);
+        CHECK(help.exit_code == 0);
+        REQUIRE(help.output.find("Exit codes:") != std::string::npos);
+        CHECK(listed_codes(help.output) == codes);
+        CHECK(help.output.find("  1    internal error: a bug in parsons") != std::string::npos);
+    }
+}
+
+TEST_CASE("Exit codes: CLI11's own messages are worded as ours, name the help to read, and "
+          "exit 2",
+          "[cli][exit-codes]") {
+    const std::map<std::string, std::string> cases = {
+        {"run", "DECK is required (see 'parsons run --help')"},
+        {"run deck.cbn --no-such-option",
+         "The following argument was not expected: --no-such-option (see 'parsons run --help')"},
+        {"gen airfoil --naca 2412 --stations many -o x.cbn",
+         "Could not convert: --stations = many (see 'parsons gen airfoil --help')"},
+        {"check a.cbn b.cbn", "(see 'parsons check --help')"},
+        {"bench --runs 0", "(see 'parsons bench --help')"},
+        {"", "A subcommand is required (see 'parsons --help')"}};
+    for (const auto& [args, message] : cases) {
+        const auto r = run_parsons(args);
+        INFO("parsons " << args << ":\n" << r.output);
+        CHECK(r.exit_code == 2);
+        CHECK(r.output.rfind("parsons: error: ", 0) == 0);
+        CHECK(r.output.find(message) != std::string::npos);
+    }
+}
+
+TEST_CASE("Exit codes: each command returns 0 when it did its work and 2 on input it cannot "
+          "read",
+          "[cli][exit-codes]") {
+    TempDir dir;
+    const std::string missing = q(dir.str("missing.cbn"));
+    const std::string deck = q(dir.str("deck.cbn"));
+    REQUIRE(run_parsons("punch " + q(kSample) + " -o " + deck).exit_code == 0);
+    const std::map<std::string, std::string> ok = {
+        {"run", "run -q " + deck},
+        {"check", "check " + deck},
+        {"show", "show " + deck},
+        {"convert", "convert " + deck + " -o " + q(dir.str("deck.bin"))},
+        {"gen airfoil", "gen airfoil --naca 0012 --stations 20 -o " + q(dir.str("g.cbn"))},
+        {"profile", "profile"},
+        {"demo", "demo --out " + q(dir.str("demo"))},
+        {"bench", "bench --runs 1 --long-cards 2 --trace-cards 2 --short-cards 10 --json"}};
+    for (const auto& [command, args] : ok) {
+        const auto r = run_parsons(args);
+        INFO(args << ":\n" << r.output);
+        CHECK(r.exit_code == 0);
+    }
+    const std::map<std::string, std::string> bad = {
+        {"run", "run " + missing},
+        {"check", "check " + missing},
+        {"show", "show " + missing},
+        {"punch", "punch " + missing + " -o " + q(dir.str("p.cbn"))},
+        {"convert", "convert " + missing + " -o " + q(dir.str("c.bin"))},
+        {"gen airfoil", "gen airfoil --dat " + missing + " -o " + q(dir.str("g2.cbn"))},
+        {"profile", "profile --profile " + missing},
+        {"demo", "demo --out /dev/null/demo"},
+        {"bench", "bench --runs 1000"}};
+    for (const auto& [command, args] : bad) {
+        const auto r = run_parsons(args);
+        INFO(args << ":\n" << r.output);
+        CHECK(r.exit_code == 2);
+        CHECK(r.output.find("parsons: error: ") != std::string::npos);
+    }
+}
+
+TEST_CASE("Exit codes: run returns 3 on a machine stop, 130 on Ctrl-C and 143 on SIGTERM",
+          "[cli][exit-codes][signals]") {
+    TempDir dir;
+    write_bytes(dir.path("wrong.csv"),
+                std::string(kHeader) + "1,0,table,+,3,,,0.100,0.110,1\n" + idle_rest(1));
+    const auto stopped = run_parsons("run -q " + q(dir.str("wrong.csv")));
+    CHECK(stopped.exit_code == 3);
+    CHECK(stopped.output.find("check_mismatch") != std::string::npos);
+
+    write_bytes(dir.path("long.csv"), long_listing(400));
+    const std::string deck = q(dir.str("long.cbn"));
+    REQUIRE(run_parsons("punch " + q(dir.str("long.csv")) + " -o " + deck).exit_code == 0);
+    // About three seconds of work at the impulse level with a trace: the signal comes first.
+    for (const auto& [signal, code] : std::map<std::string, int>{{"INT", 130}, {"TERM", 143}}) {
+        const auto r = run_shell("timeout --preserve-status -s " + signal + " 0.3 PARSONS run " +
+                                 deck + " --impulse-level --trace /dev/null -q");
+        INFO("SIG" << signal << ":\n" << r.output);
+        CHECK(r.exit_code == code);
+        CHECK(r.output.find("the operator stopped the run") != std::string::npos);
+    }
+}
+
+TEST_CASE("Exit codes: check exits 3 exactly when the machine will stop on the deck, and 0 "
+          "with only warnings of risks",
+          "[cli][exit-codes][check]") {
+    TempDir dir;
+    struct Case {
+        const char* name;
+        std::string listing;
+        int code;
+        const char* says;
+    };
+    const std::vector<Case> cases = {
+        {"good", std::string(kHeader) + "1,0,table,+,3,,,0.100,0.100,1\n" + idle_rest(1), 0, ""},
+        {"wrong check", std::string(kHeader) + "1,0,table,+,3,,,0.100,0.110,1\n" + idle_rest(1), 3,
+         "STOP: table: check 0.110 but the stop 0.100"},
+        {"card number",
+         std::string(kHeader) + "1,0,table,+,3,,,0.100,0.100,1\n" + idle_rest(1) +
+             "3,0,table,+,3,,,0.200,0.100,1\n" + idle_rest(3),
+         3, "STOP: card number 0003 follows 0001"},
+        {"stall",
+         std::string(kHeader) + "1,0,table,+,3,,,0.100,0.100,1\n1,0,cross,+,3,,,0.200,0.200,1\n"
+                                "1,0,vertical,+,3,,,0.000,0.000,3\n1,0,swivel,+,3,,,0.000,0.000,4\n"
+                                "1,0,tilt,+,3,,,0.000,0.000,5\n",
+         3, "STOP: sequence stall: after table stops"},
+        {"coast",
+         std::string(kHeader) + "1,0,table,+,1,8.983,8.984,8.985,8.985,1\n" + idle_rest(1) +
+             "2,0,table,+,3,,,9.085,0.100,1\n" + idle_rest(2),
+         3, "STOP: table: the previous card's stop coasts about 0.0"},
+        {"coast on the last card, a risk only",
+         std::string(kHeader) + "1,0,table,+,2,,,0.300,0.300,1\n" + idle_rest(1), 0,
+         "warning: table: slow-down too close to the stop"},
+    };
+    for (const Case& c : cases) {
+        const std::string file = dir.str(std::string(c.name) + ".csv");
+        write_bytes(file, c.listing);
+        const auto check = run_parsons("check " + q(file));
+        const auto run = run_parsons("run -q " + q(file));
+        INFO(c.name << ":\n" << check.output << "\nrun:\n" << run.output);
+        CHECK(check.exit_code == c.code);
+        CHECK(check.output.find(c.says) != std::string::npos);
+        // The machine agrees with the check.
+        CHECK(run.exit_code == c.code);
+    }
+}
