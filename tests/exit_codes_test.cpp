@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+using parsons::test::idle_rest;
+using parsons::test::kHeader;
 using parsons::test::long_listing;
 using parsons::test::q;
 using parsons::test::run_parsons;
@@ -20,15 +22,7 @@ using parsons::test::write_bytes;
 
 namespace {
 
-const char* kHeader = "card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq\n";
 const std::string kSample = std::string(PARSONS_SOURCE_DIR) + "/decks/samples/patent-example.csv";
-
-// Every axis but the table idle at 0.000, each at its own position 2 .. 5.
-std::string idle_rest(int card) {
-    return fmt::format("{0},0,cross,+,3,,,0.000,0.000,2\n{0},0,vertical,+,3,,,0.000,0.000,3\n"
-                       "{0},0,swivel,+,3,,,0.000,0.000,4\n{0},0,tilt,+,3,,,0.000,0.000,5\n",
-                       card);
-}
 
 // The codes listed under "Exit codes:" in a help text.
 std::set<int> listed_codes(const std::string& help) {

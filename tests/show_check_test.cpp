@@ -12,6 +12,8 @@
 #include <string>
 
 using namespace parsons;
+using parsons::test::idle_rest;
+using parsons::test::kHeader;
 using parsons::test::q;
 using parsons::test::read_bytes;
 using parsons::test::run_parsons;
@@ -19,15 +21,6 @@ using parsons::test::TempDir;
 using parsons::test::write_bytes;
 
 namespace {
-
-const char* kHeader = "card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq\n";
-
-// Every axis but the table idle at 0.000, each at its own position 2 .. 5.
-std::string idle_rest(int card) {
-    return fmt::format("{0},0,cross,+,3,,,0.000,0.000,2\n{0},0,vertical,+,3,,,0.000,0.000,3\n"
-                       "{0},0,swivel,+,3,,,0.000,0.000,4\n{0},0,tilt,+,3,,,0.000,0.000,5\n",
-                       card);
-}
 
 std::size_t count(const std::string& text, const std::string& what) {
     std::size_t n = 0;

@@ -125,6 +125,12 @@ cardreader::CardOrders random_orders(std::mt19937& rng, const cardreader::CardLa
 
 // A deck of long moves on every axis, as a listing: each card shuttles the table 9 inches at
 // speed 1 (patent slow-downs), the cross 1.9 in at speed 2, and so on.
+std::string idle_rest(int card) {
+    return fmt::format("{0},0,cross,+,3,,,0.000,0.000,2\n{0},0,vertical,+,3,,,0.000,0.000,3\n"
+                       "{0},0,swivel,+,3,,,0.000,0.000,4\n{0},0,tilt,+,3,,,0.000,0.000,5\n",
+                       card);
+}
+
 std::string long_listing(int cards) {
     struct Shuttle {
         const char* axis;

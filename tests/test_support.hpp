@@ -51,6 +51,13 @@ std::string source_path(const std::string& relative); // a file of the source tr
 // Random orders a layout can hold (a second slow-down only where the layout has the field).
 cardreader::CardOrders random_orders(std::mt19937& rng, const cardreader::CardLayout& layout);
 
+// The header of a listing (docs/deck-formats.md).
+inline constexpr const char* kHeader =
+    "card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq\n";
+
+// Listing rows for every axis but the table, idle at 0.000, each at its own position 2 .. 5.
+std::string idle_rest(int card);
+
 // A deck of long moves on every axis, as a listing: each card shuttles the table 9 inches at
 // speed 1 (patent slow-downs), the cross 1.9 in at speed 2, and so on.
 std::string long_listing(int cards);
