@@ -217,6 +217,45 @@ void warn_format(const std::string& path, const std::string& option, const char*
     }
 }
 
+// A word for the shell, quoted only where it needs to be.
+static std::string shell_word(const std::string& word) {
+    const bool plain =
+        !word.empty() &&
+        word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghij"
+                               "klmnopqrstuvwxyz0123456789_./-=:+") == std::string::npos;
+    if (plain) {
+        return word;
+    }
+    std::string quoted = "'";
+    for (char c : word) {
+        quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    }
+    return quoted + "'";
+}
+
+// After a stop with --save-state: that the state was written, and the command that resumes
+// from it once the deck is corrected (the state carries the profile and the faults).
+static void say_how_to_resume(const RunRequest& f) {
+    if (f.save_state.empty() || f.save_state == "-" || f.input == "-") {
+        return;
+    }
+    std::string command =
+        "parsons run " + shell_word(f.input) + " --resume " + shell_word(f.save_state);
+    if (!f.deck.format.empty() && f.deck.format != "auto") {
+        command += " --format " + shell_word(f.deck.format);
+    }
+    if (f.deck.code != "029") {
+        command += " --code " + shell_word(f.deck.code);
+    }
+    if (f.deck.layout != "fig8") {
+        command += " --layout " + shell_word(f.deck.layout);
+    }
+    fmt::print(stderr,
+               "parsons: the machine state is saved in {}; correct the deck, then resume with:\n"
+               "  {}\n",
+               f.save_state, command);
+}
+
 ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     for (const auto& [path, option] : {std::pair{f.plot, "--plot"}, std::pair{f.cut, "--cut"}}) {
         warn_format(path, option, "SVG", {".png", ".jpg", ".jpeg", ".gif", ".pdf", ".eps", ".ps"},
@@ -386,11 +425,13 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     }
     if (result.stop && result.stop->reason == relaylogic::StopReason::interrupted) {
         fmt::print(stderr, "parsons: interrupted: {}\n", result.stop->message);
+        say_how_to_resume(f);
         return operator_stop.signal() == SIGTERM ? ExitCode::terminated : ExitCode::interrupted;
     }
     if (result.stop) {
         fmt::print(stderr, "parsons: machine stop: {}: {}\n",
                    relaylogic::stop_reason_name(result.stop->reason), result.stop->message);
+        say_how_to_resume(f);
         return ExitCode::machine_stop;
     }
     return ExitCode::ok;

@@ -186,3 +186,35 @@ TEST_CASE("Exit codes: check exits 3 exactly when the machine will stop on the d
         CHECK(run.exit_code == c.code);
     }
 }
+
+TEST_CASE("Save state: a stopped run says where the state is and prints the command that "
+          "resumes it, which works once the deck is corrected",
+          "[cli][resume]") {
+    TempDir dir;
+    const std::string deck = dir.str("deck.csv");
+    const std::string good = std::string(kHeader) + "1,0,table,+,3,,,0.100,0.100,1\n" +
+                             idle_rest(1) + "2,0,table,+,3,,,0.300,0.200,1\n" + idle_rest(2);
+    std::string wrong = good;
+    wrong.replace(wrong.find("0.300,0.200"), 11, "0.300,0.250"); // card 2's check
+    write_bytes(deck, wrong);
+    const std::string state = dir.str("saved state.json"); // a name the shell must quote
+    const auto stopped = run_parsons("run -q " + q(deck) + " --save-state " + q(state));
+    INFO(stopped.output);
+    REQUIRE(stopped.exit_code == 3);
+    const std::string intro = "correct the deck, then resume with:\n  ";
+    const auto at = stopped.output.find(intro);
+    REQUIRE(at != std::string::npos);
+    CHECK(stopped.output.find("the machine state is saved in " + state) != std::string::npos);
+    std::string command = stopped.output.substr(at + intro.size());
+    command = command.substr(0, command.find('\n'));
+    REQUIRE(command.rfind("parsons run ", 0) == 0);
+    // Typed as printed, on the corrected deck, the run goes on from card 2 and completes.
+    write_bytes(deck, good);
+    const auto resumed = run_shell("PARSONS" + command.substr(std::string("parsons").size()));
+    INFO(command << "\n" << resumed.output);
+    CHECK(resumed.exit_code == 0);
+    // A run that completes has nothing to resume: no such line.
+    const auto done = run_parsons("run -q " + q(deck) + " --save-state " + q(dir.str("s2.json")));
+    CHECK(done.exit_code == 0);
+    CHECK(done.output.find("resume with") == std::string::npos);
+}
