@@ -14,6 +14,7 @@
 // A benchmark, not a test: it asserts nothing about time. --json for the same as JSON.
 #include "cli/commands.hpp"
 #include "cli/output_file.hpp"
+#include "cli/progress_line.hpp"
 
 #include "cardreader/deck_io.hpp"
 #include "cardreader/deck_review.hpp"
@@ -155,10 +156,34 @@ struct Timed {
     double seconds = 0; // median
 };
 
-Timed time_run(const RunRequest& request, int runs) {
+// The stage of the benchmark being measured, on the progress line (a terminal only).
+class Stages {
+public:
+    explicit Stages(int total) : total_(total) {}
+    void begin(const std::string& name) {
+        name_ = name;
+        ++done_;
+        run(0, 1);
+    }
+    void run(int r, int runs) {
+        progress_.show((done_ - 1 + static_cast<double>(r) / runs) / total_,
+                       fmt::format("{} ({}/{}), run {} of {}", name_, done_, total_, r + 1, runs),
+                       true);
+    }
+    void clear() { progress_.clear(); }
+
+private:
+    int total_;
+    int done_ = 0;
+    std::string name_;
+    ProgressLine progress_;
+};
+
+Timed time_run(const RunRequest& request, int runs, Stages& stages) {
     Timed t;
     std::vector<double> s;
     for (int r = 0; r < runs; ++r) {
+        stages.run(r, runs);
         s.push_back(seconds([&] {
             if (run_deck(request, &t.result) != ExitCode::ok) {
                 throw std::runtime_error("benchmark deck " + request.input + " did not complete");
@@ -268,7 +293,9 @@ ExitCode run_bench(const BenchOptions& o) {
                     {"cores", sysconf(_SC_NPROCESSORS_ONLN)},
                     {"build", PARSONS_BUILD_TYPE}};
     j["runs"] = o.runs;
-    auto say = [&o](const std::string& s) {
+    Stages stages(11 + (o.scaling ? 4 : 0));
+    auto say = [&o, &stages](const std::string& s) {
+        stages.clear();
         if (!o.json) {
             fmt::print("{}\n", s);
             std::fflush(stdout);
@@ -278,10 +305,11 @@ ExitCode run_bench(const BenchOptions& o) {
                     sysconf(_SC_NPROCESSORS_ONLN), PARSONS_BUILD_TYPE, o.runs));
 
     // Impulse level and fast-forward on the same long deck.
+    stages.begin("impulse level");
     write_deck(path("long.cbn"), o.long_cards, kLongMoves);
     RunRequest impulse_level = quiet_run(path("long.cbn"));
     impulse_level.impulse_level = true;
-    const Timed il = time_run(impulse_level, o.runs);
+    const Timed il = time_run(impulse_level, o.runs, stages);
     const long impulses = impulses_of(il.result);
     j["impulse_level"] = {{"cards", o.long_cards},
                           {"impulses", impulses},
@@ -292,7 +320,8 @@ ExitCode run_bench(const BenchOptions& o) {
                     static_cast<double>(impulses) / il.seconds / 1e6, o.long_cards, impulses,
                     il.seconds));
 
-    const Timed ff = time_run(quiet_run(path("long.cbn")), o.runs);
+    stages.begin("fast-forward, long moves");
+    const Timed ff = time_run(quiet_run(path("long.cbn")), o.runs, stages);
     j["fast_forward_long"] = {{"cards", o.long_cards},
                               {"impulses", impulses_of(ff.result)},
                               {"seconds", ff.seconds},
@@ -303,10 +332,11 @@ ExitCode run_bench(const BenchOptions& o) {
                     static_cast<double>(impulses) / ff.seconds / 1e6, o.long_cards / ff.seconds));
 
     // The VCD trace, written to a file.
+    stages.begin("VCD trace");
     write_deck(path("trace.cbn"), o.trace_cards, kLongMoves);
     RunRequest traced = quiet_run(path("trace.cbn"));
     traced.trace = path("trace.vcd");
-    const Timed tr = time_run(traced, o.runs);
+    const Timed tr = time_run(traced, o.runs, stages);
     const long events = vcd_events(traced.trace);
     const double mb = static_cast<double>(fs::file_size(traced.trace)) / 1e6;
     const long trace_impulses = impulses_of(tr.result);
@@ -325,8 +355,9 @@ ExitCode run_bench(const BenchOptions& o) {
                     mb / tr.seconds));
 
     // Short moves: cards a second; and the cost of a card against the length of its move.
+    stages.begin("fast-forward, short moves");
     write_deck(path("short.cbn"), o.short_cards, kShortMoves);
-    const Timed sh = time_run(quiet_run(path("short.cbn")), o.runs);
+    const Timed sh = time_run(quiet_run(path("short.cbn")), o.runs, stages);
     j["short_moves"] = {{"cards", o.short_cards},
                         {"seconds", sh.seconds},
                         {"cards_per_s", o.short_cards / sh.seconds}};
@@ -336,8 +367,10 @@ ExitCode run_bench(const BenchOptions& o) {
     const int per = std::max(1000, o.short_cards / 10);
     write_deck(path("ten.cbn"), per, kTenInchMoves);
     write_deck(path("hundredth.cbn"), per, kShortMoves);
-    const Timed ten = time_run(quiet_run(path("ten.cbn")), o.runs);
-    const Timed hundredth = time_run(quiet_run(path("hundredth.cbn")), o.runs);
+    stages.begin("cost per card, 10 in moves");
+    const Timed ten = time_run(quiet_run(path("ten.cbn")), o.runs, stages);
+    stages.begin("cost per card, 0.010 in moves");
+    const Timed hundredth = time_run(quiet_run(path("hundredth.cbn")), o.runs, stages);
     const double us_ten = ten.seconds / per * 1e6;
     const double us_hundredth = hundredth.seconds / per * 1e6;
     j["move_length"] = {
@@ -351,7 +384,9 @@ ExitCode run_bench(const BenchOptions& o) {
     big.airfoil = "naca 2412";
     big.options.stations = 100000;
     std::vector<double> gen_s;
+    stages.begin("deck generation");
     for (int r = 0; r < o.runs; ++r) {
+        stages.run(r, o.runs);
         gen_s.push_back(
             seconds([&] { generate_job(big, axes::default_profile(), path("gen.cbn"), "", ""); }));
     }
@@ -359,13 +394,14 @@ ExitCode run_bench(const BenchOptions& o) {
     say(fmt::format("deck generation             {:>8.3f} s         (100,000 stations, NACA "
                     "2412, written)",
                     median(gen_s)));
+    stages.begin("cut sweep");
     decks::JobDescription cut_job;
     cut_job.airfoil = "naca 2412";
     cut_job.options.stations = 2000;
     generate_job(cut_job, axes::default_profile(), path("cut.cbn"), "", "");
     RunRequest cut = quiet_run(path("cut.cbn"));
     cut.cut = path("cut.svg");
-    const Timed sweep = time_run(cut, o.runs);
+    const Timed sweep = time_run(cut, o.runs, stages);
     j["cut_sweep"] = {{"stations", 2000}, {"seconds", sweep.seconds}};
     say(fmt::format("cut sweep                   {:>8.3f} s         (run --cut of a 2,000-station "
                     "deck)",
@@ -375,6 +411,7 @@ ExitCode run_bench(const BenchOptions& o) {
     nlohmann::json memory = nlohmann::json::object();
     std::string line;
     for (int cards : {1000, 10000, 100000}) {
+        stages.begin(fmt::format("peak memory, {} cards", cards));
         const std::string deck = path(fmt::format("mem{}.cbn", cards));
         write_deck(deck, cards, kShortMoves);
         const double peak = child_peak_mb(deck, path("peak.txt"));
@@ -391,6 +428,7 @@ ExitCode run_bench(const BenchOptions& o) {
         say("     cards   fast-fwd s  impulse s   VCD s   VCD MB   peak MB");
         nlohmann::json rows = nlohmann::json::array();
         for (int cards : {1000, 10000, 100000, 1000000}) {
+            stages.begin(fmt::format("scaling, {} cards", cards));
             const std::string deck = path("scale.cbn");
             write_deck(deck, cards, kShortMoves);
             double peak = 0;

@@ -1,4 +1,5 @@
 #include "cli/deck_files.hpp"
+#include "cli/applied_profile.hpp"
 
 #include "axes/profile_json.hpp"
 #include "cardreader/deck_error.hpp"
@@ -179,19 +180,7 @@ std::string read_text_file(const std::string& file, const std::string& missing) 
 }
 
 axes::MachineProfile load_profile(const std::string& file) {
-    if (file.empty()) {
-        return axes::default_profile();
-    }
-    // A built-in profile by name (parsons-1952, parsons-safe), unless a file of that name exists.
-    if (auto builtin = axes::builtin_profile(file); builtin && !std::filesystem::exists(file)) {
-        return *builtin;
-    }
-    const std::string text = read_text_file(file);
-    try {
-        return axes::profile_from_json(text, axes::default_profile());
-    } catch (const axes::ProfileError& e) {
-        throw DeckError::in_file(file, e.what());
-    }
+    return AppliedProfile::load(file).profile();
 }
 
 } // namespace parsons::cli
@@ -238,6 +227,20 @@ void apply_limits(axes::MachineProfile& profile, const std::vector<std::string>&
         a.soft_min_in = lo;
         a.soft_max_in = hi;
     }
+}
+
+cardreader::DeckFingerprint fingerprint_deck(const std::string& path, const DeckFlags& flags,
+                                             long max_cards) {
+    InputDeck deck(path, flags);
+    cardreader::DeckFingerprint fingerprint;
+    while (max_cards < 0 || fingerprint.cards() < max_cards) {
+        auto card = deck.cards().next();
+        if (!card) {
+            break;
+        }
+        fingerprint.add(*card);
+    }
+    return fingerprint;
 }
 
 } // namespace parsons::cli

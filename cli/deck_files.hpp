@@ -33,8 +33,9 @@ cardreader::DeckOptions deck_options(const std::string& path, const std::string&
 // `missing` as the reason, or the system's reason when `missing` is empty.
 std::string read_text_file(const std::string& file, const std::string& missing = {});
 
-// The built-in machine profile, or FILE applied over it; throws DeckError naming the file
-// and the key on a bad profile.
+// The built-in machine profile FILE names, or the profile file FILE applied over the built-in
+// profile its "name" names (else the default); throws DeckError naming the file and the key on
+// a bad profile. AppliedProfile (applied_profile.hpp) keeps where each value came from.
 axes::MachineProfile load_profile(const std::string& file);
 // --limit AXIS=MIN:MAX (repeatable): the soft limits of the job, over the profile's.
 void apply_limits(axes::MachineProfile& profile, const std::vector<std::string>& limits);
@@ -64,5 +65,9 @@ private:
     cardreader::DeckOptions options_;
     std::unique_ptr<cardreader::CardSource> source_;
 };
+
+// The fingerprint of the first `max_cards` cards of a deck (all of them when negative).
+cardreader::DeckFingerprint fingerprint_deck(const std::string& path, const DeckFlags& flags,
+                                             long max_cards = -1);
 
 } // namespace parsons::cli

@@ -3,11 +3,13 @@
 // Exit 0: the deck completed. Exit 3: the machine stopped itself (a check fired: a correct
 // emulation). Exit 2: the deck or a flag could not be read. Every output file is written
 // whole or not at all.
+#include "cli/applied_profile.hpp"
 #include "cli/commands.hpp"
 #include "cli/cutter_paths.hpp"
 #include "cli/deck_files.hpp"
 #include "cli/output_file.hpp"
 #include "cli/plot_svg.hpp"
+#include "cli/progress_line.hpp"
 #include "cli/run_report.hpp"
 #include "cli/trace_outputs.hpp"
 
@@ -76,11 +78,7 @@ decks::JobDescription read_job(const std::string& file, const std::string& deck_
         throw DeckError::in_file(file, e.what());
     }
     if (!job.deck_fingerprint.empty() && deck_path != "-") {
-        InputDeck deck(deck_path, deck_flags);
-        cardreader::DeckFingerprint fingerprint;
-        while (auto card = deck.cards().next()) {
-            fingerprint.add(*card);
-        }
+        const cardreader::DeckFingerprint fingerprint = fingerprint_deck(deck_path, deck_flags);
         if (fingerprint.hex() != job.deck_fingerprint) {
             throw DeckError::in_file(
                 file, fmt::format("this job description was written for another deck ({} cards, "
@@ -93,28 +91,21 @@ decks::JobDescription read_job(const std::string& file, const std::string& deck_
     return job;
 }
 
-// A progress line on stderr, only when stderr is a terminal.
+// A progress line on stderr, only when stderr is a terminal: how far through the deck file.
 class ProgressBar : public relaylogic::MachineObserver {
 public:
-    explicit ProgressBar(InputDeck& deck) : deck_(deck) {}
+    ProgressBar(InputDeck& deck, bool wanted) : deck_(deck), line_(wanted) {}
+    bool shown() const { return line_.shown(); }
     void on_card(double t, long index, const cardreader::CardOrders& /*orders*/) override {
-        const double f = deck_.fraction_read();
-        const int filled = static_cast<int>(f * 30);
-        fmt::print(stderr, "\r[{:<30}] {:3.0f}%  card {}  machine time {:.1f} s",
-                   std::string(static_cast<std::size_t>(filled), '#'), 100 * f, index, t);
-        std::fflush(stderr);
-        shown_ = true;
+        line_.show(deck_.fraction_read(),
+                   fmt::format("card {}  machine time {:.1f} s", index, t));
     }
     bool follows_impulses() const override { return false; }
-    void on_finish(double /*t*/) override {
-        if (shown_) {
-            fmt::print(stderr, "\r{:<80}\r", "");
-        }
-    }
+    void on_finish(double /*t*/) override { line_.clear(); }
 
 private:
     InputDeck& deck_;
-    bool shown_ = false;
+    ProgressLine line_;
 };
 
 // Keeps the tracer's values current (a saved state writes them) and nothing else: the cabinet
@@ -172,8 +163,8 @@ nlohmann::json read_state(const std::string& file) {
 // The saved state: where the machine stopped and why (for the operator), and the machine as
 // the card it stopped on was fed (for --resume): the profile and faults it ran with too.
 nlohmann::json state_json(const relaylogic::RunResult& r, const nlohmann::json& resume_point,
-                          const axes::MachineProfile& profile,
-                          const std::vector<std::string>& faults, const std::string& deck) {
+                          const AppliedProfile& profile, const std::vector<std::string>& faults,
+                          const RunRequest& f) {
     nlohmann::json stopped = nlohmann::json::object();
     for (cardreader::Axis a : cardreader::kAxes) {
         const auto& x = r.axes.at(cardreader::axis_index(a));
@@ -181,16 +172,26 @@ nlohmann::json state_json(const relaylogic::RunResult& r, const nlohmann::json& 
                                                           {"real_in", x.real_in}};
     }
     const auto& s = *r.stop;
+    const long resume_card = axes::read<long>(resume_point, "cards_read") + 1;
+    // The cards the stopped run had machined, so that a resume can tell when they changed.
+    nlohmann::json machined = nullptr;
+    if (f.input != "-") {
+        const auto fingerprint = fingerprint_deck(f.input, f.deck, resume_card - 1);
+        machined = {{"cards", fingerprint.cards()}, {"fingerprint", fingerprint.hex()}};
+    }
     return nlohmann::json{{"parsons_state", 1},
-                          {"deck", deck},
+                          {"parsons_version", PARSONS_VERSION},
+                          {"deck", f.input},
+                          {"cards_machined", machined},
                           {"stop",
                            {{"reason", relaylogic::stop_reason_name(s.reason)},
                             {"card", s.card},
                             {"message", s.message},
                             {"machine_seconds", r.machine_seconds},
                             {"axes_at_rest", stopped}}},
-                          {"resume_card", axes::read<long>(resume_point, "cards_read") + 1},
-                          {"profile", nlohmann::json::parse(axes::profile_to_json(profile))},
+                          {"resume_card", resume_card},
+                          {"profile", nlohmann::json::parse(axes::profile_to_json(profile.profile()))},
+                          {"profile_applied", profile.describe()},
                           {"faults", faults},
                           {"resume", resume_point}};
 }
@@ -256,6 +257,39 @@ static void say_how_to_resume(const RunRequest& f) {
                f.save_state, command);
 }
 
+// Before a resumed run: which deck the state was saved from when it is not this one, a warning
+// when the cards the stopped run had machined are not the same cards now, and where each
+// limit comes from.
+static void say_what_resumes(const nlohmann::json& state, const AppliedProfile& applied,
+                             const RunRequest& f) {
+    const std::string saved_deck =
+        state.contains("deck") && state.at("deck").is_string() ? state.at("deck").get<std::string>()
+                                                                : std::string();
+    if (!f.quiet || (!saved_deck.empty() && saved_deck != f.input)) {
+        fmt::print(stderr, "parsons: resuming {} from {}{}\n", f.input, f.resume,
+               saved_deck.empty() || saved_deck == f.input
+                   ? std::string()
+                   : fmt::format(" (saved from another deck: {})", saved_deck));
+    }
+    const nlohmann::json machined = state.value("cards_machined", nlohmann::json());
+    if (machined.is_object() && f.input != "-") {
+        const long cards = machined.value("cards", 0L);
+        const std::string was = machined.value("fingerprint", std::string());
+        const auto now = fingerprint_deck(f.input, f.deck, cards);
+        if (now.cards() == cards && now.hex() != was) {
+            fmt::print(stderr,
+                       "parsons: warning: cards 1 to {} of {} are not the cards the stopped run "
+                       "machined (fingerprint {}, saved {}): the part was cut by the old ones\n",
+                       cards, f.input, now.hex(), was);
+        }
+    }
+    if (!f.quiet) {
+        for (const std::string& line : applied.limit_lines()) {
+            fmt::print(stderr, "  {}\n", line);
+        }
+    }
+}
+
 ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     for (const auto& [path, option] : {std::pair{f.plot, "--plot"}, std::pair{f.cut, "--cut"}}) {
         warn_format(path, option, "SVG", {".png", ".jpg", ".jpeg", ".gif", ".pdf", ".eps", ".ps"},
@@ -267,7 +301,7 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     // widens or narrows the movement range, as an operator would before going on).
     nlohmann::json state;
     std::vector<std::string> fault_specs = f.faults;
-    axes::MachineProfile profile;
+    AppliedProfile applied;
     if (!f.resume.empty()) {
         if (!f.profile.empty() || !f.faults.empty()) {
             throw DeckError("--resume: the saved state carries its machine profile and faults; "
@@ -275,16 +309,16 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
         }
         state = read_state(f.resume);
         try {
-            profile = axes::profile_from_json(axes::member(state, "profile").dump(),
-                                              axes::default_profile());
+            applied = AppliedProfile::from_state(state, f.resume);
             fault_specs = axes::read<std::vector<std::string>>(state, "faults");
         } catch (const std::exception& e) {
             throw DeckError::in_file(f.resume, e.what());
         }
     } else {
-        profile = load_profile(f.profile);
+        applied = AppliedProfile::load(f.profile);
     }
-    apply_limits(profile, f.limits);
+    applied.apply_limits(f.limits);
+    axes::MachineProfile& profile = applied.profile();
     std::vector<relaylogic::Fault> faults;
     for (const auto& spec : fault_specs) {
         try {
@@ -295,6 +329,9 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     }
     InputDeck deck(f.input, f.deck);
     apply_feed(profile, f.feed, deck.options());
+    if (!f.resume.empty()) {
+        say_what_resumes(state, applied, f);
+    }
     relaylogic::ControlCabinet cabinet(profile, *deck.options().layout);
     for (const auto& fault : faults) {
         cabinet.add_fault(fault);
@@ -337,8 +374,8 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
             observers.add(&cutter);
         }
     }
-    ProgressBar progress(deck);
-    if (!f.quiet && isatty(fileno(stderr)) != 0) {
+    ProgressBar progress(deck, !f.quiet);
+    if (progress.shown()) {
         observers.add(&progress);
     }
     // A state to be saved needs the signal values kept: an observer that wants nothing more.
@@ -366,7 +403,7 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     if (plot) {
         write_file(f.plot, plot->svg());
     }
-    nlohmann::json report = report_json(result, profile, f.input);
+    nlohmann::json report = report_json(result, applied, f.input);
     std::string cut_summary;
     if (wing_path) {
         const auto airfoil = decks::open_airfoil(job);
@@ -374,11 +411,11 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
         write_file(f.cut, decks::wing_cut_svg(proof, wing_path->path, job.wing,
                                               fmt::format("{} wing", job.airfoil)));
         report["cut"] = {{"root",
-                          {{"max_gouge_in", proof.root.max_gouge_in},
-                           {"max_leftover_in", proof.root.max_leftover_in}}},
+                          {{"max_gouge_in", fine_length(proof.root.max_gouge_in)},
+                           {"max_leftover_in", fine_length(proof.root.max_leftover_in)}}},
                          {"tip",
-                          {{"max_gouge_in", proof.tip.max_gouge_in},
-                           {"max_leftover_in", proof.tip.max_leftover_in}}}};
+                          {{"max_gouge_in", fine_length(proof.tip.max_gouge_in)},
+                           {"max_leftover_in", fine_length(proof.tip.max_leftover_in)}}}};
         cut_summary = fmt::format("  cut            root section: deepest gouge {:.5f} in, most "
                                   "left standing {:.5f} in; tip section: {:.5f} in, {:.5f} in\n",
                                   proof.root.max_gouge_in, proof.root.max_leftover_in,
@@ -393,9 +430,9 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
         write_file(f.cut,
                    decks::cut_svg(proof, path, design, radius,
                                   fmt::format("{}: the cut, from the emulated path", job.airfoil)));
-        report["cut"] = {{"max_gouge_in", proof.max_gouge_in},
-                         {"max_leftover_in", proof.max_leftover_in},
-                         {"max_scallop_in", proof.max_scallop_in},
+        report["cut"] = {{"max_gouge_in", fine_length(proof.max_gouge_in)},
+                         {"max_leftover_in", fine_length(proof.max_leftover_in)},
+                         {"max_scallop_in", fine_length(proof.max_scallop_in)},
                          {"machined_points", proof.machined_points},
                          {"design_points", design.points.size()}};
         cut_summary = fmt::format("  cut            deepest gouge {:.5f} in, most left standing "
@@ -411,7 +448,7 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
         if (result.stop) {
             write_file(
                 f.save_state,
-                state_json(result, cabinet.resume_point(), profile, fault_specs, f.input).dump(1) +
+                state_json(result, cabinet.resume_point(), applied, fault_specs, f).dump(1) +
                     "\n");
         } else if (!f.quiet) {
             fmt::print(message_stream(),

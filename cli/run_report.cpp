@@ -16,17 +16,42 @@ double screw_vs_counters(const relaylogic::AxisResult& x) {
     return std::remainder(x.screw_in - x.counter_in, 10.0);
 }
 
+double rounded(double v, double step) {
+    if (!std::isfinite(v)) {
+        return v;
+    }
+    const double r = std::round(v / step) * step;
+    return r == 0 ? 0.0 : r; // no -0
+}
+
 } // namespace
 
-nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachineProfile& profile,
+double counter_reading(double inches) {
+    return rounded(inches, 0.001);
+}
+double fine_length(double inches) {
+    return rounded(inches, 0.00001);
+}
+double time_s(double seconds) {
+    return rounded(seconds, 0.000001);
+}
+double angle_deg(double degrees) {
+    return rounded(degrees, 0.0001);
+}
+
+nlohmann::json report_json(const relaylogic::RunResult& r, const AppliedProfile& applied,
                            const std::string& deck) {
     using nlohmann::json;
+    const axes::MachineProfile& profile = applied.profile();
     json j;
+    j["parsons_version"] = PARSONS_VERSION;
+    j["schema_version"] = kReportSchemaVersion;
     j["deck"] = deck;
     j["profile"] = profile.name;
+    j["profile_applied"] = applied.describe();
     j["status"] = r.completed ? "completed" : "stopped";
     j["cards_read"] = r.cards_read;
-    j["machine_seconds"] = r.machine_seconds;
+    j["machine_seconds"] = time_s(r.machine_seconds);
     j["measuring_chain"] = profile.measuring_chain == axes::MeasuringChain::screw_turns
                                ? "screw_turns"
                                : "instrument_shaft_74";
@@ -44,15 +69,18 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachinePr
     json axes = json::object();
     for (Axis a : cardreader::kAxes) {
         const auto& x = r.axes.at(cardreader::axis_index(a));
-        json ax{{"position", x.counter_in},     {"real_position", x.real_in},
-                {"position_error", x.error_in}, {"impulses", x.impulses},
-                {"lost_steps", x.lost_steps},   {"screw_slip", x.slip_in}};
+        json ax{{"position", counter_reading(x.counter_in)},
+                {"real_position", fine_length(x.real_in)},
+                {"position_error", fine_length(x.error_in)},
+                {"impulses", x.impulses},
+                {"lost_steps", x.lost_steps},
+                {"screw_slip", fine_length(x.slip_in)}};
         // The two readings of Fig. 3: the part as the counters measured it (position) and the
         // main screw's turns (turns x lead), and how far apart they are.
-        ax["screw_turns_position"] = x.screw_in;
-        ax["screw_turns_minus_position"] = screw_vs_counters(x);
+        ax["screw_turns_position"] = fine_length(x.screw_in);
+        ax["screw_turns_minus_position"] = fine_length(screw_vs_counters(x));
         if (x.fixture_angle_deg) {
-            ax["fixture_angle_deg"] = *x.fixture_angle_deg;
+            ax["fixture_angle_deg"] = angle_deg(*x.fixture_angle_deg);
         }
         axes[std::string(axis_name(a))] = ax;
     }
@@ -66,8 +94,8 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachinePr
     for (const auto& c : r.cards) {
         cards.push_back(json{{"index", c.index},
                              {"number", c.number >= 0 ? json(c.number) : json(nullptr)},
-                             {"start_seconds", c.start_s},
-                             {"machine_seconds", c.end_s - c.start_s}});
+                             {"start_seconds", time_s(c.start_s)},
+                             {"machine_seconds", time_s(c.end_s - c.start_s)}});
     }
     j["cards"] = cards;
     return j;

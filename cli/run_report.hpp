@@ -1,7 +1,7 @@
 // The report of a run (--report R.json, DESIGN.md section 6) and the one-screen summary.
 #pragma once
 
-#include "axes/machine_profile.hpp"
+#include "cli/applied_profile.hpp"
 #include "relaylogic/control_cabinet.hpp"
 
 #include <nlohmann/json.hpp>
@@ -10,7 +10,19 @@
 
 namespace parsons::cli {
 
-nlohmann::json report_json(const relaylogic::RunResult& result, const axes::MachineProfile& profile,
+// The version of the report's layout: raised when a field changes meaning or goes away.
+inline constexpr int kReportSchemaVersion = 1;
+
+// Lengths and times in the report are rounded to what they resolve (docs/reliability.md,
+// "Figures in the report"): counter readings to the machine's 0.001 in, lengths the emulator
+// knows beyond the counters (real position, error, slip, screw turns, cut proof) to 0.00001 in,
+// times to the microsecond, angles to 0.0001 degree. Saved states keep every bit.
+double counter_reading(double inches);
+double fine_length(double inches);
+double time_s(double seconds);
+double angle_deg(double degrees);
+
+nlohmann::json report_json(const relaylogic::RunResult& result, const AppliedProfile& profile,
                            const std::string& deck);
 
 // What the operator reads at the end: cards run, machine time, where every axis stands and,

@@ -28,6 +28,14 @@ void BalancingCircuit::trip() {
     lamps_.insert(lamps_.begin(), "indicator 268");
 }
 
+void BalancingCircuit::open_by_operator() {
+    if (!master_closed_) {
+        return;
+    }
+    master_closed_ = false;
+    tracer_.set(master_204_, 0);
+}
+
 bool BalancingCircuit::check_at_stop(bool absolute, bool incremental) {
     if (absolute == incremental) {
         return absolute; // both conducting: balanced (neither cannot reach contact 238)

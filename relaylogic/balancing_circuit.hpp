@@ -28,6 +28,9 @@ public:
     bool check_at_stop(bool absolute_conducting, bool incremental_conducting);
     // Another check fired: open the master switch and sound indicator 268.
     void trip();
+    // The operator opened master switch 204 by hand (Ctrl-C, SIGTERM): no check fired, so
+    // electromagnet 265 stays still, indicator 268 silent and no lamp of the stop lights.
+    void open_by_operator();
     // The lamps lit now, as an operator would read them off the panel.
     std::vector<std::string> lamps() const { return lamps_; }
     void light(const std::string& lamp) { lamps_.push_back(lamp); }

@@ -841,7 +841,11 @@ void ControlCabinet::machine_stop(StopReason reason, std::optional<Axis> axis,
     if (stop_) {
         return;
     }
-    balancing_.trip();
+    if (reason == StopReason::interrupted) {
+        balancing_.open_by_operator();
+    } else {
+        balancing_.trip();
+    }
     if (!lamp.empty()) {
         balancing_.light(lamp);
     }

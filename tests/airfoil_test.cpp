@@ -20,7 +20,7 @@ using parsons::cardreader::DeckError;
 namespace {
 
 std::string data_path(const std::string& name) {
-    return std::string(PARSONS_SOURCE_DIR) + "/tests/data/" + name;
+    return std::string(PARSONS_SOURCE_DIR) + "/decks/airfoils/" + name;
 }
 
 // A Selig file's points, read independently of read_dat: the surface each lies on (split at the

@@ -20,7 +20,7 @@ using parsons::test::run_orders;
 namespace {
 
 std::string data_file(const std::string& name) {
-    return std::string(PARSONS_SOURCE_DIR) + "/tests/data/" + name;
+    return std::string(PARSONS_SOURCE_DIR) + "/decks/airfoils/" + name;
 }
 
 // Quantising each centre to 0.001 in on both axes moves it up to 0.0007 in; the coast leaves

@@ -1,0 +1,382 @@
+// Docs that match the binary (the command-line issue, item 6): every example of every
+// command's --help, and every command of the README and the tutorial, run as written in a
+// scratch folder (with `decks/` of the source tree and `build/cli/parsons` beside them); the
+// exit codes they document, the figures the tutorial quotes and its pictures must be what the
+// binary gives today.
+//
+// PARSONS_UPDATE_DOCS=1 (scripts/docs.sh) rewrites the quoted figures and copies the pictures
+// into docs/images/ instead of comparing them.
+#include "tests/test_support.hpp"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+using namespace parsons::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+bool updating() {
+    const char* v = std::getenv("PARSONS_UPDATE_DOCS");
+    return v != nullptr && std::string(v) == "1";
+}
+
+std::vector<std::string> split_lines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        lines.push_back(line);
+    }
+    return lines;
+}
+
+std::string join_lines(const std::vector<std::string>& lines) {
+    std::string out;
+    for (const auto& l : lines) {
+        out += l + "\n";
+    }
+    return out;
+}
+
+std::string trim(const std::string& s) {
+    const auto a = s.find_first_not_of(" \t");
+    const auto b = s.find_last_not_of(" \t");
+    return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+// Runs of spaces and newlines as one space.
+std::string squeeze(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        const bool space = c == ' ' || c == '\n' || c == '\t';
+        if (space && (out.empty() || out.back() == ' ')) {
+            continue;
+        }
+        out += space ? ' ' : c;
+    }
+    return trim(out);
+}
+
+// `text` holds `pattern`, where "…" in the pattern stands for any run of characters.
+bool matches_with_ellipsis(const std::string& text, const std::string& pattern) {
+    const std::string ellipsis = "…";
+    std::size_t at = 0;
+    std::size_t from = 0;
+    while (true) {
+        const auto next = pattern.find(ellipsis, from);
+        const std::string piece = trim(pattern.substr(from, next - from));
+        if (!piece.empty()) {
+            const auto found = text.find(piece, at);
+            if (found == std::string::npos) {
+                return false;
+            }
+            at = found + piece.size();
+        }
+        if (next == std::string::npos) {
+            return true;
+        }
+        from = next + ellipsis.size();
+    }
+}
+
+// A scratch folder laid out as the source tree is for a reader of the docs: decks/ (the
+// shipped samples and airfoils), build/cli/parsons, and parsons on the PATH.
+class Scratch {
+public:
+    Scratch() {
+        fs::create_directories(dir_.path("build/cli"));
+        fs::create_directories(dir_.path("bin"));
+        fs::create_symlink(PARSONS_EXE, dir_.path("build/cli/parsons"));
+        fs::create_symlink(PARSONS_EXE, dir_.path("bin/parsons"));
+        fs::create_directory_symlink(source_path("decks"), dir_.path("decks"));
+    }
+    ProcessResult run(const std::string& command) const {
+        return run_shell("cd " + q(dir_.str(".")) + " && PATH=" + q(dir_.str("bin")) +
+                         ":\"$PATH\" && " + command);
+    }
+    fs::path path(const std::string& relative) const { return dir_.path(relative); }
+
+private:
+    TempDir dir_;
+};
+
+// "exit N" in a command's comment: the code it is documented to return (0 when none).
+int documented_exit(const std::string& comment) {
+    std::smatch m;
+    if (std::regex_search(comment, m, std::regex(R"(exit (\d+))"))) {
+        return std::stoi(m[1]);
+    }
+    return 0;
+}
+
+struct Example {
+    std::string command;
+    std::string comment;
+    std::vector<std::string> expected; // output the doc quotes right under the command
+};
+
+// The commands of a Markdown page's indented code blocks: lines that begin with
+// `build/cli/parsons` (continued over lines ending in a backslash), with their trailing
+// `# comment`; the lines under a command in the same block are output it must print.
+std::vector<Example> page_commands(const std::string& markdown) {
+    std::vector<Example> out;
+    bool in_block = false;
+    std::string pending;
+    for (const std::string& raw : split_lines(markdown)) {
+        const bool indented = raw.rfind("    ", 0) == 0;
+        if (!indented) {
+            in_block = false;
+            continue;
+        }
+        const std::string line = raw.substr(4);
+        if (!pending.empty()) {
+            pending += " " + trim(line);
+        } else if (line.rfind("build/cli/parsons ", 0) == 0) {
+            pending = line;
+            in_block = true;
+        } else if (in_block && !out.empty()) {
+            out.back().expected.push_back(line);
+            continue;
+        } else {
+            continue;
+        }
+        if (!pending.empty() && pending.back() == '\\') {
+            pending.pop_back();
+            continue;
+        }
+        Example e;
+        const auto hash = pending.find("  #");
+        e.command = trim(pending.substr(0, hash));
+        e.comment = hash == std::string::npos ? "" : pending.substr(hash);
+        out.push_back(e);
+        pending.clear();
+    }
+    return out;
+}
+
+void check_quoted_output(const Example& e, const ProcessResult& r) {
+    if (e.expected.empty()) {
+        return;
+    }
+    std::string quoted;
+    for (const auto& l : e.expected) {
+        quoted += l + " ";
+    }
+    INFO("quoted: " << quoted << "\nprinted: " << r.output);
+    CHECK(matches_with_ellipsis(squeeze(r.output), squeeze(quoted)));
+}
+
+// A fenced block quotes lines of the last command's output: each quoted line stands for the
+// printed line that begins with the same 16 characters (its label), and must equal it.
+void check_fenced(std::vector<std::string>& lines, std::size_t open, std::size_t close,
+                  const std::string& printed, bool& changed) {
+    const auto out_lines = split_lines(printed);
+    for (std::size_t i = open + 1; i < close; ++i) {
+        std::string& quoted = lines.at(i);
+        const std::string label = quoted.substr(0, std::min<std::size_t>(16, quoted.size()));
+        const auto found = std::find_if(out_lines.begin(), out_lines.end(), [&](const auto& l) {
+            return l.rfind(label, 0) == 0;
+        });
+        INFO("quoted line: " << quoted << "\nprinted:\n" << printed);
+        REQUIRE(found != out_lines.end());
+        if (updating()) {
+            changed = changed || quoted != *found;
+            quoted = *found;
+        } else {
+            CHECK(quoted == *found);
+        }
+    }
+}
+
+// Pictures: an image whose line is preceded by `<!-- drawn by the commands above: FILE -->`
+// must be the file those commands drew (in the scratch folder), byte for byte.
+void check_pictures(const std::vector<std::string>& lines, const fs::path& page,
+                    const Scratch& scratch, int& compared) {
+    static const std::regex from(R"(<!-- drawn by the commands above: (\S+) -->)");
+    static const std::regex image(R"(!\[[^\]]*\]\(([^)]+)\))");
+    for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
+        std::smatch f;
+        std::smatch img;
+        if (!std::regex_search(lines.at(i), f, from) ||
+            !std::regex_search(lines.at(i + 1), img, image)) {
+            continue;
+        }
+        const fs::path drawn = scratch.path(f[1]);
+        const fs::path shipped = page.parent_path() / std::string(img[1]);
+        INFO(shipped.string() << " from " << drawn.string());
+        REQUIRE(fs::exists(drawn));
+        ++compared;
+        if (updating()) {
+            fs::copy_file(drawn, shipped, fs::copy_options::overwrite_existing);
+        } else {
+            CHECK(read_bytes(drawn) == read_bytes(shipped));
+        }
+    }
+}
+
+// Runs a page's commands in order in one scratch folder, checks their exit codes and the
+// output they quote, then the fenced blocks (against the output of the command before them)
+// and the pictures.
+void run_page(const std::string& relative, Scratch& scratch, int& pictures) {
+    const fs::path page = source_path(relative);
+    std::vector<std::string> lines = split_lines(read_bytes(page));
+    std::string last_output;
+    bool changed = false;
+    std::size_t commands = 0;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::string& line = lines.at(i);
+        if (line.rfind("```", 0) == 0) {
+            const auto close = std::find_if(lines.begin() + static_cast<long>(i) + 1, lines.end(),
+                                            [](const auto& l) { return l.rfind("```", 0) == 0; });
+            REQUIRE(close != lines.end());
+            const auto c = static_cast<std::size_t>(close - lines.begin());
+            if (!last_output.empty()) {
+                check_fenced(lines, i, c, last_output, changed);
+            }
+            i = c;
+            continue;
+        }
+        // An indented block: collect it whole, then run its commands.
+        if (line.rfind("    ", 0) == 0) {
+            std::size_t end = i;
+            while (end < lines.size() && lines.at(end).rfind("    ", 0) == 0) {
+                ++end;
+            }
+            std::vector<std::string> block(lines.begin() + static_cast<long>(i),
+                                           lines.begin() + static_cast<long>(end));
+            for (const Example& e : page_commands(join_lines(block))) {
+                const ProcessResult r = scratch.run(e.command);
+                INFO(relative << ": " << e.command << "\n" << r.output);
+                CHECK(r.exit_code == (e.expected.empty() || e.expected.front().rfind(
+                                                                "parsons: error:", 0) != 0
+                                          ? documented_exit(e.comment)
+                                          : 2));
+                check_quoted_output(e, r);
+                last_output = r.output;
+                ++commands;
+            }
+            i = end - 1;
+        }
+    }
+    CHECK(commands > 0);
+    check_pictures(lines, page, scratch, pictures);
+    if (updating() && changed) {
+        std::ofstream(page, std::ios::binary) << join_lines(lines);
+    }
+}
+
+std::vector<std::string> help_examples(const std::string& help) {
+    std::vector<std::string> out;
+    bool in_examples = false;
+    for (const std::string& line : split_lines(help)) {
+        if (line.rfind("Example", 0) == 0) {
+            in_examples = true;
+            continue;
+        }
+        if (in_examples && line.rfind("  parsons ", 0) == 0) {
+            out.push_back(trim(line));
+        } else if (in_examples && trim(line).empty()) {
+            in_examples = false;
+        }
+    }
+    return out;
+}
+
+// The subcommands a --help lists (CLI11: a "SUBCOMMANDS:" heading, two-space indented names).
+std::vector<std::string> subcommands(const std::string& help) {
+    std::vector<std::string> out;
+    bool in = false;
+    for (const std::string& line : split_lines(help)) {
+        if (line.find("SUBCOMMANDS:") != std::string::npos ||
+            line.find("Subcommands:") != std::string::npos) {
+            in = true;
+            continue;
+        }
+        if (in) {
+            std::smatch m;
+            if (std::regex_search(line, m, std::regex(R"(^  ([a-z]+)\b)"))) {
+                out.push_back(m[1]);
+            } else if (!trim(line).empty()) {
+                in = false;
+            }
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("Docs: every example of every command's --help runs as written against shipped "
+          "files, with the exit code its comment gives",
+          "[docs][cli]") {
+    Scratch scratch;
+    // Every command, and the commands under one (gen airfoil), as `parsons --help` lists them.
+    std::vector<std::string> commands;
+    for (const std::string& c : subcommands(run_parsons("--help").output)) {
+        const auto sub = subcommands(run_parsons(c + " --help").output);
+        if (sub.empty()) {
+            commands.push_back(c);
+        }
+        for (const std::string& s : sub) {
+            commands.push_back(c + " " + s);
+        }
+    }
+    REQUIRE(commands.size() >= 9);
+    // punch first: the other examples read the deck it punches.
+    std::stable_partition(commands.begin(), commands.end(),
+                          [](const std::string& c) { return c == "punch"; });
+    int examples = 0;
+    for (const std::string& c : commands) {
+        const auto help = run_parsons(c + " --help");
+        REQUIRE(help.exit_code == 0);
+        const auto lines = help_examples(help.output);
+        INFO(c);
+        CHECK_FALSE(lines.empty()); // every command shows one
+        for (const std::string& line : lines) {
+            // "parsons ARGS   (a comment)": the comment may give the exit code.
+            const auto comment = line.find("   (");
+            const std::string command = trim(line.substr(0, comment));
+            const int expected =
+                comment == std::string::npos ? 0 : documented_exit(line.substr(comment));
+            const ProcessResult r = scratch.run(command);
+            INFO(command << "\n" << r.output);
+            CHECK(r.exit_code == expected);
+            ++examples;
+        }
+    }
+    CHECK(examples >= 15);
+}
+
+TEST_CASE("Docs: every command of the README and the tutorial runs as written, and the "
+          "figures and pictures they quote are what the binary gives",
+          "[docs][cli]") {
+    int pictures = 0;
+    {
+        Scratch scratch;
+        run_page("README.md", scratch, pictures);
+    }
+    {
+        Scratch scratch;
+        run_page("docs/tutorial.md", scratch, pictures);
+        // The prose figures of step 2: cards and minutes of machine time.
+        const std::string tutorial = read_bytes(source_path("docs/tutorial.md"));
+        std::smatch m;
+        REQUIRE(std::regex_search(tutorial, m,
+                                  std::regex(R"((\d+) cards and about (\w+) minutes of 1952)")));
+        const auto report = nlohmann::json::parse(read_bytes(scratch.path("out/demo/report.json")));
+        CHECK(std::to_string(report["cards_read"].get<long>()) == std::string(m[1]));
+        static const std::vector<std::string> words = {
+            "zero", "one", "two",   "three",  "four",   "five",  "six",
+            "seven", "eight", "nine", "ten", "eleven", "twelve"};
+        const auto minutes =
+            static_cast<std::size_t>(std::lround(report["machine_seconds"].get<double>() / 60));
+        REQUIRE(minutes < words.size());
+        CHECK(words.at(minutes) == std::string(m[2]));
+    }
+    CHECK(pictures >= 5);
+}
