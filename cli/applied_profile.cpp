@@ -43,8 +43,8 @@ axes::MachineProfile named_base(const std::string& text) {
                 return *builtin;
             }
         }
-    } catch (const json::parse_error&) {
-        // profile_from_json names the byte
+    } catch (const json::exception&) {
+        // not JSON, or a number too large: profile_from_json names the byte
     }
     return axes::default_profile();
 }
@@ -63,8 +63,8 @@ json profile_differences(const axes::MachineProfile& applied, const axes::Machin
 
 AppliedProfile AppliedProfile::load(const std::string& file) {
     AppliedProfile a;
-    const bool builtin = !file.empty() && axes::builtin_profile(file).has_value() &&
-                         !std::filesystem::exists(file);
+    const bool builtin =
+        !file.empty() && axes::builtin_profile(file).has_value() && !std::filesystem::exists(file);
     if (file.empty() || builtin) {
         a.profile_ = file.empty() ? axes::default_profile() : *axes::builtin_profile(file);
         a.named_ = a.profile_;
@@ -81,9 +81,9 @@ AppliedProfile AppliedProfile::load(const std::string& file) {
     for (std::size_t i = 0; i < a.profile_.axes.size(); ++i) {
         const auto& x = a.profile_.axes.at(i);
         const auto& n = a.named_.axes.at(i);
-        const bool soft_same = x.soft_limits == n.soft_limits &&
-                               (!x.soft_limits ||
-                                (x.soft_min_in == n.soft_min_in && x.soft_max_in == n.soft_max_in));
+        const bool soft_same =
+            x.soft_limits == n.soft_limits &&
+            (!x.soft_limits || (x.soft_min_in == n.soft_min_in && x.soft_max_in == n.soft_max_in));
         const bool travel_same =
             x.travel_min_in == n.travel_min_in && x.travel_max_in == n.travel_max_in;
         const std::string named = "profile " + a.named_.name;
@@ -160,10 +160,9 @@ std::vector<std::string> AppliedProfile::limit_lines() const {
     for (std::size_t i = 0; i < profile_.axes.size(); ++i) {
         const auto& x = profile_.axes.at(i);
         const std::string range =
-            x.soft_limits
-                ? fmt::format("movement range {} ({})", range_text(x.soft_min_in, x.soft_max_in),
-                              soft_from_.at(i))
-                : fmt::format("no movement range ({})", soft_from_.at(i));
+            x.soft_limits ? fmt::format("movement range {} ({})",
+                                        range_text(x.soft_min_in, x.soft_max_in), soft_from_.at(i))
+                          : fmt::format("no movement range ({})", soft_from_.at(i));
         lines.push_back(fmt::format("{:<8} {}; limit switches {} ({})", x.name, range,
                                     range_text(x.travel_min_in, x.travel_max_in),
                                     travel_from_.at(i)));

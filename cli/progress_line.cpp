@@ -26,8 +26,8 @@ void ProgressLine::show(double fraction, const std::string& text, bool force) {
     const double f = std::clamp(fraction, 0.0, 1.0);
     constexpr int kWidth = 30;
     const auto filled = static_cast<std::size_t>(f * kWidth);
-    std::string line = fmt::format("[{:<{}}] {:3.0f}%  {}", std::string(filled, '#'), kWidth,
-                                   100 * f, text);
+    std::string line =
+        fmt::format("[{:<{}}] {:3.0f}%  {}", std::string(filled, '#'), kWidth, 100 * f, text);
     if (line.size() > 79) {
         line.resize(79);
     }

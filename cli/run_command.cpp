@@ -97,8 +97,7 @@ public:
     ProgressBar(InputDeck& deck, bool wanted) : deck_(deck), line_(wanted) {}
     bool shown() const { return line_.shown(); }
     void on_card(double t, long index, const cardreader::CardOrders& /*orders*/) override {
-        line_.show(deck_.fraction_read(),
-                   fmt::format("card {}  machine time {:.1f} s", index, t));
+        line_.show(deck_.fraction_read(), fmt::format("card {}  machine time {:.1f} s", index, t));
     }
     bool follows_impulses() const override { return false; }
     void on_finish(double /*t*/) override { line_.clear(); }
@@ -179,21 +178,22 @@ nlohmann::json state_json(const relaylogic::RunResult& r, const nlohmann::json& 
         const auto fingerprint = fingerprint_deck(f.input, f.deck, resume_card - 1);
         machined = {{"cards", fingerprint.cards()}, {"fingerprint", fingerprint.hex()}};
     }
-    return nlohmann::json{{"parsons_state", 1},
-                          {"parsons_version", PARSONS_VERSION},
-                          {"deck", f.input},
-                          {"cards_machined", machined},
-                          {"stop",
-                           {{"reason", relaylogic::stop_reason_name(s.reason)},
-                            {"card", s.card},
-                            {"message", s.message},
-                            {"machine_seconds", r.machine_seconds},
-                            {"axes_at_rest", stopped}}},
-                          {"resume_card", resume_card},
-                          {"profile", nlohmann::json::parse(axes::profile_to_json(profile.profile()))},
-                          {"profile_applied", profile.describe()},
-                          {"faults", faults},
-                          {"resume", resume_point}};
+    return nlohmann::json{
+        {"parsons_state", 1},
+        {"parsons_version", PARSONS_VERSION},
+        {"deck", f.input},
+        {"cards_machined", machined},
+        {"stop",
+         {{"reason", relaylogic::stop_reason_name(s.reason)},
+          {"card", s.card},
+          {"message", s.message},
+          {"machine_seconds", r.machine_seconds},
+          {"axes_at_rest", stopped}}},
+        {"resume_card", resume_card},
+        {"profile", nlohmann::json::parse(axes::profile_to_json(profile.profile()))},
+        {"profile_applied", profile.describe()},
+        {"faults", faults},
+        {"resume", resume_point}};
 }
 
 } // namespace
@@ -262,14 +262,14 @@ static void say_how_to_resume(const RunRequest& f) {
 // limit comes from.
 static void say_what_resumes(const nlohmann::json& state, const AppliedProfile& applied,
                              const RunRequest& f) {
-    const std::string saved_deck =
-        state.contains("deck") && state.at("deck").is_string() ? state.at("deck").get<std::string>()
-                                                                : std::string();
+    const std::string saved_deck = state.contains("deck") && state.at("deck").is_string()
+                                       ? state.at("deck").get<std::string>()
+                                       : std::string();
     if (!f.quiet || (!saved_deck.empty() && saved_deck != f.input)) {
         fmt::print(stderr, "parsons: resuming {} from {}{}\n", f.input, f.resume,
-               saved_deck.empty() || saved_deck == f.input
-                   ? std::string()
-                   : fmt::format(" (saved from another deck: {})", saved_deck));
+                   saved_deck.empty() || saved_deck == f.input
+                       ? std::string()
+                       : fmt::format(" (saved from another deck: {})", saved_deck));
     }
     const nlohmann::json machined = state.value("cards_machined", nlohmann::json());
     if (machined.is_object() && f.input != "-") {
@@ -446,10 +446,9 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     }
     if (!f.save_state.empty()) {
         if (result.stop) {
-            write_file(
-                f.save_state,
-                state_json(result, cabinet.resume_point(), applied, fault_specs, f).dump(1) +
-                    "\n");
+            write_file(f.save_state,
+                       state_json(result, cabinet.resume_point(), applied, fault_specs, f).dump(1) +
+                           "\n");
         } else if (!f.quiet) {
             fmt::print(message_stream(),
                        "  state          the deck completed: no state to save ({} not written)\n",
@@ -522,7 +521,8 @@ void add_run_command(CLI::App& app, Command& selected) {
                 "Examples:\n"
                 "  parsons run decks/samples/patent-example.csv --report out/report.json\n"
                 "  parsons run deck.cbn --trace out/run.vcd --plot out/run.svg\n"
-                "  parsons run deck.cbn --fault drop-impulse:table:120");
+                "  parsons run deck.cbn --fault drop-impulse:table:120   (a missed impulse "
+                "stops it: exit 3)");
     cmd->callback([&selected, flags] { selected = [flags] { return run_deck(*flags); }; });
 }
 

@@ -144,8 +144,8 @@ TEST_CASE("Report: figures are rounded to what they resolve, a saved state keeps
     // A deck whose moves coast past their stops: real positions and times are not round. Card
     // 3's table check is one short, so the machine stops there (check_mismatch).
     write_bytes(dir.path("deck.csv"), with_field(long_listing(6), 3, "table", 8, "8.999"));
-    REQUIRE(run_parsons("run " + q(dir.str("deck.csv")) + " -q --report " +
-                        q(dir.str("r.json")) + " --save-state " + q(dir.str("s.json")))
+    REQUIRE(run_parsons("run " + q(dir.str("deck.csv")) + " -q --report " + q(dir.str("r.json")) +
+                        " --save-state " + q(dir.str("s.json")))
                 .exit_code == 3);
     const json r = read_json(dir.path("r.json"));
     CHECK(on_grid(r["machine_seconds"].get<double>(), 1e-6));
@@ -225,11 +225,11 @@ TEST_CASE("Resume: it names the deck the state was saved from when another is gi
             other = with_field(other, 1, axis, 1, "0"); // spindle forward, not reverse
         }
         write_bytes(dir.path("other.csv"), other);
-        const auto resumed = run_parsons("run " + q(dir.str("other.csv")) + " --resume " +
-                                         q(state_file));
+        const auto resumed =
+            run_parsons("run " + q(dir.str("other.csv")) + " --resume " + q(state_file));
         INFO(resumed.output);
-        CHECK_THAT(resumed.output, Catch::Contains("(saved from another deck: " +
-                                                   dir.str("deck.csv") + ")"));
+        CHECK_THAT(resumed.output,
+                   Catch::Contains("(saved from another deck: " + dir.str("deck.csv") + ")"));
         CHECK_THAT(resumed.output, Catch::Contains("cards 1 to 2 of " + dir.str("other.csv") +
                                                    " are not the cards the stopped run machined"));
     }
@@ -304,13 +304,15 @@ TEST_CASE("Report: docs/report.md names every key a report carries", "[cli][repo
     std::set<std::string> keys;
     // Completed; stopped by a fault with a profile file and a limit; a template cut; a wing cut.
     REQUIRE(run_parsons("run " + sample + " -q --report " + q(dir.str("a.json"))).exit_code == 0);
-    write_bytes(dir.path("p.json"), R"({"name": "worn", "axes": {"table": {"backlash_in": 0.001}}})");
+    write_bytes(dir.path("p.json"),
+                R"({"name": "worn", "axes": {"table": {"backlash_in": 0.001}}})");
     REQUIRE(run_parsons("run " + sample + " -q --profile " + q(dir.str("p.json")) +
                         " --limit table=0:9.5 --fault drop-impulse:table:120 --report " +
                         q(dir.str("b.json")))
                 .exit_code == 3);
-    REQUIRE(run_parsons("gen airfoil --naca 2412 --stations 12 -o " + q(dir.str("t.cbn")))
-                .exit_code == 0);
+    REQUIRE(
+        run_parsons("gen airfoil --naca 2412 --stations 12 -o " + q(dir.str("t.cbn"))).exit_code ==
+        0);
     REQUIRE(run_parsons("run " + q(dir.str("t.cbn")) + " -q --cut " + q(dir.str("t.svg")) +
                         " --report " + q(dir.str("c.json")))
                 .exit_code == 0);
