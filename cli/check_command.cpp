@@ -122,7 +122,8 @@ void add_check_command(CLI::App& app, Command& selected) {
                                   "bad punch, or a finding marked STOP"}}) +
                 "Examples:\n"
                 "  parsons check deck.cbn --limit table=0:9.5\n"
-                "  parsons check decks/samples/patent-example.csv --limit cross=0:2");
+                "  parsons check decks/samples/patent-example.csv --limit cross=0:2   (card 1 "
+                "passes it: exit 3)");
     cmd->callback([&selected, flags] { selected = [flags] { return run_check(*flags); }; });
 }
 

@@ -48,6 +48,7 @@ void add_convert_command(CLI::App& app, Command& selected) {
                 "Examples:\n"
                 "  parsons convert deck.cbn -o deck.bin\n"
                 "  parsons convert deck.cbn -o deck.csv      (back to a listing)\n"
+                "  parsons convert deck.cbn --to text -o cards.dat\n"
                 "  parsons convert cards.dat --format text -o cards.cbn");
     cmd->callback([&selected, flags] { selected = [flags] { return run_convert(*flags); }; });
 }

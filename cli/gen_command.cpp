@@ -256,13 +256,15 @@ void add_gen_command(CLI::App& app, Command& selected) {
     cmd->add_option("--centres", flags->centres,
                     "Write x,y,cx,cy per station (work point and cutter centre, inches)");
     cmd->add_option("--profile", flags->profile, "Machine profile JSON");
-    cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was written"}}) +
-                "Examples:\n"
-                "  parsons gen airfoil --naca 2412 --chord 6 --cutter-radius 0.25 -o naca2412.cbn\n"
-                "  parsons gen airfoil --dat clarky.dat --scallop 0.002 --surface both -o y.cbn\n"
-                "  parsons gen airfoil --naca 0012 --job wing --chord 4 --span 5 --taper 0.6 "
-                "--sweep 10 --scallop 0.002 -o wing.cbn\n"
-                "  parsons run naca2412.cbn --cut cut.svg");
+    cmd->footer(
+        exit_codes_help({{ExitCode::ok, "the deck was written"}}) +
+        "Examples:\n"
+        "  parsons gen airfoil --naca 2412 --chord 6 --cutter-radius 0.25 -o naca2412.cbn\n"
+        "  parsons gen airfoil --dat decks/airfoils/clarky.dat --scallop 0.002 --surface both "
+        "-o y.cbn\n"
+        "  parsons gen airfoil --naca 0012 --job wing --chord 4 --span 5 --taper 0.6 "
+        "--sweep 10 --scallop 0.002 -o wing.cbn\n"
+        "  parsons run naca2412.cbn --cut cut.svg");
     cmd->callback([&selected, flags, scallop] {
         flags->scallop_given = scallop->count() > 0;
         selected = [flags] { return run_gen(*flags); };

@@ -46,9 +46,10 @@ TEST_CASE("Wing: a tapered, swept NACA wing runs to completion and its root and 
     o.sweep_deg = sweep;
     o.cutter_radius_in = radius;
     o.scallop_in = 0.002;
-    const auto airfoil = source.size() == 4
-                             ? naca4(source)
-                             : read_dat(std::string(PARSONS_SOURCE_DIR) + "/decks/airfoils/" + source);
+    const auto airfoil =
+        source.size() == 4
+            ? naca4(source)
+            : read_dat(std::string(PARSONS_SOURCE_DIR) + "/decks/airfoils/" + source);
     const auto profile = axes::default_profile();
     const WingDeck deck = make_wing_deck(*airfoil, o, profile);
     INFO(source << ": " << deck.stations.size() << " stations, planned leftover "
