@@ -336,3 +336,34 @@ TEST_CASE("Report: docs/report.md names every key a report carries", "[cli][repo
         CHECK(doc.find("`" + key + "`") != std::string::npos);
     }
 }
+
+TEST_CASE("Progress: a line on standard error for bench and run on a terminal only, never in "
+          "a pipe or under -q",
+          "[cli][progress]") {
+    TempDir dir;
+    write_bytes(dir.path("deck.csv"), long_listing(6));
+    const std::string bench = "bench --runs 1 --long-cards 4 --trace-cards 2 --short-cards 1000";
+    // `script` gives the command a terminal (a pseudo-terminal) and copies what it printed.
+    auto on_terminal = [](const std::string& args) {
+        return run_shell("script -qec " + q(std::string("'") + PARSONS_EXE + "' " + args) +
+                         " /dev/null");
+    };
+    const auto tty = on_terminal(bench);
+    REQUIRE(tty.exit_code == 0);
+    CHECK_THAT(tty.output, Catch::Contains("\r[#####"));
+    CHECK_THAT(tty.output, Catch::Contains("fast-forward, short moves (4/11)"));
+    CHECK_THAT(tty.output, Catch::Contains("peak memory, 100000 cards (11/11)"));
+    CHECK_THAT(tty.output, Catch::Contains("deck generation"));
+    const auto piped = run_parsons(bench);
+    REQUIRE(piped.exit_code == 0);
+    CHECK(piped.output.find('\r') == std::string::npos);
+    CHECK(piped.output.find("(4/11)") == std::string::npos);
+
+    const auto run_tty = on_terminal("run " + q(dir.str("deck.csv")));
+    REQUIRE(run_tty.exit_code == 0);
+    CHECK_THAT(run_tty.output, Catch::Contains("card 1  machine time"));
+    const auto run_quiet = on_terminal("run -q " + q(dir.str("deck.csv")));
+    CHECK(run_quiet.output.find("machine time") == std::string::npos);
+    const auto run_piped = run_parsons("run " + q(dir.str("deck.csv")));
+    CHECK(run_piped.output.find('\r') == std::string::npos);
+}
