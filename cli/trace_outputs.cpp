@@ -396,6 +396,15 @@ PathCsvWriter::PathCsvWriter(std::ostream& out) : buf_(out) {
 }
 
 void PathCsvWriter::on_motion(double seconds, const std::array<double, 5>& real_in) {
+    std::array<long long, 6> row{std::llround(seconds * 1e6)};
+    for (std::size_t i = 0; i < real_in.size(); ++i) {
+        row.at(i + 1) = std::llround(real_in.at(i) * 1e5);
+    }
+    if (any_ && row == last_) {
+        return; // the same instant and places as the row before (a slow-down, a stop)
+    }
+    last_ = row;
+    any_ = true;
     buf_.put_fixed(seconds, 6);
     for (double x : real_in) {
         buf_.put(',');

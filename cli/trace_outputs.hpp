@@ -159,6 +159,10 @@ public:
 
 private:
     OutputBuffer buf_;
+    // The last row as written (microseconds, hundred-thousandths of an inch): a row that would
+    // print the same is not written again.
+    std::array<long long, 6> last_{};
+    bool any_ = false;
 };
 
 } // namespace parsons::cli

@@ -251,7 +251,7 @@ TEST_CASE("Output formats: every field, event kind, stop reason and signal of ru
 }
 
 TEST_CASE("Output formats: the path CSV of run --path is one time column and one column per axis, "
-          "each documented, times never decreasing",
+          "each documented, times never decreasing, no row repeated",
           "[output-formats][path][docs]") {
     TempDir dir;
     const auto r = run_parsons("run " + q(source_path(kSample)) + " -q --path " +
@@ -272,6 +272,9 @@ TEST_CASE("Output formats: the path CSV of run --path is one time column and one
         const double t = std::stod(last[0]);
         CHECK(t >= last_t);
         last_t = t;
+        if (i > 1) {
+            CHECK(lines[i] != lines[i - 1]); // no row repeats the one before
+        }
     }
     // The last row is where the run left the part: the report's real positions.
     const auto report = nlohmann::json::parse(read_bytes(dir.path("r.json")));
