@@ -11,7 +11,10 @@
 // stop on it: a card passes a limit, a bad punch, or a review finding marked STOP (a card
 // number out of order, a check that is not the travel, a certain sequence stall, the coast of
 // the card before). Exit 2: the deck or a flag cannot be read.
+//
+// With --json the findings are one document for scripts instead (docs/json-output.md).
 #include "cli/commands.hpp"
+#include "cli/json_output.hpp"
 
 #include "cardreader/deck_error.hpp"
 #include "cardreader/deck_review.hpp"
@@ -29,8 +32,19 @@ struct CheckFlags {
     std::string input;
     std::string profile;
     std::vector<std::string> limits;
+    bool json = false;
     DeckFlags deck;
 };
+
+// One finding for --json: what the text line says, with its kind and the card it is on.
+Json finding(long card, const Json& number, std::string_view kind, std::optional<Axis> axis,
+             const std::string& message) {
+    return {{"card", card},
+            {"number", number},
+            {"kind", std::string(kind)},
+            {"axis", axis ? Json(std::string(axis_name(*axis))) : Json(nullptr)},
+            {"message", message}};
+}
 
 ExitCode run_check(const CheckFlags& f) {
     axes::MachineProfile profile = load_profile(f.profile);
@@ -44,6 +58,8 @@ ExitCode run_check(const CheckFlags& f) {
     long warnings = 0;
     long stops = 0; // findings the machine will stop on
     long bad = 0;
+    const bool text = !f.json;
+    Json findings = Json::array();
     while (auto card = deck.cards().next()) {
         ++index;
         // The reader as the profile has it: parsons-1952 senses a double punch as two relays.
@@ -52,25 +68,43 @@ ExitCode run_check(const CheckFlags& f) {
         const DecodeResult& decoded = sensed.decoded;
         if (!decoded) {
             ++bad;
-            fmt::print("card {}: BAD PUNCH: column {}: {} (the reader stops the machine here: "
-                       "bad-punch refusal, an addition of this emulator)\n",
-                       index, decoded.bad_punch->column, decoded.bad_punch->what);
+            const std::string message =
+                fmt::format("column {}: {} (the reader stops the machine here: bad-punch "
+                            "refusal, an addition of this emulator)",
+                            decoded.bad_punch->column, decoded.bad_punch->what);
+            if (text) {
+                fmt::print("card {}: BAD PUNCH: {}\n", index, message);
+            }
+            Json found = finding(index, nullptr, "bad_punch", std::nullopt, message);
+            found["column"] = decoded.bad_punch->column;
+            findings.push_back(std::move(found));
             reviewer.skip();
             continue;
         }
         for (int column : sensed.double_columns) {
             ++warnings;
-            fmt::print("card {}: warning: column {}: double punch: the reader closes two relays "
-                       "of the bank, as a 1952 reader would (profile {}; parsons-safe refuses "
-                       "the card)\n",
-                       index, column, profile.name);
+            const std::string message =
+                fmt::format("column {}: double punch: the reader closes two relays of the bank, "
+                            "as a 1952 reader would (profile {}; parsons-safe refuses the card)",
+                            column, profile.name);
+            if (text) {
+                fmt::print("card {}: warning: {}\n", index, message);
+            }
+            Json found =
+                finding(index, decoded.orders.number, "double_punch", std::nullopt, message);
+            found["column"] = column;
+            findings.push_back(std::move(found));
         }
         const CardOrders& o = decoded.orders;
         for (const ReviewNote& n : reviewer.review(o)) {
             ++(n.stops ? stops : warnings);
-            fmt::print("card {} (number {:04}): {}: {}{}\n", index, o.number,
-                       n.stops ? "STOP" : "warning",
-                       n.axis ? fmt::format("{}: ", axis_name(*n.axis)) : "", n.message);
+            if (text) {
+                fmt::print("card {} (number {:04}): {}: {}{}\n", index, o.number,
+                           n.stops ? "STOP" : "warning",
+                           n.axis ? fmt::format("{}: ", axis_name(*n.axis)) : "", n.message);
+            }
+            findings.push_back(
+                finding(index, o.number, n.stops ? "stop" : "warning", n.axis, n.message));
         }
         for (Axis a : kAxes) {
             const auto& p = profile.axes.at(axis_index(a));
@@ -79,28 +113,58 @@ ExitCode run_check(const CheckFlags& f) {
             const double move = (x.motion == Motion::forward ? 1 : -1) * x.check / 1000.0;
             const double to = pos + move;
             std::string past;
+            double limit = 0;
+            const char* limit_kind = "";
             if (p.soft_limits && (to > p.soft_max_in || to < p.soft_min_in)) {
+                limit = to > p.soft_max_in ? p.soft_max_in : p.soft_min_in;
+                limit_kind = "soft_limit";
                 past = fmt::format("its soft limit {:.3f} in (movement range {:.3f} .. {:.3f} in)",
-                                   to > p.soft_max_in ? p.soft_max_in : p.soft_min_in,
-                                   p.soft_min_in, p.soft_max_in);
+                                   limit, p.soft_min_in, p.soft_max_in);
             } else if (to > p.travel_max_in || to < p.travel_min_in) {
-                past = fmt::format("its limit switch at {:.3f} in",
-                                   to > p.travel_max_in ? p.travel_max_in : p.travel_min_in);
+                limit = to > p.travel_max_in ? p.travel_max_in : p.travel_min_in;
+                limit_kind = "limit_switch";
+                past = fmt::format("its limit switch at {:.3f} in", limit);
             }
             if (!past.empty()) {
                 ++passing;
-                fmt::print("card {} (number {:04}): {} moves {:+.3f} in, from {:.3f} to {:.3f} in, "
-                           "past {}\n",
-                           index, o.number, axis_name(a), move, pos, to, past);
+                const std::string message =
+                    fmt::format("{} moves {:+.3f} in, from {:.3f} to {:.3f} in, past {}",
+                                axis_name(a), move, pos, to, past);
+                if (text) {
+                    fmt::print("card {} (number {:04}): {}\n", index, o.number, message);
+                }
+                Json found = finding(index, o.number, "limit", a, message);
+                found["from_in"] = rounded_inches(pos);
+                found["to_in"] = rounded_inches(to);
+                found["limit_in"] = rounded_inches(limit);
+                found["limit_kind"] = limit_kind;
+                findings.push_back(std::move(found));
             }
             pos = to;
         }
     }
-    fmt::print("{} card{} checked: {} move{} past a limit, {} with bad punches, {} other "
-               "finding{} the machine stops on, {} warning{}\n",
-               index, index == 1 ? "" : "s", passing, passing == 1 ? "" : "s", bad, stops,
-               stops == 1 ? "" : "s", warnings, warnings == 1 ? "" : "s");
-    return passing > 0 || bad > 0 || stops > 0 ? ExitCode::machine_stop : ExitCode::ok;
+    const bool runs_through = passing == 0 && bad == 0 && stops == 0;
+    if (text) {
+        fmt::print("{} card{} checked: {} move{} past a limit, {} with bad punches, {} other "
+                   "finding{} the machine stops on, {} warning{}\n",
+                   index, index == 1 ? "" : "s", passing, passing == 1 ? "" : "s", bad, stops,
+                   stops == 1 ? "" : "s", warnings, warnings == 1 ? "" : "s");
+    } else {
+        Json doc = json_document("check");
+        doc["deck"] = f.input;
+        doc["format"] = std::string(format_name(deck.options().format));
+        doc["layout"] = layout.name;
+        doc["profile"] = profile.name;
+        doc["cards_checked"] = index;
+        doc["findings"] = std::move(findings);
+        doc["past_limit"] = passing;
+        doc["bad_punches"] = bad;
+        doc["stops"] = stops;
+        doc["warnings"] = warnings;
+        doc["will_run_through"] = runs_through;
+        print_json_document(doc);
+    }
+    return runs_through ? ExitCode::ok : ExitCode::machine_stop;
 }
 
 } // namespace
@@ -114,6 +178,7 @@ void add_check_command(CLI::App& app, Command& selected) {
     cmd->add_option("--profile", flags->profile, "Machine profile JSON (see 'parsons profile')");
     cmd->add_option("--limit", flags->limits,
                     "Soft limits of the job, AXIS=MIN:MAX inches (e.g. table=0:9.5)");
+    add_json_flag(*cmd, flags->json);
     add_input_flags(*cmd, flags->deck);
     cmd->footer(exit_codes_help({{ExitCode::ok, "the deck will run through (warnings of risks "
                                                 "may stand)"},
@@ -123,7 +188,9 @@ void add_check_command(CLI::App& app, Command& selected) {
                 "Examples:\n"
                 "  parsons check deck.cbn --limit table=0:9.5\n"
                 "  parsons check decks/samples/patent-example.csv --limit cross=0:2   (card 1 "
-                "passes it: exit 3)");
+                "passes it: exit 3)\n"
+                "  parsons check decks/samples/patent-example.csv --limit table=0:8.9 --json   "
+                "(exit 3)");
     cmd->callback([&selected, flags] { selected = [flags] { return run_check(*flags); }; });
 }
 

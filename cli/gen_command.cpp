@@ -1,7 +1,9 @@
 // parsons gen airfoil: the 1952 arithmetic. Compute closely spaced points on an airfoil,
 // offset each by the cutter radius to the cutter-centre locus, and punch one card per station.
+// With --json, what it prints about the deck is one document for scripts (docs/json-output.md).
 #include "cli/commands.hpp"
 #include "cli/deck_files.hpp"
+#include "cli/json_output.hpp"
 #include "cli/output_file.hpp"
 
 #include "cardreader/deck_error.hpp"
@@ -41,6 +43,7 @@ struct GenFlags {
     std::string to;
     std::string centres;
     std::string profile;
+    bool json = false;
 };
 
 decks::TemplateOptions options_from(const GenFlags& f) {
@@ -147,37 +150,46 @@ GeneratedJob generate_job(const decks::JobDescription& description,
 
 namespace {
 
-ExitCode run_gen(const GenFlags& f) {
-    if (f.naca.empty() == f.dat.empty()) {
-        throw DeckError("gen airfoil: give exactly one of --naca DIGITS or --dat FILE");
+// What print_summary says, for --json.
+Json summary_json(const GenFlags& f, const GeneratedJob& job) {
+    const auto& description = job.description;
+    Json doc = json_document("gen");
+    doc["generator"] = "airfoil";
+    doc["job"] = description.kind == decks::JobKind::wing ? "wing" : "template";
+    doc["deck"] = f.output;
+    doc["format"] = std::string(
+        cardreader::format_name(deck_options(f.output, f.to, DeckFlags{}, "--to").format));
+    doc["job_file"] = f.output + ".job.json";
+    doc["centres"] = f.centres.empty() ? Json(nullptr) : Json(f.centres);
+    doc["airfoil"] = description.airfoil;
+    doc["chord_in"] = f.chord_in;
+    doc["cutter_radius_in"] = f.radius_in;
+    if (description.kind == decks::JobKind::wing) {
+        const auto& w = job.wing;
+        doc["span_in"] = f.span_in;
+        doc["taper"] = f.taper;
+        doc["sweep_deg"] = f.sweep_deg;
+        doc["cards"] = w.cards.size();
+        doc["stations"] = w.stations.size();
+        doc["largest_scallop_in"] = w.planned_leftover_in;
+        doc["zero_in"] = {{"cross", w.zero.x()}, {"table", w.zero.y()}, {"vertical", w.zero.z()}};
+    } else {
+        const auto& d = job.deck;
+        doc["surface"] = f.surface;
+        doc["female"] = f.female;
+        doc["cards"] = d.cards.size();
+        doc["stations"] = d.stations.size();
+        doc["approach_cards"] = d.cards.size() + 1 - d.stations.size();
+        doc["corner_cards"] = d.corner_cards;
+        doc["largest_scallop_in"] = d.planned_leftover_in;
+        doc["largest_dip_in"] = d.planned_gouge_in;
+        doc["work_zero_in"] = {{"table", d.work_zero_in.x()}, {"cross", d.work_zero_in.y()}};
     }
-    decks::JobDescription description;
-    description.airfoil = f.naca.empty() ? "dat " + f.dat : "naca " + f.naca;
-    description.closed_trailing_edge = f.closed_te;
-    description.options = options_from(f);
-    if (f.job == "wing") {
-        if (f.surface != "upper" || f.female) {
-            throw DeckError("gen airfoil: the wing job cuts the upper surface of a male wing (Fig. "
-                            "5); turn the wing over for the lower surface");
-        }
-        description.kind = decks::JobKind::wing;
-        description.wing.root_chord_in = f.chord_in;
-        description.wing.span_in = f.span_in;
-        description.wing.taper = f.taper;
-        description.wing.sweep_deg = f.sweep_deg;
-        description.wing.cutter_radius_in = f.radius_in;
-        description.wing.stations = f.stations;
-        description.wing.spacing = description.options.spacing;
-        description.wing.scallop_in = f.scallop_in;
-    }
-    if (f.scallop_given && !(f.scallop_in > 0 && std::isfinite(f.scallop_in))) {
-        throw DeckError(fmt::format("gen airfoil: --scallop {}: the scallop (the cusp left "
-                                    "standing between two passes) must be a positive number of "
-                                    "inches, e.g. 0.002",
-                                    f.scallop_in));
-    }
-    const auto profile = load_profile(f.profile);
-    const GeneratedJob job = generate_job(description, profile, f.output, f.to, f.centres);
+    return doc;
+}
+
+void print_summary(const GenFlags& f, const GeneratedJob& job) {
+    const auto& description = job.description;
     std::FILE* out = message_stream();
     if (description.kind == decks::JobKind::wing) {
         const auto& w = job.wing;
@@ -212,6 +224,46 @@ ExitCode run_gen(const GenFlags& f) {
                f.output == "-" ? " (no job description: give run --job for --cut)"
                                : " and " + f.output + ".job.json",
                f.centres.empty() ? "" : " and " + f.centres);
+}
+
+ExitCode run_gen(const GenFlags& f) {
+    if (f.naca.empty() == f.dat.empty()) {
+        throw DeckError("gen airfoil: give exactly one of --naca DIGITS or --dat FILE");
+    }
+    decks::JobDescription description;
+    description.airfoil = f.naca.empty() ? "dat " + f.dat : "naca " + f.naca;
+    description.closed_trailing_edge = f.closed_te;
+    description.options = options_from(f);
+    if (f.job == "wing") {
+        if (f.surface != "upper" || f.female) {
+            throw DeckError("gen airfoil: the wing job cuts the upper surface of a male wing (Fig. "
+                            "5); turn the wing over for the lower surface");
+        }
+        description.kind = decks::JobKind::wing;
+        description.wing.root_chord_in = f.chord_in;
+        description.wing.span_in = f.span_in;
+        description.wing.taper = f.taper;
+        description.wing.sweep_deg = f.sweep_deg;
+        description.wing.cutter_radius_in = f.radius_in;
+        description.wing.stations = f.stations;
+        description.wing.spacing = description.options.spacing;
+        description.wing.scallop_in = f.scallop_in;
+    }
+    if (f.scallop_given && !(f.scallop_in > 0 && std::isfinite(f.scallop_in))) {
+        throw DeckError(fmt::format("gen airfoil: --scallop {}: the scallop (the cusp left "
+                                    "standing between two passes) must be a positive number of "
+                                    "inches, e.g. 0.002",
+                                    f.scallop_in));
+    }
+    refuse_json_beside_standard_output("gen airfoil", f.json, "-o", f.output);
+    refuse_json_beside_standard_output("gen airfoil", f.json, "--centres", f.centres);
+    const auto profile = load_profile(f.profile);
+    const GeneratedJob job = generate_job(description, profile, f.output, f.to, f.centres);
+    if (f.json) {
+        print_json_document(summary_json(f, job));
+    } else {
+        print_summary(f, job);
+    }
     return ExitCode::ok;
 }
 
@@ -256,6 +308,7 @@ void add_gen_command(CLI::App& app, Command& selected) {
     cmd->add_option("--centres", flags->centres,
                     "Write x,y,cx,cy per station (work point and cutter centre, inches)");
     cmd->add_option("--profile", flags->profile, "Machine profile JSON");
+    add_json_flag(*cmd, flags->json);
     cmd->footer(
         exit_codes_help({{ExitCode::ok, "the deck was written"}}) +
         "Examples:\n"
@@ -264,6 +317,7 @@ void add_gen_command(CLI::App& app, Command& selected) {
         "-o y.cbn\n"
         "  parsons gen airfoil --naca 0012 --job wing --chord 4 --span 5 --taper 0.6 "
         "--sweep 10 --scallop 0.002 -o wing.cbn\n"
+        "  parsons gen airfoil --naca 2412 --scallop 0.002 -o naca2412.cbn --json\n"
         "  parsons run naca2412.cbn --cut cut.svg");
     cmd->callback([&selected, flags, scallop] {
         flags->scallop_given = scallop->count() > 0;

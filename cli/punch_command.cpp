@@ -1,6 +1,8 @@
 // parsons punch LISTING -o DECK: the keypunch. Reads a listing, punches one card per five rows.
+// With --json, what it says about the deck is one document for scripts (docs/json-output.md).
 #include "cli/commands.hpp"
 #include "cli/deck_files.hpp"
+#include "cli/json_output.hpp"
 #include "cli/output_file.hpp"
 
 #include <fmt/format.h>
@@ -14,10 +16,12 @@ struct PunchFlags {
     std::string listing;
     std::string output;
     std::string to;
+    bool json = false;
     DeckFlags deck;
 };
 
 ExitCode run_punch(const PunchFlags& f) {
+    refuse_json_beside_standard_output("punch", f.json, "-o", f.output);
     DeckFlags in = f.deck;
     in.format = "listing";
     InputDeck listing(f.listing, in);
@@ -30,6 +34,17 @@ ExitCode run_punch(const PunchFlags& f) {
         ++cards;
     }
     out.commit();
+    if (f.json) {
+        Json doc = json_document("punch");
+        doc["listing"] = f.listing;
+        doc["deck"] = f.output;
+        doc["format"] = std::string(cardreader::format_name(out_options.format));
+        doc["layout"] = out_options.layout->name;
+        doc["code"] = f.deck.code;
+        doc["cards"] = cards;
+        print_json_document(doc);
+        return ExitCode::ok;
+    }
     fmt::print(message_stream(), "punched {} card{} from {} into {} ({}, layout {})\n", cards,
                cards == 1 ? "" : "s", f.listing, f.output,
                cardreader::format_name(out_options.format), out_options.layout->name);
@@ -51,8 +66,11 @@ void add_punch_command(CLI::App& app, Command& selected) {
     cmd->add_option("--code", flags->deck.code, "Keypunch code for text card images: 029 or 026")
         ->capture_default_str();
     cmd->add_option("--layout", flags->deck.layout, "Card layout")->capture_default_str();
+    add_json_flag(*cmd, flags->json);
     cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was punched"}}) +
-                "Example:\n  parsons punch decks/samples/patent-example.csv -o deck.cbn");
+                "Examples:\n"
+                "  parsons punch decks/samples/patent-example.csv -o deck.cbn\n"
+                "  parsons punch decks/samples/patent-example.csv -o deck.txt --json");
     cmd->callback([&selected, flags] { selected = [flags] { return run_punch(*flags); }; });
 }
 

@@ -1,7 +1,9 @@
-// parsons show DECK [--svg DIR]: interpret every card field by field, as the operator reads
-// the printed card, with warnings for what the machine will stop on; pictures of the cards.
+// parsons show DECK [--svg DIR] [--json]: interpret every card field by field, as the operator
+// reads the printed card, with warnings for what the machine will stop on; pictures of the
+// cards. With --json the same, as one document for scripts (docs/json-output.md).
 #include "cli/commands.hpp"
 #include "cli/deck_files.hpp"
+#include "cli/json_output.hpp"
 #include "cli/output_file.hpp"
 
 #include "cardreader/card_svg.hpp"
@@ -23,10 +25,12 @@ struct ShowFlags {
     std::string input;
     std::string svg_dir;
     std::string profile;
+    bool json = false;
     DeckFlags deck;
 };
 
-std::string axis_columns(const CardLayout& layout, Axis a) {
+// The first and last columns of an axis's section of the card.
+std::pair<int, int> axis_column_span(const CardLayout& layout, Axis a) {
     int first = kColumns;
     int last = 1;
     for (const LayoutField& f : layout.fields) {
@@ -35,6 +39,11 @@ std::string axis_columns(const CardLayout& layout, Axis a) {
             last = std::max(last, f.last_column());
         }
     }
+    return {first, last};
+}
+
+std::string axis_columns(const CardLayout& layout, Axis a) {
+    const auto [first, last] = axis_column_span(layout, a);
     return fmt::format("{}-{}", first, last);
 }
 
@@ -72,6 +81,38 @@ void print_card(long index, const DecodeResult& decoded, const CardLayout& layou
     }
 }
 
+// The card as print_card shows it, for --json. A slow-down the layout has no field for is
+// null, as a blank one is; slow_down_fields says how many the layout gives the axis.
+Json card_json(long index, const CardOrders& o, const CardLayout& layout) {
+    Json axes = Json::object();
+    for (Axis a : kAxes) {
+        const AxisOrder& ax = o.axis(a);
+        Json sequence = Json::array();
+        for (int k = 1; k <= kSequencePositions; ++k) {
+            if ((ax.sequence & (1U << (k - 1))) != 0) {
+                sequence.push_back(k);
+            }
+        }
+        const auto [first, last] = axis_column_span(layout, a);
+        const int slow_fields = (layout.find(FieldKind::slow_down_1, a) ? 1 : 0) +
+                                (layout.find(FieldKind::slow_down_2, a) ? 1 : 0);
+        axes[std::string(axis_name(a))] = {{"columns", {{"first", first}, {"last", last}}},
+                                           {"motion", ax.motion == Motion::forward ? "+" : "-"},
+                                           {"speed", ax.start_speed},
+                                           {"slow_down_fields", slow_fields},
+                                           {"slow_down_1", inches_json(ax.slow_down.at(0))},
+                                           {"slow_down_2", inches_json(ax.slow_down.at(1))},
+                                           {"stop", inches_json(ax.stop)},
+                                           {"check", inches_json(ax.check)},
+                                           {"sequence", sequence}};
+    }
+    return {{"index", index},
+            {"number", o.number},
+            {"spindle", std::string(spindle_name(o.spindle))},
+            {"axes", axes},
+            {"warnings", Json::array()}};
+}
+
 ExitCode run_show(const ShowFlags& f) {
     const axes::MachineProfile profile = load_profile(f.profile);
     InputDeck deck(f.input, f.deck);
@@ -79,8 +120,16 @@ ExitCode run_show(const ShowFlags& f) {
     if (!f.svg_dir.empty()) {
         make_folder(f.svg_dir);
     }
-    fmt::print("deck {} ({}, layout {})\n\n", f.input, format_name(deck.options().format),
-               layout.name);
+    const bool text = !f.json;
+    Json doc = json_document("show");
+    if (text) {
+        fmt::print("deck {} ({}, layout {})\n\n", f.input, format_name(deck.options().format),
+                   layout.name);
+    }
+    doc["deck"] = f.input;
+    doc["format"] = std::string(format_name(deck.options().format));
+    doc["layout"] = layout.name;
+    Json cards = Json::array();
 
     DeckReviewer reviewer(review_dynamics(profile));
     long index = 0;
@@ -90,25 +139,46 @@ ExitCode run_show(const ShowFlags& f) {
     while (auto card = deck.cards().next()) {
         ++index;
         DecodeResult decoded = decode(*card, layout);
-        print_card(index, decoded, layout);
+        if (text) {
+            print_card(index, decoded, layout);
+        }
+        // A card with a bad punch is given by its index and the punch alone: its other
+        // fields were not all read.
+        Json card_doc = decoded ? card_json(index, decoded.orders, layout)
+                                : Json{{"index", index},
+                                       {"bad_punch",
+                                        {{"column", decoded.bad_punch->column},
+                                         {"what", decoded.bad_punch->what}}}};
         if (!decoded) {
             ++bad_cards;
             const std::string where =
                 DeckError::at_card_column(f.input, index, decoded.bad_punch->column,
                                           decoded.bad_punch->what)
                     .what();
-            fmt::print("  BAD PUNCH: column {}: {} (the reader stops the machine here)\n",
-                       decoded.bad_punch->column, decoded.bad_punch->what);
+            if (text) {
+                fmt::print("  BAD PUNCH: column {}: {} (the reader stops the machine here)\n",
+                           decoded.bad_punch->column, decoded.bad_punch->what);
+            }
             first_bad = first_bad.value_or(where);
             reviewer.skip();
         } else {
             for (const ReviewNote& n : reviewer.review(decoded.orders)) {
                 ++notes;
-                fmt::print("  warning: {}{}\n",
-                           n.axis ? fmt::format("{}: ", axis_name(*n.axis)) : "", n.message);
+                if (text) {
+                    fmt::print("  warning: {}{}\n",
+                               n.axis ? fmt::format("{}: ", axis_name(*n.axis)) : "", n.message);
+                }
+                card_doc["warnings"].push_back(
+                    {{"card", index},
+                     {"axis", n.axis ? Json(std::string(axis_name(*n.axis))) : Json(nullptr)},
+                     {"message", n.message},
+                     {"stops", n.stops}});
             }
         }
-        fmt::print("\n");
+        if (text) {
+            fmt::print("\n");
+        }
+        cards.push_back(std::move(card_doc));
         if (!f.svg_dir.empty()) {
             CardPictureNotes pic;
             pic.caption = fmt::format("{} · card {} · card number {:04} · layout {}",
@@ -120,11 +190,21 @@ ExitCode run_show(const ShowFlags& f) {
             write_file(path.string(), card_svg(*card, layout, pic, deck.options().code));
         }
     }
-    fmt::print("{} card{} read, {} warning{}, {} with bad punches\n", index, index == 1 ? "" : "s",
-               notes, notes == 1 ? "" : "s", bad_cards);
-    if (!f.svg_dir.empty()) {
-        fmt::print("card pictures: {} .. card-{:04}.svg\n",
-                   (std::filesystem::path(f.svg_dir) / "card-0001.svg").string(), index);
+    if (text) {
+        fmt::print("{} card{} read, {} warning{}, {} with bad punches\n", index,
+                   index == 1 ? "" : "s", notes, notes == 1 ? "" : "s", bad_cards);
+        if (!f.svg_dir.empty()) {
+            fmt::print("card pictures: {} .. card-{:04}.svg\n",
+                       (std::filesystem::path(f.svg_dir) / "card-0001.svg").string(), index);
+        }
+    } else {
+        doc["cards"] = std::move(cards);
+        doc["cards_read"] = index;
+        doc["warning_count"] = notes;
+        doc["bad_punch_cards"] = bad_cards;
+        doc["svg_dir"] = f.svg_dir.empty() ? Json(nullptr) : Json(f.svg_dir);
+        // A deck with bad punches is still shown whole, then refused (exit 2), as the text is.
+        print_json_document(doc);
     }
     if (first_bad) {
         throw DeckError(*first_bad + (bad_cards > 1 ? fmt::format(" (and {} more cards with bad "
@@ -146,12 +226,14 @@ void add_show_command(CLI::App& app, Command& selected) {
                     "Write one picture per card, DIR/card-0001.svg, ... (created if missing)");
     cmd->add_option("--profile", flags->profile,
                     "Machine profile JSON, for the coast estimate (see 'parsons profile')");
+    add_json_flag(*cmd, flags->json);
     add_input_flags(*cmd, flags->deck);
     cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was shown (its warnings do not "
                                                 "change the code; 'parsons check' judges)"}}) +
                 "Examples:\n"
                 "  parsons show decks/samples/patent-example.csv\n"
-                "  parsons show deck.cbn --svg out/cards");
+                "  parsons show deck.cbn --svg out/cards\n"
+                "  parsons show decks/samples/patent-example.csv --json");
     cmd->callback([&selected, flags] { selected = [flags] { return run_show(*flags); }; });
 }
 
