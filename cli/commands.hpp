@@ -58,8 +58,11 @@ struct GeneratedJob {
     decks::WingDeck wing;     // the wing job
     std::size_t cards = 0;
 };
+class ProgressLine;
+// `progress` (may be null): where to show how far the generator is (gen on a terminal).
 GeneratedJob generate_job(const decks::JobDescription& description,
                           const axes::MachineProfile& profile, const std::string& output,
-                          const std::string& to, const std::string& centres);
+                          const std::string& to, const std::string& centres,
+                          ProgressLine* progress = nullptr);
 
 } // namespace parsons::cli

@@ -5,6 +5,7 @@
 #include "cli/deck_files.hpp"
 #include "cli/json_output.hpp"
 #include "cli/output_file.hpp"
+#include "cli/progress_line.hpp"
 
 #include "cardreader/deck_error.hpp"
 #include "cardreader/layout.hpp"
@@ -66,13 +67,19 @@ decks::TemplateOptions options_from(const GenFlags& f) {
 namespace {
 
 cardreader::DeckFingerprint write_cards(const std::vector<cardreader::CardOrders>& cards,
-                                        const std::string& output, const std::string& to) {
+                                        const std::string& output, const std::string& to,
+                                        ProgressLine* progress) {
     cardreader::DeckFingerprint fingerprint;
     DeckFlags flags;
     const auto options = deck_options(output, to, flags, "--to");
     OutputFile deck_file(output);
     auto sink = cardreader::open_card_sink(deck_file.stream(), options);
     for (const auto& card : cards) {
+        if (progress != nullptr) {
+            progress->show(
+                static_cast<double>(fingerprint.cards()) / static_cast<double>(cards.size()),
+                fmt::format("punching card {} of {}", fingerprint.cards() + 1, cards.size()));
+        }
         auto punched = cardreader::encode(card, cardreader::fig8_layout());
         if (!punched) {
             throw DeckError(fmt::format("gen airfoil: card {}: {}", card.number, *punched.error));
@@ -99,8 +106,12 @@ void refuse_unreachable_scallop(double target_in, double planned_in, const char*
 
 GeneratedJob generate_job(const decks::JobDescription& description,
                           const axes::MachineProfile& profile, const std::string& output,
-                          const std::string& to, const std::string& centres) {
+                          const std::string& to, const std::string& centres,
+                          ProgressLine* progress) {
     GeneratedJob job{description, {}, {}, 0};
+    if (progress != nullptr) {
+        progress->show(0, fmt::format("{}: computing the stations", description.airfoil), true);
+    }
     cardreader::DeckFingerprint fingerprint;
     std::string csv = "x,y,cx,cy\n";
     try {
@@ -110,7 +121,7 @@ GeneratedJob generate_job(const decks::JobDescription& description,
             job.description.wing_zero_in = job.wing.zero;
             refuse_unreachable_scallop(description.wing.scallop_in, job.wing.planned_leftover_in,
                                        "at most 400 stations along the chord");
-            fingerprint = write_cards(job.wing.cards, output, to);
+            fingerprint = write_cards(job.wing.cards, output, to, progress);
             job.cards = job.wing.cards.size();
             csv = "u,root_cx,root_cy,root_cz,tip_cx,tip_cy,tip_cz,tilt_deg,swivel_deg\n";
             for (const auto& s : job.wing.stations) {
@@ -125,7 +136,7 @@ GeneratedJob generate_job(const decks::JobDescription& description,
             job.description.work_zero_in = job.deck.work_zero_in;
             refuse_unreachable_scallop(description.options.scallop_in, job.deck.planned_leftover_in,
                                        "at least 0.0001 of the path apart");
-            fingerprint = write_cards(job.deck.cards, output, to);
+            fingerprint = write_cards(job.deck.cards, output, to, progress);
             job.cards = job.deck.cards.size();
             for (const auto& s : job.deck.stations) {
                 csv += fmt::format("{:.6f},{:.6f},{:.6f},{:.6f}\n", s.work.x(), s.work.y(),
@@ -258,7 +269,10 @@ ExitCode run_gen(const GenFlags& f) {
     refuse_json_beside_standard_output("gen airfoil", f.json, "-o", f.output);
     refuse_json_beside_standard_output("gen airfoil", f.json, "--centres", f.centres);
     const auto profile = load_profile(f.profile);
-    const GeneratedJob job = generate_job(description, profile, f.output, f.to, f.centres);
+    ProgressLine progress; // on a terminal only
+    const GeneratedJob job =
+        generate_job(description, profile, f.output, f.to, f.centres, &progress);
+    progress.clear();
     if (f.json) {
         print_json_document(summary_json(f, job));
     } else {

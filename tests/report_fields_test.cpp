@@ -337,8 +337,8 @@ TEST_CASE("Report: docs/report.md names every key a report carries", "[cli][repo
     }
 }
 
-TEST_CASE("Progress: a line on standard error for bench and run on a terminal only, never in "
-          "a pipe or under -q",
+TEST_CASE("Progress: a line on standard error for bench, run and gen on a terminal only, never "
+          "in a pipe or under -q",
           "[cli][progress]") {
     TempDir dir;
     write_bytes(dir.path("deck.csv"), long_listing(6));
@@ -366,4 +366,12 @@ TEST_CASE("Progress: a line on standard error for bench and run on a terminal on
     CHECK(run_quiet.output.find("machine time") == std::string::npos);
     const auto run_piped = run_parsons("run " + q(dir.str("deck.csv")));
     CHECK(run_piped.output.find('\r') == std::string::npos);
+
+    const std::string gen = "gen airfoil --naca 2412 --stations 20000 -o " + q(dir.str("g.cbn"));
+    const auto gen_tty = on_terminal(gen);
+    REQUIRE(gen_tty.exit_code == 0);
+    CHECK_THAT(gen_tty.output, Catch::Contains("naca 2412: computing the stations"));
+    CHECK_THAT(gen_tty.output, Catch::Contains("punching card 1 of 20002"));
+    const auto gen_piped = run_parsons(gen);
+    CHECK(gen_piped.output.find("computing the stations") == std::string::npos);
 }
