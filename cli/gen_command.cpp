@@ -78,7 +78,8 @@ cardreader::DeckFingerprint write_cards(const std::vector<cardreader::CardOrders
         if (progress != nullptr) {
             progress->show(
                 static_cast<double>(fingerprint.cards()) / static_cast<double>(cards.size()),
-                fmt::format("punching card {} of {}", fingerprint.cards() + 1, cards.size()));
+                fmt::format("punching card {} of {}", fingerprint.cards() + 1, cards.size()),
+                fingerprint.cards() == 0); // a new stage: drawn at once
         }
         auto punched = cardreader::encode(card, cardreader::fig8_layout());
         if (!punched) {
