@@ -186,7 +186,7 @@ void add_check_command(CLI::App& app, Command& selected) {
                                   "the machine will stop on the deck: a card passes a limit, a "
                                   "bad punch, or a finding marked STOP"}}) +
                 "Examples:\n"
-                "  parsons check deck.cbn --limit table=0:9.5\n"
+                "  parsons check decks/samples/patent-example.csv --limit table=0:9.5\n"
                 "  parsons check decks/samples/patent-example.csv --limit cross=0:2   (card 1 "
                 "passes it: exit 3)\n"
                 "  parsons check decks/samples/patent-example.csv --limit table=0:8.9 --json   "

@@ -46,9 +46,9 @@ void add_convert_command(CLI::App& app, Command& selected) {
     add_input_flags(*cmd, flags->deck);
     cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was converted"}}) +
                 "Examples:\n"
-                "  parsons convert deck.cbn -o deck.bin\n"
-                "  parsons convert deck.cbn -o deck.csv      (back to a listing)\n"
-                "  parsons convert deck.cbn --to text -o cards.dat\n"
+                "  parsons convert decks/samples/patent-example.csv -o deck.bin\n"
+                "  parsons convert deck.bin -o deck.csv      (back to a listing)\n"
+                "  parsons convert deck.bin --to text -o cards.dat\n"
                 "  parsons convert cards.dat --format text -o cards.cbn");
     cmd->callback([&selected, flags] { selected = [flags] { return run_convert(*flags); }; });
 }

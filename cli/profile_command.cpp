@@ -26,7 +26,7 @@ void add_profile_command(CLI::App& app, Command& selected) {
     cmd->footer(exit_codes_help({{ExitCode::ok, "the profile was printed"}}) +
                 "Examples:\n"
                 "  parsons profile > my-machine.json     (then edit it)\n"
-                "  parsons run deck.cbn --profile my-machine.json");
+                "  parsons run decks/samples/patent-example.csv --profile my-machine.json");
     cmd->callback([&selected, file] { selected = [file] { return run_profile(*file); }; });
 }
 

@@ -519,9 +519,10 @@ void add_run_command(CLI::App& app, Command& selected) {
                                  {ExitCode::interrupted, "stopped by the operator with Ctrl-C"},
                                  {ExitCode::terminated, "stopped by SIGTERM"}}) +
                 "Examples:\n"
-                "  parsons run decks/samples/patent-example.csv --report out/report.json\n"
-                "  parsons run deck.cbn --trace out/run.vcd --plot out/run.svg\n"
-                "  parsons run deck.cbn --fault drop-impulse:table:120   (a missed impulse "
+                "  parsons run decks/samples/patent-example.csv --report report.json\n"
+                "  parsons run decks/samples/patent-example.csv --trace run.vcd --plot run.svg\n"
+                "  parsons run decks/samples/patent-example.csv --fault drop-impulse:table:120   "
+                "(a missed impulse "
                 "stops it: exit 3)");
     cmd->callback([&selected, flags] { selected = [flags] { return run_deck(*flags); }; });
 }

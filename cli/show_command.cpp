@@ -232,7 +232,7 @@ void add_show_command(CLI::App& app, Command& selected) {
                                                 "change the code; 'parsons check' judges)"}}) +
                 "Examples:\n"
                 "  parsons show decks/samples/patent-example.csv\n"
-                "  parsons show deck.cbn --svg out/cards\n"
+                "  parsons show decks/samples/patent-example.csv --svg cards\n"
                 "  parsons show decks/samples/patent-example.csv --json");
     cmd->callback([&selected, flags] { selected = [flags] { return run_show(*flags); }; });
 }
