@@ -68,7 +68,18 @@ int connect_socket(const std::string& path, const std::string& name) {
     return fd;
 }
 
+const volatile std::sig_atomic_t* g_give_up = nullptr;
+
+// An EINTR to try again after: not once the operator has stopped the run.
+bool try_again(int error) {
+    return error == EINTR && (g_give_up == nullptr || *g_give_up == 0);
+}
+
 } // namespace
+
+void give_up_on_signal(const volatile std::sig_atomic_t* flag) {
+    g_give_up = flag;
+}
 
 DescriptorBuffer::DescriptorBuffer() : buffer_(new char[kBufferBytes]) {
     setp(buffer_.get(), buffer_.get() + kBufferBytes);
@@ -78,7 +89,7 @@ bool DescriptorBuffer::write_out(const char* data, std::size_t size) {
     while (size > 0 && error_ == 0) {
         const ssize_t n = ::write(fd_, data, size);
         if (n < 0) {
-            if (errno != EINTR) {
+            if (!try_again(errno)) {
                 error_ = errno;
             }
             continue;
@@ -169,7 +180,7 @@ OutputFile::OutputFile(std::string path) : path_(std::move(path)), out_(&buffer_
         // waits here for its reader, as any Unix program writing to one does.)
         do {
             fd_ = ::open(target_.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
-        } while (fd_ < 0 && errno == EINTR);
+        } while (fd_ < 0 && try_again(errno));
         if (fd_ < 0) {
             throw DeckError::in_file(path_, "cannot write: " + reason(errno));
         }

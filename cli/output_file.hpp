@@ -18,6 +18,7 @@
 // output included, is a DeckError naming the output and the system's reason (exit 2).
 #pragma once
 
+#include <csignal>
 #include <memory>
 #include <ostream>
 #include <streambuf>
@@ -85,6 +86,11 @@ void write_file(const std::string& path, const std::string& contents);
 bool standard_output_taken();
 // Where the summary lines of a command go: stdout, or stderr when stdout carries an output.
 std::FILE* message_stream();
+
+// The operator's stop: once *flag is non-zero (a signal handler sets it), an open or a write
+// that the signal interrupted gives up with a DeckError instead of trying again (a FIFO whose
+// reader never comes, or stops reading). Null: always try again.
+void give_up_on_signal(const volatile std::sig_atomic_t* flag);
 
 // Standard output as the process ends: flushes it; throws DeckError ("standard output: ...")
 // when it cannot be written (a full disk, a closed pipe).

@@ -125,6 +125,7 @@ class OperatorStop {
 public:
     OperatorStop() {
         g_signal = 0;
+        give_up_on_signal(&g_signal);
         struct sigaction action {};
         action.sa_handler = on_operator_signal;
         sigemptyset(&action.sa_mask);
@@ -138,6 +139,7 @@ public:
     int signal() const { return g_signal; }
     void restore() {
         if (!restored_) {
+            give_up_on_signal(nullptr);
             sigaction(SIGINT, &old_int_, nullptr);
             sigaction(SIGTERM, &old_term_, nullptr);
             restored_ = true;
@@ -350,13 +352,26 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
                                      : relaylogic::Pace::fast_forward);
     cabinet.record_card_times(!f.report.empty());
 
+    // Ctrl-C and SIGTERM stop the machine at its next event; the outputs are then written
+    // whole, as after any stop. Caught from here on: opening a FIFO waits for its reader, and
+    // a signal then ends the wait (and the run, before any card) instead of killing parsons.
+    OperatorStop operator_stop;
     relaylogic::ObserverFanOut observers;
     TraceFile<VcdWriter> vcd;
     TraceFile<EventsJsonlWriter> events;
     TraceFile<PathCsvWriter> path;
-    vcd.open(f.trace, observers);
-    events.open(f.events, observers);
-    path.open(f.path, observers);
+    try {
+        vcd.open(f.trace, observers);
+        events.open(f.events, observers);
+        path.open(f.path, observers);
+    } catch (const DeckError& e) {
+        if (operator_stop.signal() == 0) {
+            throw;
+        }
+        fmt::print(stderr, "parsons: interrupted while opening the outputs, before any card: {}\n",
+                   e.what());
+        return operator_stop.signal() == SIGTERM ? ExitCode::terminated : ExitCode::interrupted;
+    }
     std::unique_ptr<PlotSvgRecorder> plot;
     if (!f.plot.empty()) {
         plot = std::make_unique<PlotSvgRecorder>(f.input);
@@ -387,9 +402,6 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
         cabinet.attach(observers.attachable());
     }
 
-    // Ctrl-C and SIGTERM stop the machine at its next event; the outputs are then written
-    // whole, as after any stop.
-    OperatorStop operator_stop;
     cabinet.watch_interrupt(operator_stop.flag());
     const relaylogic::RunResult result = cabinet.run(deck.cards());
     operator_stop.restore();

@@ -26,15 +26,6 @@ bool updating() {
     return v != nullptr && std::string(v) == "1";
 }
 
-std::vector<std::string> split_lines(const std::string& text) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-        lines.push_back(line);
-    }
-    return lines;
-}
-
 std::string join_lines(const std::vector<std::string>& lines) {
     std::string out;
     for (const auto& l : lines) {
@@ -127,7 +118,7 @@ std::vector<Example> page_commands(const std::string& markdown) {
     std::vector<Example> out;
     bool in_block = false;
     std::string pending;
-    for (const std::string& raw : split_lines(markdown)) {
+    for (const std::string& raw : lines_of(markdown)) {
         const bool indented = raw.rfind("    ", 0) == 0;
         if (!indented) {
             in_block = false;
@@ -175,7 +166,7 @@ void check_quoted_output(const Example& e, const ProcessResult& r) {
 // printed line that begins with the same 16 characters (its label), and must equal it.
 void check_fenced(std::vector<std::string>& lines, std::size_t open, std::size_t close,
                   const std::string& printed, bool& changed) {
-    const auto out_lines = split_lines(printed);
+    const auto out_lines = lines_of(printed);
     for (std::size_t i = open + 1; i < close; ++i) {
         std::string& quoted = lines.at(i);
         const std::string label = quoted.substr(0, std::min<std::size_t>(16, quoted.size()));
@@ -223,7 +214,7 @@ void check_pictures(const std::vector<std::string>& lines, const fs::path& page,
 // and the pictures.
 void run_page(const std::string& relative, Scratch& scratch, int& pictures) {
     const fs::path page = source_path(relative);
-    std::vector<std::string> lines = split_lines(read_bytes(page));
+    std::vector<std::string> lines = lines_of(read_bytes(page));
     std::string last_output;
     bool changed = false;
     std::size_t commands = 0;
@@ -272,7 +263,7 @@ void run_page(const std::string& relative, Scratch& scratch, int& pictures) {
 std::vector<std::string> help_examples(const std::string& help) {
     std::vector<std::string> out;
     bool in_examples = false;
-    for (const std::string& line : split_lines(help)) {
+    for (const std::string& line : lines_of(help)) {
         if (line.rfind("Example", 0) == 0) {
             in_examples = true;
             continue;
@@ -290,7 +281,7 @@ std::vector<std::string> help_examples(const std::string& help) {
 std::vector<std::string> subcommands(const std::string& help) {
     std::vector<std::string> out;
     bool in = false;
-    for (const std::string& line : split_lines(help)) {
+    for (const std::string& line : lines_of(help)) {
         if (line.find("SUBCOMMANDS:") != std::string::npos ||
             line.find("Subcommands:") != std::string::npos) {
             in = true;

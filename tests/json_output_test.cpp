@@ -530,22 +530,6 @@ TEST_CASE(
     }
 }
 
-TEST_CASE("CLI --json: a full disk on standard output is exit 2 with the reason",
-          "[cli][json][output]") {
-    TempDir dir;
-    const std::string sample = q(source_path(kSample));
-    for (const std::string& args :
-         {"show " + sample + " --json", "check " + sample + " --json",
-          "punch " + sample + " -o " + q(dir.str("d.cbn")) + " --json",
-          "gen airfoil --naca 2412 --stations 10 -o " + q(dir.str("g.cbn")) + " --json"}) {
-        const auto r = run_shell("PARSONS " + args + " > /dev/full");
-        INFO(args << "\n" << r.output);
-        CHECK(r.exit_code == 2);
-        CHECK(r.output.find("parsons: error: standard output: cannot write: No space left on "
-                            "device") != std::string::npos);
-    }
-}
-
 TEST_CASE("CLI --json: each command's --help shows --json, and its --json example runs as written",
           "[cli][json][help]") {
     TempDir dir;

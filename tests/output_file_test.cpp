@@ -403,14 +403,18 @@ TEST_CASE("CLI: --report - writes the report to standard output and the summary 
     CHECK(two.output.find("only one output can go to standard output") != std::string::npos);
 }
 
-TEST_CASE("CLI: a full disk on standard output is exit 2 with the reason, for every command",
+TEST_CASE("CLI: a full disk on standard output is exit 2 with the reason, for every command and "
+          "every --json document",
           "[output][cli]") {
     TempDir dir;
     prepare(dir);
     const std::string cd = "cd " + q(dir.str("")) + " && ";
-    for (const char* command : {"run deck.cbn", "run deck.cbn -q --report -", "show deck.cbn",
-                                "check deck.cbn", "convert deck.cbn --to listing -o -",
-                                "punch listing.csv --to cbn -o -", "profile", "run --help"}) {
+    for (const char* command :
+         {"run deck.cbn", "run deck.cbn -q --report -", "show deck.cbn", "check deck.cbn",
+          "convert deck.cbn --to listing -o -", "punch listing.csv --to cbn -o -", "profile",
+          "run --help", "show deck.cbn --json", "check deck.cbn --json",
+          "punch listing.csv -o d.cbn --json",
+          "gen airfoil --naca 2412 --stations 10 -o g.cbn --json"}) {
         INFO(command);
         const auto r = run_shell(cd + "PARSONS " + command + " > /dev/full");
         CHECK(r.exit_code == 2);

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+using parsons::test::lines_of;
 using parsons::test::q;
 using parsons::test::read_bytes;
 using parsons::test::run_parsons;
@@ -32,15 +33,6 @@ using parsons::test::write_bytes;
 namespace {
 
 const std::string kSample = "decks/samples/patent-example.csv";
-
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-        lines.push_back(line);
-    }
-    return lines;
-}
 
 std::vector<std::string> split(const std::string& line, char sep) {
     std::vector<std::string> cells;

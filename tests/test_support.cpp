@@ -96,6 +96,15 @@ std::string read_bytes(const std::filesystem::path& p) {
     return s.str();
 }
 
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        lines.push_back(line);
+    }
+    return lines;
+}
+
 std::string source_path(const std::string& relative) {
     return std::string(PARSONS_SOURCE_DIR) + "/" + relative;
 }

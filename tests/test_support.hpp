@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace parsons::test {
 
@@ -46,6 +47,8 @@ private:
 
 void write_bytes(const std::filesystem::path& p, const std::string& bytes);
 std::string read_bytes(const std::filesystem::path& p);
+// The lines of a text, without their newlines.
+std::vector<std::string> lines_of(const std::string& text);
 std::string source_path(const std::string& relative); // a file of the source tree
 
 // Random orders a layout can hold (a second slow-down only where the layout has the field).

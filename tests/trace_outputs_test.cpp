@@ -27,6 +27,7 @@ using namespace parsons;
 using cardreader::Axis;
 using cardreader::CardOrders;
 using cli::PlotSvgRecorder;
+using parsons::test::lines_of;
 
 namespace {
 
@@ -105,16 +106,6 @@ Recorded run_deck(const std::vector<CardOrders>& deck) {
 const Recorded& simple_run() {
     static const Recorded rec = run_deck({one_axis_per_step()});
     return rec;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    std::string line;
-    while (std::getline(in, line)) {
-        lines.push_back(line);
-    }
-    return lines;
 }
 
 std::size_t count(const std::string& text, const std::string& what) {
