@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 
 namespace parsons::cardreader {
 namespace {
@@ -66,13 +67,14 @@ std::string join_rows(ColumnWord word) {
     return text;
 }
 
+// The digit of a column punched in one of rows 0..9, or -1 (blank or a double punch).
+// Row d is bit 9 - d of the column word.
 int digit_of(ColumnWord digits) {
-    for (int d = 0; d <= 9; ++d) {
-        if (digits == row_bit(digit_row(d))) {
-            return d;
-        }
+    static_assert(row_bit(digit_row(0)) == 1U << 9 && row_bit(digit_row(9)) == 1U);
+    if (digits == 0 || (digits & (digits - 1)) != 0) {
+        return -1;
     }
-    return -1;
+    return 9 - std::countr_zero(static_cast<unsigned>(digits));
 }
 
 // Collects the bad punch with the lowest column: the one the operator finds first.
