@@ -100,6 +100,7 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     jumping_ =
         pace_ == Pace::fast_forward && (observer == nullptr || !observer->follows_impulses());
     const bool alone = !jumping_ && observer == nullptr;
+    const bool follows_motion = observer != nullptr && observer->follows_motion();
     schedule(now_, EventKind::feed);
     while (true) {
         if (interrupted()) {
@@ -135,7 +136,7 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
                 }
             }
         }
-        if (moved && tracer_.observer() != nullptr) {
+        if (moved && follows_motion) {
             std::array<double, 5> real{};
             for (std::size_t i = 0; i < circuits_.size(); ++i) {
                 real.at(i) = circuits_[i]->plant.real_in_at(t);
