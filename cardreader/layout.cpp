@@ -228,8 +228,13 @@ DecodeResult decode(const Card& card, const CardLayout& layout) {
     DecodeResult result;
     Problems problems;
 
-    // Holes where the layout expects none.
-    for (int c = 1; c <= kColumns; ++c) {
+    // Holes where the layout expects none: looked for column by column only on a card that
+    // has any (a whole-card test first, branch-free).
+    ColumnWord strays = 0;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(kColumns); ++i) {
+        strays |= static_cast<ColumnWord>(card.columns()[i] & ~layout.allowed_rows[i + 1]);
+    }
+    for (int c = 1; strays != 0 && c <= kColumns; ++c) {
         const ColumnWord allowed = layout.allowed_rows[static_cast<std::size_t>(c)];
         ColumnWord stray = card.column(c) & static_cast<ColumnWord>(~allowed) & kAllRowsMask;
         if (stray != 0) {
