@@ -69,6 +69,9 @@ public:
     void punch(int col, Row r) { set_column(col, column(col) | row_bit(r)); }
     bool blank() const;
 
+    // Every column at once, column 1 first (for loops over the whole card).
+    const std::array<ColumnWord, kColumns>& columns() const { return columns_; }
+
     bool operator==(const Card&) const = default;
 
 private:

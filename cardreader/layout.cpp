@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 
 namespace parsons::cardreader {
 namespace {
@@ -66,13 +67,14 @@ std::string join_rows(ColumnWord word) {
     return text;
 }
 
+// The digit of a column punched in one of rows 0..9, or -1 (blank or a double punch).
+// Row d is bit 9 - d of the column word.
 int digit_of(ColumnWord digits) {
-    for (int d = 0; d <= 9; ++d) {
-        if (digits == row_bit(digit_row(d))) {
-            return d;
-        }
+    static_assert(row_bit(digit_row(0)) == 1U << 9 && row_bit(digit_row(9)) == 1U);
+    if (digits == 0 || (digits & (digits - 1)) != 0) {
+        return -1;
     }
-    return -1;
+    return 9 - std::countr_zero(static_cast<unsigned>(digits));
 }
 
 // Collects the bad punch with the lowest column: the one the operator finds first.
@@ -226,8 +228,13 @@ DecodeResult decode(const Card& card, const CardLayout& layout) {
     DecodeResult result;
     Problems problems;
 
-    // Holes where the layout expects none.
-    for (int c = 1; c <= kColumns; ++c) {
+    // Holes where the layout expects none: looked for column by column only on a card that
+    // has any (a whole-card test first, branch-free).
+    ColumnWord strays = 0;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(kColumns); ++i) {
+        strays |= static_cast<ColumnWord>(card.columns()[i] & ~layout.allowed_rows[i + 1]);
+    }
+    for (int c = 1; strays != 0 && c <= kColumns; ++c) {
         const ColumnWord allowed = layout.allowed_rows[static_cast<std::size_t>(c)];
         ColumnWord stray = card.column(c) & static_cast<ColumnWord>(~allowed) & kAllRowsMask;
         if (stray != 0) {

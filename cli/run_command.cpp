@@ -100,6 +100,7 @@ public:
         line_.show(deck_.fraction_read(), fmt::format("card {}  machine time {:.1f} s", index, t));
     }
     bool follows_impulses() const override { return false; }
+    bool follows_motion() const override { return false; }
     void on_finish(double /*t*/) override { line_.clear(); }
 
 private:
@@ -112,6 +113,7 @@ private:
 class KeepsValues : public relaylogic::MachineObserver {
 public:
     bool follows_impulses() const override { return false; }
+    bool follows_motion() const override { return false; }
 };
 
 volatile std::sig_atomic_t g_signal = 0;

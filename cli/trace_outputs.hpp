@@ -90,6 +90,7 @@ public:
     void on_card(double seconds, long index, const cardreader::CardOrders& orders) override;
     void on_stop(double seconds, const relaylogic::StopInfo& stop) override;
     void on_finish(double seconds) override;
+    bool follows_motion() const override { return false; }
 
 private:
     struct Var {
@@ -140,6 +141,7 @@ public:
     void on_card(double seconds, long index, const cardreader::CardOrders& orders) override;
     void on_stop(double seconds, const relaylogic::StopInfo& stop) override;
     void on_finish(double seconds) override;
+    bool follows_motion() const override { return false; }
 
 private:
     OutputBuffer buf_;

@@ -100,6 +100,7 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     jumping_ =
         pace_ == Pace::fast_forward && (observer == nullptr || !observer->follows_impulses());
     const bool alone = !jumping_ && observer == nullptr;
+    const bool follows_motion = observer != nullptr && observer->follows_motion();
     schedule(now_, EventKind::feed);
     while (true) {
         if (interrupted()) {
@@ -111,6 +112,9 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
         double t = queue_.empty() ? axes::kNever : queue_.top().t;
         for (std::size_t i = 0; i < circuits_.size(); ++i) {
             t = std::min(t, next_axis_event(i));
+        }
+        if (t == axes::kNever && unqueued_release_s_ > now_) {
+            t = unqueued_release_s_; // the last release after a stop (release_after_stop)
         }
         if (t == axes::kNever) {
             if (!deck_finished_ && !stop_) {
@@ -135,7 +139,7 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
                 }
             }
         }
-        if (moved && tracer_.observer() != nullptr) {
+        if (moved && follows_motion) {
             std::array<double, 5> real{};
             for (std::size_t i = 0; i < circuits_.size(); ++i) {
                 real.at(i) = circuits_[i]->plant.real_in_at(t);
@@ -742,8 +746,7 @@ void ControlCabinet::stop_axis(AxisCircuit& c) {
     } else {
         c.speed_switch.to_off(now_, profile_.delay_258_s); // the interpretation: from 1 or 2
     }
-    schedule(c.speed_switch.hold_until(), EventKind::delay_258_release,
-             static_cast<int>(cardreader::axis_index(c.axis)));
+    release_after_stop(c);
     c.stopped = true;
     c.show_lamps();
     update_motor(c);
@@ -768,6 +771,23 @@ void ControlCabinet::stop_axis(AxisCircuit& c) {
         shaft_.begin_step();
         schedule(now_ + profile_.sequence_shaft_step_s, EventKind::shaft_step);
     }
+}
+
+// Delay 258 holds channel 257 after the stop too. Its release drops relay 256 and the hold
+// (trace signals), reads the comparers again and, if neither conducts, notes that the equality
+// has left; none of it can act on the axis, which is not live (stopped) until zeroizing resets
+// switch 236 and delay 258 (channel 300). So with no observer to see the relays drop the
+// release is not queued: its sequence number is taken all the same (every other event keeps
+// its order, the saved event_sequence its value), and the main loop still comes to its
+// instant if nothing else is left to do, so the run ends at the same machine time.
+void ControlCabinet::release_after_stop(const AxisCircuit& c) {
+    if (tracer_.observer() != nullptr) {
+        schedule(c.speed_switch.hold_until(), EventKind::delay_258_release,
+                 static_cast<int>(cardreader::axis_index(c.axis)));
+        return;
+    }
+    ++seq_;
+    unqueued_release_s_ = std::max(unqueued_release_s_, c.speed_switch.hold_until());
 }
 
 void ControlCabinet::shaft_step() {
@@ -861,6 +881,7 @@ void ControlCabinet::machine_stop(StopReason reason, std::optional<Axis> axis,
         timings_.back().end_s = now_;
     }
     queue_ = {};
+    unqueued_release_s_ = -axes::kNever;
     update_motors();
     if (tracer_.observer() != nullptr) {
         tracer_.observer()->on_stop(now_, info);

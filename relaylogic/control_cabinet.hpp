@@ -144,6 +144,7 @@ private:
     bool move_within_soft_limits();
     bool live(const AxisCircuit& c) const;
     void stop_axis(AxisCircuit& c);
+    void release_after_stop(const AxisCircuit& c);
     void shaft_step();
     void zeroize();
     void update_motors();
@@ -173,6 +174,8 @@ private:
 
     std::priority_queue<Event, std::vector<Event>, std::greater<>> queue_;
     std::uint64_t seq_ = 0;
+    // The latest delay-258 release after a stop that was not queued (no observer), or -inf.
+    double unqueued_release_s_ = -axes::kNever;
     bool keep_resume_point_ = false;
     bool resuming_ = false;
     nlohmann::json resume_point_;

@@ -28,29 +28,39 @@ long impulses_until(long distance) {
     return j == 0 ? 10000 : j;
 }
 
+// How many relays of a bank a mask closes (at most ten bits: no library call for a popcount).
+long relays_in(unsigned mask) {
+    long n = 0;
+    for (; mask != 0; mask &= mask - 1) {
+        ++n;
+    }
+    return n;
+}
+
+// Calls f(x) for every bit x set in mask, lowest first.
+template <typename F>
+void each_relay(unsigned mask, F&& f) {
+    for (; mask != 0; mask &= mask - 1) {
+        f(__builtin_ctz(mask));
+    }
+}
+
 // The least distance(w) over every 4-digit number w whose digit i is in allowed[i] (bit x =
 // digit x), or nothing if there are more than kMostMatches such numbers.
 template <typename Distance>
 std::optional<long> least_over_matches(const std::array<unsigned, 4>& allowed, Distance distance) {
     long count = 1;
     for (unsigned mask : allowed) {
-        count *= __builtin_popcount(mask);
+        count *= relays_in(mask);
     }
     if (count > kMostMatches) {
         return std::nullopt;
     }
     long best = kForever;
-    auto each = [](unsigned mask, auto&& f) {
-        for (int x = 0; x < 10; ++x) {
-            if ((mask >> x & 1U) != 0) {
-                f(x);
-            }
-        }
-    };
-    each(allowed[0], [&](int a) {
-        each(allowed[1], [&](int b) {
-            each(allowed[2], [&](int c) {
-                each(allowed[3], [&](int d) {
+    each_relay(allowed[0], [&](int a) {
+        each_relay(allowed[1], [&](int b) {
+            each_relay(allowed[2], [&](int c) {
+                each_relay(allowed[3], [&](int d) {
                     best = std::min(best, distance(((a * 10L + b) * 10 + c) * 10 + d));
                 });
             });
@@ -87,12 +97,8 @@ std::optional<long> first_absolute_equality(const AxisCircuit& c) {
     }
     std::array<unsigned, 4> allowed{};
     for (std::size_t i = 0; i < 4; ++i) {
-        const unsigned closed = c.absolute_storage.bank(static_cast<int>(i)).closed_mask();
-        for (int v = 0; v < 10; ++v) {
-            if ((closed >> v & 1U) != 0) {
-                allowed.at(i) |= 1U << screw_digit(i, v);
-            }
-        }
+        each_relay(c.absolute_storage.bank(static_cast<int>(i)).closed_mask(),
+                   [&](int v) { allowed.at(i) |= 1U << screw_digit(i, v); });
     }
     return least_over_matches(allowed, distance);
 }

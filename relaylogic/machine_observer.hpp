@@ -71,6 +71,9 @@ public:
     // path)? One that only wants cards, stops and the finish says no, and the cabinet may then
     // fast-forward: the signal changes it is sent come a stretch of impulses at a time.
     virtual bool follows_impulses() const { return true; }
+    // Does it want on_motion? One that does not override on_motion says no, and the cabinet
+    // then does not work out the five real positions at every impulse for nobody.
+    virtual bool follows_motion() const { return true; }
 };
 
 // Sends every call to several observers, in order.
@@ -84,6 +87,14 @@ public:
     bool follows_impulses() const override {
         for (auto* o : observers_) {
             if (o->follows_impulses()) {
+                return true;
+            }
+        }
+        return false;
+    }
+    bool follows_motion() const override {
+        for (auto* o : observers_) {
+            if (o->follows_motion()) {
                 return true;
             }
         }
