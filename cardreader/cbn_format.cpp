@@ -20,7 +20,7 @@ std::uint8_t with_odd_parity(std::uint8_t six) {
     return std::popcount(static_cast<unsigned>(six)) % 2 == 0 ? six | kParityBit : six;
 }
 
-bool parity_ok(std::uint8_t byte) {
+constexpr bool parity_ok(std::uint8_t byte) {
     return std::popcount(static_cast<unsigned>(byte & 0x7F)) % 2 == 1;
 }
 
@@ -29,7 +29,7 @@ bool parity_ok(std::uint8_t byte) {
 constexpr std::array<std::uint8_t, 256> kGoodByte = [] {
     std::array<std::uint8_t, 256> good{};
     for (unsigned b = 0; b < 256; ++b) {
-        good.at(b) = (b & kCardMark) == 0 && std::popcount(b & 0x7FU) % 2 == 1 ? 1 : 0;
+        good.at(b) = (b & kCardMark) == 0 && parity_ok(static_cast<std::uint8_t>(b)) ? 1 : 0;
     }
     return good;
 }();
@@ -101,21 +101,12 @@ Card cbn_decode(std::span<const std::uint8_t, kCbnCardBytes> bytes, const std::s
             file, card_index, byte_base,
             "no card-start mark: bit 7 of the first byte of every card must be set");
     }
-    Card card;
     unsigned good = kGoodByte[static_cast<std::uint8_t>(bytes[0] & ~kCardMark)];
     for (std::size_t i = 1; i < bytes.size(); ++i) {
         good &= kGoodByte[bytes[i]];
     }
-    if (good != 0) {
-        for (int column = 1; column <= kColumns; ++column) {
-            const auto i = static_cast<std::size_t>(2 * (column - 1));
-            card.set_column(column, static_cast<ColumnWord>((bytes[i] & kSixBits) << 6 |
-                                                            (bytes[i + 1] & kSixBits)));
-        }
-        return card;
-    }
-    // A bad byte: the first one, named as the byte-by-byte reading below finds it.
-    for (std::size_t i = 0; i < bytes.size(); ++i) {
+    // A bad byte: the first one is named (only a card that has one is read byte by byte).
+    for (std::size_t i = 0; good == 0 && i < bytes.size(); ++i) {
         const std::uint8_t b = i == 0 ? static_cast<std::uint8_t>(bytes[i] & ~kCardMark) : bytes[i];
         const int column = static_cast<int>(i / 2) + 1;
         if ((b & kCardMark) != 0) {
@@ -132,12 +123,12 @@ Card cbn_decode(std::span<const std::uint8_t, kCbnCardBytes> bytes, const std::s
                             "binary uses odd parity)",
                             column, bytes[i]));
         }
-        auto six = static_cast<ColumnWord>(b & kSixBits);
-        if (i % 2 == 0) {
-            card.set_column(column, static_cast<ColumnWord>(six << 6));
-        } else {
-            card.set_column(column, card.column(column) | six);
-        }
+    }
+    Card card;
+    for (int column = 1; column <= kColumns; ++column) {
+        const auto i = static_cast<std::size_t>(2 * (column - 1));
+        card.set_column(column, static_cast<ColumnWord>((bytes[i] & kSixBits) << 6 |
+                                                        (bytes[i + 1] & kSixBits)));
     }
     return card;
 }

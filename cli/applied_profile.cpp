@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <optional>
 
 namespace parsons::cli {
 namespace {
@@ -63,10 +64,11 @@ json profile_differences(const axes::MachineProfile& applied, const axes::Machin
 
 AppliedProfile AppliedProfile::load(const std::string& file) {
     AppliedProfile a;
-    const bool builtin =
-        !file.empty() && axes::builtin_profile(file).has_value() && !std::filesystem::exists(file);
-    if (file.empty() || builtin) {
-        a.profile_ = file.empty() ? axes::default_profile() : *axes::builtin_profile(file);
+    // A built-in profile by name (parsons-1952, parsons-safe), unless a file of that name exists.
+    auto builtin =
+        file.empty() ? std::optional(axes::default_profile()) : axes::builtin_profile(file);
+    if (builtin && (file.empty() || !std::filesystem::exists(file))) {
+        a.profile_ = *builtin;
         a.named_ = a.profile_;
     } else {
         const std::string text = read_text_file(file);
@@ -128,11 +130,9 @@ AppliedProfile AppliedProfile::from_state(const json& saved, const std::string& 
 }
 
 void AppliedProfile::apply_limits(const std::vector<std::string>& limits) {
-    cli::apply_limits(profile_, limits); // throws on a bad spec
-    for (const std::string& spec : limits) {
-        if (auto axis = cardreader::axis_named(spec.substr(0, spec.find('=')))) {
-            soft_from_.at(cardreader::axis_index(*axis)) = "--limit " + spec;
-        }
+    const std::vector<cardreader::Axis> axes = cli::apply_limits(profile_, limits);
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+        soft_from_.at(cardreader::axis_index(axes.at(i))) = "--limit " + limits.at(i);
     }
 }
 

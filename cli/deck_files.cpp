@@ -187,7 +187,9 @@ axes::MachineProfile load_profile(const std::string& file) {
 
 namespace parsons::cli {
 
-void apply_limits(axes::MachineProfile& profile, const std::vector<std::string>& limits) {
+std::vector<cardreader::Axis> apply_limits(axes::MachineProfile& profile,
+                                           const std::vector<std::string>& limits) {
+    std::vector<cardreader::Axis> set;
     for (const std::string& spec : limits) {
         const auto eq = spec.find('=');
         const auto colon = spec.find(':', eq == std::string::npos ? 0 : eq);
@@ -226,7 +228,9 @@ void apply_limits(axes::MachineProfile& profile, const std::vector<std::string>&
         a.soft_limits = true;
         a.soft_min_in = lo;
         a.soft_max_in = hi;
+        set.push_back(*axis);
     }
+    return set;
 }
 
 cardreader::DeckFingerprint fingerprint_deck(const std::string& path, const DeckFlags& flags,

@@ -37,8 +37,10 @@ std::string read_text_file(const std::string& file, const std::string& missing =
 // profile its "name" names (else the default); throws DeckError naming the file and the key on
 // a bad profile. AppliedProfile (applied_profile.hpp) keeps where each value came from.
 axes::MachineProfile load_profile(const std::string& file);
-// --limit AXIS=MIN:MAX (repeatable): the soft limits of the job, over the profile's.
-void apply_limits(axes::MachineProfile& profile, const std::vector<std::string>& limits);
+// --limit AXIS=MIN:MAX (repeatable): the soft limits of the job, over the profile's. Returns
+// the axis of each spec, in order.
+std::vector<cardreader::Axis> apply_limits(axes::MachineProfile& profile,
+                                           const std::vector<std::string>& limits);
 
 // The motor figures the deck review needs to estimate each stop's coast.
 std::array<cardreader::AxisDynamics, cardreader::kAxisCount>

@@ -1,6 +1,7 @@
 #include "relaylogic/fast_forward.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 #include <optional>
 
@@ -41,7 +42,7 @@ long relays_in(unsigned mask) {
 template <typename F>
 void each_relay(unsigned mask, F&& f) {
     for (; mask != 0; mask &= mask - 1) {
-        f(__builtin_ctz(mask));
+        f(std::countr_zero(mask));
     }
 }
 

@@ -71,8 +71,8 @@ public:
     // path)? One that only wants cards, stops and the finish says no, and the cabinet may then
     // fast-forward: the signal changes it is sent come a stretch of impulses at a time.
     virtual bool follows_impulses() const { return true; }
-    // Does it want on_motion? One that does not override on_motion says no, and the cabinet
-    // then does not work out the five real positions at every impulse for nobody.
+    // Does it want on_motion? An observer that ignores motion says no (overrides this), and
+    // the cabinet then does not work out the five real positions at every impulse for it.
     virtual bool follows_motion() const { return true; }
 };
 
