@@ -26,7 +26,17 @@ MachineProfile safe_profile() {
     return p;
 }
 
+MachineProfile extended_profile() {
+    MachineProfile p = safe_profile();
+    p.name = "parsons-extended";
+    p.condition_cards = true;
+    return p;
+}
+
 std::optional<MachineProfile> builtin_profile(const std::string& name) {
+    if (name == "parsons-extended") {
+        return extended_profile();
+    }
     if (name == "parsons-1952") {
         return default_profile();
     }

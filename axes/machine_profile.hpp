@@ -58,6 +58,24 @@ struct AxisProfile {
     std::vector<std::pair<double, double>> cam_160_in;
 };
 
+// Condition cards (an addition after EP 0640901, Siemens; seeds/002): how long each action the
+// tripping unit ALE starts takes before it is acknowledged. Figures for a 1950s knee mill with a
+// powered drawbar and a tool magazine, docs/machine-profile.md.
+struct ActionTimes {
+    double spindle_run_up_s = 3.0;   // spindle motor from rest to cutting speed
+    double spindle_run_down_s = 2.0; // from cutting speed to rest (plugging brake)
+    double coolant_valve_s = 0.5;    // solenoid valve and the flow reaching the cutter
+    double tool_change_s = 8.0;      // the changer's whole cycle, drawbar to drawbar
+    double dwell_s = 1.0;            // how long a dwell holds its axis
+    double lamp_s = 0.010;           // an output lamp's relay operating
+};
+
+// One tool of the changer: its number (the tool-change parameter) and its cutter radius.
+struct Tool {
+    int number = 1;
+    double radius_in = 0.25;
+};
+
 // What the counters measure (DESIGN.md 4.3).
 enum class MeasuringChain : std::uint8_t {
     instrument_shaft_74, // the patent: the part's position, through shaft 74 and follower 76
@@ -126,6 +144,23 @@ struct MachineProfile {
     // with two punches in one digit column (stop bad_punch) instead of closing two relays of
     // the bank as a 1952 reader would. On in parsons-safe.
     bool refuse_double_punch = false;
+    // Addition after EP 0640901 (Siemens; seeds/002): condition cards that trip an action
+    // while an axis moves. Off in parsons-1952 and parsons-safe (a deck with one is refused),
+    // on in parsons-extended.
+    bool condition_cards = false;
+    ActionTimes actions;
+    // The tool changer's tools, and the one in the spindle when the run starts.
+    std::vector<Tool> tools = {{1, 0.25}, {2, 0.125}};
+    int first_tool = 1;
+    // The cutter radius of a tool, if the changer holds it.
+    std::optional<double> tool_radius_in(int tool) const {
+        for (const Tool& t : tools) {
+            if (t.number == tool) {
+                return t.radius_in;
+            }
+        }
+        return std::nullopt;
+    }
 };
 
 // The built-in profile, with the five axes named table, cross, vertical, swivel, tilt:
@@ -133,7 +168,12 @@ struct MachineProfile {
 MachineProfile default_profile();
 // parsons-safe: parsons-1952 with the emulator's protective additions on.
 MachineProfile safe_profile();
-// The built-in profile of this name (parsons-1952, parsons-safe), if there is one.
+// parsons-extended: parsons-safe with the later seeds' additions on (condition cards).
+MachineProfile extended_profile();
+// The profile a name ("parsons-1952", ...) gives, if there is one; the names in order.
+inline constexpr std::array<const char*, 3> kBuiltinProfiles = {"parsons-1952", "parsons-safe",
+                                                                "parsons-extended"};
+// The built-in profile of this name (parsons-1952, parsons-safe, parsons-extended), if any.
 std::optional<MachineProfile> builtin_profile(const std::string& name);
 
 } // namespace parsons::axes

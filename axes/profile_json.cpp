@@ -219,6 +219,54 @@ bool flag(const json& j, const std::string& key) {
     return j.get<bool>();
 }
 
+// "actions": {"tool_change_s": 8, ...}: each a duration.
+void apply_actions(ActionTimes& a, const json& j) {
+    if (!j.is_object()) {
+        throw ProfileError("actions: expected an object of durations in seconds");
+    }
+    for (const auto& [key, value] : j.items()) {
+        const std::string k = "actions." + key;
+        double* field = key == "spindle_run_up_s"     ? &a.spindle_run_up_s
+                        : key == "spindle_run_down_s" ? &a.spindle_run_down_s
+                        : key == "coolant_valve_s"    ? &a.coolant_valve_s
+                        : key == "tool_change_s"      ? &a.tool_change_s
+                        : key == "dwell_s"            ? &a.dwell_s
+                        : key == "lamp_s"             ? &a.lamp_s
+                                                      : nullptr;
+        if (field == nullptr) {
+            throw ProfileError(fmt::format("{}: unknown key", k));
+        }
+        *field = duration(value, k);
+    }
+}
+
+// "tools": [{"number": 1, "radius_in": 0.25}, ...]
+std::vector<Tool> tools_from(const json& j) {
+    if (!j.is_array()) {
+        throw ProfileError("tools: expected [{\"number\": N, \"radius_in\": R}, ...]");
+    }
+    std::vector<Tool> tools;
+    for (std::size_t i = 0; i < j.size(); ++i) {
+        const std::string k = fmt::format("tools[{}]", i);
+        const json& t = j.at(i);
+        if (!t.is_object() || !t.contains("number") || !t.contains("radius_in") || t.size() != 2) {
+            throw ProfileError(fmt::format("{}: expected {{\"number\": N, \"radius_in\": R}}", k));
+        }
+        const json& n = t.at("number");
+        if (!n.is_number_integer() || n.get<long>() < 1 || n.get<long>() > 99) {
+            throw ProfileError(fmt::format("{}.number: expected a tool number 1..99", k));
+        }
+        const int number = n.get<int>();
+        for (const Tool& other : tools) {
+            if (other.number == number) {
+                throw ProfileError(fmt::format("{}.number: tool {} is listed twice", k, number));
+            }
+        }
+        tools.push_back(Tool{number, positive(t.at("radius_in"), k + ".radius_in")});
+    }
+    return tools;
+}
+
 bool apply_reading(MachineProfile& p, const std::string& key, const json& value) {
     if (key == "incremental_equality_stops_at_any_speed") {
         p.incremental_equality_stops_at_any_speed = flag(value, key);
@@ -228,6 +276,17 @@ bool apply_reading(MachineProfile& p, const std::string& key, const json& value)
         p.lamps_only_on_trip = flag(value, key);
     } else if (key == "refuse_double_punch") {
         p.refuse_double_punch = flag(value, key);
+    } else if (key == "condition_cards") {
+        p.condition_cards = flag(value, key);
+    } else if (key == "actions") {
+        apply_actions(p.actions, value);
+    } else if (key == "tools") {
+        p.tools = tools_from(value);
+    } else if (key == "first_tool") {
+        if (!value.is_number_integer() || value.get<long>() < 1 || value.get<long>() > 99) {
+            throw ProfileError("first_tool: expected a tool number 1..99");
+        }
+        p.first_tool = value.get<int>();
     } else {
         return false;
     }
@@ -239,6 +298,19 @@ void put_readings(json& j, const MachineProfile& p) {
     j["delay_258_waits_for_equality_to_leave"] = p.delay_258_waits_for_equality_to_leave;
     j["lamps_only_on_trip"] = p.lamps_only_on_trip;
     j["refuse_double_punch"] = p.refuse_double_punch;
+    j["condition_cards"] = p.condition_cards;
+    j["actions"] = {{"spindle_run_up_s", p.actions.spindle_run_up_s},
+                    {"spindle_run_down_s", p.actions.spindle_run_down_s},
+                    {"coolant_valve_s", p.actions.coolant_valve_s},
+                    {"tool_change_s", p.actions.tool_change_s},
+                    {"dwell_s", p.actions.dwell_s},
+                    {"lamp_s", p.actions.lamp_s}};
+    json tools = json::array();
+    for (const Tool& t : p.tools) {
+        tools.push_back({{"number", t.number}, {"radius_in", t.radius_in}});
+    }
+    j["tools"] = tools;
+    j["first_tool"] = p.first_tool;
 }
 
 } // namespace
@@ -260,8 +332,8 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
         const json& base = j.at("base");
         auto builtin = base.is_string() ? builtin_profile(base.get<std::string>()) : std::nullopt;
         if (!builtin) {
-            throw ProfileError(fmt::format("base: expected \"parsons-1952\" or \"parsons-safe\", "
-                                           "not {}",
+            throw ProfileError(fmt::format("base: expected \"parsons-1952\", \"parsons-safe\" or "
+                                           "\"parsons-extended\", not {}",
                                            base.dump()));
         }
         p = *builtin;

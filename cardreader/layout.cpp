@@ -1,5 +1,8 @@
 #include "cardreader/layout.hpp"
 
+#include "cardreader/condition_card.hpp"
+#include "cardreader/field_reading.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -8,7 +11,10 @@
 namespace parsons::cardreader {
 namespace {
 
-constexpr ColumnWord kDigitRows = 0x03FF; // rows 0 .. 9
+using detail::join_rows;
+using detail::kDigitRows;
+using detail::Problems;
+using detail::read_number;
 constexpr ColumnWord r0 = row_bit(Row::r0);
 constexpr ColumnWord r1 = row_bit(Row::r1);
 constexpr ColumnWord r2 = row_bit(Row::r2);
@@ -22,6 +28,10 @@ ColumnWord rows_allowed(FieldKind k) {
         return r0 | r1;
     case FieldKind::start_speed:
         return r0 | r1 | r2;
+    case FieldKind::extension:
+        return r1;
+    case FieldKind::sense:
+        return r0 | r1;
     default:
         return kDigitRows;
     }
@@ -50,11 +60,17 @@ CardLayout make_fig8() {
         layout.sequence_first_column[axis_index(a)] = first;
         first += 14;
     }
-    // Column 76 is left unused.
+    // Column 76 is unused on a motion card; row 1 there marks a condition card (an addition).
     layout.fields.push_back({FieldKind::card_number, std::nullopt, 77, 4});
+    layout.extension_column = 76;
+    add_condition_fields(layout);
     layout.index();
     return layout;
 }
+
+} // namespace
+
+namespace detail {
 
 std::string join_rows(ColumnWord word) {
     std::string text;
@@ -77,21 +93,6 @@ int digit_of(ColumnWord digits) {
     return 9 - std::countr_zero(static_cast<unsigned>(digits));
 }
 
-// Collects the bad punch with the lowest column: the one the operator finds first.
-class Problems {
-public:
-    void add(int column, std::string what) {
-        if (!first_ || column < first_->column) {
-            first_ = BadPunch{column, std::move(what)};
-        }
-    }
-    std::optional<BadPunch> first() const { return first_; }
-
-private:
-    std::optional<BadPunch> first_;
-};
-
-// Reads a digit field; nothing if every column is blank.
 std::optional<int> read_number(const Card& card, const LayoutField& f, Problems& problems) {
     int value = 0;
     int blanks = 0;
@@ -125,12 +126,46 @@ std::optional<int> read_number(const Card& card, const LayoutField& f, Problems&
     return bad ? 0 : value;
 }
 
-} // namespace
+void find_strays(const Card& card, const std::array<ColumnWord, kColumns + 1>& allowed,
+                 const CardLayout& layout, bool condition_card, Problems& problems) {
+    // Looked for column by column only on a card that has any (a whole-card test first,
+    // branch-free).
+    ColumnWord strays = 0;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(kColumns); ++i) {
+        strays |= static_cast<ColumnWord>(card.columns()[i] & ~allowed[i + 1]);
+    }
+    for (int c = 1; strays != 0 && c <= kColumns; ++c) {
+        ColumnWord stray = card.column(c) &
+                           static_cast<ColumnWord>(~allowed[static_cast<std::size_t>(c)]) &
+                           kAllRowsMask;
+        if (stray != 0) {
+            const LayoutField* f =
+                condition_card ? layout.condition_field_at(c) : layout.field_at(c);
+            std::string where =
+                f ? fmt::format("in {}", field_label(*f))
+                  : fmt::format("in column {}, which layout {} leaves unused{}", c, layout.name,
+                                condition_card ? " on a condition card" : "");
+            problems.add(c, fmt::format("punch in {} {} where none belongs ({})",
+                                        hole_count(stray) == 1 ? "row" : "rows", join_rows(stray),
+                                        where));
+        }
+    }
+}
+
+} // namespace detail
 
 const LayoutField* CardLayout::find(FieldKind kind, std::optional<Axis> axis) const {
     auto it = std::find_if(fields.begin(), fields.end(),
                            [&](const LayoutField& f) { return f.kind == kind && f.axis == axis; });
     return it == fields.end() ? nullptr : &*it;
+}
+
+const LayoutField* CardLayout::condition_field_at(int column) const {
+    auto it = std::find_if(condition_fields.begin(), condition_fields.end(),
+                           [column](const LayoutField& f) {
+                               return column >= f.first_column && column <= f.last_column();
+                           });
+    return it == condition_fields.end() ? nullptr : &*it;
 }
 
 const LayoutField* CardLayout::field_at(int column) const {
@@ -168,6 +203,20 @@ std::string_view field_short_label(FieldKind kind) {
         return "CHECK";
     case FieldKind::card_number:
         return "CARD NO.";
+    case FieldKind::extension:
+        return "EXTENSION";
+    case FieldKind::event:
+        return "EVENT";
+    case FieldKind::condition_axis:
+        return "AXIS";
+    case FieldKind::sense:
+        return "SENSE";
+    case FieldKind::position:
+        return "POSITION";
+    case FieldKind::action:
+        return "ACTION";
+    case FieldKind::parameter:
+        return "PARAM.";
     }
     return "";
 }
@@ -179,6 +228,15 @@ std::string field_label(const LayoutField& field) {
         return "spindle";
     case FieldKind::card_number:
         return "card number";
+    case FieldKind::extension:
+        return "extension mark";
+    case FieldKind::event:
+    case FieldKind::condition_axis:
+    case FieldKind::sense:
+    case FieldKind::position:
+    case FieldKind::action:
+    case FieldKind::parameter:
+        return fmt::format("condition {} {}", field.slot + 1, condition_field_word(field.kind));
     case FieldKind::motion:
         what = "motion";
         break;
@@ -208,8 +266,21 @@ void CardLayout::index() {
         if (sequence_at(c)) {
             allowed |= r12;
         }
+        if (c == extension_column) {
+            allowed = rows_allowed(FieldKind::extension);
+        }
         allowed_rows.at(static_cast<std::size_t>(c)) = allowed;
+        const LayoutField* cf = condition_field_at(c);
+        condition_allowed_rows.at(static_cast<std::size_t>(c)) =
+            c == extension_column                    ? rows_allowed(FieldKind::extension)
+            : cf                                     ? rows_allowed(cf->kind)
+            : f && f->kind == FieldKind::card_number ? kDigitRows
+                                                     : ColumnWord{0};
     }
+}
+
+bool is_condition_card(const Card& card, const CardLayout& layout) {
+    return layout.extension_column != 0 && card.punched(layout.extension_column, Row::r1);
 }
 
 const CardLayout& fig8_layout() {
@@ -228,25 +299,10 @@ DecodeResult decode(const Card& card, const CardLayout& layout) {
     DecodeResult result;
     Problems problems;
 
-    // Holes where the layout expects none: looked for column by column only on a card that
-    // has any (a whole-card test first, branch-free).
-    ColumnWord strays = 0;
-    for (std::size_t i = 0; i < static_cast<std::size_t>(kColumns); ++i) {
-        strays |= static_cast<ColumnWord>(card.columns()[i] & ~layout.allowed_rows[i + 1]);
+    if (is_condition_card(card, layout)) {
+        return decode_condition_card(card, layout);
     }
-    for (int c = 1; strays != 0 && c <= kColumns; ++c) {
-        const ColumnWord allowed = layout.allowed_rows[static_cast<std::size_t>(c)];
-        ColumnWord stray = card.column(c) & static_cast<ColumnWord>(~allowed) & kAllRowsMask;
-        if (stray != 0) {
-            const LayoutField* f = layout.field_at(c);
-            std::string where =
-                f ? fmt::format("in {}", field_label(*f))
-                  : fmt::format("in column {}, which layout {} leaves unused", c, layout.name);
-            problems.add(c, fmt::format("punch in {} {} where none belongs ({})",
-                                        hole_count(stray) == 1 ? "row" : "rows", join_rows(stray),
-                                        where));
-        }
-    }
+    detail::find_strays(card, layout.allowed_rows, layout, false, problems);
 
     CardOrders& o = result.orders;
     for (const LayoutField& f : layout.fields) {
@@ -361,6 +417,15 @@ EncodeResult encode(const CardOrders& orders, const CardLayout& layout) {
 
     if (orders.number < 0 || orders.number > 9999) {
         fail(fmt::format("card number {} is outside 0..9999", orders.number));
+    }
+    if (orders.kind == CardKind::condition) {
+        if (const auto* f = layout.find(FieldKind::card_number)) {
+            punch_number(*f, orders.number);
+        }
+        if (auto error = encode_condition_card(orders, layout, card)) {
+            fail(*error);
+        }
+        return result;
     }
     for (Axis a : kAxes) {
         const AxisOrder& ax = orders.axis(a);

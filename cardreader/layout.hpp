@@ -28,6 +28,18 @@ enum class FieldKind : std::uint8_t {
     stop,        // digit columns d.ddd, always punched
     check,       // digit columns d.ddd, always punched
     card_number, // digit columns, always punched
+    // Column 76, the extension mark (an addition): row 1 = a condition card.
+    extension,
+    // The fields of a condition card (an addition after EP 0640901; docs/card-layout.md), one
+    // set per condition slot: the event identifier, the axis (1..5), the sense of passing
+    // (row 0 forward, row 1 reverse, both either), the position d.ddd, the action (1..8) and
+    // its parameter (blank = 0).
+    event,
+    condition_axis,
+    sense,
+    position,
+    action,
+    parameter,
 };
 
 struct LayoutField {
@@ -35,6 +47,7 @@ struct LayoutField {
     std::optional<Axis> axis; // none for spindle and card number
     int first_column;         // 1 .. 80
     int width;                // columns
+    int slot = -1;            // condition slot 0..4 (condition-card fields), else -1
 
     int last_column() const { return first_column + width - 1; }
 };
@@ -50,12 +63,24 @@ struct CardLayout {
     // The sequence position (1..5) and axis whose cross mark sits in row 12 of this column.
     std::optional<std::pair<Axis, int>> sequence_at(int column) const;
 
-    // The rows each column may be punched in (index 1..80), worked out once by index().
+    // The condition card (an addition): the extension mark's column (0 = the layout has
+    // none, so no condition cards) and the fields of a card marked there in row 1. The card
+    // number stays where the motion card has it.
+    int extension_column = 0;
+    std::vector<LayoutField> condition_fields;
+    const LayoutField* condition_field_at(int column) const;
+
+    // The rows each column may be punched in (index 1..80), worked out once by index(): on a
+    // motion card, and on a condition card.
     std::array<ColumnWord, kColumns + 1> allowed_rows{};
+    std::array<ColumnWord, kColumns + 1> condition_allowed_rows{};
     void index();
 };
 
-// "table stop", "spindle", "card number"
+// Is this card marked as a condition card (row 1 of the layout's extension column)?
+bool is_condition_card(const Card& card, const CardLayout& layout);
+
+// "table stop", "spindle", "card number", "condition 2 position"
 std::string field_label(const LayoutField& field);
 // Short label for card pictures: "STOP", "SLOW 1", "CHECK"
 std::string_view field_short_label(FieldKind kind);

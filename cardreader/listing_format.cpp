@@ -154,6 +154,78 @@ ListingRow parse_row(std::string_view text, const std::string& file, long line) 
     return row;
 }
 
+bool is_condition_row(std::string_view text) {
+    const auto fields = split_fields(text);
+    return fields.size() >= 2 && fields[1] == "if";
+}
+
+constexpr std::size_t kConditionFieldCount = 8;
+
+// card,if,event,axis,sense,position,action,parameter
+std::pair<int, ConditionOrder> parse_condition_row(std::string_view text, const std::string& file,
+                                                   long line) {
+    auto fields = split_fields(text);
+    auto fail = [&](const std::string& why) { return DeckError::at_line(file, line, why); };
+    if (fields.size() != kConditionFieldCount) {
+        throw fail(fmt::format("a condition row has 8 comma-separated fields "
+                               "(card,if,event,axis,sense,position,action,parameter), found {}",
+                               fields.size()));
+    }
+    if (!all_digits(fields[0]) || fields[0].size() > 4) {
+        throw fail(fmt::format("card number '{}' is not 0..9999", fields[0]));
+    }
+    ConditionOrder c;
+    if (!all_digits(fields[2]) || fields[2].size() > 2 || std::stoi(std::string(fields[2])) == 0) {
+        throw fail(fmt::format("event '{}' is not an identifier 1..99", fields[2]));
+    }
+    c.event = std::stoi(std::string(fields[2]));
+    const auto axis = axis_named(fields[3]);
+    if (!axis) {
+        throw fail(
+            fmt::format("unknown axis '{}' (table, cross, vertical, swivel or tilt)", fields[3]));
+    }
+    c.axis = *axis;
+    if (fields[4] == "+") {
+        c.sense = PassingSense::forward;
+    } else if (fields[4] == "-") {
+        c.sense = PassingSense::reverse;
+    } else if (fields[4] == "*") {
+        c.sense = PassingSense::either;
+    } else {
+        throw fail(
+            fmt::format("sense '{}' is not + (forward), - (reverse) or * (either)", fields[4]));
+    }
+    if (fields[5].empty()) {
+        throw fail("position is blank (a condition always has its position)");
+    }
+    c.position = parse_inches(fields[5], "position", file, line);
+    const auto action = action_named(fields[6]);
+    if (!action) {
+        throw fail(fmt::format("unknown action '{}' (spindle-forward, spindle-reverse, "
+                               "spindle-stop, coolant-on, coolant-off, tool-change, dwell, lamp)",
+                               fields[6]));
+    }
+    c.action = *action;
+    if (c.action == ActionKind::dwell) {
+        const auto held = axis_named(fields[7]);
+        if (!held) {
+            throw fail(fmt::format("dwell holds an axis: '{}' is not table, cross, vertical, "
+                                   "swivel or tilt",
+                                   fields[7]));
+        }
+        c.parameter = static_cast<int>(axis_index(*held)) + 1;
+    } else if (!fields[7].empty()) {
+        if (!all_digits(fields[7]) || fields[7].size() > 4) {
+            throw fail(fmt::format("parameter '{}' is not a number 0..9999", fields[7]));
+        }
+        c.parameter = std::stoi(std::string(fields[7]));
+    }
+    if (auto error = parameter_error(c.action, c.parameter)) {
+        throw fail(*error);
+    }
+    return {std::stoi(std::string(fields[0])), c};
+}
+
 class ListingSource : public CardSource {
 public:
     ListingSource(std::istream& in, std::string file, const CardLayout& layout)
@@ -203,8 +275,13 @@ public:
         if (card_ == 1) {
             out_ << kListingHeader << '\n';
         }
+        for (int i = 0; i < decoded.orders.condition_count; ++i) {
+            out_ << condition_row(decoded.orders, i) << '\n';
+        }
         for (Axis a : kAxes) {
-            out_ << listing_row(decoded.orders, a) << '\n';
+            if (decoded.orders.kind == CardKind::motion) {
+                out_ << listing_row(decoded.orders, a) << '\n';
+            }
         }
         if (!out_) {
             throw DeckError::in_file(file_, "write error");
@@ -286,12 +363,63 @@ std::optional<std::string> ListingReader::next_data_line() {
     }
 }
 
+std::optional<ListedCard> ListingReader::next_condition_card(std::string first) {
+    ListedCard card;
+    card.orders.kind = CardKind::condition;
+    card.first_line = line_;
+    std::string text = std::move(first);
+    while (true) {
+        auto [number, condition] = parse_condition_row(text, file_, line_);
+        if (card.orders.condition_count == 0) {
+            card.orders.number = number;
+        } else if (number != card.orders.number) {
+            pending_ = std::move(text); // the next card begins
+            return card;
+        }
+        if (card.orders.condition_count == kConditionsPerCard) {
+            throw DeckError::at_line(file_, line_,
+                                     fmt::format("card {} has a sixth condition row (a condition "
+                                                 "card holds five; begin another card)",
+                                                 number));
+        }
+        card.orders.conditions.at(static_cast<std::size_t>(card.orders.condition_count++)) =
+            condition;
+        auto next = next_data_line();
+        if (!next) {
+            return card;
+        }
+        if (!is_condition_row(*next)) {
+            pending_ = std::move(*next);
+            return card;
+        }
+        text = std::move(*next);
+    }
+}
+
 std::optional<ListedCard> ListingReader::next() {
     ListedCard card;
     std::array<bool, kAxisCount> seen{};
     int rows = 0;
     while (rows < kAxisCount) {
-        auto text = next_data_line();
+        std::optional<std::string> text;
+        if (pending_) {
+            text = std::move(pending_);
+            pending_.reset();
+        } else {
+            text = next_data_line();
+        }
+        if (text && is_condition_row(*text)) {
+            if (rows == 0) {
+                return next_condition_card(std::move(*text));
+            }
+            auto missing = std::find(seen.begin(), seen.end(), false) - seen.begin();
+            throw DeckError::at_line(
+                file_, line_,
+                fmt::format("a condition row begins, but card {} (from line {}) has no row for "
+                            "the {} axis",
+                            card.orders.number, card.first_line,
+                            axis_name(kAxes.at(static_cast<std::size_t>(missing)))));
+        }
         if (!text) {
             if (rows == 0) {
                 return std::nullopt;
@@ -353,6 +481,19 @@ std::string listing_row(const CardOrders& orders, Axis axis) {
                        o.motion == Motion::forward ? "+" : "-", o.start_speed,
                        inches(o.slow_down[0]), inches(o.slow_down[1]), format_inches(o.stop),
                        format_inches(o.check), format_sequence(o.sequence));
+}
+
+std::string condition_row(const CardOrders& orders, int index) {
+    const ConditionOrder& c = orders.conditions.at(static_cast<std::size_t>(index));
+    std::string parameter;
+    if (c.action == ActionKind::dwell) {
+        parameter = axis_name(kAxes.at(static_cast<std::size_t>(c.parameter - 1)));
+    } else if (c.parameter != 0) {
+        parameter = std::to_string(c.parameter);
+    }
+    return fmt::format("{},if,{},{},{},{},{},{}", orders.number, c.event, axis_name(c.axis),
+                       sense_symbol(c.sense), format_inches(c.position), action_name(c.action),
+                       parameter);
 }
 
 std::unique_ptr<CardSource> make_listing_source(std::istream& in, std::string file,

@@ -8,6 +8,16 @@
 // card number and spindle. Numbers are inches with exactly three decimals, 0.000 .. 9.999;
 // slow1 and slow2 may be blank; seq lists the punched sequence positions (1..5) as digits.
 // The writer writes the rows of each card in table, cross, vertical, swivel, tilt order.
+//
+// A condition card (an addition after EP 0640901, docs/deck-formats.md) is one row per
+// condition, 1..5 consecutive rows with the same card number and the word `if` where a motion
+// row has its spindle:
+//
+//   card,if,event,axis,sense,position,action,parameter
+//   3,if,1,cross,-,1.250,tool-change,2
+//
+// sense is + (forward), - (reverse) or * (either); parameter is blank where the action takes
+// none (spindle, coolant), the tool number, the axis to hold (a name) or the lamp number.
 #pragma once
 
 #include "cardreader/deck_io.hpp"
@@ -34,6 +44,9 @@ public:
 
 private:
     std::optional<std::string> next_data_line();
+    std::optional<ListedCard> next_condition_card(std::string first);
+
+    std::optional<std::string> pending_; // a line read ahead, the first of the next card
 
     std::istream& in_;
     std::string file_;
@@ -43,6 +56,8 @@ private:
 
 // One listing row for one axis of a card, without a newline.
 std::string listing_row(const CardOrders& orders, Axis axis);
+// One listing row for condition `index` of a condition card, without a newline.
+std::string condition_row(const CardOrders& orders, int index);
 
 std::unique_ptr<CardSource> make_listing_source(std::istream& in, std::string file,
                                                 const CardLayout& layout);

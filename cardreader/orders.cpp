@@ -31,6 +31,64 @@ std::string_view spindle_name(Spindle s) {
     return "off";
 }
 
+namespace {
+constexpr std::array<std::string_view, kActionKinds> kActionNames = {
+    "spindle-forward", "spindle-reverse", "spindle-stop", "coolant-on",
+    "coolant-off",     "tool-change",     "dwell",        "lamp"};
+} // namespace
+
+std::string_view action_name(ActionKind a) {
+    const auto i = static_cast<std::size_t>(a) - 1;
+    return i < kActionNames.size() ? kActionNames.at(i) : std::string_view("unknown");
+}
+
+std::optional<ActionKind> action_named(std::string_view name) {
+    for (std::size_t i = 0; i < kActionNames.size(); ++i) {
+        if (kActionNames.at(i) == name) {
+            return static_cast<ActionKind>(i + 1);
+        }
+    }
+    return std::nullopt;
+}
+
+std::string_view sense_symbol(PassingSense s) {
+    return s == PassingSense::forward ? "+" : s == PassingSense::reverse ? "-" : "*";
+}
+
+std::string_view sense_name(PassingSense s) {
+    return s == PassingSense::forward   ? "forward"
+           : s == PassingSense::reverse ? "reverse"
+                                        : "either";
+}
+
+std::optional<std::string> parameter_error(ActionKind a, int parameter) {
+    switch (a) {
+    case ActionKind::tool_change:
+        if (parameter < 1 || parameter > 99) {
+            return fmt::format("tool-change needs the tool number 1..99, not {}", parameter);
+        }
+        return std::nullopt;
+    case ActionKind::dwell:
+        if (parameter < 1 || parameter > kAxisCount) {
+            return fmt::format("dwell needs the axis to hold, 1..5 (table, cross, vertical, "
+                               "swivel, tilt), not {}",
+                               parameter);
+        }
+        return std::nullopt;
+    case ActionKind::lamp:
+        if (parameter < 1 || parameter > 9) {
+            return fmt::format("lamp needs the lamp number 1..9, not {}", parameter);
+        }
+        return std::nullopt;
+    default:
+        if (parameter != 0) {
+            return fmt::format("{} takes no parameter (leave it blank), not {}", action_name(a),
+                               parameter);
+        }
+        return std::nullopt;
+    }
+}
+
 std::string format_inches(Thousandths value) {
     return fmt::format("{}.{:03}", value / 1000, value % 1000);
 }

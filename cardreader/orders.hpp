@@ -57,10 +57,61 @@ struct AxisOrder {
     bool operator==(const AxisOrder&) const = default;
 };
 
+// ---- Condition cards: an addition after EP 0640901 (Siemens; seeds/002), not in the patent.
+// A condition card (column 76 punched in row 1, docs/card-layout.md) carries up to five
+// condition records, each split by converter UMS into a condition (axis, position, sense of
+// passing) and an action, both carrying the same event identifier (claim 3). It stands before
+// the motion card it watches (claim 4).
+
+// Which kind of card this is: column 76, the extension mark (blank on a 1952 card).
+enum class CardKind : std::uint8_t { motion, condition };
+
+// The sense in which the axis must pass the position: its counters counting up (forward),
+// down (reverse), or either.
+enum class PassingSense : std::uint8_t { forward, reverse, either };
+
+// What the tripping unit ALE starts when the monitoring unit PRG reports the event.
+enum class ActionKind : std::uint8_t {
+    spindle_forward = 1, // start (or run up) the spindle forward
+    spindle_reverse = 2, // start (or run up) the spindle in reverse
+    spindle_stop = 3,    // run the spindle down to rest
+    coolant_on = 4,
+    coolant_off = 5,
+    tool_change = 6, // parameter: the tool to put in the spindle (1..99)
+    dwell = 7,       // parameter: the axis to hold (1..5 = table .. tilt)
+    lamp = 8,        // parameter: the output lamp to light (1..9)
+};
+inline constexpr int kActionKinds = 8;
+inline constexpr int kConditionsPerCard = 5;
+
+struct ConditionOrder {
+    int event = 0; // identifier 1..99 shared by condition and action (claim 3)
+    Axis axis = Axis::table;
+    Thousandths position = 0; // compared with the absolute counter, d.ddd
+    PassingSense sense = PassingSense::either;
+    ActionKind action = ActionKind::lamp;
+    int parameter = 0; // 0..9999: tool number, held axis, lamp number (0 where unused)
+
+    bool operator==(const ConditionOrder&) const = default;
+};
+
+// "tool-change", "spindle-forward", ...: the listing's and the messages' word for an action.
+std::string_view action_name(ActionKind a);
+std::optional<ActionKind> action_named(std::string_view name);
+// "+", "-", "*"
+std::string_view sense_symbol(PassingSense s);
+std::string_view sense_name(PassingSense s); // "forward", "reverse", "either"
+// What the parameter of an action means and which values it takes, or an error sentence.
+std::optional<std::string> parameter_error(ActionKind a, int parameter);
+
 struct CardOrders {
     int number = 0; // card number, 0000 .. 9999
     Spindle spindle = Spindle::off;
     std::array<AxisOrder, kAxisCount> axes{};
+    // A condition card (an addition): its records; the axes above are unused and left default.
+    CardKind kind = CardKind::motion;
+    int condition_count = 0;
+    std::array<ConditionOrder, kConditionsPerCard> conditions{};
 
     const AxisOrder& axis(Axis a) const { return axes.at(axis_index(a)); }
     AxisOrder& axis(Axis a) { return axes.at(axis_index(a)); }

@@ -178,6 +178,7 @@ struct Panel {
     std::vector<Point> motor_steps;
     const std::vector<double>* slow_downs = nullptr;
     const std::vector<double>* stops = nullptr;
+    const std::vector<PlotSvgRecorder::Trip>* trips = nullptr;
 };
 
 struct StopMark {
@@ -217,6 +218,7 @@ private:
                   const char* attributes);
     void speed_line(const Panel& p, double bottom);
     void markers(const Panel& p, const Scale& ty);
+    void trip_markers(const Panel& p, const Scale& ty);
 
     std::string svg_;
     Scale tx_;
@@ -417,6 +419,22 @@ void ChartWriter::markers(const Panel& p, const Scale& ty) {
     }
 }
 
+// Where a condition was met (condition cards, an addition after EP 0640901): a diamond on the
+// path, titled with the event, the action and the position.
+void ChartWriter::trip_markers(const Panel& p, const Scale& ty) {
+    for (const auto& trip : *p.trips) {
+        const double x = tx_(trip.t);
+        const double y = ty(interpolate(p.path, trip.t));
+        fmt::format_to(
+            out(),
+            R"(<path class="condition-marker" data-axis="{}" )"
+            R"(d="M{:.1f},{:.1f} l6,6 l-6,6 l-6,-6 z" fill="#59a14f" stroke="white" )"
+            R"(stroke-width="0.8"><title>{}: {} (condition met at {:.3f} s)</title></path>)"
+            "\n",
+            p.name, x, y - 6, p.name, cardreader::xml_escape(trip.label), trip.t);
+    }
+}
+
 void ChartWriter::panel(std::size_t i, const Panel& p, const std::vector<CardLine>& cards,
                         const std::optional<StopMark>& stop) {
     const double panel_top = top(i);
@@ -501,6 +519,7 @@ void ChartWriter::panel(std::size_t i, const Panel& p, const std::vector<CardLin
     polyline({line}, R"(class="position" stroke="#1f4e9c" stroke-width="1.8" )"
                      R"(stroke-linejoin="round")");
     markers(p, ty);
+    trip_markers(p, ty);
     fmt::format_to(out(), "</g>\n</g>\n");
 }
 
@@ -574,6 +593,7 @@ std::string PlotSvgRecorder::svg() const {
         p.motor_steps = a.motor;
         p.slow_downs = &a.slow_downs;
         p.stops = &a.stops;
+        p.trips = &a.trips;
         chart.panel(i, p, cards, stop);
     }
     chart.time_axis(stop);

@@ -174,6 +174,21 @@ const std::vector<double>& PlotSvgRecorder::slow_down_times(Axis axis) const {
     return axes_.at(cardreader::axis_index(axis)).slow_downs;
 }
 
+void PlotSvgRecorder::on_condition(double seconds, const relaylogic::ConditionEvent& e) {
+    if (e.kind != relaylogic::ConditionEventKind::met) {
+        return;
+    }
+    last_t_ = std::max(last_t_, seconds);
+    axes_.at(cardreader::axis_index(e.axis))
+        .trips.push_back(Trip{seconds, fmt::format("event {}: {} {} at {}", e.event,
+                                                   cardreader::action_name(e.action), e.parameter,
+                                                   cardreader::format_inches(e.position))});
+}
+
+const std::vector<PlotSvgRecorder::Trip>& PlotSvgRecorder::trips(cardreader::Axis axis) const {
+    return axes_.at(cardreader::axis_index(axis)).trips;
+}
+
 const std::vector<double>& PlotSvgRecorder::stop_times(Axis axis) const {
     return axes_.at(cardreader::axis_index(axis)).stops;
 }

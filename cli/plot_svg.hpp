@@ -42,6 +42,7 @@ public:
     void on_motion(double seconds, const std::array<double, 5>& real_in) override;
     void on_card(double seconds, long index, const cardreader::CardOrders& orders) override;
     void on_stop(double seconds, const relaylogic::StopInfo& stop) override;
+    void on_condition(double seconds, const relaylogic::ConditionEvent& event) override;
     void on_finish(double seconds) override;
 
     // The chart: five panels stacked on one time axis, about 1100 px wide.
@@ -53,6 +54,12 @@ public:
     const std::vector<Point>& speed_steps(cardreader::Axis axis) const;
     const std::vector<double>& slow_down_times(cardreader::Axis axis) const;
     const std::vector<double>& stop_times(cardreader::Axis axis) const;
+    // Where a condition card's condition was met on this axis (an addition): time and label.
+    struct Trip {
+        double t = 0;
+        std::string label; // "event 7: lamp 3"
+    };
+    const std::vector<Trip>& trips(cardreader::Axis axis) const;
 
 private:
     struct Bucket {
@@ -69,6 +76,7 @@ private:
         std::string motor_name; // "motor 38"
         std::vector<double> slow_downs;
         std::vector<double> stops;
+        std::vector<Trip> trips;
     };
     struct CardMark {
         double t = 0;

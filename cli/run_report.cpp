@@ -98,6 +98,28 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const AppliedProfile&
                              {"machine_seconds", time_s(c.end_s - c.start_s)}});
     }
     j["cards"] = cards;
+    // Condition cards (an addition after EP 0640901): only in a profile that has them.
+    if (r.tool_in_spindle) {
+        j["tool_in_spindle"] = *r.tool_in_spindle;
+        json actions = json::array();
+        double saved = 0;
+        for (const auto& a : r.actions) {
+            saved += a.overlap_s();
+            actions.push_back(json{{"event", a.event},
+                                   {"condition_card", a.condition_card},
+                                   {"motion_card", a.motion_card},
+                                   {"axis", std::string(axis_name(a.axis))},
+                                   {"position", cardreader::format_inches(a.position)},
+                                   {"action", std::string(cardreader::action_name(a.action))},
+                                   {"parameter", a.parameter},
+                                   {"tripped_seconds", time_s(a.tripped_s)},
+                                   {"acknowledged_seconds", time_s(a.acknowledged_s)},
+                                   {"motion_end_seconds", time_s(a.motion_end_s)},
+                                   {"overlap_seconds", time_s(a.overlap_s())}});
+        }
+        j["actions"] = actions;
+        j["actions_overlap_seconds"] = time_s(saved);
+    }
     return j;
 }
 
@@ -134,6 +156,16 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
     }
     for (const auto& f : r.faults) {
         line(fmt::format("  fault          {}: {}", f.spec, f.effect));
+    }
+    for (const auto& a : r.actions) {
+        line(fmt::format("  action         event {} ({} at {}, card {}): {} {} at {:.3f} s, "
+                         "acknowledged {:.3f} s, {:.3f} s of it while the axes moved",
+                         a.event, axis_name(a.axis), cardreader::format_inches(a.position),
+                         a.motion_card, cardreader::action_name(a.action), a.parameter, a.tripped_s,
+                         a.acknowledged_s, a.overlap_s()));
+    }
+    if (r.tool_in_spindle) {
+        line(fmt::format("  tool           {} in the spindle", *r.tool_in_spindle));
     }
     for (Axis a : cardreader::kAxes) {
         const auto& x = r.axes.at(cardreader::axis_index(a));

@@ -308,6 +308,17 @@ void VcdWriter::on_stop(double seconds, const relaylogic::StopInfo& stop) {
                 stop.message);
 }
 
+void VcdWriter::on_condition(double seconds, const relaylogic::ConditionEvent& e) {
+    if (!header_written_) {
+        write_header();
+    }
+    advance_time(seconds);
+    put_comment(fmt::format("{}: event {} ({} {}, {} {})", relaylogic::condition_event_name(e.kind),
+                            e.event, cardreader::axis_name(e.axis),
+                            cardreader::format_inches(e.position),
+                            cardreader::action_name(e.action), e.parameter));
+}
+
 void VcdWriter::on_finish(double seconds) {
     if (!header_written_) {
         write_header();
@@ -379,6 +390,37 @@ void EventsJsonlWriter::on_stop(double seconds, const relaylogic::StopInfo& stop
         buf_.put(json_string(stop.lamps[i]));
     }
     buf_.put("]}\n");
+}
+
+// {"t":..,"event":"condition_met","id":7,"card":2,"card_number":2,"condition_card":1,
+//  "axis":"table","position":"5.000","sense":"forward","action":"lamp","parameter":3,
+//  "tool_in_spindle":1}
+void EventsJsonlWriter::on_condition(double seconds, const relaylogic::ConditionEvent& e) {
+    buf_.put("{\"t\":");
+    buf_.put_fixed(seconds, 6);
+    buf_.put(",\"event\":");
+    buf_.put(json_string(relaylogic::condition_event_name(e.kind)));
+    buf_.put(",\"id\":");
+    buf_.put_int(e.event);
+    buf_.put(",\"card\":");
+    buf_.put_int(e.card);
+    buf_.put(",\"card_number\":");
+    buf_.put_int(e.card_number);
+    buf_.put(",\"condition_card\":");
+    buf_.put_int(e.condition_card);
+    buf_.put(",\"axis\":");
+    buf_.put(json_string(cardreader::axis_name(e.axis)));
+    buf_.put(",\"position\":");
+    buf_.put(json_string(cardreader::format_inches(e.position)));
+    buf_.put(",\"sense\":");
+    buf_.put(json_string(cardreader::sense_name(e.sense)));
+    buf_.put(",\"action\":");
+    buf_.put(json_string(cardreader::action_name(e.action)));
+    buf_.put(",\"parameter\":");
+    buf_.put_int(e.parameter);
+    buf_.put(",\"tool_in_spindle\":");
+    buf_.put_int(e.tool_in_spindle);
+    buf_.put("}\n");
 }
 
 void EventsJsonlWriter::on_finish(double seconds) {

@@ -89,6 +89,7 @@ public:
                    std::uint32_t new_value) override;
     void on_card(double seconds, long index, const cardreader::CardOrders& orders) override;
     void on_stop(double seconds, const relaylogic::StopInfo& stop) override;
+    void on_condition(double seconds, const relaylogic::ConditionEvent& event) override;
     void on_finish(double seconds) override;
     bool follows_motion() const override { return false; }
 
@@ -140,6 +141,7 @@ public:
                    std::uint32_t new_value) override;
     void on_card(double seconds, long index, const cardreader::CardOrders& orders) override;
     void on_stop(double seconds, const relaylogic::StopInfo& stop) override;
+    void on_condition(double seconds, const relaylogic::ConditionEvent& event) override;
     void on_finish(double seconds) override;
     bool follows_motion() const override { return false; }
 

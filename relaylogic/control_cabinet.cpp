@@ -67,6 +67,7 @@ ControlCabinet::ControlCabinet(axes::MachineProfile profile, const cardreader::C
         circuits_.push_back(std::make_unique<AxisCircuit>(tracer_, profile_, a));
         circuits_.back()->plant.measure_by(profile_.measuring_chain); // Fig. 3
     }
+    conditions_.install(tracer_, profile_); // EP 0640901's units, if the profile has them
 }
 
 void ControlCabinet::attach(MachineObserver* observer) {
@@ -302,6 +303,7 @@ void ControlCabinet::plan_quiet_stretches() {
         q.counting_hundredths =
             profile_.count_hundredths_at_speed_1 && c.speed_switch.position() == 1 && !stop_;
         q.watching_soft_limits = c.powered && c.plant.profile().soft_limits;
+        q.prg = conditions_.present() ? &conditions_.prg() : nullptr;
         q.next_fault_impulse = 0;
         q.faulty_switch_ahead = false;
         for (const Fault& f : faults_) {
@@ -412,7 +414,7 @@ void ControlCabinet::handle(const Event& e) {
         relays_pick();
         break;
     case EventKind::second_bank:
-        for (std::size_t i = 0; i < circuits_.size(); ++i) {
+        for (std::size_t i = 0; i < circuits_.size() && !condition_card_; ++i) {
             for (int k = 0; k < circuits_[i]->order.start_speed; ++k) {
                 schedule(now_ + k * profile_.stepping_switch_step_s, EventKind::speed_step_252,
                          static_cast<int>(i));
@@ -438,6 +440,9 @@ void ControlCabinet::handle(const Event& e) {
     case EventKind::shaft_step:
         shaft_step();
         break;
+    case EventKind::action_done:
+        acknowledge(e.axis);
+        break;
     }
 }
 
@@ -454,6 +459,21 @@ void ControlCabinet::feed() {
         tracer_.set(channel, 0);
     }
     card_ = deck_->next();
+    condition_card_ = false;
+    if (!card_ && conditions_.stored()) {
+        int k = 0;
+        while (conditions_.buffer().pair(k).state != PairState::stored) {
+            ++k;
+        }
+        const BufferPair& p = conditions_.buffer().pair(k);
+        machine_stop(StopReason::condition_refused, std::nullopt,
+                     fmt::format("card {} (number {:04}): a condition card with no motion card "
+                                 "after it: the deck ends (condition cards stand before the "
+                                 "motion card they watch, EP 0640901 claim 4)",
+                                 p.card, p.card_number),
+                     "condition lamp (an addition)");
+        return;
+    }
     if (!card_) {
         deck_finished_ = true;
         tracer_.set(reader_feeding_, 0);
@@ -507,11 +527,39 @@ void ControlCabinet::first_bank() {
     }
     previous_number_ = orders_.number;
     tracer_.set(card_number_check_, static_cast<std::uint32_t>(orders_.number));
+    if (orders_.kind == cardreader::CardKind::condition) {
+        condition_card();
+        return;
+    }
+    if (auto refusal = conditions_.refuse_unmoved(orders_, cards_read_)) {
+        machine_stop(StopReason::condition_refused, std::nullopt, *refusal,
+                     "condition lamp (an addition)");
+        return;
+    }
     if (!move_within_soft_limits()) {
         return;
     }
     // The brushes have sensed the card; the holding relays pick a relay's operate time later.
     schedule(now_ + profile_.relay_operate_s, EventKind::relays_pick);
+}
+
+// A condition card (an addition after EP 0640901): no axis moves; converter UMS enters its
+// records into buffer PFR, and at the end of the card cycle channel 304 indexes the next card.
+void ControlCabinet::condition_card() {
+    condition_card_ = true;
+    if (!conditions_.present()) {
+        machine_stop(StopReason::condition_refused, std::nullopt,
+                     fmt::format("{}, column {}: a condition card (an addition after EP 0640901, "
+                                 "Siemens): profile {} has no condition units; the built-in "
+                                 "profile parsons-extended allows them",
+                                 card_name(), layout_.extension_column, profile_.name),
+                     "card reader 134 check lamp (an addition)");
+        return;
+    }
+    if (auto refusal = conditions_.convert(orders_, cards_read_)) {
+        machine_stop(StopReason::condition_refused, std::nullopt, *refusal,
+                     "condition lamp (an addition)");
+    }
 }
 
 // The movement range, judged on the card before anything moves: where would each axis end
@@ -586,11 +634,21 @@ void ControlCabinet::relays_pick() {
         }
         c->compare();
     }
+    if (conditions_.present()) {
+        conditions_.spindle_from_card(orders_.spindle, now_);
+        conditions_.arm(cards_read_); // PFR supplies each stored condition to PRG
+    }
 }
 
 void ControlCabinet::read_complete() {
     reading_complete_ = true;
     tracer_.set(reader_feeding_, 0);
+    if (condition_card_) {
+        reading_complete_ = false;
+        tracer_.set(channel_304_, 1); // nothing to move: the reader indexes the next card
+        schedule(now_, EventKind::feed);
+        return;
+    }
     update_motors();
     for (auto& c : circuits_) {
         evaluate(*c);
@@ -639,12 +697,12 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
         travel_limit(c);
         return false;
     }
+    bool quiet = !(stepped && conditions_.watching(c.axis) && conditions_met(c));
     c.compare();
-    bool quiet = true;
     if (!c.absolute_conducting && !c.incremental_conducting) {
         c.speed_switch.equality_left(now_);
     } else {
-        quiet = evaluate(c);
+        quiet = evaluate(c) && quiet;
     }
     // The soft-limit watch, after the comparers: an axis that stops here anyway is not tripped.
     if (c.powered && c.plant.profile().soft_limits && !stop_ &&
@@ -654,6 +712,48 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
         return false;
     }
     return quiet;
+}
+
+// Monitoring unit PRG: the axis's counter stepped; each channel whose circuit closed reports its
+// identifier, and tripping unit ALE initiates that channel's action (EP 0640901 claim 1).
+bool ControlCabinet::conditions_met(AxisCircuit& c) {
+    const unsigned met =
+        conditions_.on_counter_step(c.axis, c.absolute_counter.digits(), c.direction);
+    for (int k = 0; k < InternalBuffer::kChannels; ++k) {
+        if ((met >> k & 1U) == 0) {
+            continue;
+        }
+        const double done = conditions_.trip(k, now_);
+        tell(k, ConditionEventKind::met);
+        tell(k, ConditionEventKind::action_started);
+        schedule(done, EventKind::action_done, k);
+        const ActionEntry& a = conditions_.buffer().pair(k).action;
+        if (a.action == cardreader::ActionKind::dwell) {
+            update_motor(*circuits_.at(static_cast<std::size_t>(a.parameter - 1)));
+        }
+    }
+    return met != 0;
+}
+
+void ControlCabinet::acknowledge(int channel) {
+    conditions_.acknowledge(channel, now_);
+    tell(channel, ConditionEventKind::acknowledged);
+    const ActionEntry& a = conditions_.buffer().pair(channel).action;
+    if (a.action == cardreader::ActionKind::dwell) {
+        update_motor(*circuits_.at(static_cast<std::size_t>(a.parameter - 1)));
+    }
+    if (zeroize_waiting_ && conditions_.all_acknowledged()) {
+        zeroize_waiting_ = false;
+        conditions_.set_waiting(false);
+        zeroize(); // claim 2: every action acknowledged, the next card may be processed
+    }
+}
+
+void ControlCabinet::tell(int channel, ConditionEventKind kind) {
+    if (tracer_.observer() != nullptr) {
+        tracer_.observer()->on_condition(
+            now_, conditions_.event(channel, kind, cards_read_, orders_.number));
+    }
 }
 
 bool ControlCabinet::fault_drops(const AxisCircuit& c) {
@@ -748,6 +848,7 @@ void ControlCabinet::stop_axis(AxisCircuit& c) {
     }
     release_after_stop(c);
     c.stopped = true;
+    motion_end_s_ = now_;
     c.show_lamps();
     update_motor(c);
     if (!balancing_.check_at_stop(absolute, incremental)) {
@@ -792,7 +893,7 @@ void ControlCabinet::release_after_stop(const AxisCircuit& c) {
 
 void ControlCabinet::shaft_step() {
     if (shaft_.finish_step()) {
-        zeroize();
+        shaft_home();
         return;
     }
     if (shaft_.pending() > 0) {
@@ -803,6 +904,40 @@ void ControlCabinet::shaft_step() {
     for (auto& c : circuits_) {
         evaluate(*c);
     }
+}
+
+// Members 282 home past contact 290. With condition cards (an addition), a condition still
+// armed was never met on this card: the machine stops; and the zeroizing circuit waits until
+// tripping unit ALE has every action acknowledged (EP 0640901 claim 2).
+void ControlCabinet::shaft_home() {
+    const int unmet = conditions_.first_unmet();
+    if (unmet >= 0) {
+        const BufferPair& p = conditions_.buffer().pair(unmet);
+        const AxisCircuit& c = *circuits_.at(cardreader::axis_index(p.condition.axis));
+        machine_stop(
+            StopReason::condition_not_met, p.condition.axis,
+            fmt::format("{}: event {} (condition card {}) was not met: the {} axis "
+                        "never passed {} {} before the card's last axis stopped (its "
+                        "counter reads {}; condition cards are an addition after "
+                        "EP 0640901, Siemens)",
+                        card_name(), p.condition.event, p.card, axis_name(p.condition.axis),
+                        format_inches(p.condition.position),
+                        p.condition.sense == cardreader::PassingSense::either
+                            ? std::string("in either sense")
+                            : fmt::format("counting {}",
+                                          p.condition.sense == cardreader::PassingSense::forward
+                                              ? "up (forward)"
+                                              : "down (reverse)"),
+                        inches(c.absolute_counter.value())),
+            "condition lamp (monitoring unit PRG; an addition)");
+        return;
+    }
+    if (!conditions_.all_acknowledged()) {
+        zeroize_waiting_ = true;
+        conditions_.set_waiting(true);
+        return;
+    }
+    zeroize();
 }
 
 // Contact 290 closed circuit 292-294: the zeroizing circuit, one channel after the other, each
@@ -829,6 +964,18 @@ void ControlCabinet::zeroize() {
     }
     tracer_.set(channel_302_, 1); // resets device 288, closing circuit 274
     shaft_.reset();
+    if (conditions_.present()) {
+        for (int k = 0; k < InternalBuffer::kChannels; ++k) {
+            const BufferPair& p = conditions_.buffer().pair(k);
+            if (p.state == PairState::acknowledged) {
+                actions_.push_back(
+                    ActionRecord{p.condition.event, p.card, cards_read_, orders_.number,
+                                 p.condition.axis, p.condition.position, p.action.action,
+                                 p.action.parameter, p.tripped_s, p.acknowledged_s, motion_end_s_});
+            }
+        }
+        conditions_.zeroize(); // channel 294 clears PFR and PRG too
+    }
     tracer_.set(channel_304_, 1); // indexes card reader 134 to the next card
     reading_complete_ = false;
     update_motors();
@@ -839,7 +986,7 @@ void ControlCabinet::zeroize() {
 }
 
 void ControlCabinet::update_motor(AxisCircuit& c) {
-    const bool on = live(c);
+    const bool on = live(c) && !conditions_.held(c.axis); // a dwell opens the hold relay
     if (auto impulse = c.plant.advance_to(now_)) {
         on_impulse(c, *impulse); // never let an impulse due now go uncounted
     }
@@ -946,7 +1093,9 @@ nlohmann::json ControlCabinet::capture() const {
                           {"stepping_shaft_280", shaft_.save()},
                           {"signals", tracer_.save()},
                           {"card_times", times},
-                          {"faults", faults}};
+                          {"faults", faults},
+                          {"conditions", conditions_.save()},
+                          {"actions", actions_to_json(actions_)}};
 }
 
 void ControlCabinet::resume(const nlohmann::json& j) {
@@ -973,6 +1122,8 @@ void ControlCabinet::resume(const nlohmann::json& j) {
         timings_.push_back(
             CardTiming{t.at(0).get<long>(), t.at(1).get<int>(), exact(t.at(2)), exact(t.at(3))});
     }
+    conditions_.load(j.contains("conditions") ? j.at("conditions") : nlohmann::json());
+    actions_ = actions_from_json(j.contains("actions") ? j.at("actions") : nlohmann::json::array());
     effects_.clear();
     for (const auto& e : member(j, "faults")) {
         effects_.push_back(FaultEffect{read<std::string>(e, "fault"), read<bool>(e, "acted"),
@@ -995,6 +1146,10 @@ RunResult ControlCabinet::result() const {
     r.stop = stop_;
     r.cards = timings_;
     r.faults = effects_;
+    r.actions = actions_;
+    if (conditions_.present()) {
+        r.tool_in_spindle = conditions_.ale().tool_in_spindle();
+    }
     for (std::size_t i = 0; i < circuits_.size(); ++i) {
         const AxisCircuit& c = *circuits_[i];
         AxisResult& a = r.axes.at(i);

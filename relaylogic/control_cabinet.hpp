@@ -23,6 +23,7 @@
 #include "cardreader/layout.hpp"
 #include "relaylogic/axis_circuit.hpp"
 #include "relaylogic/balancing_circuit.hpp"
+#include "relaylogic/condition_units.hpp"
 #include "relaylogic/faults.hpp"
 
 #include <csignal>
@@ -61,6 +62,9 @@ struct RunResult {
     std::array<AxisResult, cardreader::kAxisCount> axes{};
     std::vector<CardTiming> cards;   // each card's machine time, if asked for (record_card_times)
     std::vector<FaultEffect> faults; // what each injected fault did
+    // Condition cards (an addition): the actions acknowledged, and the tool in the spindle.
+    std::vector<ActionRecord> actions;
+    std::optional<int> tool_in_spindle; // when the profile has a tool changer
 };
 
 // How the cabinet spends its time. Both give the same machine, event for event: impulse level
@@ -109,6 +113,7 @@ private:
         read_complete,
         delay_258_release,
         shaft_step,
+        action_done, // an action of ALE is done (axis: its channel)
     };
     struct Event {
         double t;
@@ -146,7 +151,12 @@ private:
     void stop_axis(AxisCircuit& c);
     void release_after_stop(const AxisCircuit& c);
     void shaft_step();
+    void shaft_home();
     void zeroize();
+    void condition_card();
+    bool conditions_met(AxisCircuit& c);
+    void acknowledge(int channel);
+    void tell(int channel, ConditionEventKind kind);
     void update_motors();
     void update_motor(AxisCircuit& c);
     void machine_stop(StopReason reason, std::optional<cardreader::Axis> axis,
@@ -194,6 +204,13 @@ private:
     bool record_times_ = false;
     std::vector<CardTiming> timings_;
     std::optional<StopInfo> stop_;
+    // Condition cards (an addition): the seed's units, the card being a condition card, the
+    // zeroizing circuit waiting for acknowledgements, when this card's last axis stopped.
+    ConditionUnits conditions_;
+    bool condition_card_ = false;
+    bool zeroize_waiting_ = false;
+    double motion_end_s_ = 0;
+    std::vector<ActionRecord> actions_;
 
     SignalId reader_card_;
     SignalId reader_feeding_;

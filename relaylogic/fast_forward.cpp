@@ -71,8 +71,10 @@ std::optional<long> least_over_matches(const std::array<unsigned, 4>& allowed, D
 }
 
 // Absolute comparer 122': the first coming impulse after which it conducts, or kForever.
-// Returns nullopt when the banks hold too many numbers to search.
-std::optional<long> first_absolute_equality(const AxisCircuit& c) {
+// Returns nullopt when the banks hold too many numbers to search. With `prg`, the same for
+// the monitoring unit's channels on this axis instead (each holds one position).
+std::optional<long> first_absolute_equality(const AxisCircuit& c,
+                                            const MonitoringUnit* prg = nullptr) {
     const long k0 = c.plant.commutator_index();
     const int d = c.plant.moving_direction();
     const int sigma = c.direction * d;
@@ -84,15 +86,25 @@ std::optional<long> first_absolute_equality(const AxisCircuit& c) {
     // The screw digit x of unit i that puts switch i on counter digit v: v = o + sigma x.
     auto screw_digit = [&](std::size_t i, int v) { return mod10(sigma * (v - offset.at(i))); };
     auto distance = [&](long w) { return impulses_until(d * (w - k0)); };
+    // The first impulse after which the counter reads `number` (a reading, not a bank).
+    auto until_reading = [&](int number) {
+        const Digits v = value_digits(number);
+        long w = 0;
+        for (std::size_t i = 0; i < 4; ++i) {
+            w = w * 10 + screw_digit(i, v.at(i));
+        }
+        return distance(w);
+    };
+    if (prg != nullptr) {
+        long first = kForever;
+        prg->each_watched(c.axis, c.direction,
+                          [&](int position) { first = std::min(first, until_reading(position)); });
+        return first;
+    }
     if (c.absolute_storage.separate_registers()) {
         long first = kForever;
         for (int number : c.absolute_storage.numbers()) {
-            const Digits v = value_digits(number);
-            long w = 0;
-            for (std::size_t i = 0; i < 4; ++i) {
-                w = w * 10 + screw_digit(i, v.at(i));
-            }
-            first = std::min(first, distance(w));
+            first = std::min(first, until_reading(number));
         }
         return first;
     }
@@ -175,6 +187,9 @@ long quiet_impulses(const AxisCircuit& c, const QuietConditions& q) {
         return 0;
     }
     first_event = std::min({first_event, *absolute, *incremental});
+    if (q.prg != nullptr && !q.machine_stopped && q.prg->watching(c.axis)) {
+        first_event = std::min(first_event, *first_absolute_equality(c, q.prg));
+    }
     return first_event == kForever ? kForever : first_event - 1;
 }
 

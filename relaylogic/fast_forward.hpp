@@ -20,6 +20,7 @@
 #pragma once
 
 #include "relaylogic/axis_circuit.hpp"
+#include "relaylogic/monitoring_unit.hpp"
 
 namespace parsons::relaylogic {
 
@@ -30,6 +31,9 @@ struct QuietConditions {
     bool counting_hundredths = false;  // the profile's hundredths-only counting is in force
     bool watching_soft_limits = false; // the axis is powered and has a movement range
     bool faulty_switch_ahead = false;  // a skip fault waits on one of the axis's switches
+    // Monitoring unit PRG (condition cards, an addition): its armed positions end a stretch
+    // at the impulse that steps the counter onto one of them. Null when there is none.
+    const MonitoringUnit* prg = nullptr;
 };
 
 // The control's soft-limit watch (Mitsubishi's movement range): with the part at x after an

@@ -35,7 +35,9 @@ enum class StopReason : std::uint8_t {
     sequence_stall,
     bad_punch,
     soft_limit,
-    interrupted, // not a check: the operator stopped the run (SIGINT, SIGTERM)
+    condition_not_met, // a condition card's condition was not met by the end of its motion card
+    condition_refused, // the cabinet cannot take a condition card (profile, deck, buffer)
+    interrupted,       // not a check: the operator stopped the run (SIGINT, SIGTERM)
 };
 
 std::string_view stop_reason_name(StopReason r);
@@ -47,6 +49,27 @@ struct StopInfo {
     std::optional<cardreader::Axis> axis; // the axis that stopped the machine, if one did
     std::string message;                  // one sentence an operator understands
     std::vector<std::string> lamps;       // "lamp 270 (absolute comparer conducting)", ...
+};
+
+// What the condition units (an addition after EP 0640901, Siemens) report, each by its event
+// identifier (claim 3): PRG found the condition met, ALE initiated the action, the action was
+// acknowledged.
+enum class ConditionEventKind : std::uint8_t { met, action_started, acknowledged };
+
+std::string_view condition_event_name(ConditionEventKind k); // "condition_met", ...
+
+struct ConditionEvent {
+    ConditionEventKind kind = ConditionEventKind::met;
+    int event = 0;
+    long card = 0;        // the motion card being machined (deck position)
+    int card_number = -1; // its number
+    long condition_card = 0;
+    cardreader::Axis axis = cardreader::Axis::table;
+    cardreader::Thousandths position = 0;
+    cardreader::PassingSense sense = cardreader::PassingSense::either;
+    cardreader::ActionKind action = cardreader::ActionKind::lamp;
+    int parameter = 0;
+    int tool_in_spindle = 0; // after the event
 };
 
 class MachineObserver {
@@ -65,6 +88,8 @@ public:
     virtual void on_card(double /*seconds*/, long /*index*/, const cardreader::CardOrders&) {}
     // The machine stopped itself.
     virtual void on_stop(double /*seconds*/, const StopInfo& /*stop*/) {}
+    // A condition was met, its action initiated or acknowledged (condition cards, an addition).
+    virtual void on_condition(double /*seconds*/, const ConditionEvent& /*event*/) {}
     // The run is over (completed or stopped and every axis at rest).
     virtual void on_finish(double /*seconds*/) {}
     // Does this observer follow every signal change and motion as it happens (a trace, a
@@ -133,6 +158,11 @@ public:
     void on_finish(double t) override {
         for (auto* o : observers_) {
             o->on_finish(t);
+        }
+    }
+    void on_condition(double t, const ConditionEvent& e) override {
+        for (auto* o : observers_) {
+            o->on_condition(t, e);
         }
     }
 

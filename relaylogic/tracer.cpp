@@ -16,10 +16,26 @@ std::string_view stop_reason_name(StopReason r) {
         return "bad_punch";
     case StopReason::soft_limit:
         return "soft_limit";
+    case StopReason::condition_not_met:
+        return "condition_not_met";
+    case StopReason::condition_refused:
+        return "condition_refused";
     case StopReason::interrupted:
         return "interrupted";
     }
     return "check_mismatch";
+}
+
+std::string_view condition_event_name(ConditionEventKind k) {
+    switch (k) {
+    case ConditionEventKind::met:
+        return "condition_met";
+    case ConditionEventKind::action_started:
+        return "action_started";
+    case ConditionEventKind::acknowledged:
+        return "action_acknowledged";
+    }
+    return "condition_met";
 }
 
 SignalId Tracer::define(std::string scope, std::string name, std::string component,

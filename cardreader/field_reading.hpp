@@ -1,0 +1,44 @@
+// Reading punched fields, shared by the motion card's decode (layout.cpp) and the condition
+// card's (condition_card.cpp): a digit column, a number of digit columns, and the collection of
+// bad punches that reports the lowest column first.
+#pragma once
+
+#include "cardreader/card.hpp"
+#include "cardreader/layout.hpp"
+
+#include <optional>
+#include <string>
+
+namespace parsons::cardreader::detail {
+
+inline constexpr ColumnWord kDigitRows = 0x03FF; // rows 0 .. 9
+
+// "0 and 1": the rows punched in a column word, top to bottom.
+std::string join_rows(ColumnWord word);
+
+// The digit of a column punched in one of rows 0..9, or -1 (blank or a double punch).
+int digit_of(ColumnWord digits);
+
+// Collects the bad punch with the lowest column: the one the operator finds first.
+class Problems {
+public:
+    void add(int column, std::string what) {
+        if (!first_ || column < first_->column) {
+            first_ = BadPunch{column, std::move(what)};
+        }
+    }
+    std::optional<BadPunch> first() const { return first_; }
+
+private:
+    std::optional<BadPunch> first_;
+};
+
+// Reads a digit field; nothing if every column is blank. A double punch or a blank inside the
+// number is added to `problems` (and the value read as 0).
+std::optional<int> read_number(const Card& card, const LayoutField& f, Problems& problems);
+
+// Punches in columns where the table `allowed` (index 1..80) allows none, each named.
+void find_strays(const Card& card, const std::array<ColumnWord, kColumns + 1>& allowed,
+                 const CardLayout& layout, bool condition_card, Problems& problems);
+
+} // namespace parsons::cardreader::detail

@@ -1,0 +1,162 @@
+#include "relaylogic/internal_buffer.hpp"
+
+#include "axes/state_json.hpp"
+#include "cardreader/condition_card.hpp"
+
+#include <fmt/format.h>
+
+namespace parsons::relaylogic {
+
+InternalBuffer::InternalBuffer(Tracer& tracer, bool traced) : tracer_(tracer), traced_(traced) {
+    if (!traced_) {
+        return;
+    }
+    for (int k = 0; k < kChannels; ++k) {
+        const auto i = static_cast<std::size_t>(k);
+        event_signal_.at(i) =
+            tracer.define("conditions", fmt::format("buffer_pfr.pair_{}.event", k),
+                          fmt::format("internal buffer PFR, pair {}: the event identifier of its "
+                                      "condition and action entries (EP 0640901 claim 3)",
+                                      k),
+                          "PFR", 7);
+        state_signal_.at(i) =
+            tracer.define("conditions", fmt::format("buffer_pfr.pair_{}.state", k),
+                          fmt::format("internal buffer PFR, pair {}: 0 empty, 1 stored, 2 armed, "
+                                      "3 tripped, 4 acknowledged",
+                                      k),
+                          "PFR", 3);
+    }
+}
+
+void InternalBuffer::set_state(int k, PairState s) {
+    BufferPair& p = pair(k);
+    p.state = s;
+    if (traced_) {
+        tracer_.set(state_signal_.at(static_cast<std::size_t>(k)), static_cast<std::uint32_t>(s));
+        tracer_.set(event_signal_.at(static_cast<std::size_t>(k)),
+                    s == PairState::empty ? 0U : static_cast<std::uint32_t>(p.condition.event));
+    }
+}
+
+int InternalBuffer::free_pair() const {
+    for (int k = 0; k < kChannels; ++k) {
+        if (pair(k).state == PairState::empty) {
+            return k;
+        }
+    }
+    return -1;
+}
+
+int InternalBuffer::pair_with_event(int event) const {
+    for (int k = 0; k < kChannels; ++k) {
+        if (pair(k).state != PairState::empty && pair(k).condition.event == event) {
+            return k;
+        }
+    }
+    return -1;
+}
+
+bool InternalBuffer::any(PairState s) const {
+    for (const BufferPair& p : pairs_) {
+        if (p.state == s) {
+            return true;
+        }
+    }
+    return false;
+}
+
+void InternalBuffer::clear() {
+    for (int k = 0; k < kChannels; ++k) {
+        if (pair(k).state != PairState::empty) {
+            set_state(k, PairState::empty);
+            pair(k) = BufferPair{};
+        }
+    }
+}
+
+nlohmann::json InternalBuffer::save() const {
+    using axes::exact;
+    nlohmann::json list = nlohmann::json::array();
+    for (const BufferPair& p : pairs_) {
+        list.push_back({{"state", static_cast<int>(p.state)},
+                        {"event", p.condition.event},
+                        {"axis", static_cast<int>(p.condition.axis)},
+                        {"position", p.condition.position},
+                        {"sense", static_cast<int>(p.condition.sense)},
+                        {"action", static_cast<int>(p.action.action)},
+                        {"parameter", p.action.parameter},
+                        {"card", p.card},
+                        {"card_number", p.card_number},
+                        {"motion_card", p.motion_card},
+                        {"tripped_s", exact(p.tripped_s)},
+                        {"acknowledged_s", exact(p.acknowledged_s)}});
+    }
+    return list;
+}
+
+void InternalBuffer::load(const nlohmann::json& j) {
+    using axes::exact;
+    using axes::read;
+    if (!j.is_array() || j.size() != static_cast<std::size_t>(kChannels)) {
+        throw axes::StateError(fmt::format("buffer_pfr: expected {} pairs", kChannels));
+    }
+    for (int k = 0; k < kChannels; ++k) {
+        const nlohmann::json& e = j.at(static_cast<std::size_t>(k));
+        BufferPair p;
+        const int state = read<int>(e, "state");
+        const int axis = read<int>(e, "axis");
+        const int sense = read<int>(e, "sense");
+        const int action = read<int>(e, "action");
+        if (state < 0 || state > 4 || axis < 0 || axis >= cardreader::kAxisCount || sense < 0 ||
+            sense > 2 || action < 1 || action > cardreader::kActionKinds) {
+            throw axes::StateError(fmt::format("buffer_pfr[{}]: a value out of range", k));
+        }
+        p.condition.event = read<int>(e, "event");
+        p.condition.axis = static_cast<cardreader::Axis>(axis);
+        p.condition.position = read<cardreader::Thousandths>(e, "position");
+        p.condition.sense = static_cast<cardreader::PassingSense>(sense);
+        p.action.event = p.condition.event;
+        p.action.action = static_cast<cardreader::ActionKind>(action);
+        p.action.parameter = read<int>(e, "parameter");
+        p.card = read<long>(e, "card");
+        p.card_number = read<int>(e, "card_number");
+        p.motion_card = read<long>(e, "motion_card");
+        p.tripped_s = exact(axes::member(e, "tripped_s"));
+        p.acknowledged_s = exact(axes::member(e, "acknowledged_s"));
+        pair(k) = p;
+        set_state(k, static_cast<PairState>(state));
+    }
+}
+
+std::optional<std::string> convert_condition_card(const cardreader::CardOrders& card, long index,
+                                                  InternalBuffer& buffer) {
+    for (int i = 0; i < card.condition_count; ++i) {
+        const cardreader::ConditionOrder& c = card.conditions.at(static_cast<std::size_t>(i));
+        const int column = 1 + i * cardreader::kConditionSlotColumns;
+        const int other = buffer.pair_with_event(c.event);
+        if (other >= 0) {
+            const BufferPair& o = buffer.pair(other);
+            return fmt::format("card {}, column {}: event {} is already stored for the same "
+                               "motion card (card {}{}): an identifier names one condition and "
+                               "its action (EP 0640901 claim 3)",
+                               index, column, c.event, o.card,
+                               o.card == index ? ", an earlier condition" : "");
+        }
+        const int k = buffer.free_pair();
+        if (k < 0) {
+            return fmt::format("card {}, column {}: internal buffer PFR is full ({} conditions "
+                               "before one motion card at most)",
+                               index, column, InternalBuffer::kChannels);
+        }
+        BufferPair& p = buffer.pair(k);
+        p = BufferPair{};
+        p.condition = ConditionEntry{c.event, c.axis, c.position, c.sense};
+        p.action = ActionEntry{c.event, c.action, c.parameter};
+        p.card = index;
+        p.card_number = card.number;
+        buffer.set_state(k, PairState::stored);
+    }
+    return std::nullopt;
+}
+
+} // namespace parsons::relaylogic

@@ -1,0 +1,88 @@
+// Internal buffer PFR of EP 0640901 (Siemens; seeds/002, claim 1): an addition, not in the
+// 1952 patent.
+//
+// "The converter (UMS) ... converts the at least one condition record into two further entries
+// in the internal buffer (PFR) which contain the condition and the action to be performed
+// after its fulfilment"; "the internal buffer (PFR) supplies ... the condition to a monitoring
+// unit (PRG) and the action ... to a tripping unit (ALE)". Both entries carry the same
+// identifier (claim 3).
+//
+// Here the buffer is a row of kChannels pairs of registers, each pair a condition entry and an
+// action entry with the event identifier in both; pair k feeds channel k of PRG and of ALE.
+// Each pair's state is a small relay chain, traced as one signal:
+//
+//   empty ──UMS stores──► stored ──motion card's relays pick──► armed ──PRG reports──►
+//   tripped ──ALE's action acknowledged──► acknowledged ──zeroizing (channel 294)──► empty
+//
+// Emulation note: the seed's buffer is a computer's memory; parsons draws it as registers of
+// holding relays (one per pair), so that every entry is a signal in the trace.
+#pragma once
+
+#include "cardreader/orders.hpp"
+#include "relaylogic/tracer.hpp"
+
+#include <array>
+#include <cstdint>
+
+namespace parsons::relaylogic {
+
+enum class PairState : std::uint8_t { empty, stored, armed, tripped, acknowledged };
+
+struct ConditionEntry {
+    int event = 0;
+    cardreader::Axis axis = cardreader::Axis::table;
+    cardreader::Thousandths position = 0;
+    cardreader::PassingSense sense = cardreader::PassingSense::either;
+};
+
+struct ActionEntry {
+    int event = 0;
+    cardreader::ActionKind action = cardreader::ActionKind::lamp;
+    int parameter = 0;
+};
+
+struct BufferPair {
+    ConditionEntry condition;
+    ActionEntry action;
+    PairState state = PairState::empty;
+    long card = 0;         // deck position of the condition card it came from
+    int card_number = -1;  // and its number
+    long motion_card = 0;  // the motion card it watches (once armed)
+    double tripped_s = -1; // when PRG reported it
+    double acknowledged_s = -1;
+};
+
+class InternalBuffer {
+public:
+    // Enough for two condition cards of five before one motion card.
+    static constexpr int kChannels = 10;
+
+    InternalBuffer(Tracer& tracer, bool traced);
+    const BufferPair& pair(int k) const { return pairs_.at(static_cast<std::size_t>(k)); }
+    BufferPair& pair(int k) { return pairs_.at(static_cast<std::size_t>(k)); }
+    void set_state(int k, PairState s);
+    // The first empty pair, or -1 when the buffer is full.
+    int free_pair() const;
+    // A pair holding this event identifier (not empty), or -1.
+    int pair_with_event(int event) const;
+    bool any(PairState s) const;
+    void clear(); // zeroizing: every pair back to empty
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
+
+private:
+    Tracer& tracer_;
+    std::array<BufferPair, kChannels> pairs_{};
+    std::array<SignalId, kChannels> event_signal_{};
+    std::array<SignalId, kChannels> state_signal_{};
+    bool traced_;
+};
+
+// Converter UMS (claim 1): takes a condition card's records and enters each as a condition
+// entry and an action entry of the buffer. Returns an error sentence (naming the condition's
+// column) when the buffer cannot take them: an identifier already stored for this motion card,
+// or no free pair.
+std::optional<std::string> convert_condition_card(const cardreader::CardOrders& card, long index,
+                                                  InternalBuffer& buffer);
+
+} // namespace parsons::relaylogic
