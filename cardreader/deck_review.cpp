@@ -180,13 +180,32 @@ std::vector<Thousandths> spurious_matches_on_path(const AxisOrder& order, Thousa
 }
 
 void DeckReviewer::skip() {
+    ++index_;
+    conditions_.skip();
     previous_number_.reset();
     coast_.fill(0);
     position_.fill(std::nullopt);
 }
 
-std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
+std::vector<ReviewNote> DeckReviewer::condition_notes(const CardOrders& orders) {
     std::vector<ReviewNote> notes;
+    for (ConditionFinding& f : conditions_.card(index_, orders, position_)) {
+        notes.push_back({f.axis, std::move(f.message), true, f.card, f.column, f.deck_error});
+    }
+    return notes;
+}
+
+std::vector<ReviewNote> DeckReviewer::finish() {
+    std::vector<ReviewNote> notes;
+    for (ConditionFinding& f : conditions_.finish()) {
+        notes.push_back({f.axis, std::move(f.message), true, f.card, f.column, f.deck_error});
+    }
+    return notes;
+}
+
+std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
+    ++index_;
+    std::vector<ReviewNote> notes = condition_notes(orders);
     if (previous_number_) {
         const int expected = (*previous_number_ + 1) % kCounterModulus;
         if (orders.number != expected) {
@@ -199,6 +218,9 @@ std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
         }
     }
     previous_number_ = orders.number;
+    if (orders.kind == CardKind::condition) {
+        return notes; // no axis moves on a condition card
+    }
 
     std::array<std::optional<Thousandths>, kAxisCount> travel{};
     for (Axis a : kAxes) {

@@ -18,6 +18,7 @@
 // (relaylogic/) is what decides what happens.
 #pragma once
 
+#include "cardreader/condition_review.hpp"
 #include "cardreader/orders.hpp"
 
 #include <array>
@@ -63,6 +64,11 @@ struct ReviewNote {
     // travel, a sequence stall in every order, a coast the next check will count), not
     // only a risk: `parsons check` then exits 3. The coast is a STOP on the card after it.
     bool stops = false;
+    // Condition cards (an addition): the card and column the note is about (0: this card, no
+    // column), and whether it is a deck error (`run` refuses the deck; show and check exit 2).
+    long card = 0;
+    int column = 0;
+    bool deck_error = false;
 };
 
 // Reviews a deck card by card, remembering where each axis stands (every axis starts the
@@ -78,13 +84,23 @@ public:
     // A card that could not be read in full: its numbers are unknown, so the next card's
     // number and checks are not judged against a guess.
     void skip();
+    // Condition cards: whether the profile has condition units (default: yes), and its name.
+    void allow_conditions(bool allowed, std::string profile) {
+        conditions_ = ConditionReview(allowed, std::move(profile));
+    }
+    // After the last card: a condition card with no motion card after it.
+    std::vector<ReviewNote> finish();
 
 private:
     void review_sequence(const CardOrders& orders,
                          const std::array<std::optional<Thousandths>, kAxisCount>& travel,
                          std::vector<ReviewNote>& notes) const;
 
+    std::vector<ReviewNote> condition_notes(const CardOrders& orders);
+
     std::optional<std::array<AxisDynamics, kAxisCount>> dynamics_;
+    ConditionReview conditions_;
+    long index_ = 0; // cards reviewed or skipped
     std::optional<int> previous_number_;
     // The coast the previous card's stop leaves on each axis (0 where none is warned of): the
     // counters count it, so this card's check disagrees.

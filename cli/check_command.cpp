@@ -52,6 +52,7 @@ ExitCode run_check(const CheckFlags& f) {
     InputDeck deck(f.input, f.deck);
     const CardLayout& layout = *deck.options().layout;
     DeckReviewer reviewer(review_dynamics(profile));
+    reviewer.allow_conditions(profile.condition_cards, profile.name);
     std::array<double, kAxisCount> at{};
     long index = 0;
     long passing = 0;
@@ -60,6 +61,20 @@ ExitCode run_check(const CheckFlags& f) {
     long bad = 0;
     const bool text = !f.json;
     Json findings = Json::array();
+    std::optional<std::string> first_deck_error;
+    long deck_errors = 0;
+    // A condition card's deck error (an addition): `run` refuses the deck, so check exits 2.
+    auto deck_error = [&](const ReviewNote& n, const Json& number) {
+        ++deck_errors;
+        first_deck_error = first_deck_error.value_or(
+            DeckError::at_card_column(f.input, n.card, n.column, n.message).what());
+        if (text) {
+            fmt::print("card {}: DECK ERROR: column {}: {}\n", n.card, n.column, n.message);
+        }
+        Json found = finding(n.card, number, "deck_error", n.axis, n.message);
+        found["column"] = n.column;
+        findings.push_back(std::move(found));
+    };
     while (auto card = deck.cards().next()) {
         ++index;
         // The reader as the profile has it: parsons-1952 senses a double punch as two relays.
@@ -97,6 +112,10 @@ ExitCode run_check(const CheckFlags& f) {
         }
         const CardOrders& o = decoded.orders;
         for (const ReviewNote& n : reviewer.review(o)) {
+            if (n.deck_error) {
+                deck_error(n, n.card == index ? Json(o.number) : Json(nullptr));
+                continue;
+            }
             ++(n.stops ? stops : warnings);
             if (text) {
                 fmt::print("card {} (number {:04}): {}: {}{}\n", index, o.number,
@@ -143,12 +162,19 @@ ExitCode run_check(const CheckFlags& f) {
             pos = to;
         }
     }
-    const bool runs_through = passing == 0 && bad == 0 && stops == 0;
+    for (const ReviewNote& n : reviewer.finish()) {
+        deck_error(n, nullptr);
+    }
+    const bool runs_through = passing == 0 && bad == 0 && stops == 0 && deck_errors == 0;
     if (text) {
         fmt::print("{} card{} checked: {} move{} past a limit, {} with bad punches, {} other "
                    "finding{} the machine stops on, {} warning{}\n",
                    index, index == 1 ? "" : "s", passing, passing == 1 ? "" : "s", bad, stops,
                    stops == 1 ? "" : "s", warnings, warnings == 1 ? "" : "s");
+        if (deck_errors > 0) {
+            fmt::print("{} deck error{} in condition cards: run refuses the deck\n", deck_errors,
+                       deck_errors == 1 ? "" : "s");
+        }
     } else {
         Json doc = json_document("check");
         doc["deck"] = f.input;
@@ -161,8 +187,15 @@ ExitCode run_check(const CheckFlags& f) {
         doc["bad_punches"] = bad;
         doc["stops"] = stops;
         doc["warnings"] = warnings;
+        doc["deck_errors"] = deck_errors;
         doc["will_run_through"] = runs_through;
         print_json_document(doc);
+    }
+    if (first_deck_error) {
+        throw DeckError(*first_deck_error +
+                        (deck_errors > 1
+                             ? fmt::format(" (and {} more deck errors)", deck_errors - 1)
+                             : std::string{}));
     }
     return runs_through ? ExitCode::ok : ExitCode::machine_stop;
 }
@@ -184,7 +217,8 @@ void add_check_command(CLI::App& app, Command& selected) {
                                                 "may stand)"},
                                  {ExitCode::machine_stop,
                                   "the machine will stop on the deck: a card passes a limit, a "
-                                  "bad punch, or a finding marked STOP"}}) +
+                                  "bad punch, or a finding marked STOP (a condition card's deck "
+                                  "error, which run refuses, is exit 2)"}}) +
                 "Examples:\n"
                 "  parsons check decks/samples/patent-example.csv --limit table=0:9.5\n"
                 "  parsons check decks/samples/patent-example.csv --limit cross=0:2   (card 1 "

@@ -1,4 +1,7 @@
 #include "cli/deck_files.hpp"
+
+#include "cardreader/condition_review.hpp"
+#include "cardreader/layout.hpp"
 #include "cli/applied_profile.hpp"
 
 #include "axes/profile_json.hpp"
@@ -132,14 +135,26 @@ InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
         if (!*file) {
             throw DeckError::in_file(path, std::string("cannot open: ") + std::strerror(errno));
         }
-        head.resize(kHeadBytes);
-        file->read(head.data(), static_cast<std::streamsize>(head.size()));
-        head.resize(static_cast<std::size_t>(file->gcount()));
-        file->clear();
-        file->seekg(0);
-        in_ = std::move(file);
-        std::error_code ec;
-        size_bytes_ = static_cast<double>(std::filesystem::file_size(path, ec));
+        if (!std::filesystem::is_regular_file(path)) {
+            // A FIFO or a device: read whole, so that the deck can be read twice (rewind).
+            std::string bytes{std::istreambuf_iterator<char>(*file),
+                              std::istreambuf_iterator<char>()};
+            if (file->bad()) {
+                throw DeckError::in_file(path, "read error");
+            }
+            head = bytes.substr(0, kHeadBytes);
+            size_bytes_ = static_cast<double>(bytes.size());
+            in_ = std::make_unique<std::istringstream>(std::move(bytes));
+        } else {
+            head.resize(kHeadBytes);
+            file->read(head.data(), static_cast<std::streamsize>(head.size()));
+            head.resize(static_cast<std::size_t>(file->gcount()));
+            file->clear();
+            file->seekg(0);
+            in_ = std::move(file);
+            std::error_code ec;
+            size_bytes_ = static_cast<double>(std::filesystem::file_size(path, ec));
+        }
     }
     if (auto kind = cardreader::non_deck_kind(head)) {
         throw DeckError::in_file(options_.file_name, "this is " + *kind + ", not a deck of cards");
@@ -158,6 +173,47 @@ InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
         options_.format = *sniffed;
     }
     source_ = cardreader::open_card_source(*in_, options_);
+}
+
+void InputDeck::rewind() {
+    in_->clear();
+    in_->seekg(0);
+    source_ = cardreader::open_card_source(*in_, options_);
+}
+
+void refuse_condition_errors(InputDeck& deck, const axes::MachineProfile& profile) {
+    cardreader::ConditionReview review(profile.condition_cards, profile.name);
+    const cardreader::CardLayout& layout = *deck.options().layout;
+    const std::string& file = deck.options().file_name;
+    std::array<std::optional<cardreader::Thousandths>, cardreader::kAxisCount> at{};
+    at.fill(cardreader::Thousandths{0});
+    long index = 0;
+    auto refuse = [&](const std::vector<cardreader::ConditionFinding>& found) {
+        for (const auto& f : found) {
+            if (f.deck_error) {
+                throw DeckError::at_card_column(
+                    file, f.card, f.column,
+                    f.message + " (refused before any motion; parsons check lists every one)");
+            }
+        }
+    };
+    while (auto card = deck.cards().next()) {
+        ++index;
+        const cardreader::DecodeResult decoded = cardreader::decode(*card, layout);
+        if (!decoded) {
+            review.skip(); // the reader stops the machine there: its own business (exit 3)
+            at.fill(std::nullopt);
+            continue;
+        }
+        refuse(review.card(index, decoded.orders, at));
+        if (decoded.orders.kind == cardreader::CardKind::motion) {
+            for (cardreader::Axis a : cardreader::kAxes) {
+                at.at(cardreader::axis_index(a)) = decoded.orders.axis(a).stop;
+            }
+        }
+    }
+    refuse(review.finish());
+    deck.rewind();
 }
 
 double InputDeck::fraction_read() {

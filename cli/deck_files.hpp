@@ -60,6 +60,9 @@ public:
     const cardreader::DeckOptions& options() const { return options_; }
     // How far through the file the reader is, 0..1 (for a progress bar).
     double fraction_read();
+    // Back to the first card (a deck read through once before the run, as run's check of
+    // condition cards does). A FIFO or device is read whole at opening so that this works.
+    void rewind();
 
 private:
     std::unique_ptr<std::istream> in_;
@@ -67,6 +70,12 @@ private:
     cardreader::DeckOptions options_;
     std::unique_ptr<cardreader::CardSource> source_;
 };
+
+// Condition cards (an addition): the deck's first deck error (relaylogic cannot take it: a
+// condition card the profile does not allow, a duplicate event, a condition on an axis its
+// motion card does not move, a condition card with no motion card after it) as a DeckError
+// naming file, card and column, read before any card runs; the deck is rewound after.
+void refuse_condition_errors(InputDeck& deck, const axes::MachineProfile& profile);
 
 // The fingerprint of the first `max_cards` cards of a deck (all of them when negative).
 cardreader::DeckFingerprint fingerprint_deck(const std::string& path, const DeckFlags& flags,

@@ -12,6 +12,7 @@
 #include "cli/progress_line.hpp"
 #include "cli/run_report.hpp"
 #include "cli/trace_outputs.hpp"
+#include "cli/two_tool.hpp"
 
 #include "axes/profile_json.hpp"
 #include "axes/state_json.hpp"
@@ -333,6 +334,7 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     }
     InputDeck deck(f.input, f.deck);
     apply_feed(profile, f.feed, deck.options());
+    refuse_condition_errors(deck, profile); // condition cards (an addition): before any motion
     if (!f.resume.empty()) {
         say_what_resumes(state, applied, f);
     }
@@ -382,11 +384,15 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     CutterPath cutter;
     decks::JobDescription job;
     std::unique_ptr<WingPath> wing_path;
+    std::unique_ptr<ToolPaths> tool_paths; // a two-tool job: the path by the tool that cut it
     if (!f.cut.empty()) {
         job = read_job(f.job.empty() ? f.input + ".job.json" : f.job, f.input, f.deck);
         if (job.kind == decks::JobKind::wing) {
             wing_path = std::make_unique<WingPath>(job.wing_zero_in, profile);
             observers.add(wing_path.get());
+        } else if (!job.passes.empty()) {
+            tool_paths = std::make_unique<ToolPaths>(profile.first_tool);
+            observers.add(tool_paths.get());
         } else {
             observers.add(&cutter);
         }
@@ -434,6 +440,13 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
                                   "left standing {:.5f} in; tip section: {:.5f} in, {:.5f} in\n",
                                   proof.root.max_gouge_in, proof.root.max_leftover_in,
                                   proof.tip.max_gouge_in, proof.tip.max_leftover_in);
+    } else if (tool_paths) {
+        try {
+            cut_summary = write_two_tool_cut(prove_two_tool_cut(*tool_paths, job, profile), job,
+                                             f.cut, report);
+        } catch (const decks::JobError& e) {
+            throw DeckError(fmt::format("--cut: {}", e.what()));
+        }
     } else if (!f.cut.empty()) {
         const auto airfoil = decks::open_airfoil(job);
         const auto samples = decks::design_samples(*airfoil, job.options, job.work_zero_in);

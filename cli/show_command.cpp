@@ -7,6 +7,7 @@
 #include "cli/output_file.hpp"
 
 #include "cardreader/card_svg.hpp"
+#include "cardreader/condition_card.hpp"
 #include "cardreader/deck_error.hpp"
 #include "cardreader/deck_review.hpp"
 
@@ -57,8 +58,64 @@ std::string sequence_text(SequencePattern p) {
     return text.empty() ? "none" : text;
 }
 
+// What the parameter of a condition's action names, in words.
+std::string parameter_text(const ConditionOrder& c) {
+    switch (c.action) {
+    case ActionKind::tool_change:
+        return fmt::format("tool {}", c.parameter);
+    case ActionKind::dwell:
+        return fmt::format("hold {}",
+                           axis_name(kAxes.at(static_cast<std::size_t>(c.parameter - 1))));
+    case ActionKind::lamp:
+        return fmt::format("lamp {}", c.parameter);
+    default:
+        return "-";
+    }
+}
+
+// A condition card (an addition after EP 0640901), one line per condition.
+void print_condition_card(long index, const CardOrders& o) {
+    fmt::print("card {} · card number {:04} (columns 77-80) · CONDITION CARD (column 76 row 1; "
+               "an addition after EP 0640901, Siemens)\n",
+               index, o.number);
+    fmt::print("  {:<5} {:<8} {:<6} {:<9} {:<9} {:<10} {:<16} {}\n", "cond.", "columns", "event",
+               "axis", "sense", "position", "action", "parameter");
+    for (int i = 0; i < o.condition_count; ++i) {
+        const ConditionOrder& c = o.conditions.at(static_cast<std::size_t>(i));
+        const int first = 1 + i * kConditionSlotColumns;
+        fmt::print("  {:<5} {:<8} {:<6} {:<9} {:<9} {:<10} {:<16} {}\n", i + 1,
+                   fmt::format("{}-{}", first, first + 12), c.event, axis_name(c.axis),
+                   fmt::format("{} {}", sense_symbol(c.sense), sense_name(c.sense)),
+                   format_inches(c.position), action_name(c.action), parameter_text(c));
+    }
+}
+
+Json condition_card_json(long index, const CardOrders& o) {
+    Json conditions = Json::array();
+    for (int i = 0; i < o.condition_count; ++i) {
+        const ConditionOrder& c = o.conditions.at(static_cast<std::size_t>(i));
+        const int first = 1 + i * kConditionSlotColumns;
+        conditions.push_back({{"columns", {{"first", first}, {"last", first + 12}}},
+                              {"event", c.event},
+                              {"axis", std::string(axis_name(c.axis))},
+                              {"sense", std::string(sense_name(c.sense))},
+                              {"position", inches_json(c.position)},
+                              {"action", std::string(action_name(c.action))},
+                              {"parameter", c.parameter}});
+    }
+    return {{"index", index},
+            {"number", o.number},
+            {"kind", "condition"},
+            {"conditions", conditions},
+            {"warnings", Json::array()}};
+}
+
 void print_card(long index, const DecodeResult& decoded, const CardLayout& layout) {
     const CardOrders& o = decoded.orders;
+    if (o.kind == CardKind::condition && decoded) {
+        print_condition_card(index, o);
+        return;
+    }
     fmt::print("card {} · card number {:04} (columns 77-80) · spindle {} (column 1)\n", index,
                o.number, spindle_name(o.spindle));
     fmt::print("  {:<9} {:<8} {:<12} {:<6} {:<12} {:<12} {:<6} {:<6} {}\n", "axis", "columns",
@@ -84,6 +141,9 @@ void print_card(long index, const DecodeResult& decoded, const CardLayout& layou
 // The card as print_card shows it, for --json. A slow-down the layout has no field for is
 // null, as a blank one is; slow_down_fields says how many the layout gives the axis.
 Json card_json(long index, const CardOrders& o, const CardLayout& layout) {
+    if (o.kind == CardKind::condition) {
+        return condition_card_json(index, o);
+    }
     Json axes = Json::object();
     for (Axis a : kAxes) {
         const AxisOrder& ax = o.axis(a);
@@ -132,8 +192,21 @@ ExitCode run_show(const ShowFlags& f) {
     Json cards = Json::array();
 
     DeckReviewer reviewer(review_dynamics(profile));
+    reviewer.allow_conditions(profile.condition_cards, profile.name);
     long index = 0;
     long notes = 0;
+    std::optional<std::string> first_deck_error;
+    long deck_errors = 0;
+    // A condition card's deck error (an addition): printed where it is found, refused at the end.
+    auto deck_error = [&](const ReviewNote& n) {
+        ++deck_errors;
+        const std::string where =
+            DeckError::at_card_column(f.input, n.card, n.column, n.message).what();
+        first_deck_error = first_deck_error.value_or(where);
+        if (text) {
+            fmt::print("  DECK ERROR: card {}, column {}: {}\n", n.card, n.column, n.message);
+        }
+    };
     std::optional<std::string> first_bad;
     long bad_cards = 0;
     while (auto card = deck.cards().next()) {
@@ -163,6 +236,12 @@ ExitCode run_show(const ShowFlags& f) {
             reviewer.skip();
         } else {
             for (const ReviewNote& n : reviewer.review(decoded.orders)) {
+                if (n.deck_error) {
+                    deck_error(n);
+                    card_doc["deck_errors"].push_back(
+                        {{"card", n.card}, {"column", n.column}, {"message", n.message}});
+                    continue;
+                }
                 ++notes;
                 if (text) {
                     fmt::print("  warning: {}{}\n",
@@ -190,6 +269,13 @@ ExitCode run_show(const ShowFlags& f) {
             write_file(path.string(), card_svg(*card, layout, pic, deck.options().code));
         }
     }
+    for (const ReviewNote& n : reviewer.finish()) {
+        deck_error(n);
+        if (!cards.empty()) {
+            cards.back()["deck_errors"].push_back(
+                {{"card", n.card}, {"column", n.column}, {"message", n.message}});
+        }
+    }
     if (text) {
         fmt::print("{} card{} read, {} warning{}, {} with bad punches\n", index,
                    index == 1 ? "" : "s", notes, notes == 1 ? "" : "s", bad_cards);
@@ -205,6 +291,12 @@ ExitCode run_show(const ShowFlags& f) {
         doc["svg_dir"] = f.svg_dir.empty() ? Json(nullptr) : Json(f.svg_dir);
         // A deck with bad punches is still shown whole, then refused (exit 2), as the text is.
         print_json_document(doc);
+    }
+    if (first_deck_error && !first_bad) {
+        throw DeckError(*first_deck_error +
+                        (deck_errors > 1
+                             ? fmt::format(" (and {} more deck errors)", deck_errors - 1)
+                             : std::string{}));
     }
     if (first_bad) {
         throw DeckError(*first_bad + (bad_cards > 1 ? fmt::format(" (and {} more cards with bad "

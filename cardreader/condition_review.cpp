@@ -1,0 +1,119 @@
+#include "cardreader/condition_review.hpp"
+
+#include "cardreader/condition_card.hpp"
+#include "cardreader/deck_review.hpp"
+
+#include <fmt/format.h>
+
+namespace parsons::cardreader {
+namespace {
+
+constexpr int kExtensionColumn = 76;
+
+int slot_column(int slot, int offset) {
+    return 1 + slot * kConditionSlotColumns + offset;
+}
+
+bool passes(const ConditionOrder& c, const AxisOrder& o, Thousandths from) {
+    const bool sense = c.sense == PassingSense::either ||
+                       (c.sense == PassingSense::forward) == (o.motion == Motion::forward);
+    const Thousandths travel = travel_in_motion(from, o.stop, o.motion);
+    const Thousandths to_position = travel_in_motion(from, c.position, o.motion);
+    return sense && to_position >= 1 && to_position <= travel;
+}
+
+} // namespace
+
+std::vector<ConditionFinding>
+ConditionReview::card(long index, const CardOrders& orders,
+                      const std::array<std::optional<Thousandths>, kAxisCount>& at) {
+    std::vector<ConditionFinding> found;
+    if (orders.kind == CardKind::condition) {
+        if (!allowed_) {
+            found.push_back({index, kExtensionColumn, std::nullopt,
+                             fmt::format("a condition card (an addition after EP 0640901, "
+                                         "Siemens): profile {} has no condition units; the "
+                                         "built-in profile parsons-extended allows them "
+                                         "(--profile parsons-extended)",
+                                         profile_),
+                             true});
+        }
+        for (int slot = 0; slot < orders.condition_count; ++slot) {
+            const ConditionOrder& c = orders.conditions.at(static_cast<std::size_t>(slot));
+            bool duplicate = false;
+            for (const Pending& p : pending_) {
+                if (p.condition.event == c.event) {
+                    duplicate = true;
+                    found.push_back(
+                        {index, slot_column(slot, 0), c.axis,
+                         fmt::format("condition {}: event {} is given twice for the same motion "
+                                     "card (first on card {}, condition {}): one identifier "
+                                     "names one condition and its action (EP 0640901 claim 3)",
+                                     slot + 1, c.event, p.card, p.slot + 1),
+                         true});
+                    break;
+                }
+            }
+            if (duplicate) {
+                continue;
+            }
+            if (static_cast<int>(pending_.size()) == kBufferPairs) {
+                found.push_back({index, slot_column(slot, 0), c.axis,
+                                 fmt::format("condition {}: more than {} conditions before one "
+                                             "motion card: buffer PFR holds {}",
+                                             slot + 1, kBufferPairs, kBufferPairs),
+                                 true});
+                continue;
+            }
+            pending_.push_back({index, slot, c});
+        }
+        return found;
+    }
+    for (const Pending& p : pending_) {
+        const ConditionOrder& c = p.condition;
+        const AxisOrder& o = orders.axis(c.axis);
+        if (o.check == 0) {
+            found.push_back({p.card, slot_column(p.slot, 2), c.axis,
+                             fmt::format("condition {}: event {} watches the {} axis, which motion "
+                                         "card {} does not move (check 0.000): it could never be "
+                                         "met",
+                                         p.slot + 1, c.event, axis_name(c.axis), index),
+                             true});
+            continue;
+        }
+        const auto from = at.at(axis_index(c.axis));
+        if (from && !passes(c, o, *from)) {
+            found.push_back(
+                {index, slot_column(p.slot, 4), c.axis,
+                 fmt::format("event {} (condition card {}): the {} axis moves from {} to {} {}, "
+                             "and its counter never steps onto {} {}: the machine stops with "
+                             "condition_not_met",
+                             c.event, p.card, axis_name(c.axis), format_inches(*from),
+                             format_inches(o.stop),
+                             o.motion == Motion::forward ? "forward" : "in reverse",
+                             format_inches(c.position),
+                             c.sense == PassingSense::either    ? "in either sense"
+                             : c.sense == PassingSense::forward ? "counting up (forward)"
+                                                                : "counting down (reverse)"),
+                 false});
+        }
+    }
+    pending_.clear();
+    return found;
+}
+
+std::vector<ConditionFinding> ConditionReview::finish() {
+    std::vector<ConditionFinding> found;
+    if (!pending_.empty()) {
+        const Pending& last = pending_.back();
+        found.push_back({last.card, kExtensionColumn, std::nullopt,
+                         fmt::format("a condition card with no motion card after it: the deck "
+                                     "ends (condition cards stand before the motion card they "
+                                     "watch, EP 0640901 claim 4)"),
+                         true});
+    }
+    pending_.clear();
+    return found;
+}
+
+} // namespace parsons::cardreader

@@ -1,0 +1,64 @@
+// Reading a deck's condition cards (an addition after EP 0640901, Siemens; docs/condition-cards.md)
+// as the operator would before the deck goes into reader 134, card by card, with the card and
+// column of every finding:
+//
+//  deck errors (`run` refuses the deck with exit 2 before any motion; `show` and `check` name
+//  them and exit 2):
+//   - a condition card under a profile without condition units (parsons-1952, parsons-safe);
+//   - an event identifier given twice for one motion card (claim 3: one identifier, one
+//     condition and its action);
+//   - more conditions before one motion card than buffer PFR holds;
+//   - a condition on an axis its motion card does not move (check 0.000): never met;
+//   - a condition card with no motion card after it (claim 4: they stand before it);
+//  and a finding the machine will stop on (condition_not_met, `check` exits 3): the motion card
+//  moves the axis, but its counter never steps onto the position in the condition's sense
+//  (judged from the previous stop to this card's stop, as the counters count: modulo 10 in).
+#pragma once
+
+#include "cardreader/orders.hpp"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace parsons::cardreader {
+
+struct ConditionFinding {
+    long card = 0;  // deck position the finding is on
+    int column = 0; // the column to look at on that card
+    std::optional<Axis> axis;
+    std::string message;
+    bool deck_error = true; // false: the deck runs, and the machine stops (condition_not_met)
+};
+
+// How many condition/action pairs buffer PFR holds (relaylogic/internal_buffer.hpp).
+inline constexpr int kBufferPairs = 10;
+
+class ConditionReview {
+public:
+    // allowed: the profile has condition units; profile: its name, for the message.
+    explicit ConditionReview(bool allowed = true, std::string profile = "parsons-extended")
+        : allowed_(allowed), profile_(std::move(profile)) {}
+    // The next card of the deck (index 1-based) and where each axis stood before it (unknown
+    // after an unreadable card).
+    std::vector<ConditionFinding>
+    card(long index, const CardOrders& orders,
+         const std::array<std::optional<Thousandths>, kAxisCount>& at);
+    // A card that could not be read: conditions before it are not judged against it.
+    void skip() { pending_.clear(); }
+    // The end of the deck.
+    std::vector<ConditionFinding> finish();
+
+private:
+    struct Pending {
+        long card = 0;
+        int slot = 0;
+        ConditionOrder condition;
+    };
+    std::vector<Pending> pending_;
+    bool allowed_;
+    std::string profile_;
+};
+
+} // namespace parsons::cardreader
