@@ -64,7 +64,11 @@ public:
     }
     void on_card(double t, long index, const CardOrders&) override { cards.emplace_back(t, index); }
     void on_stop(double t, const StopInfo& s) override { stops.emplace_back(t, s.message); }
+    void on_condition(double t, const ConditionEvent& e) override {
+        conditions.emplace_back(t, e.event, static_cast<int>(e.kind));
+    }
 
+    std::vector<std::tuple<double, int, int>> conditions; // condition cards (an addition)
     std::vector<std::tuple<double, SignalId, std::uint32_t>> events;
     std::vector<std::vector<std::uint32_t>> at_zeroize;
     std::vector<std::pair<double, long>> cards;
@@ -88,7 +92,16 @@ struct Case {
     std::vector<std::tuple<std::size_t, int, int>> extra_punches;
 };
 
-Case random_case(std::mt19937& rng) {
+// Condition cards come from their own generator `crng`, so that the decks of rng stay what they
+// were before condition cards were added (and with them the stops, lost steps and faults).
+Case random_case(std::mt19937& rng, std::mt19937& crng) {
+    auto cpick = [&crng](int lo, int hi) {
+        return std::uniform_int_distribution<int>(lo, hi)(crng);
+    };
+    auto cchance = [&crng](double p) { return std::bernoulli_distribution(p)(crng); };
+    auto creal = [&crng](double lo, double hi) {
+        return std::uniform_real_distribution<double>(lo, hi)(crng);
+    };
     auto pick = [&rng](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
     auto chance = [&rng](double p) { return std::bernoulli_distribution(p)(rng); };
     auto real = [&rng](double lo, double hi) {
@@ -155,6 +168,15 @@ Case random_case(std::mt19937& rng) {
     p.refuse_double_punch = chance(0.3);
     p.measuring_chain =
         chance(0.3) ? axes::MeasuringChain::screw_turns : axes::MeasuringChain::instrument_shaft_74;
+    // Condition cards (an addition after EP 0640901): before some motion cards, conditions on
+    // the path of a moving axis (met), anywhere (often never met) or on an idle axis.
+    p.condition_cards = cchance(0.35);
+    if (p.condition_cards) {
+        p.actions.tool_change_s = creal(0.01, 30);
+        p.actions.dwell_s = creal(0.01, 5);
+        p.actions.spindle_run_up_s = creal(0.01, 5);
+        c.medium = cchance(0.5) ? DeckFormat::cbn : DeckFormat::tape; // .five has no column 76
+    }
 
     // Half the decks are valid; the others have one mistake, on one card and axis.
     const int mistake = chance(0.5) ? 0 : pick(1, 7);
@@ -164,6 +186,10 @@ Case random_case(std::mt19937& rng) {
     std::array<int, 5> at{};
     int number = pick(0, 9990);
     for (int n = 0; n < cards; ++n) {
+        const bool conditions = p.condition_cards && cchance(0.6);
+        const int condition_number = number;
+        number += conditions ? 1 : 0;
+        const std::array<int, 5> before = at;
         CardOrders o;
         o.number = number++;
         if (mistake == 1 && n == bad_card) {
@@ -203,6 +229,45 @@ Case random_case(std::mt19937& rng) {
                 x.slow_down = {};
             }
             from = to;
+        }
+        if (conditions) {
+            CardOrders cond;
+            cond.kind = CardKind::condition;
+            cond.number = condition_number;
+            cond.condition_count = cpick(1, 3);
+            std::vector<Axis> moving;
+            for (Axis a : kAxes) {
+                if (before.at(axis_index(a)) != at.at(axis_index(a))) {
+                    moving.push_back(a);
+                }
+            }
+            const bool valid = !moving.empty() && cchance(0.8);
+            for (int k = 0; k < cond.condition_count; ++k) {
+                ConditionOrder& x = cond.conditions.at(static_cast<std::size_t>(k));
+                x.event = 10 * k + cpick(1, 9);
+                x.axis = valid ? moving.at(static_cast<std::size_t>(
+                                     cpick(0, static_cast<int>(moving.size()) - 1)))
+                               : kAxes.at(static_cast<std::size_t>(cpick(0, 4)));
+                const int i = static_cast<int>(axis_index(x.axis));
+                const int from = before.at(i);
+                const int to = at.at(i);
+                // On the way, the start excluded (the counter must step onto it), in its sense.
+                x.position = static_cast<Thousandths>(
+                    valid ? (to > from ? cpick(from + 1, to) : cpick(to, from - 1))
+                          : cpick(0, 9999));
+                x.sense = valid && cchance(0.7)
+                              ? (to > from ? PassingSense::forward : PassingSense::reverse)
+                              : static_cast<PassingSense>(cpick(0, 2));
+                x.action = static_cast<ActionKind>(cpick(1, kActionKinds));
+                x.parameter = x.action == ActionKind::tool_change ? cpick(1, 3)
+                              : x.action == ActionKind::dwell     ? cpick(1, 5)
+                              : x.action == ActionKind::lamp      ? cpick(1, 9)
+                                                                  : 0;
+            }
+            if (cchance(0.05)) {
+                cond.conditions.at(0).event = cond.conditions.at(cond.condition_count - 1).event;
+            }
+            c.cards.push_back(cond);
         }
         c.cards.push_back(o);
         if (mistake == 7 && n == bad_card) {
@@ -296,6 +361,14 @@ void require_same(const RunResult& a, const RunResult& b) {
     for (std::size_t i = 0; i < a.faults.size(); ++i) {
         REQUIRE(a.faults.at(i).effect == b.faults.at(i).effect);
     }
+    REQUIRE(a.actions.size() == b.actions.size());
+    for (std::size_t i = 0; i < a.actions.size(); ++i) {
+        REQUIRE(a.actions.at(i).event == b.actions.at(i).event);
+        REQUIRE(a.actions.at(i).tripped_s == b.actions.at(i).tripped_s);
+        REQUIRE(a.actions.at(i).acknowledged_s == b.actions.at(i).acknowledged_s);
+        REQUIRE(a.actions.at(i).motion_end_s == b.actions.at(i).motion_end_s);
+    }
+    REQUIRE(a.tool_in_spindle == b.tool_in_spindle);
     REQUIRE(a.cards.size() == b.cards.size());
     for (std::size_t i = 0; i < a.cards.size(); ++i) {
         REQUIRE(a.cards.at(i).start_s == b.cards.at(i).start_s);
@@ -309,13 +382,17 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
           "events alike",
           "[fastforward][cabinet]") {
     std::mt19937 rng(1952);
+    std::mt19937 crng(640901);
     long impulses = 0;
     int stopped = 0;
     int lost = 0;
     int sensed_two_relays = 0; // parsons-1952 reading a double punch into two relays
     int interpretations = 0;
+    long trips = 0;  // condition cards' actions acknowledged
+    int not_met = 0; // runs that stopped on condition_not_met
+    int refused = 0; // ... on condition_refused
     for (int n = 0; n < 240; ++n) {
-        const Case c = random_case(rng);
+        const Case c = random_case(rng, crng);
         INFO("deck " << n);
         const RunResult reference = run_at(c, Pace::impulse_level, nullptr);
         const RunResult jumped = run_at(c, Pace::fast_forward, nullptr);
@@ -331,6 +408,10 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
         REQUIRE(followed.at_zeroize == sparse.at_zeroize);
         REQUIRE(followed.cards == sparse.cards);
         REQUIRE(followed.stops == sparse.stops);
+        REQUIRE(followed.conditions == sparse.conditions);
+        trips += static_cast<long>(reference.actions.size());
+        not_met += reference.stop && reference.stop->reason == StopReason::condition_not_met;
+        refused += reference.stop && reference.stop->reason == StopReason::condition_refused;
 
         for (const auto& a : reference.axes) {
             impulses += a.impulses;
@@ -352,6 +433,9 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
     CHECK(lost >= 3);
     CHECK(sensed_two_relays >= 3);
     CHECK(interpretations >= 40);
+    CHECK(trips >= 40);
+    CHECK(not_met >= 5);
+    CHECK(refused >= 3);
 }
 
 TEST_CASE("Fast-forward: a jump leaves every stepping switch, its last-step time and the screw "
