@@ -1,7 +1,12 @@
 // parsons demo: the built-in default job. Generate a NACA 2412 template deck for a 6-inch
 // chord, run it on the emulated machine, prove the cut, and write everything to one folder.
+// Then the job that shows the point of EP 0640901 (condition cards, an addition): the same
+// template roughed and finished with two tools, once with the tool change tripped at the change
+// position and once during the return move (decks/two_tool_job.hpp), run under
+// parsons-extended; the difference of their machine times is what the seed saves.
 #include "cli/commands.hpp"
 #include "cli/output_file.hpp"
+#include "cli/two_tool.hpp"
 
 #include "cardreader/card_svg.hpp"
 #include "cardreader/layout.hpp"
@@ -14,6 +19,61 @@
 
 namespace parsons::cli {
 namespace {
+
+struct TwoToolRun {
+    std::string deck;
+    decks::TwoToolDeck job;
+    relaylogic::RunResult result;
+    ExitCode code = ExitCode::ok;
+};
+
+TwoToolRun run_two_tool(const std::string& dir, decks::ChangeVariant variant) {
+    TwoToolRun r;
+    const std::string name = std::string("two-tool-") + std::string(decks::variant_name(variant));
+    r.deck = dir + "/" + name + ".csv";
+    decks::TwoToolOptions options;
+    options.pass.chord_in = 6.0;
+    options.pass.scallop_in = 0.002;
+    options.variant = variant;
+    const auto profile = axes::extended_profile();
+    r.job = generate_two_tool_job("naca 2412", false, options, profile, r.deck, "").deck;
+    RunRequest run;
+    run.input = r.deck;
+    run.profile = profile.name;
+    run.report = dir + "/" + name + ".report.json";
+    run.cut = dir + "/" + name + ".cut.svg";
+    run.quiet = true;
+    r.code = run_deck(run, &r.result);
+    if (r.code == ExitCode::machine_stop) {
+        throw std::logic_error("the machine stopped on the demo's own two-tool deck");
+    }
+    return r;
+}
+
+// Both variants of the two-tool job; the machine time each takes and what tripping the change
+// early saved.
+ExitCode run_two_tool_demo(const std::string& dir) {
+    fmt::print("\ntwo tools (condition cards, an addition after EP 0640901; profile "
+               "parsons-extended): NACA 2412 roughed with tool 1, finished with tool 2\n");
+    const TwoToolRun boundary = run_two_tool(dir, decks::ChangeVariant::boundary);
+    if (boundary.code != ExitCode::ok) {
+        return boundary.code;
+    }
+    fmt::print("  {}: tool change tripped as the table reaches the change position 0.000 in, "
+               "machine time {:.3f} s\n",
+               boundary.deck, boundary.result.machine_seconds);
+    const TwoToolRun tripped = run_two_tool(dir, decks::ChangeVariant::tripped);
+    if (tripped.code != ExitCode::ok) {
+        return tripped.code;
+    }
+    fmt::print("  {}: tool change tripped at table {:.3f} in during the return move, machine "
+               "time {:.3f} s\n",
+               tripped.deck, tripped.job.trip_position / 1000.0, tripped.result.machine_seconds);
+    fmt::print("  the tool change overlapped the return move by {:.3f} s: the time EP 0640901 "
+               "saves\n",
+               boundary.result.machine_seconds - tripped.result.machine_seconds);
+    return ExitCode::ok;
+}
 
 ExitCode run_demo(const std::string& dir) {
     make_folder(dir + "/cards");
@@ -43,14 +103,18 @@ ExitCode run_demo(const std::string& dir) {
     run.plot = dir + "/plot.svg";
     run.cut = dir + "/cut.svg";
     run.path = dir + "/path.csv";
-    const ExitCode code = run_deck(run);
+    ExitCode code = run_deck(run);
     if (code == ExitCode::machine_stop) {
         // The generator makes the demo's deck to run through: a stop on it is a bug.
         throw std::logic_error("the machine stopped on the demo's own deck");
     }
+    if (code == ExitCode::ok) {
+        code = run_two_tool_demo(dir);
+    }
     fmt::print("\nwrote {0}/naca2412.cbn (+ .job.json), {0}/cards/, {0}/report.json, "
                "{0}/plot.svg, {0}/cut.svg, {0}/trace.vcd (gtkwave), {0}/path.csv, "
-               "{0}/centres.csv\n",
+               "{0}/centres.csv, and for two tools {0}/two-tool-boundary.csv and "
+               "{0}/two-tool-tripped.csv (each + .job.json, .report.json, .cut.svg)\n",
                dir);
     return code;
 }
@@ -60,7 +124,8 @@ ExitCode run_demo(const std::string& dir) {
 void add_demo_command(CLI::App& app, Command& selected) {
     auto dir = std::make_shared<std::string>("out/demo");
     CLI::App* cmd = app.add_subcommand(
-        "demo", "The default job: generate a NACA 2412 template deck, run it, prove the cut");
+        "demo", "The default job: generate a NACA 2412 template deck, run it, prove the cut; "
+                "then the two-tool job with its tool change tripped early (EP 0640901)");
     cmd->add_option("--out", *dir, "Folder for everything the demo writes")->capture_default_str();
     cmd->footer(exit_codes_help({{ExitCode::ok, "the demo ran and its deck completed"},
                                  {ExitCode::interrupted, "stopped by the operator with Ctrl-C"},

@@ -1,11 +1,15 @@
 // parsons gen airfoil: the 1952 arithmetic. Compute closely spaced points on an airfoil,
 // offset each by the cutter radius to the cutter-centre locus, and punch one card per station.
 // With --json, what it prints about the deck is one document for scripts (docs/json-output.md).
+// parsons gen two-tool: the template roughed with one tool and finished with another, the tool
+// change tripped by a condition card during the return move (decks/two_tool_job.hpp; an
+// addition after EP 0640901, run under --profile parsons-extended).
 #include "cli/commands.hpp"
 #include "cli/deck_files.hpp"
 #include "cli/json_output.hpp"
 #include "cli/output_file.hpp"
 #include "cli/progress_line.hpp"
+#include "cli/two_tool.hpp"
 
 #include "cardreader/deck_error.hpp"
 #include "cardreader/layout.hpp"
@@ -68,7 +72,8 @@ namespace {
 
 cardreader::DeckFingerprint write_cards(const std::vector<cardreader::CardOrders>& cards,
                                         const std::string& output, const std::string& to,
-                                        ProgressLine* progress) {
+                                        ProgressLine* progress,
+                                        const char* command = "gen airfoil") {
     cardreader::DeckFingerprint fingerprint;
     DeckFlags flags;
     const auto options = deck_options(output, to, flags, "--to");
@@ -83,7 +88,7 @@ cardreader::DeckFingerprint write_cards(const std::vector<cardreader::CardOrders
         }
         auto punched = cardreader::encode(card, cardreader::fig8_layout());
         if (!punched) {
-            throw DeckError(fmt::format("gen airfoil: card {}: {}", card.number, *punched.error));
+            throw DeckError(fmt::format("{}: card {}: {}", command, card.number, *punched.error));
         }
         sink->write(punched.card);
         fingerprint.add(punched.card);
@@ -156,6 +161,46 @@ GeneratedJob generate_job(const decks::JobDescription& description,
     }
     if (!centres.empty()) {
         write_file(centres, csv);
+    }
+    return job;
+}
+
+GeneratedTwoToolJob generate_two_tool_job(const std::string& airfoil_source, bool closed_te,
+                                          const decks::TwoToolOptions& options,
+                                          const axes::MachineProfile& profile,
+                                          const std::string& output, const std::string& to) {
+    if (!profile.condition_cards) {
+        throw DeckError(fmt::format("gen two-tool: the machine profile '{}' takes no condition "
+                                    "cards (an addition after EP 0640901): give --profile "
+                                    "parsons-extended",
+                                    profile.name));
+    }
+    GeneratedTwoToolJob job;
+    decks::JobDescription& d = job.description;
+    d.airfoil = airfoil_source;
+    d.closed_trailing_edge = closed_te;
+    d.options = options.pass;
+    d.allowance_in = options.allowance_in;
+    d.variant = std::string(decks::variant_name(options.variant));
+    cardreader::DeckFingerprint fingerprint;
+    try {
+        const auto airfoil = decks::open_airfoil(d);
+        job.deck = decks::make_two_tool_deck(*airfoil, options, profile);
+        fingerprint = write_cards(job.deck.cards, output, to, nullptr, "gen two-tool");
+    } catch (const decks::JobError& e) {
+        throw DeckError(fmt::format("gen two-tool: {}", e.what()));
+    } catch (const decks::PlanError& e) {
+        throw DeckError(fmt::format("gen two-tool: {}", e.what()));
+    }
+    for (const decks::TwoToolPass& p : job.deck.passes) {
+        d.passes.push_back({p.tool, p.radius_in, p.offset_in});
+    }
+    d.options.cutter_radius_in = job.deck.passes.back().radius_in; // the finish
+    d.work_zero_in = job.deck.work_zero_in;
+    d.deck_cards = fingerprint.cards();
+    d.deck_fingerprint = fingerprint.hex();
+    if (output != "-") {
+        write_file(output + ".job.json", decks::job_to_json(d));
     }
     return job;
 }
@@ -284,6 +329,210 @@ ExitCode run_gen(const GenFlags& f) {
 
 } // namespace
 
+namespace {
+
+struct TwoToolFlags {
+    std::string naca;
+    std::string dat;
+    bool closed_te = false;
+    double chord_in = 6.0;
+    int stations = 60;
+    std::string spacing = "cosine";
+    double scallop_in = 0;
+    bool scallop_given = false;
+    double allowance_in = 0.010;
+    std::string variant = "tripped";
+    int rough_tool = 0;  // 0: the profile's first tool
+    int finish_tool = 0; // 0: the profile's next tool after the rough one
+    bool no_corner_slowdown = false;
+    std::string output;
+    std::string to;
+    std::string profile = "parsons-extended";
+    bool json = false;
+};
+
+std::string card_range(const decks::TwoToolPass& p) {
+    return fmt::format("cards {}-{}", p.first_card + 1, p.first_card + p.card_count);
+}
+
+Json two_tool_json(const TwoToolFlags& f, const GeneratedTwoToolJob& job) {
+    const decks::TwoToolDeck& d = job.deck;
+    Json doc = json_document("gen");
+    doc["generator"] = "two-tool";
+    doc["job"] = "two-tool";
+    doc["deck"] = f.output;
+    doc["format"] = std::string(
+        cardreader::format_name(deck_options(f.output, f.to, DeckFlags{}, "--to").format));
+    doc["job_file"] = f.output + ".job.json";
+    doc["airfoil"] = job.description.airfoil;
+    doc["chord_in"] = f.chord_in;
+    doc["variant"] = job.description.variant;
+    doc["allowance_in"] = f.allowance_in;
+    doc["cards"] = d.cards.size();
+    Json passes = Json::array();
+    for (const decks::TwoToolPass& p : d.passes) {
+        passes.push_back({{"tool", p.tool},
+                          {"radius_in", p.radius_in},
+                          {"offset_in", p.offset_in},
+                          {"stations", p.deck.stations.size()},
+                          {"first_card", p.first_card + 1},
+                          {"cards", p.card_count}});
+    }
+    doc["passes"] = passes;
+    doc["lift_card"] = d.lift_card + 1;
+    doc["condition_card"] = d.condition_card + 1;
+    doc["return_card"] = d.return_card + 1;
+    doc["clearance_in"] = d.clearance / 1000.0;
+    doc["return_from_in"] = d.return_from / 1000.0;
+    doc["trip_position_in"] = d.trip_position / 1000.0;
+    doc["return_move_seconds"] = d.return_move_s;
+    doc["planned_lead_seconds"] = d.planned_lead_s;
+    doc["work_zero_in"] = {{"table", d.work_zero_in.x()}, {"cross", d.work_zero_in.y()}};
+    return doc;
+}
+
+void print_two_tool(const TwoToolFlags& f, const GeneratedTwoToolJob& job,
+                    const axes::MachineProfile& profile) {
+    const decks::TwoToolDeck& d = job.deck;
+    std::FILE* out = message_stream();
+    const auto& rough = d.passes[0];
+    const auto& finish = d.passes[1];
+    fmt::print(out, "{} two-tool template, chord {:.3f} in, upper surface, tool change {}\n",
+               job.description.airfoil, f.chord_in,
+               job.description.variant == "tripped" ? "tripped during the return move"
+                                                    : "at the change position");
+    fmt::print(out,
+               "  pass 1           tool {} (radius {:.4f} in + allowance {:.4f} in): {} "
+               "stations, {}\n",
+               rough.tool, rough.radius_in, f.allowance_in, rough.deck.stations.size(),
+               card_range(rough));
+    fmt::print(out, "  lift             card {}: cross slide to {:.3f} in (the clearance)\n",
+               d.lift_card + 1, d.clearance / 1000.0);
+    fmt::print(out,
+               "  condition card   card {}: table passing {:.3f} in counting down: tool "
+               "change to tool {}\n",
+               d.condition_card + 1, d.trip_position / 1000.0, finish.tool);
+    fmt::print(out,
+               "  return move      card {}: table {:.3f} -> 0.000 in (the change position), "
+               "about {:.1f} s\n",
+               d.return_card + 1, d.return_from / 1000.0, d.return_move_s);
+    if (job.description.variant == "tripped") {
+        fmt::print(out,
+                   "  tool change      {:.1f} s, begun about {:.1f} s before the table stops "
+                   "(planned)\n",
+                   profile.actions.tool_change_s, d.planned_lead_s);
+    } else {
+        fmt::print(out, "  tool change      {:.1f} s, begun as the table stops\n",
+                   profile.actions.tool_change_s);
+    }
+    fmt::print(out, "  pass 2           tool {} (radius {:.4f} in): {} stations, {}\n", finish.tool,
+               finish.radius_in, finish.deck.stations.size(), card_range(finish));
+    fmt::print(out,
+               "  work zero        table {:.3f} in, cross slide {:.3f} in (the leading edge)\n",
+               d.work_zero_in.x(), d.work_zero_in.y());
+    fmt::print(out, "  wrote            {}{}\n", f.output == "-" ? "standard output" : f.output,
+               f.output == "-" ? " (no job description: give run --job for --cut)"
+                               : " and " + f.output + ".job.json");
+}
+
+int other_tool(const axes::MachineProfile& profile, int rough) {
+    for (const axes::Tool& t : profile.tools) {
+        if (t.number != rough) {
+            return t.number;
+        }
+    }
+    return rough; // refused by the generator: one tool for both passes
+}
+
+ExitCode run_two_tool(const TwoToolFlags& f) {
+    if (f.naca.empty() == f.dat.empty()) {
+        throw DeckError("gen two-tool: give exactly one of --naca DIGITS or --dat FILE");
+    }
+    if (f.scallop_given && !(f.scallop_in > 0 && std::isfinite(f.scallop_in))) {
+        throw DeckError(fmt::format("gen two-tool: --scallop {}: give a positive number of "
+                                    "inches, e.g. 0.002",
+                                    f.scallop_in));
+    }
+    refuse_json_beside_standard_output("gen two-tool", f.json, "-o", f.output);
+    const auto profile = load_profile(f.profile);
+    decks::TwoToolOptions o;
+    o.pass.chord_in = f.chord_in;
+    o.pass.stations = f.stations;
+    o.pass.spacing = f.spacing == "uniform" ? decks::Spacing::uniform : decks::Spacing::cosine;
+    o.pass.scallop_in = f.scallop_in;
+    o.pass.corner_slowdown = !f.no_corner_slowdown;
+    o.allowance_in = f.allowance_in;
+    o.variant =
+        f.variant == "boundary" ? decks::ChangeVariant::boundary : decks::ChangeVariant::tripped;
+    o.rough_tool = f.rough_tool != 0 ? f.rough_tool : profile.first_tool;
+    o.finish_tool = f.finish_tool != 0 ? f.finish_tool : other_tool(profile, o.rough_tool);
+    if (o.rough_tool != profile.first_tool) {
+        throw DeckError(fmt::format("gen two-tool: --rough-tool {}: the machine starts with tool "
+                                    "{} in the spindle (profile key first_tool), and the deck "
+                                    "changes tools only between the passes",
+                                    o.rough_tool, profile.first_tool));
+    }
+    const GeneratedTwoToolJob job =
+        generate_two_tool_job(f.naca.empty() ? "dat " + f.dat : "naca " + f.naca, f.closed_te, o,
+                              profile, f.output, f.to);
+    if (f.json) {
+        print_json_document(two_tool_json(f, job));
+    } else {
+        print_two_tool(f, job, profile);
+    }
+    return ExitCode::ok;
+}
+
+void add_two_tool_command(CLI::App& gen, Command& selected) {
+    auto flags = std::make_shared<TwoToolFlags>();
+    CLI::App* cmd = gen.add_subcommand(
+        "two-tool", "A template roughed with one tool and finished with another; the tool "
+                    "change tripped by a condition card (an addition after EP 0640901)");
+    cmd->add_option("--naca", flags->naca, "NACA 4-digit section, e.g. 2412");
+    cmd->add_option("--dat", flags->dat, "Airfoil coordinate file (Selig or Lednicer .dat)");
+    cmd->add_flag("--closed-te", flags->closed_te, "NACA: closed trailing edge (a4 = 0.1036)");
+    cmd->add_option("--chord", flags->chord_in, "Chord, inches")->capture_default_str();
+    cmd->add_option("--stations", flags->stations, "Stations per pass")->capture_default_str();
+    cmd->add_option("--spacing", flags->spacing, "Station spacing along the chord")
+        ->check(CLI::IsMember({"cosine", "uniform"}))
+        ->capture_default_str();
+    CLI::Option* scallop =
+        cmd->add_option("--scallop", flags->scallop_in,
+                        "Instead of --stations: keep each pass's scallop under this many inches");
+    cmd->add_option("--allowance", flags->allowance_in,
+                    "What the first tool leaves standing for the second, inches")
+        ->capture_default_str();
+    cmd->add_option("--variant", flags->variant,
+                    "tripped: the change begins during the return move (the seed's point); "
+                    "boundary: as the table reaches the change position")
+        ->check(CLI::IsMember({"tripped", "boundary"}))
+        ->capture_default_str();
+    cmd->add_option("--rough-tool", flags->rough_tool,
+                    "Tool of the first pass (default: the profile's first tool)");
+    cmd->add_option("--finish-tool", flags->finish_tool,
+                    "Tool of the second pass (default: the profile's next tool)");
+    cmd->add_flag("--no-corner-slowdown", flags->no_corner_slowdown,
+                  "Do not slow down at sharp turns of the path");
+    cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")->required();
+    cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing");
+    cmd->add_option("--profile", flags->profile,
+                    "Machine profile (its tools and tool-change time); one that takes condition "
+                    "cards")
+        ->capture_default_str();
+    add_json_flag(*cmd, flags->json);
+    cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was written"}}) +
+                "Examples:\n"
+                "  parsons gen two-tool --naca 2412 --chord 6 --scallop 0.002 -o two-tool.csv\n"
+                "  parsons run two-tool.csv --profile parsons-extended --cut cut.svg\n"
+                "  parsons gen two-tool --naca 2412 --variant boundary -o boundary.cbn --json");
+    cmd->callback([&selected, flags, scallop] {
+        flags->scallop_given = scallop->count() > 0;
+        selected = [flags] { return run_two_tool(*flags); };
+    });
+}
+
+} // namespace
+
 void add_gen_command(CLI::App& app, Command& selected) {
     auto flags = std::make_shared<GenFlags>();
     CLI::App* gen = app.add_subcommand("gen", "Generate a deck by the 1952 arithmetic");
@@ -338,6 +587,7 @@ void add_gen_command(CLI::App& app, Command& selected) {
         flags->scallop_given = scallop->count() > 0;
         selected = [flags] { return run_gen(*flags); };
     });
+    add_two_tool_command(*gen, selected);
 }
 
 } // namespace parsons::cli

@@ -28,12 +28,22 @@ std::string job_to_json(const JobDescription& job) {
         j["zero_in"] = {job.wing_zero_in.x(), job.wing_zero_in.y(), job.wing_zero_in.z()};
     } else {
         const TemplateOptions& o = job.options;
-        j["job"] = "template";
+        j["job"] = job.passes.empty() ? "template" : "two-tool";
         j["chord_in"] = o.chord_in;
         j["cutter_radius_in"] = o.cutter_radius_in;
         j["surface"] = surface_name(o.surface);
         j["female"] = o.female;
         j["work_zero_in"] = {job.work_zero_in.x(), job.work_zero_in.y()};
+        if (!job.passes.empty()) {
+            json passes = json::array();
+            for (const PassDescription& p : job.passes) {
+                passes.push_back(
+                    {{"tool", p.tool}, {"radius_in", p.radius_in}, {"offset_in", p.offset_in}});
+            }
+            j["passes"] = passes;
+            j["allowance_in"] = job.allowance_in;
+            j["variant"] = job.variant;
+        }
     }
     if (!job.deck_fingerprint.empty()) {
         j["deck"] = {{"cards", job.deck_cards}, {"fingerprint", job.deck_fingerprint}};
@@ -65,8 +75,19 @@ JobDescription job_from_json(const std::string& text) {
                                                zero.at(2).get<double>());
             return job;
         }
-        if (kind != "template") {
-            throw JobError(fmt::format("job: '{}' is not template or wing", kind));
+        if (kind != "template" && kind != "two-tool") {
+            throw JobError(fmt::format("job: '{}' is not template, two-tool or wing", kind));
+        }
+        if (kind == "two-tool") {
+            for (const json& p : j.at("passes")) {
+                job.passes.push_back({p.at("tool").get<int>(), p.at("radius_in").get<double>(),
+                                      p.at("offset_in").get<double>()});
+            }
+            if (job.passes.empty()) {
+                throw JobError("passes: a two-tool job lists its passes");
+            }
+            job.allowance_in = j.at("allowance_in").get<double>();
+            job.variant = j.at("variant").get<std::string>();
         }
         job.options.chord_in = j.at("chord_in").get<double>();
         job.options.cutter_radius_in = j.at("cutter_radius_in").get<double>();

@@ -289,7 +289,7 @@ std::vector<std::string> subcommands(const std::string& help) {
         }
         if (in) {
             std::smatch m;
-            if (std::regex_search(line, m, std::regex(R"(^  ([a-z]+)\b)"))) {
+            if (std::regex_search(line, m, std::regex(R"(^  ([a-z][a-z-]*)\b)"))) {
                 out.push_back(m[1]);
             } else if (!trim(line).empty()) {
                 in = false;
