@@ -112,6 +112,10 @@ std::string summary(const RunResult& r) {
         text += fmt::format("; {}: counter {} real {} impulses {} lost {}", axis_name(kAxes.at(i)),
                             a.counter_in, a.real_in, a.impulses, a.lost_steps);
     }
+    for (const auto& x : r.actions) {
+        text += fmt::format("; event {} tripped {} acknowledged {}", x.event, x.tripped_s,
+                            x.acknowledged_s);
+    }
     return text;
 }
 
@@ -130,6 +134,19 @@ bool same_run(const RunResult& a, const RunResult& b) {
         const auto& y = b.axes.at(i);
         if (x.counter_in != y.counter_in || x.real_in != y.real_in || x.impulses != y.impulses ||
             x.lost_steps != y.lost_steps || x.screw_in != y.screw_in || x.slip_in != y.slip_in) {
+            return false;
+        }
+    }
+    // Condition cards (an addition): the same actions, tripped and acknowledged at the same
+    // instants, and the same tool in the spindle.
+    if (a.actions.size() != b.actions.size() || a.tool_in_spindle != b.tool_in_spindle) {
+        return false;
+    }
+    for (std::size_t i = 0; i < a.actions.size(); ++i) {
+        const auto& x = a.actions.at(i);
+        const auto& y = b.actions.at(i);
+        if (x.event != y.event || x.tripped_s != y.tripped_s ||
+            x.acknowledged_s != y.acknowledged_s || x.motion_end_s != y.motion_end_s) {
             return false;
         }
     }

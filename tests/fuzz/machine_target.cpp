@@ -29,7 +29,17 @@
 //                short: a double step), bit 6 the table's travel limits at -0.05 and 2.5 in,
 //                bit 7 a steep screw-error table on the table (the part runs 0.8 in a reading
 //                inch: impulses closer than 0.001 in of screw travel)
-//   then         up to 8 triples (card, column, row): flip that punch
+//   then         up to 8 triples (card, column, row): flip that punch (on the finished deck)
+//   then         1 byte, condition cards (an addition after EP 0640901): bit 0 on turns the
+//                profile's condition units on (parsons-extended's) and reads b >> 1 % 4 + 1
+//                conditions of 5 bytes each: the motion card they stand before (b % cards),
+//                the event (1 + b % 99), axis (b % 5) and sense (b / 5 % 3), action (1 + b % 8)
+//                and its parameter (1 + b / 8 % 5), and the position: b2 < 128 lays it on
+//                the watched axis's path on that card (1 + b2 % travel thousandths past the
+//                start, in its motion), else (b2 - 128) * 80 thousandths, anywhere. Conditions
+//                before one card share one condition card (five to a card). They come after
+//                all eight flips (two equal triples flip a hole back), so that inputs kept
+//                before condition cards existed replay the same deck.
 // Missing bytes read as zero: an empty input is one card on which nothing moves, and every
 // reading the patent's.
 #include "tests/fuzz/fuzz_targets.hpp"
@@ -165,21 +175,91 @@ void cabinet_options(std::uint8_t bits, axes::MachineProfile& profile) {
     }
 }
 
+// The condition byte and its conditions: condition cards put before the motion cards.
+std::vector<CardOrders> with_conditions(Recipe& recipe, std::vector<CardOrders> motion,
+                                        const std::vector<std::array<int, kAxisCount>>& from,
+                                        axes::MachineProfile& profile) {
+    const std::uint8_t bits = recipe.next();
+    if ((bits & 0x01) == 0) {
+        return motion;
+    }
+    profile.condition_cards = true;
+    std::vector<std::vector<ConditionOrder>> before(motion.size());
+    const int conditions = 1 + (bits >> 1) % 4;
+    for (int n = 0; n < conditions; ++n) {
+        const std::size_t card = recipe.next() % motion.size();
+        ConditionOrder c;
+        c.event = 1 + recipe.next() % 99;
+        const int axis_sense = recipe.next();
+        c.axis = kAxes.at(static_cast<std::size_t>(axis_sense % 5));
+        c.sense = static_cast<PassingSense>(axis_sense / 5 % 3);
+        const int action = recipe.next();
+        c.action = static_cast<ActionKind>(1 + action % kActionKinds);
+        c.parameter = c.action == ActionKind::tool_change || c.action == ActionKind::dwell ||
+                              c.action == ActionKind::lamp
+                          ? 1 + action / 8 % 5
+                          : 0;
+        const int where = recipe.next();
+        const AxisOrder& o = motion.at(card).axis(c.axis);
+        const int start = from.at(card).at(axis_index(c.axis));
+        const int sign = o.motion == Motion::forward ? 1 : -1;
+        c.position =
+            where < 128
+                ? thousandths((start + sign * (1 + where % std::max(1, int{o.check})) + 10000) %
+                              10000)
+                : thousandths((where - 128) * 80);
+        before.at(card).push_back(c);
+    }
+    std::vector<CardOrders> deck;
+    for (std::size_t k = 0; k < motion.size(); ++k) {
+        for (std::size_t i = 0; i < before.at(k).size(); i += kConditionsPerCard) {
+            CardOrders card;
+            card.kind = CardKind::condition;
+            for (std::size_t j = i; j < before.at(k).size() && j < i + kConditionsPerCard; ++j) {
+                card.conditions.at(static_cast<std::size_t>(card.condition_count++)) =
+                    before.at(k).at(j);
+            }
+            deck.push_back(card);
+        }
+        deck.push_back(motion.at(k));
+    }
+    // Numbered in order from the first motion card's number.
+    int number = motion.front().number;
+    for (CardOrders& o : deck) {
+        o.number = number;
+        number = (number + 1) % 10000;
+    }
+    return deck;
+}
+
 std::vector<Card> deck_from_recipe(Recipe& recipe, axes::MachineProfile& profile) {
     const int count = 1 + recipe.next() % kMaxCards;
     recipe.next(); // the profile byte, read by the caller
     const int hi = recipe.next();
     int number = (hi * 256 + recipe.next()) % 10000;
     std::array<int, kAxisCount> at{};
-    std::vector<Card> cards;
+    std::vector<CardOrders> motion;
+    std::vector<std::array<int, kAxisCount>> from;
     for (int k = 0; k < count; ++k) {
         CardOrders orders;
         orders.number = number;
         number = (number + 1) % 10000;
         orders.spindle = static_cast<Spindle>(recipe.next() % 3);
+        from.push_back(at);
         for (Axis a : kAxes) {
             orders.axis(a) = axis_order(recipe, a, at.at(axis_index(a)));
         }
+        motion.push_back(orders);
+    }
+    cabinet_options(recipe.next(), profile);
+    std::vector<std::array<std::uint8_t, 3>> flips;
+    for (int flip = 0; flip < kMaxFlips && !recipe.done(); ++flip) {
+        const std::uint8_t card = recipe.next();
+        const std::uint8_t column = recipe.next();
+        flips.push_back({card, column, recipe.next()});
+    }
+    std::vector<Card> cards;
+    for (const CardOrders& orders : with_conditions(recipe, std::move(motion), from, profile)) {
         EncodeResult punched = encode(orders, fig8_layout());
         if (!punched) {
             throw Finding("machine: the keypunch refused orders the layout holds: " +
@@ -187,11 +267,10 @@ std::vector<Card> deck_from_recipe(Recipe& recipe, axes::MachineProfile& profile
         }
         cards.push_back(punched.card);
     }
-    cabinet_options(recipe.next(), profile);
-    for (int flip = 0; flip < kMaxFlips && !recipe.done(); ++flip) {
-        Card& card = cards.at(recipe.next() % cards.size());
-        const int column = 1 + recipe.next() % kColumns;
-        const auto row = static_cast<Row>(recipe.next() % kRows);
+    for (const auto& [which, where, hole] : flips) {
+        Card& card = cards.at(which % cards.size());
+        const int column = 1 + where % kColumns;
+        const auto row = static_cast<Row>(hole % kRows);
         card.set_column(column, card.column(column) ^ row_bit(row));
     }
     return cards;

@@ -40,6 +40,26 @@ void check_names_file(const DeckError& e, const std::string& file) {
     }
 }
 
+// A condition card (an addition) that decodes is punched back hole for hole by the keypunch,
+// and its listing rows read back as the same orders.
+void condition_round_trip(const Card& card, const CardOrders& orders) {
+    const EncodeResult punched = encode(orders, fig8_layout());
+    if (!punched || punched.card != card) {
+        throw Finding("condition card: decoded, then punched again, it came out different");
+    }
+    std::ostringstream rows;
+    rows << kListingHeader << '\n';
+    for (int i = 0; i < orders.condition_count; ++i) {
+        rows << condition_row(orders, i) << '\n';
+    }
+    std::istringstream in(rows.str());
+    ListingReader reader(in, "rows.csv");
+    const auto back = reader.next();
+    if (!back || back->orders != orders) {
+        throw Finding("condition card: its listing rows read back as other orders");
+    }
+}
+
 // Reads the whole deck; each card is decoded, reviewed and handed to `check`.
 void read_deck(Bytes input, DeckOptions options, const std::function<void(const Card&)>& check) {
     options.file_name = kFile;
@@ -51,11 +71,15 @@ void read_deck(Bytes input, DeckOptions options, const std::function<void(const 
             const DecodeResult decoded = decode(*card, fig8_layout());
             if (decoded) {
                 reviewer.review(decoded.orders);
+                if (decoded.orders.kind == CardKind::condition) {
+                    condition_round_trip(*card, decoded.orders);
+                }
             } else {
                 reviewer.skip();
             }
             check(*card);
         }
+        reviewer.finish();
     } catch (const DeckError& e) {
         check_names_file(e, kFile);
     }
