@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace parsons::cardreader {
 namespace {
 
@@ -57,12 +59,26 @@ ConditionReview::card(long index, const CardOrders& orders,
             if (duplicate) {
                 continue;
             }
-            if (static_cast<int>(pending_.size()) == kBufferPairs) {
-                found.push_back({index, slot_column(slot, 0), c.axis,
-                                 fmt::format("condition {}: more than {} conditions before one "
-                                             "motion card: buffer PFR holds {}",
-                                             slot + 1, kBufferPairs, kBufferPairs),
+            if (c.action == ActionKind::tool_change && !tools_.empty() &&
+                std::find(tools_.begin(), tools_.end(), c.parameter) == tools_.end()) {
+                std::string held;
+                for (int t : tools_) {
+                    held += fmt::format("{}{}", held.empty() ? "" : ", ", t);
+                }
+                found.push_back({index, slot_column(slot, 9), c.axis,
+                                 fmt::format("condition {}: tool {} is not in the tool changer of "
+                                             "profile {} (it holds tools {})",
+                                             slot + 1, c.parameter, profile_, held),
                                  true});
+            }
+            if (static_cast<int>(pending_.size()) == kBufferPairs) {
+                found.push_back(
+                    {index, slot_column(slot, 0), c.axis,
+                     fmt::format("condition {}: more than {} conditions before one "
+                                 "motion card: buffer PFR holds {} (condition cards are an "
+                                 "addition after EP 0640901)",
+                                 slot + 1, kBufferPairs, kBufferPairs),
+                     true});
                 continue;
             }
             pending_.push_back({index, slot, c});
@@ -76,7 +92,7 @@ ConditionReview::card(long index, const CardOrders& orders,
             found.push_back({p.card, slot_column(p.slot, 2), c.axis,
                              fmt::format("condition {}: event {} watches the {} axis, which motion "
                                          "card {} does not move (check 0.000): it could never be "
-                                         "met",
+                                         "met (condition cards are an addition after EP 0640901)",
                                          p.slot + 1, c.event, axis_name(c.axis), index),
                              true});
             continue;

@@ -9,6 +9,7 @@
 //     condition and its action);
 //   - more conditions before one motion card than buffer PFR holds;
 //   - a condition on an axis its motion card does not move (check 0.000): never met;
+//   - a tool change to a tool the profile's changer does not hold;
 //   - a condition card with no motion card after it (claim 4: they stand before it);
 //  and a finding the machine will stop on (condition_not_met, `check` exits 3): the motion card
 //  moves the axis, but its counter never steps onto the position in the condition's sense
@@ -37,9 +38,11 @@ inline constexpr int kBufferPairs = 10;
 
 class ConditionReview {
 public:
-    // allowed: the profile has condition units; profile: its name, for the message.
-    explicit ConditionReview(bool allowed = true, std::string profile = "parsons-extended")
-        : allowed_(allowed), profile_(std::move(profile)) {}
+    // allowed: the profile has condition units; profile: its name, for the message; tools:
+    // the numbers of the tools its changer holds (empty: not judged).
+    explicit ConditionReview(bool allowed = true, std::string profile = "parsons-extended",
+                             std::vector<int> tools = {})
+        : allowed_(allowed), profile_(std::move(profile)), tools_(std::move(tools)) {}
     // The next card of the deck (index 1-based) and where each axis stood before it (unknown
     // after an unreadable card).
     std::vector<ConditionFinding>
@@ -59,6 +62,7 @@ private:
     std::vector<Pending> pending_;
     bool allowed_;
     std::string profile_;
+    std::vector<int> tools_;
 };
 
 } // namespace parsons::cardreader

@@ -84,9 +84,10 @@ public:
     // A card that could not be read in full: its numbers are unknown, so the next card's
     // number and checks are not judged against a guess.
     void skip();
-    // Condition cards: whether the profile has condition units (default: yes), and its name.
-    void allow_conditions(bool allowed, std::string profile) {
-        conditions_ = ConditionReview(allowed, std::move(profile));
+    // Condition cards: whether the profile has condition units (default: yes), its name and
+    // the tools of its changer.
+    void allow_conditions(bool allowed, std::string profile, std::vector<int> tools = {}) {
+        conditions_ = ConditionReview(allowed, std::move(profile), std::move(tools));
     }
     // After the last card: a condition card with no motion card after it.
     std::vector<ReviewNote> finish();

@@ -61,6 +61,22 @@ std::string_view sense_name(PassingSense s) {
                                         : "either";
 }
 
+std::string action_text(ActionKind a, int parameter) {
+    switch (a) {
+    case ActionKind::tool_change:
+        return fmt::format("{} (tool {})", action_name(a), parameter);
+    case ActionKind::dwell:
+        return parameter >= 1 && parameter <= kAxisCount
+                   ? fmt::format("{} (hold {})", action_name(a),
+                                 axis_name(kAxes.at(static_cast<std::size_t>(parameter - 1))))
+                   : std::string(action_name(a));
+    case ActionKind::lamp:
+        return fmt::format("{} (lamp {})", action_name(a), parameter);
+    default:
+        return std::string(action_name(a));
+    }
+}
+
 std::optional<std::string> parameter_error(ActionKind a, int parameter) {
     switch (a) {
     case ActionKind::tool_change:

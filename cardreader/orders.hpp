@@ -101,6 +101,9 @@ std::optional<ActionKind> action_named(std::string_view name);
 // "+", "-", "*"
 std::string_view sense_symbol(PassingSense s);
 std::string_view sense_name(PassingSense s); // "forward", "reverse", "either"
+// The action with its parameter in words: "tool-change (tool 2)", "dwell (hold cross)",
+// "lamp (lamp 3)", "coolant-on".
+std::string action_text(ActionKind a, int parameter);
 // What the parameter of an action means and which values it takes, or an error sentence.
 std::optional<std::string> parameter_error(ActionKind a, int parameter);
 

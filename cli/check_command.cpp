@@ -52,7 +52,7 @@ ExitCode run_check(const CheckFlags& f) {
     InputDeck deck(f.input, f.deck);
     const CardLayout& layout = *deck.options().layout;
     DeckReviewer reviewer(review_dynamics(profile));
-    reviewer.allow_conditions(profile.condition_cards, profile.name);
+    reviewer.allow_conditions(profile.condition_cards, profile.name, tool_numbers(profile));
     std::array<double, kAxisCount> at{};
     long index = 0;
     long passing = 0;

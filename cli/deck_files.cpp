@@ -181,8 +181,17 @@ void InputDeck::rewind() {
     source_ = cardreader::open_card_source(*in_, options_);
 }
 
+std::vector<int> tool_numbers(const axes::MachineProfile& profile) {
+    std::vector<int> numbers;
+    for (const axes::Tool& t : profile.tools) {
+        numbers.push_back(t.number);
+    }
+    return numbers;
+}
+
 void refuse_condition_errors(InputDeck& deck, const axes::MachineProfile& profile) {
-    cardreader::ConditionReview review(profile.condition_cards, profile.name);
+    cardreader::ConditionReview review(profile.condition_cards, profile.name,
+                                       tool_numbers(profile));
     const cardreader::CardLayout& layout = *deck.options().layout;
     const std::string& file = deck.options().file_name;
     std::array<std::optional<cardreader::Thousandths>, cardreader::kAxisCount> at{};

@@ -76,6 +76,8 @@ private:
 // motion card does not move, a condition card with no motion card after it) as a DeckError
 // naming file, card and column, read before any card runs; the deck is rewound after.
 void refuse_condition_errors(InputDeck& deck, const axes::MachineProfile& profile);
+// The numbers of the tools the profile's changer holds (for the condition cards' review).
+std::vector<int> tool_numbers(const axes::MachineProfile& profile);
 
 // The fingerprint of the first `max_cards` cards of a deck (all of them when negative).
 cardreader::DeckFingerprint fingerprint_deck(const std::string& path, const DeckFlags& flags,

@@ -180,8 +180,8 @@ void PlotSvgRecorder::on_condition(double seconds, const relaylogic::ConditionEv
     }
     last_t_ = std::max(last_t_, seconds);
     axes_.at(cardreader::axis_index(e.axis))
-        .trips.push_back(Trip{seconds, fmt::format("event {}: {} {} at {}", e.event,
-                                                   cardreader::action_name(e.action), e.parameter,
+        .trips.push_back(Trip{seconds, fmt::format("event {}: {} at {}", e.event,
+                                                   cardreader::action_text(e.action, e.parameter),
                                                    cardreader::format_inches(e.position))});
 }
 

@@ -158,10 +158,10 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
         line(fmt::format("  fault          {}: {}", f.spec, f.effect));
     }
     for (const auto& a : r.actions) {
-        line(fmt::format("  action         event {} ({} at {}, card {}): {} {} at {:.3f} s, "
+        line(fmt::format("  action         event {} ({} at {}, card {}): {} at {:.3f} s, "
                          "acknowledged {:.3f} s, {:.3f} s of it while the axes moved",
                          a.event, axis_name(a.axis), cardreader::format_inches(a.position),
-                         a.motion_card, cardreader::action_name(a.action), a.parameter, a.tripped_s,
+                         a.motion_card, cardreader::action_text(a.action, a.parameter), a.tripped_s,
                          a.acknowledged_s, a.overlap_s()));
     }
     if (r.tool_in_spindle) {

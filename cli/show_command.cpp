@@ -192,7 +192,7 @@ ExitCode run_show(const ShowFlags& f) {
     Json cards = Json::array();
 
     DeckReviewer reviewer(review_dynamics(profile));
-    reviewer.allow_conditions(profile.condition_cards, profile.name);
+    reviewer.allow_conditions(profile.condition_cards, profile.name, tool_numbers(profile));
     long index = 0;
     long notes = 0;
     std::optional<std::string> first_deck_error;

@@ -313,10 +313,10 @@ void VcdWriter::on_condition(double seconds, const relaylogic::ConditionEvent& e
         write_header();
     }
     advance_time(seconds);
-    put_comment(fmt::format("{}: event {} ({} {}, {} {})", relaylogic::condition_event_name(e.kind),
+    put_comment(fmt::format("{}: event {} ({} {}, {})", relaylogic::condition_event_name(e.kind),
                             e.event, cardreader::axis_name(e.axis),
                             cardreader::format_inches(e.position),
-                            cardreader::action_name(e.action), e.parameter));
+                            cardreader::action_text(e.action, e.parameter)));
 }
 
 void VcdWriter::on_finish(double seconds) {

@@ -77,7 +77,8 @@ std::optional<std::string> ConditionUnits::refuse_unmoved(const cardreader::Card
         if (p.state == PairState::stored && motion.axis(p.condition.axis).check == 0) {
             return fmt::format("card {}: event {} of condition card {} watches the {} axis, which "
                                "this motion card does not move (check 0.000): the condition "
-                               "could never be met",
+                               "could never be met (condition cards are an addition after "
+                               "EP 0640901, Siemens)",
                                index, p.condition.event, p.card,
                                cardreader::axis_name(p.condition.axis));
         }

@@ -138,14 +138,15 @@ std::optional<std::string> convert_condition_card(const cardreader::CardOrders& 
             const BufferPair& o = buffer.pair(other);
             return fmt::format("card {}, column {}: event {} is already stored for the same "
                                "motion card (card {}{}): an identifier names one condition and "
-                               "its action (EP 0640901 claim 3)",
+                               "its action (EP 0640901 claim 3; condition cards are an addition)",
                                index, column, c.event, o.card,
                                o.card == index ? ", an earlier condition" : "");
         }
         const int k = buffer.free_pair();
         if (k < 0) {
             return fmt::format("card {}, column {}: internal buffer PFR is full ({} conditions "
-                               "before one motion card at most)",
+                               "before one motion card at most; condition cards are an addition "
+                               "after EP 0640901, Siemens)",
                                index, column, InternalBuffer::kChannels);
         }
         BufferPair& p = buffer.pair(k);

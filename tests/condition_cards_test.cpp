@@ -637,6 +637,28 @@ TEST_CASE("Condition cards: the deck review names each deck error by card and co
     CHECK(notes.at(3).deck_error);
     CHECK(notes.at(3).card == 4);
     CHECK(notes.at(3).column == 76);
+
+    // A tool change to a tool the changer does not hold: its parameter columns (slot 1: 10).
+    DeckReviewer tools;
+    tools.allow_conditions(true, "parsons-extended", {1, 2});
+    auto found = tools.review(condition_card(
+        1, {cond(1, Axis::table, 100, PassingSense::forward, ActionKind::tool_change, 7)}));
+    REQUIRE(found.size() == 1);
+    CHECK(found.at(0).deck_error);
+    CHECK(found.at(0).column == 10);
+    CHECK_THAT(found.at(0).message, Catch::Contains("tool 7 is not in the tool changer"));
+    CHECK(tools
+              .review(condition_card(2, {cond(2, Axis::table, 100, PassingSense::forward,
+                                              ActionKind::tool_change, 2)}))
+              .empty());
+    // ... and a condition card under parsons-1952: its column 76.
+    DeckReviewer faithful;
+    faithful.allow_conditions(false, "parsons-1952");
+    found = faithful.review(
+        condition_card(1, {cond(1, Axis::table, 100, PassingSense::forward, ActionKind::lamp, 1)}));
+    REQUIRE(found.size() == 1);
+    CHECK(found.at(0).column == 76);
+    CHECK_THAT(found.at(0).message, Catch::Contains("profile parsons-1952 has no condition units"));
 }
 
 TEST_CASE("Condition cards: run refuses a deck error with exit 2 before any motion, check and "
