@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <iterator>
+#include <vector>
 
 namespace parsons::cardreader {
 namespace {
@@ -69,15 +70,39 @@ void draw_printing(std::string& svg) {
 
 bool starts_section(const LayoutField& f) {
     return f.kind == FieldKind::spindle || f.kind == FieldKind::motion ||
-           f.kind == FieldKind::card_number;
+           f.kind == FieldKind::card_number || f.kind == FieldKind::event ||
+           f.kind == FieldKind::extension;
 }
 
-void draw_fields(std::string& svg, const CardLayout& layout) {
+// A section name in bold over columns first..last.
+void section_name(std::string& svg, std::string name, int first, int last) {
+    for (char& c : name) {
+        c = static_cast<char>(c - ('a' - 'A') * (c >= 'a' && c <= 'z'));
+    }
+    fmt::format_to(std::back_inserter(svg),
+                   R"(<text font-size="6.4" font-weight="bold" letter-spacing="1" )"
+                   R"(x="{:.2f}" y="46">{}</text>)"
+                   "\n",
+                   (column_x(first + 2) + column_x(last)) / 2, name);
+}
+
+// Field names and rules over the columns: the layout's motion-card fields, or on a condition
+// card (an addition after EP 0640901) its five condition slots, the extension mark in column
+// 76 and the card number.
+void draw_fields(std::string& svg, const CardLayout& layout, bool condition_card) {
     svg += fmt::format(R"(<g font-family="DejaVu Sans, Arial, sans-serif" fill="{}" )"
                        R"(text-anchor="middle">)"
                        "\n",
                        kInk);
-    for (const LayoutField& f : layout.fields) {
+    std::vector<LayoutField> fields = layout.fields;
+    if (condition_card) {
+        fields = layout.condition_fields;
+        fields.push_back({FieldKind::extension, std::nullopt, layout.extension_column, 1});
+        if (const LayoutField* number = layout.find(FieldKind::card_number)) {
+            fields.push_back(*number);
+        }
+    }
+    for (const LayoutField& f : fields) {
         // Rule at the left edge of the field: heavy (164) between sections, thin within.
         const double left = column_x(f.first_column) - kColumnPitch / 2;
         const bool heavy = starts_section(f);
@@ -100,6 +125,14 @@ void draw_fields(std::string& svg, const CardLayout& layout) {
         }
         svg += '\n';
     }
+    if (condition_card) {
+        for (int slot = 0; slot < kConditionsPerCard; ++slot) {
+            const int first = 1 + slot * 15;
+            section_name(svg, fmt::format("condition {}", slot + 1), first, first + 12);
+        }
+        svg += "\n</g>\n";
+        return;
+    }
     // Axis section names over each section.
     for (Axis a : kAxes) {
         int first = 0;
@@ -113,15 +146,7 @@ void draw_fields(std::string& svg, const CardLayout& layout) {
         if (first == 0) {
             continue;
         }
-        std::string name(axis_name(a));
-        for (char& c : name) {
-            c = static_cast<char>(c - ('a' - 'A') * (c >= 'a' && c <= 'z'));
-        }
-        fmt::format_to(std::back_inserter(svg),
-                       R"(<text font-size="6.4" font-weight="bold" letter-spacing="1" )"
-                       R"(x="{:.2f}" y="46">{}</text>)"
-                       "\n",
-                       (column_x(first + 2) + column_x(last)) / 2, name);
+        section_name(svg, std::string(axis_name(a)), first, last);
     }
     // The row of cross marks of each sequence pattern 222, in row 12.
     for (Axis a : kAxes) {
@@ -212,7 +237,7 @@ std::string card_svg(const Card& card, const CardLayout& layout, const CardPictu
         kMargin);
     draw_stock(svg);
     draw_printing(svg);
-    draw_fields(svg, layout);
+    draw_fields(svg, layout, is_condition_card(card, layout));
     draw_interpretation(svg, card, code);
     draw_holes(svg, card, notes.bad_punch);
     svg += "</g>\n";

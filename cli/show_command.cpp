@@ -260,9 +260,12 @@ ExitCode run_show(const ShowFlags& f) {
         cards.push_back(std::move(card_doc));
         if (!f.svg_dir.empty()) {
             CardPictureNotes pic;
-            pic.caption = fmt::format("{} · card {} · card number {:04} · layout {}",
+            pic.caption = fmt::format("{} · card {} · card number {:04} · layout {}{}",
                                       std::filesystem::path(f.input).filename().string(), index,
-                                      decoded.orders.number, layout.name);
+                                      decoded.orders.number, layout.name,
+                                      decoded && decoded.orders.kind == CardKind::condition
+                                          ? " · condition card (an addition after EP 0640901)"
+                                          : "");
             pic.bad_punch = decoded.bad_punch;
             const auto path =
                 std::filesystem::path(f.svg_dir) / fmt::format("card-{:04}.svg", index);

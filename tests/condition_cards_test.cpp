@@ -5,6 +5,7 @@
 #include "tests/test_support.hpp"
 
 #include "axes/state_json.hpp"
+#include "cardreader/card_svg.hpp"
 #include "cardreader/condition_card.hpp"
 #include "cardreader/condition_review.hpp"
 #include "cardreader/deck_error.hpp"
@@ -723,4 +724,23 @@ TEST_CASE("Condition cards: run refuses a deck error with exit 2 before any moti
                                            " -q --profile parsons-extended");
     CHECK(stopped.exit_code == 3);
     CHECK_THAT(stopped.output, Catch::Contains("condition_not_met: card 3 (number 0003): event 5"));
+}
+
+TEST_CASE("Condition card: its picture names the five condition slots and the extension mark, a "
+          "motion card's does not",
+          "[conditions][card]") {
+    const Card c = encode(condition_card(3, {cond(7, Axis::cross, 1250, PassingSense::reverse,
+                                                  ActionKind::tool_change, 2)}),
+                          fig8_layout())
+                       .card;
+    const std::string svg = card_svg(c, fig8_layout(), {});
+    for (const char* label :
+         {"CONDITION 1", "CONDITION 5", "EXTENSION", "POSITION", "PARAM.", "CARD NO."}) {
+        CHECK_THAT(svg, Catch::Contains(label));
+    }
+    CHECK_THAT(svg, !Catch::Contains("TABLE"));
+    const std::string motion =
+        card_svg(encode(table_move(1, 0, 100), fig8_layout()).card, fig8_layout(), {});
+    CHECK_THAT(motion, Catch::Contains("TABLE"));
+    CHECK_THAT(motion, !Catch::Contains("CONDITION"));
 }
