@@ -197,7 +197,7 @@ public:
     void begin();
     void titles(const std::string& title, const std::string& outcome,
                 const std::vector<std::string>& message);
-    void legend();
+    void legend(bool with_conditions);
     void cards(const std::vector<CardLine>& cards);
     void panel(std::size_t i, const Panel& p, const std::vector<CardLine>& cards,
                const std::optional<StopMark>& stop);
@@ -262,7 +262,7 @@ void ChartWriter::titles(const std::string& title, const std::string& outcome,
     }
 }
 
-void ChartWriter::legend() {
+void ChartWriter::legend(bool with_conditions) {
     const double y = legend_y_;
     double x = kLeft;
     auto label = [&](const char* text) {
@@ -313,6 +313,15 @@ void ChartWriter::legend() {
                    x + 3, y - 7, y + 7, kCardColour);
     x += 10;
     label("card read");
+    if (with_conditions) { // condition cards (an addition): only on a chart that has trips
+        fmt::format_to(out(),
+                       R"(<path d="M{:.1f},{:.1f} l6,6 l-6,6 l-6,-6 z" fill="#59a14f" )"
+                       R"(stroke="white" stroke-width="0.8"/>)"
+                       "\n",
+                       x + 6, y - 6);
+        x += 16;
+        label("condition met (EP 0640901)");
+    }
 }
 
 // One label per card where there is room: "card N" when every card has room, else "N".
@@ -581,7 +590,8 @@ std::string PlotSvgRecorder::svg() const {
                                               "against machine time")
                                 : title_,
                  outcome, message);
-    chart.legend();
+    chart.legend(std::any_of(axes_.begin(), axes_.end(),
+                             [](const AxisTrace& a) { return !a.trips.empty(); }));
     chart.cards(cards);
     for (std::size_t i = 0; i < axes_.size(); ++i) {
         const AxisTrace& a = axes_[i];

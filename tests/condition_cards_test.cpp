@@ -11,6 +11,8 @@
 #include "cardreader/deck_error.hpp"
 #include "cardreader/deck_review.hpp"
 #include "cardreader/listing_format.hpp"
+#include "cli/plot_svg.hpp"
+#include "cli/trace_outputs.hpp"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
@@ -743,4 +745,53 @@ TEST_CASE("Condition card: its picture names the five condition slots and the ex
         card_svg(encode(table_move(1, 0, 100), fig8_layout()).card, fig8_layout(), {});
     CHECK_THAT(motion, Catch::Contains("TABLE"));
     CHECK_THAT(motion, !Catch::Contains("CONDITION"));
+}
+
+TEST_CASE("Condition cards: the plot marks where each condition was met and the events stream "
+          "carries each condition, action and acknowledgement by its identifier",
+          "[conditions][outputs]") {
+    const std::vector<CardOrders> deck = {
+        condition_card(1,
+                       {cond(31, Axis::table, 150, PassingSense::forward, ActionKind::coolant_on)}),
+        table_move(2, 0, 300)};
+    cli::PlotSvgRecorder plot("t");
+    std::ostringstream lines;
+    RunResult r;
+    {
+        cli::EventsJsonlWriter events(lines);
+        relaylogic::ObserverFanOut both;
+        both.add(&plot);
+        both.add(&events);
+        r = run(deck, Pace::fast_forward, &both);
+    }
+    REQUIRE(r.actions.size() == 1);
+    REQUIRE(plot.trips(Axis::table).size() == 1);
+    CHECK(plot.trips(Axis::table).at(0).t == r.actions.at(0).tripped_s);
+    CHECK(plot.trips(Axis::cross).empty());
+    const std::string svg = plot.svg();
+    CHECK_THAT(svg, Catch::Contains("class=\"condition-marker\" data-axis=\"table\""));
+    CHECK_THAT(svg, Catch::Contains("condition met (EP 0640901)"));
+    int met = 0;
+    int started = 0;
+    int acknowledged = 0;
+    std::istringstream in(lines.str());
+    for (std::string line; std::getline(in, line);) {
+        const auto j = nlohmann::json::parse(line);
+        if (!j.contains("id")) {
+            continue;
+        }
+        CHECK(j.at("id") == 31);
+        CHECK(j.at("axis") == "table");
+        CHECK(j.at("action") == "coolant-on");
+        met += j.at("event") == "condition_met" ? 1 : 0;
+        started += j.at("event") == "action_started" ? 1 : 0;
+        acknowledged += j.at("event") == "action_acknowledged" ? 1 : 0;
+    }
+    CHECK(met == 1);
+    CHECK(started == 1);
+    CHECK(acknowledged == 1);
+    // A run with no condition met draws no such legend entry.
+    cli::PlotSvgRecorder plain("p");
+    run({table_move(1, 0, 100)}, Pace::fast_forward, &plain);
+    CHECK_THAT(plain.svg(), !Catch::Contains("condition met"));
 }
