@@ -17,37 +17,6 @@
 namespace parsons::cli {
 namespace {
 
-// Cusps as decks/cut_proof.cpp defines them (CutProof::max_scallop_in): local maxima of the
-// deviation with strictly lower deviation on both sides, inside one machined stretch, equal
-// neighbours folded into one plateau.
-double max_cusp(const std::vector<double>& dev) {
-    double best = 0;
-    std::size_t i = 0;
-    while (i < dev.size()) {
-        if (std::isnan(dev[i])) {
-            ++i;
-            continue;
-        }
-        std::size_t end = i;
-        while (end < dev.size() && !std::isnan(dev[end])) {
-            ++end;
-        }
-        std::vector<double> levels;
-        for (std::size_t k = i; k < end; ++k) {
-            if (levels.empty() || levels.back() != dev[k]) {
-                levels.push_back(dev[k]);
-            }
-        }
-        for (std::size_t k = 1; k + 1 < levels.size(); ++k) {
-            if (levels[k] > levels[k - 1] && levels[k] > levels[k + 1]) {
-                best = std::max(best, levels[k]);
-            }
-        }
-        i = end;
-    }
-    return best;
-}
-
 double radius_of(int tool, const decks::JobDescription& job, const axes::MachineProfile& profile) {
     if (auto r = profile.tool_radius_in(tool)) {
         return *r;
@@ -95,7 +64,7 @@ decks::CutProof combine_proofs(const std::vector<decks::CutProof>& proofs,
         out.max_gouge_in = std::max(out.max_gouge_in, -dev);
         out.max_leftover_in = std::max(out.max_leftover_in, dev);
     }
-    out.max_scallop_in = max_cusp(out.deviation_in);
+    out.max_scallop_in = decks::max_cusp(out.deviation_in);
     return out;
 }
 

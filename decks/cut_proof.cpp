@@ -376,6 +376,8 @@ private:
     RunGrid grid_;
 };
 
+} // namespace
+
 // Cusps: local maxima of the deviation with strictly lower deviation on both sides, inside one
 // machined stretch (equal neighbours form a plateau that is judged as one).
 double max_cusp(const std::vector<double>& dev) {
@@ -405,8 +407,6 @@ double max_cusp(const std::vector<double>& dev) {
     }
     return best;
 }
-
-} // namespace
 
 std::vector<Vector2d> simplify_path(const std::vector<Vector2d>& path, double tolerance_in) {
     if (path.size() <= 2) {

@@ -92,4 +92,9 @@ CutProof prove_cut(const std::vector<Eigen::Vector2d>& path, double radius_in,
 std::vector<Eigen::Vector2d> simplify_path(const std::vector<Eigen::Vector2d>& path,
                                            double tolerance_in);
 
+// The largest scallop of a deviation profile (CutProof::max_scallop_in): its highest cusp, a
+// local maximum with strictly lower deviation on both sides inside one machined stretch (NaN
+// ends a stretch; equal neighbours form one plateau); 0 when there is none.
+double max_cusp(const std::vector<double>& deviation_in);
+
 } // namespace parsons::decks
