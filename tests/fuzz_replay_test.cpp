@@ -3,6 +3,8 @@
 // found a fault with (tests/fuzz/regressions/<target>/, kept after the fix). Needs no libFuzzer.
 #include "tests/fuzz/fuzz_targets.hpp"
 
+#include "cardreader/layout.hpp"
+
 #include "tests/test_support.hpp"
 
 #include <catch2/catch.hpp>
@@ -107,4 +109,32 @@ TEST_CASE("Fuzz replay: every kept profile is refused with a ProfileError or run
 TEST_CASE("Fuzz replay: every kept deck recipe runs to completion or to a stop with a reason",
           "[fuzz][machine]") {
     replay("machine");
+}
+
+TEST_CASE("Fuzz replay: the machine target's condition-card seeds make decks with condition "
+          "cards, and its kept regression still makes the deck it was kept for",
+          "[fuzz][conditions]") {
+    for (const char* seed : {"conditions-tool-change-on-path", "conditions-never-met",
+                             "conditions-dwell-and-spindle"}) {
+        INFO(seed);
+        const std::string bytes = parsons::test::read_bytes(
+            parsons::test::source_path(std::string("tests/fuzz/corpus/machine/") + seed));
+        parsons::axes::MachineProfile profile = parsons::axes::default_profile();
+        const auto cards = parsons::fuzz::machine_deck(
+            {reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()}, profile);
+        CHECK(profile.condition_cards);
+        const auto conditions = std::count_if(cards.begin(), cards.end(), [](const auto& c) {
+            return parsons::cardreader::is_condition_card(c, parsons::cardreader::fig8_layout());
+        });
+        CHECK(conditions >= 1);
+        CHECK(conditions < static_cast<long>(cards.size()));
+    }
+    // The input kept before condition cards existed: no condition card, four motion cards.
+    const std::string kept = parsons::test::read_bytes(
+        parsons::test::source_path("tests/fuzz/regressions/machine/tilt-real-position-differs"));
+    parsons::axes::MachineProfile profile = parsons::axes::default_profile();
+    const auto cards = parsons::fuzz::machine_deck(
+        {reinterpret_cast<const std::uint8_t*>(kept.data()), kept.size()}, profile);
+    CHECK_FALSE(profile.condition_cards);
+    CHECK(cards.size() == 4);
 }

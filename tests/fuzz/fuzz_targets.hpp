@@ -13,6 +13,11 @@
 // tests/fuzz/corpus/<target>/ and tests/fuzz/regressions/<target>/ to the same function.
 #pragma once
 
+#include "axes/machine_profile.hpp"
+#include "cardreader/card.hpp"
+
+#include <vector>
+
 #include <cstdint>
 #include <span>
 #include <stdexcept>
@@ -49,5 +54,9 @@ void fuzz_five(Bytes input);
 void fuzz_airfoil(Bytes input);
 void fuzz_profile(Bytes input);
 void fuzz_machine(Bytes input);
+
+// The deck the machine target makes of an input, and the profile it runs it with (for the
+// tests that its seeds reach what they are for).
+std::vector<cardreader::Card> machine_deck(Bytes input, axes::MachineProfile& profile);
 
 } // namespace parsons::fuzz

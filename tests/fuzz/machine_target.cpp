@@ -278,10 +278,14 @@ std::vector<Card> deck_from_recipe(Recipe& recipe, axes::MachineProfile& profile
 
 } // namespace
 
-void fuzz_machine(Bytes input) {
+std::vector<Card> machine_deck(Bytes input, axes::MachineProfile& profile) {
     Recipe recipe(input);
+    return deck_from_recipe(recipe, profile);
+}
+
+void fuzz_machine(Bytes input) {
     axes::MachineProfile profile = axes::default_profile();
-    const std::vector<Card> cards = deck_from_recipe(recipe, profile);
+    const std::vector<Card> cards = machine_deck(input, profile);
     const std::uint8_t machine = input.size() > 1 ? input[1] : 0;
     profile.separate_registers = (machine & 0x01) != 0;
     profile.count_hundredths_at_speed_1 = (machine & 0x02) != 0;
