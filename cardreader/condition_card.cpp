@@ -175,20 +175,8 @@ std::optional<std::string> encode_condition_card(const CardOrders& orders, const
         return fmt::format("a condition card holds 1..{} conditions, not {}", kConditionsPerCard,
                            orders.condition_count);
     }
-    auto punch_number = [&](const LayoutField& f, int value) -> std::optional<std::string> {
-        int max = 1;
-        for (int i = 0; i < f.width; ++i) {
-            max *= 10;
-        }
-        if (value < 0 || value >= max) {
-            return fmt::format("{} value {} does not fit in {} digit columns", field_label(f),
-                               value, f.width);
-        }
-        for (int c = f.last_column(); c >= f.first_column; --c) {
-            card.punch(c, digit_row(value % 10));
-            value /= 10;
-        }
-        return std::nullopt;
+    auto punch_number = [&](const LayoutField& f, int value) {
+        return detail::punch_number(card, f, value);
     };
     card.punch(layout.extension_column, Row::r1);
     for (int slot = 0; slot < orders.condition_count; ++slot) {

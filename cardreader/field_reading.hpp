@@ -37,6 +37,9 @@ private:
 // number is added to `problems` (and the value read as 0).
 std::optional<int> read_number(const Card& card, const LayoutField& f, Problems& problems);
 
+// The keypunch: `value` in the field's digit columns, or why it does not fit.
+std::optional<std::string> punch_number(Card& card, const LayoutField& f, int value);
+
 // Punches in columns where the table `allowed` (index 1..80) allows none, each named.
 void find_strays(const Card& card, const std::array<ColumnWord, kColumns + 1>& allowed,
                  const CardLayout& layout, bool condition_card, Problems& problems);

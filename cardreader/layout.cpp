@@ -126,6 +126,22 @@ std::optional<int> read_number(const Card& card, const LayoutField& f, Problems&
     return bad ? 0 : value;
 }
 
+std::optional<std::string> punch_number(Card& card, const LayoutField& f, int value) {
+    int max = 1;
+    for (int i = 0; i < f.width; ++i) {
+        max *= 10;
+    }
+    if (value < 0 || value >= max) {
+        return fmt::format("{} value {} does not fit in {} digit columns", field_label(f), value,
+                           f.width);
+    }
+    for (int c = f.last_column(); c >= f.first_column; --c) {
+        card.punch(c, digit_row(value % 10));
+        value /= 10;
+    }
+    return std::nullopt;
+}
+
 void find_strays(const Card& card, const std::array<ColumnWord, kColumns + 1>& allowed,
                  const CardLayout& layout, bool condition_card, Problems& problems) {
     // Looked for column by column only on a card that has any (a whole-card test first,
@@ -400,18 +416,8 @@ EncodeResult encode(const CardOrders& orders, const CardLayout& layout) {
         }
     };
     auto punch_number = [&](const LayoutField& f, int value) {
-        int max = 1;
-        for (int i = 0; i < f.width; ++i) {
-            max *= 10;
-        }
-        if (value < 0 || value >= max) {
-            fail(fmt::format("{} value {} does not fit in {} digit columns", field_label(f), value,
-                             f.width));
-            return;
-        }
-        for (int c = f.last_column(); c >= f.first_column; --c) {
-            card.punch(c, digit_row(value % 10));
-            value /= 10;
+        if (auto error = detail::punch_number(card, f, value)) {
+            fail(*error);
         }
     };
 
