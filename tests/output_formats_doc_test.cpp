@@ -186,7 +186,17 @@ TEST_CASE("Output formats: every field, event kind, stop reason and signal of ru
         {sample + " --fault short-card:2", 3},            // bad_punch
         {sample + " --limit table=0:8", 3},               // soft_limit
         {q(dir.str("stall.csv")), 3},                     // sequence_stall
+        // Condition cards (an addition): their three lines, and condition_not_met.
+        {q(source_path("decks/samples/condition-cards.csv")) + " --profile parsons-extended", 0},
+        {q(dir.str("not-met.csv")) + " --profile parsons-extended", 3},
     };
+    {
+        std::string deck = read_bytes(source_path("decks/samples/condition-cards.csv"));
+        const std::string row = "1,if,7,table,+,5.000,lamp,3";
+        REQUIRE(deck.find(row) != std::string::npos);
+        deck.replace(deck.find(row), row.size(), "1,if,7,table,-,5.000,lamp,3");
+        write_bytes(dir.path("not-met.csv"), deck);
+    }
     for (std::size_t i = 0; i < runs.size(); ++i) {
         const std::string events = dir.str("e" + std::to_string(i) + ".jsonl");
         const auto r = run_parsons("run " + runs[i].first + " -q --events " + q(events));
@@ -195,10 +205,11 @@ TEST_CASE("Output formats: every field, event kind, stop reason and signal of ru
         seen.read(read_bytes(events));
     }
     CHECK(seen.lines > 1000);
-    CHECK(seen.kinds == std::set<std::string>{"card", "stop", "finish"});
+    CHECK(seen.kinds == std::set<std::string>{"card", "stop", "finish", "condition_met",
+                                              "action_started", "action_acknowledged"});
     CHECK(seen.reasons == std::set<std::string>{"check_mismatch", "out_of_order_card",
                                                 "missed_impulse", "bad_punch", "soft_limit",
-                                                "sequence_stall"});
+                                                "sequence_stall", "condition_not_met"});
 
     const std::string section = doc_section("--events");
     const auto rows = documented(section);
@@ -219,6 +230,10 @@ TEST_CASE("Output formats: every field, event kind, stop reason and signal of ru
     parsons::relaylogic::ControlCabinet cabinet(parsons::axes::default_profile(),
                                                 parsons::cardreader::fig8_layout());
     cabinet.attach(&defined);
+    // ... and the condition units' (parsons-extended).
+    parsons::relaylogic::ControlCabinet extended(parsons::axes::extended_profile(),
+                                                 parsons::cardreader::fig8_layout());
+    extended.attach(&defined);
     CHECK(defined.signals.size() > 100);
     auto signals = defined.signals;
     for (const auto& [name, numeral] : seen.signals) {
