@@ -40,8 +40,6 @@ public:
         return ready;
     }
     SpindleTurning turning() const { return turning_; }
-    // Standing at the commanded state at time t (at speed, or at rest).
-    bool ready(double t) const { return t >= ready_s_; }
     double ready_s() const { return ready_s_; }
     void restore(SpindleTurning turning, double ready_s) {
         turning_ = turning;

@@ -23,8 +23,7 @@ public:
     // Starts a change to `tool` at time t; returns when the new tool is in the spindle.
     double change(int tool, double t, const ActionTimes& times) {
         changing_to_ = tool;
-        done_s_ = t + times.tool_change_s;
-        return done_s_;
+        return t + times.tool_change_s;
     }
     // The change started last is complete (its acknowledgement).
     void complete() {
@@ -43,7 +42,6 @@ public:
 private:
     int in_spindle_;
     int changing_to_ = 0;
-    double done_s_ = 0;
 };
 
 } // namespace parsons::axes

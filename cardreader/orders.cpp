@@ -61,20 +61,26 @@ std::string_view sense_name(PassingSense s) {
                                         : "either";
 }
 
-std::string action_text(ActionKind a, int parameter) {
+std::string parameter_text(ActionKind a, int parameter) {
     switch (a) {
     case ActionKind::tool_change:
-        return fmt::format("{} (tool {})", action_name(a), parameter);
+        return fmt::format("tool {}", parameter);
     case ActionKind::dwell:
         return parameter >= 1 && parameter <= kAxisCount
-                   ? fmt::format("{} (hold {})", action_name(a),
+                   ? fmt::format("hold {}",
                                  axis_name(kAxes.at(static_cast<std::size_t>(parameter - 1))))
-                   : std::string(action_name(a));
+                   : std::string();
     case ActionKind::lamp:
-        return fmt::format("{} (lamp {})", action_name(a), parameter);
+        return fmt::format("lamp {}", parameter);
     default:
-        return std::string(action_name(a));
+        return {};
     }
+}
+
+std::string action_text(ActionKind a, int parameter) {
+    const std::string what = parameter_text(a, parameter);
+    return what.empty() ? std::string(action_name(a))
+                        : fmt::format("{} ({})", action_name(a), what);
 }
 
 std::optional<std::string> parameter_error(ActionKind a, int parameter) {

@@ -101,6 +101,8 @@ std::optional<ActionKind> action_named(std::string_view name);
 // "+", "-", "*"
 std::string_view sense_symbol(PassingSense s);
 std::string_view sense_name(PassingSense s); // "forward", "reverse", "either"
+// The parameter in words: "tool 2", "hold cross", "lamp 3"; "" for an action without one.
+std::string parameter_text(ActionKind a, int parameter);
 // The action with its parameter in words: "tool-change (tool 2)", "dwell (hold cross)",
 // "lamp (lamp 3)", "coolant-on".
 std::string action_text(ActionKind a, int parameter);

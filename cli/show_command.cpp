@@ -58,21 +58,6 @@ std::string sequence_text(SequencePattern p) {
     return text.empty() ? "none" : text;
 }
 
-// What the parameter of a condition's action names, in words.
-std::string parameter_text(const ConditionOrder& c) {
-    switch (c.action) {
-    case ActionKind::tool_change:
-        return fmt::format("tool {}", c.parameter);
-    case ActionKind::dwell:
-        return fmt::format("hold {}",
-                           axis_name(kAxes.at(static_cast<std::size_t>(c.parameter - 1))));
-    case ActionKind::lamp:
-        return fmt::format("lamp {}", c.parameter);
-    default:
-        return "-";
-    }
-}
-
 // A condition card (an addition after EP 0640901), one line per condition.
 void print_condition_card(long index, const CardOrders& o) {
     fmt::print("card {} · card number {:04} (columns 77-80) · CONDITION CARD (column 76 row 1; "
@@ -86,7 +71,10 @@ void print_condition_card(long index, const CardOrders& o) {
         fmt::print("  {:<5} {:<8} {:<6} {:<9} {:<9} {:<10} {:<16} {}\n", i + 1,
                    fmt::format("{}-{}", first, first + 12), c.event, axis_name(c.axis),
                    fmt::format("{} {}", sense_symbol(c.sense), sense_name(c.sense)),
-                   format_inches(c.position), action_name(c.action), parameter_text(c));
+                   format_inches(c.position), action_name(c.action),
+                   parameter_text(c.action, c.parameter).empty()
+                       ? std::string("-")
+                       : parameter_text(c.action, c.parameter));
     }
 }
 

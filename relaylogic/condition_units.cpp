@@ -48,7 +48,7 @@ void ConditionUnits::install(Tracer& tracer, const axes::MachineProfile& profile
         return;
     }
     tracer_ = &tracer;
-    buffer_ = std::make_unique<InternalBuffer>(tracer, true);
+    buffer_ = std::make_unique<InternalBuffer>(tracer);
     prg_ = std::make_unique<MonitoringUnit>(tracer);
     ale_ = std::make_unique<TrippingUnit>(tracer, profile);
     waiting_ = tracer.define("conditions", "tripping_ale.waiting",
@@ -114,15 +114,7 @@ void ConditionUnits::acknowledge(int k, double t) {
 }
 
 int ConditionUnits::first_unmet() const {
-    if (!buffer_) {
-        return -1;
-    }
-    for (int k = 0; k < InternalBuffer::kChannels; ++k) {
-        if (buffer_->pair(k).state == PairState::armed) {
-            return k;
-        }
-    }
-    return -1;
+    return buffer_ ? buffer_->first(PairState::armed) : -1;
 }
 
 void ConditionUnits::zeroize() {

@@ -293,6 +293,7 @@ void ControlCabinet::plan_quiet_stretches() {
     QuietConditions q;
     q.min_interval_s = 1.0 / profile_.max_stepping_rate_per_s;
     q.machine_stopped = stop_.has_value();
+    q.prg = conditions_.present() ? &conditions_.prg() : nullptr;
     for (std::size_t i = 0; i < circuits_.size(); ++i) {
         AxisCircuit& c = *circuits_[i];
         quiet_.at(i) = 0;
@@ -303,7 +304,6 @@ void ControlCabinet::plan_quiet_stretches() {
         q.counting_hundredths =
             profile_.count_hundredths_at_speed_1 && c.speed_switch.position() == 1 && !stop_;
         q.watching_soft_limits = c.powered && c.plant.profile().soft_limits;
-        q.prg = conditions_.present() ? &conditions_.prg() : nullptr;
         q.next_fault_impulse = 0;
         q.faulty_switch_ahead = false;
         for (const Fault& f : faults_) {
@@ -461,11 +461,8 @@ void ControlCabinet::feed() {
     card_ = deck_->next();
     condition_card_ = false;
     if (!card_ && conditions_.stored()) {
-        int k = 0;
-        while (conditions_.buffer().pair(k).state != PairState::stored) {
-            ++k;
-        }
-        const BufferPair& p = conditions_.buffer().pair(k);
+        const BufferPair& p =
+            conditions_.buffer().pair(conditions_.buffer().first(PairState::stored));
         machine_stop(StopReason::condition_refused, std::nullopt,
                      fmt::format("card {} (number {:04}): a condition card with no motion card "
                                  "after it: the deck ends (condition cards stand before the "

@@ -7,10 +7,7 @@
 
 namespace parsons::relaylogic {
 
-InternalBuffer::InternalBuffer(Tracer& tracer, bool traced) : tracer_(tracer), traced_(traced) {
-    if (!traced_) {
-        return;
-    }
+InternalBuffer::InternalBuffer(Tracer& tracer) : tracer_(tracer) {
     for (int k = 0; k < kChannels; ++k) {
         const auto i = static_cast<std::size_t>(k);
         event_signal_.at(i) =
@@ -31,20 +28,13 @@ InternalBuffer::InternalBuffer(Tracer& tracer, bool traced) : tracer_(tracer), t
 void InternalBuffer::set_state(int k, PairState s) {
     BufferPair& p = pair(k);
     p.state = s;
-    if (traced_) {
-        tracer_.set(state_signal_.at(static_cast<std::size_t>(k)), static_cast<std::uint32_t>(s));
-        tracer_.set(event_signal_.at(static_cast<std::size_t>(k)),
-                    s == PairState::empty ? 0U : static_cast<std::uint32_t>(p.condition.event));
-    }
+    tracer_.set(state_signal_.at(static_cast<std::size_t>(k)), static_cast<std::uint32_t>(s));
+    tracer_.set(event_signal_.at(static_cast<std::size_t>(k)),
+                s == PairState::empty ? 0U : static_cast<std::uint32_t>(p.condition.event));
 }
 
 int InternalBuffer::free_pair() const {
-    for (int k = 0; k < kChannels; ++k) {
-        if (pair(k).state == PairState::empty) {
-            return k;
-        }
-    }
-    return -1;
+    return first(PairState::empty);
 }
 
 int InternalBuffer::pair_with_event(int event) const {
@@ -56,13 +46,13 @@ int InternalBuffer::pair_with_event(int event) const {
     return -1;
 }
 
-bool InternalBuffer::any(PairState s) const {
-    for (const BufferPair& p : pairs_) {
-        if (p.state == s) {
-            return true;
+int InternalBuffer::first(PairState s) const {
+    for (int k = 0; k < kChannels; ++k) {
+        if (pair(k).state == s) {
+            return k;
         }
     }
-    return false;
+    return -1;
 }
 
 void InternalBuffer::clear() {

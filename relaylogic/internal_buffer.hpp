@@ -57,7 +57,7 @@ public:
     // Enough for two condition cards of five before one motion card.
     static constexpr int kChannels = 10;
 
-    InternalBuffer(Tracer& tracer, bool traced);
+    explicit InternalBuffer(Tracer& tracer);
     const BufferPair& pair(int k) const { return pairs_.at(static_cast<std::size_t>(k)); }
     BufferPair& pair(int k) { return pairs_.at(static_cast<std::size_t>(k)); }
     void set_state(int k, PairState s);
@@ -65,7 +65,9 @@ public:
     int free_pair() const;
     // A pair holding this event identifier (not empty), or -1.
     int pair_with_event(int event) const;
-    bool any(PairState s) const;
+    // The first pair in state s, or -1.
+    int first(PairState s) const;
+    bool any(PairState s) const { return first(s) >= 0; }
     void clear(); // zeroizing: every pair back to empty
     nlohmann::json save() const;
     void load(const nlohmann::json& j);
@@ -75,7 +77,6 @@ private:
     std::array<BufferPair, kChannels> pairs_{};
     std::array<SignalId, kChannels> event_signal_{};
     std::array<SignalId, kChannels> state_signal_{};
-    bool traced_;
 };
 
 // Converter UMS (claim 1): takes a condition card's records and enters each as a condition
