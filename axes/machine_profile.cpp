@@ -30,6 +30,7 @@ MachineProfile extended_profile() {
     MachineProfile p = safe_profile();
     p.name = "parsons-extended";
     p.condition_cards = true;
+    p.press_sync = true;
     return p;
 }
 

@@ -76,6 +76,48 @@ struct Tool {
     double radius_in = 0.25;
 };
 
+// Press synchronisation (an addition after EP 0436887, Mitsubishi; seeds/000): the outside
+// machine, a rotary press the control does not drive (Fig. 1A; axes/press.hpp). Motor 22
+// turns crank 21 at a speed of its own; crank 21 raises and lowers die 20; detector 10 on the
+// crank gives two-phase pulses. The crank's speed is piecewise constant: it changes only at the
+// angles named here, so every detector pulse has an exact time. Figures: docs/press-sync.md.
+struct PressProfile {
+    double strokes_per_min = 2.0; // motor 22's nominal speed: crank revolutions a minute
+    double start_angle_deg = 0.0; // where crank 21 stands when the run starts (0 = top)
+    int pulses_per_degree = 4;    // detector 10: edges of phases A and B per degree
+    bool reverse = false;         // the crank turns backwards (inching; tests of device 13)
+    // Die 20: a slider crank. Height above its bottom dead centre, in inches.
+    double stroke_in = 4.0; // top to bottom dead centre (twice the crank throw)
+    double rod_in = 8.0;    // connecting rod, pin to pin
+    // The press slows while the die works the metal (the load on the flywheel).
+    double pressing_from_deg = 150.0;
+    double pressing_to_deg = 210.0;
+    double pressing_slowdown = 0.0; // fraction of speed lost while pressing (0 .. 0.9)
+    double drift_per_cycle = 0.0;   // fraction the speed changes each revolution (+ or -)
+    double variation = 0.0;         // each revolution's speed x (1 + u variation), u in -1..1
+    unsigned seed = 1;              // ... from this seed: a pure function of seed and revolution
+    // A lasting change of speed from revolution change_cycle (1 = the first) at change_angle_deg:
+    // the speed times change_factor from there on (0 = no change). The seed's comparison slows
+    // the press 25 % mid-cycle: change_factor 0.75.
+    int change_cycle = 0;
+    double change_angle_deg = 0.0;
+    double change_factor = 1.0;
+    // Motor 22 stops at revolution stop_cycle, angle stop_angle_deg (0 = it never stops).
+    int stop_cycle = 0;
+    double stop_angle_deg = 0.0;
+};
+
+// The drive that follows a commanded speed, which speed synchronisation needs: the 1952 motors
+// have three speeds only (docs/press-sync.md, "the motor question"). While an axis is speed-
+// synchronised and its speed switch 236 stands on speed 1, this drive runs it at the speed
+// processor 63 computes, changing speed at acceleration_in_per_s2 at most (the rate limit);
+// each new speed takes effect one sampling interval of speed register 11 after the sample it
+// comes from (the lag: Fig. 6, output at the start of the next reference block).
+struct SyncDrive {
+    double max_in_per_min = 5.4;         // the fastest it follows (the counters' 100 steps/s)
+    double acceleration_in_per_s2 = 0.5; // its rate limit, both ways
+};
+
 // What the counters measure (DESIGN.md 4.3).
 enum class MeasuringChain : std::uint8_t {
     instrument_shaft_74, // the patent: the part's position, through shaft 74 and follower 76
@@ -152,6 +194,16 @@ struct MachineProfile {
     // The tool changer's tools, and the one in the spindle when the run starts.
     std::vector<Tool> tools = {{1, 0.25}, {2, 0.125}};
     int first_tool = 1;
+    // Addition after EP 0436887 (Mitsubishi; seeds/000): a press beside the machine, the sync
+    // units 10-17 and sync cards. Off in parsons-1952 and parsons-safe (a deck with a sync card
+    // is refused), on in parsons-extended.
+    bool press_sync = false;
+    PressProfile press;
+    SyncDrive sync_drive;
+    double speed_sample_s = 0.5; // speed register 11 counts pulses this long, then is read
+    // How long the synchronisation control processor 17 waits for the crank (position sync) or
+    // for a pulse (speed sync) before it stops the machine: sync_timeout.
+    double sync_timeout_s = 90.0;
     // The cutter radius of a tool, if the changer holds it.
     std::optional<double> tool_radius_in(int tool) const {
         for (const Tool& t : tools) {
@@ -168,7 +220,8 @@ struct MachineProfile {
 MachineProfile default_profile();
 // parsons-safe: parsons-1952 with the emulator's protective additions on.
 MachineProfile safe_profile();
-// parsons-extended: parsons-safe with the later seeds' additions on (condition cards).
+// parsons-extended: parsons-safe with the later seeds' additions on (condition cards, press
+// synchronisation).
 MachineProfile extended_profile();
 // The profile a name ("parsons-1952", ...) gives, if there is one; the names in order.
 inline constexpr std::array<const char*, 3> kBuiltinProfiles = {"parsons-1952", "parsons-safe",

@@ -115,6 +115,10 @@ std::string format_inches(Thousandths value) {
     return fmt::format("{}.{:03}", value / 1000, value % 1000);
 }
 
+std::string format_travel_per_pulse(int hundred_thousandths) {
+    return fmt::format("{}.{:05}", hundred_thousandths / 100000, hundred_thousandths % 100000);
+}
+
 std::string format_sequence(SequencePattern pattern) {
     std::string text;
     for (int k = 1; k <= kSequencePositions; ++k) {

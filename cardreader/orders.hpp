@@ -64,7 +64,8 @@ struct AxisOrder {
 // the motion card it watches (claim 4).
 
 // Which kind of card this is: column 76, the extension mark (blank on a 1952 card).
-enum class CardKind : std::uint8_t { motion, condition };
+// Row 1 a condition card, row 2 a sync card (the press synchronisation of EP 0436887).
+enum class CardKind : std::uint8_t { motion, condition, sync };
 
 // The sense in which the axis must pass the position: its counters counting up (forward),
 // down (reverse), or either.
@@ -109,6 +110,38 @@ std::string action_text(ActionKind a, int parameter);
 // What the parameter of an action means and which values it takes, or an error sentence.
 std::optional<std::string> parameter_error(ActionKind a, int parameter);
 
+// ---- Sync cards: an addition after EP 0436887 (Mitsubishi; seeds/000), not in the patent.
+// A sync card (column 76 punched in row 2, docs/card-layout.md) carries the seed's
+// synchronisation commands for the motion card that follows it: position synchronisation
+// (its G101 with R: hold the card's motion until the press's crank 21 reaches the angle) and
+// speed synchronisation (its G95 with F: an axis travels F per pulse of detector 10), or
+// both; or, alone on its card, the seed's M99: the reader goes back to a card, so many times.
+inline constexpr int kMaxTravelPerPulse = 99999; // 0.99999 in per pulse
+
+struct SyncOrder {
+    bool position_sync = false; // G101
+    int angle_deg = 0;          // R: the crank angle 0..359 (whole degrees) to start at
+    // G95: per axis, the travel per detector pulse in hundred-thousandths of an inch
+    // (1..99999, read 0.ddddd in); none = this axis is not speed-synchronised.
+    std::array<std::optional<int>, kAxisCount> travel_per_pulse{};
+    bool loop = false;  // M99
+    int loop_to = 0;    // the card number the reader goes back to
+    int loop_count = 0; // how many times it goes back (1..9999)
+
+    bool speed_sync() const {
+        for (const auto& f : travel_per_pulse) {
+            if (f) {
+                return true;
+            }
+        }
+        return false;
+    }
+    bool operator==(const SyncOrder&) const = default;
+};
+
+// "0.00417" (hundred-thousandths of an inch per pulse)
+std::string format_travel_per_pulse(int hundred_thousandths);
+
 struct CardOrders {
     int number = 0; // card number, 0000 .. 9999
     Spindle spindle = Spindle::off;
@@ -117,6 +150,8 @@ struct CardOrders {
     CardKind kind = CardKind::motion;
     int condition_count = 0;
     std::array<ConditionOrder, kConditionsPerCard> conditions{};
+    // A sync card (an addition): its orders; the axes above are unused and left default.
+    SyncOrder sync{};
 
     const AxisOrder& axis(Axis a) const { return axes.at(axis_index(a)); }
     AxisOrder& axis(Axis a) { return axes.at(axis_index(a)); }
