@@ -71,7 +71,8 @@ void draw_printing(std::string& svg) {
 bool starts_section(const LayoutField& f) {
     return f.kind == FieldKind::spindle || f.kind == FieldKind::motion ||
            f.kind == FieldKind::card_number || f.kind == FieldKind::event ||
-           f.kind == FieldKind::extension;
+           f.kind == FieldKind::extension || f.kind == FieldKind::position_sync ||
+           f.kind == FieldKind::loop_mark || f.kind == FieldKind::travel_per_pulse;
 }
 
 // A section name in bold over columns first..last.
@@ -87,16 +88,18 @@ void section_name(std::string& svg, std::string name, int first, int last) {
 }
 
 // Field names and rules over the columns: the layout's motion-card fields, or on a condition
-// card (an addition after EP 0640901) its five condition slots, the extension mark in column
-// 76 and the card number.
-void draw_fields(std::string& svg, const CardLayout& layout, bool condition_card) {
+// card (an addition after EP 0640901) its five condition slots, or on a sync card (an addition
+// after EP 0436887) its position sync, loop and travel-per-pulse fields; on both the extension
+// mark in column 76 and the card number.
+void draw_fields(std::string& svg, const CardLayout& layout, CardKind kind) {
+    const bool condition_card = kind == CardKind::condition;
     svg += fmt::format(R"(<g font-family="DejaVu Sans, Arial, sans-serif" fill="{}" )"
                        R"(text-anchor="middle">)"
                        "\n",
                        kInk);
     std::vector<LayoutField> fields = layout.fields;
-    if (condition_card) {
-        fields = layout.condition_fields;
+    if (kind != CardKind::motion) {
+        fields = condition_card ? layout.condition_fields : layout.sync_fields;
         fields.push_back({FieldKind::extension, std::nullopt, layout.extension_column, 1});
         if (const LayoutField* number = layout.find(FieldKind::card_number)) {
             fields.push_back(*number);
@@ -129,6 +132,20 @@ void draw_fields(std::string& svg, const CardLayout& layout, bool condition_card
         for (int slot = 0; slot < kConditionsPerCard; ++slot) {
             const int first = 1 + slot * 15;
             section_name(svg, fmt::format("condition {}", slot + 1), first, first + 12);
+        }
+        svg += "\n</g>\n";
+        return;
+    }
+    if (kind == CardKind::sync) {
+        for (const LayoutField& f : layout.sync_fields) {
+            if (f.kind == FieldKind::position_sync) {
+                section_name(svg, "position sync", f.first_column - 1, f.first_column + 3);
+            } else if (f.kind == FieldKind::loop_mark) {
+                section_name(svg, "loop", f.first_column, f.first_column + 8);
+            } else if (f.kind == FieldKind::travel_per_pulse) {
+                section_name(svg, std::string(axis_name(f.axis.value_or(Axis::table))),
+                             f.first_column - 2, f.last_column());
+            }
         }
         svg += "\n</g>\n";
         return;
@@ -237,7 +254,10 @@ std::string card_svg(const Card& card, const CardLayout& layout, const CardPictu
         kMargin);
     draw_stock(svg);
     draw_printing(svg);
-    draw_fields(svg, layout, is_condition_card(card, layout));
+    draw_fields(svg, layout,
+                is_condition_card(card, layout) ? CardKind::condition
+                : is_sync_card(card, layout)    ? CardKind::sync
+                                                : CardKind::motion);
     draw_interpretation(svg, card, code);
     draw_holes(svg, card, notes.bad_punch);
     svg += "</g>\n";

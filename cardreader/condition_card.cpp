@@ -132,7 +132,7 @@ DecodeResult decode_condition_card(const Card& card, const CardLayout& layout) {
     Problems problems;
     CardOrders& o = result.orders;
     o.kind = CardKind::condition;
-    detail::find_strays(card, layout.condition_allowed_rows, layout, true, problems);
+    detail::find_strays(card, layout.condition_allowed_rows, layout, CardKind::condition, problems);
     if (const LayoutField* f = layout.find(FieldKind::card_number)) {
         const std::optional<int> number = read_number(card, *f, problems);
         if (!number) {

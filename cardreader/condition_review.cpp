@@ -30,6 +30,9 @@ std::vector<ConditionFinding>
 ConditionReview::card(long index, const CardOrders& orders,
                       const std::array<std::optional<Thousandths>, kAxisCount>& at) {
     std::vector<ConditionFinding> found;
+    if (orders.kind == CardKind::sync) {
+        return found; // a sync card moves nothing: the conditions wait for the motion card
+    }
     if (orders.kind == CardKind::condition) {
         if (!allowed_) {
             found.push_back({index, kExtensionColumn, std::nullopt,

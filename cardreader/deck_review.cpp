@@ -182,6 +182,7 @@ std::vector<Thousandths> spurious_matches_on_path(const AxisOrder& order, Thousa
 void DeckReviewer::skip() {
     ++index_;
     conditions_.skip();
+    sync_.skip();
     previous_number_.reset();
     coast_.fill(0);
     position_.fill(std::nullopt);
@@ -192,6 +193,9 @@ std::vector<ReviewNote> DeckReviewer::condition_notes(const CardOrders& orders) 
     for (ConditionFinding& f : conditions_.card(index_, orders, position_)) {
         notes.push_back({f.axis, std::move(f.message), true, f.card, f.column, f.deck_error});
     }
+    for (SyncFinding& f : sync_.card(index_, orders)) {
+        notes.push_back({f.axis, std::move(f.message), true, f.card, f.column, true});
+    }
     return notes;
 }
 
@@ -199,6 +203,9 @@ std::vector<ReviewNote> DeckReviewer::finish() {
     std::vector<ReviewNote> notes;
     for (ConditionFinding& f : conditions_.finish()) {
         notes.push_back({f.axis, std::move(f.message), true, f.card, f.column, f.deck_error});
+    }
+    for (SyncFinding& f : sync_.finish()) {
+        notes.push_back({f.axis, std::move(f.message), true, f.card, f.column, true});
     }
     return notes;
 }
@@ -218,8 +225,8 @@ std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
         }
     }
     previous_number_ = orders.number;
-    if (orders.kind == CardKind::condition) {
-        return notes; // no axis moves on a condition card
+    if (orders.kind != CardKind::motion) {
+        return notes; // no axis moves on a condition card or a sync card
     }
 
     std::array<std::optional<Thousandths>, kAxisCount> travel{};

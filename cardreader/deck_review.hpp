@@ -20,6 +20,7 @@
 
 #include "cardreader/condition_review.hpp"
 #include "cardreader/orders.hpp"
+#include "cardreader/sync_review.hpp"
 
 #include <array>
 #include <optional>
@@ -64,8 +65,9 @@ struct ReviewNote {
     // travel, a sequence stall in every order, a coast the next check will count), not
     // only a risk: `parsons check` then exits 3. The coast is a STOP on the card after it.
     bool stops = false;
-    // Condition cards (an addition): the card and column the note is about (0: this card, no
-    // column), and whether it is a deck error (`run` refuses the deck; show and check exit 2).
+    // Condition and sync cards (additions): the card and column the note is about (0: this
+    // card, no column), and whether it is a deck error (`run` refuses the deck; show and check
+    // exit 2).
     long card = 0;
     int column = 0;
     bool deck_error = false;
@@ -89,7 +91,12 @@ public:
     void allow_conditions(bool allowed, std::string profile, std::vector<int> tools = {}) {
         conditions_ = ConditionReview(allowed, std::move(profile), std::move(tools));
     }
-    // After the last card: a condition card with no motion card after it.
+    // Sync cards: whether the profile has press synchronisation (default: yes), its name and
+    // what its press and sync drive allow.
+    void allow_sync(bool allowed, std::string profile, PressLimits limits = {}) {
+        sync_ = SyncReview(allowed, std::move(profile), limits);
+    }
+    // After the last card: a condition or sync card with no motion card after it.
     std::vector<ReviewNote> finish();
 
 private:
@@ -101,6 +108,7 @@ private:
 
     std::optional<std::array<AxisDynamics, kAxisCount>> dynamics_;
     ConditionReview conditions_;
+    SyncReview sync_;
     long index_ = 0; // cards reviewed or skipped
     std::optional<int> previous_number_;
     // The coast the previous card's stop leaves on each axis (0 where none is warned of): the

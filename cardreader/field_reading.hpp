@@ -1,6 +1,6 @@
-// Reading punched fields, shared by the motion card's decode (layout.cpp) and the condition
-// card's (condition_card.cpp): a digit column, a number of digit columns, and the collection of
-// bad punches that reports the lowest column first.
+// Reading punched fields, shared by the motion card's decode (layout.cpp), the condition
+// card's (condition_card.cpp) and the sync card's (sync_card.cpp): a digit column, a number of
+// digit columns, and the collection of bad punches that reports the lowest column first.
 #pragma once
 
 #include "cardreader/card.hpp"
@@ -40,8 +40,9 @@ std::optional<int> read_number(const Card& card, const LayoutField& f, Problems&
 // The keypunch: `value` in the field's digit columns, or why it does not fit.
 std::optional<std::string> punch_number(Card& card, const LayoutField& f, int value);
 
-// Punches in columns where the table `allowed` (index 1..80) allows none, each named.
+// Punches in columns where the table `allowed` (index 1..80) allows none, each named by the
+// field of a card of this kind the column belongs to.
 void find_strays(const Card& card, const std::array<ColumnWord, kColumns + 1>& allowed,
-                 const CardLayout& layout, bool condition_card, Problems& problems);
+                 const CardLayout& layout, CardKind kind, Problems& problems);
 
 } // namespace parsons::cardreader::detail

@@ -2,11 +2,11 @@
 
 #include "cardreader/condition_card.hpp"
 #include "cardreader/field_reading.hpp"
+#include "cardreader/sync_card.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <bit>
 
 namespace parsons::cardreader {
 namespace {
@@ -32,6 +32,9 @@ ColumnWord rows_allowed(FieldKind k) {
         return r1;
     case FieldKind::sense:
         return r0 | r1;
+    case FieldKind::position_sync:
+    case FieldKind::loop_mark:
+        return r0;
     default:
         return kDigitRows;
     }
@@ -64,111 +67,12 @@ CardLayout make_fig8() {
     layout.fields.push_back({FieldKind::card_number, std::nullopt, 77, 4});
     layout.extension_column = 76;
     add_condition_fields(layout);
+    add_sync_fields(layout);
     layout.index();
     return layout;
 }
 
 } // namespace
-
-namespace detail {
-
-std::string join_rows(ColumnWord word) {
-    std::string text;
-    for (Row r : kRowsTopToBottom) {
-        if ((word & row_bit(r)) != 0) {
-            text += text.empty() ? "" : " and ";
-            text += row_name(r);
-        }
-    }
-    return text;
-}
-
-// The digit of a column punched in one of rows 0..9, or -1 (blank or a double punch).
-// Row d is bit 9 - d of the column word.
-int digit_of(ColumnWord digits) {
-    static_assert(row_bit(digit_row(0)) == 1U << 9 && row_bit(digit_row(9)) == 1U);
-    if (digits == 0 || (digits & (digits - 1)) != 0) {
-        return -1;
-    }
-    return 9 - std::countr_zero(static_cast<unsigned>(digits));
-}
-
-std::optional<int> read_number(const Card& card, const LayoutField& f, Problems& problems) {
-    int value = 0;
-    int blanks = 0;
-    int first_blank = 0;
-    bool bad = false;
-    for (int c = f.first_column; c <= f.last_column(); ++c) {
-        ColumnWord digits = card.column(c) & kDigitRows;
-        if (digits == 0) {
-            blanks += 1;
-            first_blank = first_blank == 0 ? c : first_blank;
-            value *= 10;
-            continue;
-        }
-        int d = digit_of(digits);
-        if (d < 0) {
-            problems.add(
-                c, fmt::format("double punch (rows {}) in {}", join_rows(digits), field_label(f)));
-            bad = true;
-            continue;
-        }
-        value = value * 10 + d;
-    }
-    if (blanks == f.width) {
-        return std::nullopt;
-    }
-    if (blanks > 0) {
-        problems.add(first_blank,
-                     fmt::format("blank digit inside the number in {}", field_label(f)));
-        bad = true;
-    }
-    return bad ? 0 : value;
-}
-
-std::optional<std::string> punch_number(Card& card, const LayoutField& f, int value) {
-    int max = 1;
-    for (int i = 0; i < f.width; ++i) {
-        max *= 10;
-    }
-    if (value < 0 || value >= max) {
-        return fmt::format("{} value {} does not fit in {} digit columns", field_label(f), value,
-                           f.width);
-    }
-    for (int c = f.last_column(); c >= f.first_column; --c) {
-        card.punch(c, digit_row(value % 10));
-        value /= 10;
-    }
-    return std::nullopt;
-}
-
-void find_strays(const Card& card, const std::array<ColumnWord, kColumns + 1>& allowed,
-                 const CardLayout& layout, bool condition_card, Problems& problems) {
-    // Looked for column by column only on a card that has any (a whole-card test first,
-    // branch-free).
-    ColumnWord strays = 0;
-    for (std::size_t i = 0; i < static_cast<std::size_t>(kColumns); ++i) {
-        strays |= static_cast<ColumnWord>(card.columns()[i] & ~allowed[i + 1]);
-    }
-    for (int c = 1; strays != 0 && c <= kColumns; ++c) {
-        ColumnWord stray = card.column(c) &
-                           static_cast<ColumnWord>(~allowed[static_cast<std::size_t>(c)]) &
-                           kAllRowsMask;
-        if (stray != 0) {
-            const LayoutField* f =
-                condition_card ? layout.condition_field_at(c) : layout.field_at(c);
-            std::string where =
-                f ? fmt::format("in {}", field_label(*f))
-                  : fmt::format("in column {}, which layout {} leaves unused{}", c, layout.name,
-                                condition_card ? " on a condition card" : "");
-            problems.add(c, fmt::format("punch in {} {} where none belongs ({})",
-                                        hole_count(stray) == 1 ? "row" : "rows", join_rows(stray),
-                                        where));
-        }
-    }
-}
-
-} // namespace detail
 
 const LayoutField* CardLayout::find(FieldKind kind, std::optional<Axis> axis) const {
     auto it = std::find_if(fields.begin(), fields.end(),
@@ -182,6 +86,19 @@ const LayoutField* CardLayout::condition_field_at(int column) const {
                                return column >= f.first_column && column <= f.last_column();
                            });
     return it == condition_fields.end() ? nullptr : &*it;
+}
+
+const LayoutField* CardLayout::sync_field_at(int column) const {
+    auto it = std::find_if(sync_fields.begin(), sync_fields.end(), [column](const LayoutField& f) {
+        return column >= f.first_column && column <= f.last_column();
+    });
+    return it == sync_fields.end() ? nullptr : &*it;
+}
+
+const LayoutField* CardLayout::find_sync(FieldKind kind, std::optional<Axis> axis) const {
+    auto it = std::find_if(sync_fields.begin(), sync_fields.end(),
+                           [&](const LayoutField& f) { return f.kind == kind && f.axis == axis; });
+    return it == sync_fields.end() ? nullptr : &*it;
 }
 
 const LayoutField* CardLayout::field_at(int column) const {
@@ -233,6 +150,13 @@ std::string_view field_short_label(FieldKind kind) {
         return "ACTION";
     case FieldKind::parameter:
         return "PARAM.";
+    case FieldKind::position_sync:
+    case FieldKind::sync_angle:
+    case FieldKind::loop_mark:
+    case FieldKind::loop_target:
+    case FieldKind::loop_count:
+    case FieldKind::travel_per_pulse:
+        return sync_field_short_label(kind);
     }
     return "";
 }
@@ -253,6 +177,13 @@ std::string field_label(const LayoutField& field) {
     case FieldKind::action:
     case FieldKind::parameter:
         return fmt::format("condition {} {}", field.slot + 1, condition_field_word(field.kind));
+    case FieldKind::position_sync:
+    case FieldKind::sync_angle:
+    case FieldKind::loop_mark:
+    case FieldKind::loop_target:
+    case FieldKind::loop_count:
+    case FieldKind::travel_per_pulse:
+        return sync_field_label(field);
     case FieldKind::motion:
         what = "motion";
         break;
@@ -287,16 +218,26 @@ void CardLayout::index() {
         }
         allowed_rows.at(static_cast<std::size_t>(c)) = allowed;
         const LayoutField* cf = condition_field_at(c);
+        const bool number = f && f->kind == FieldKind::card_number;
         condition_allowed_rows.at(static_cast<std::size_t>(c)) =
-            c == extension_column                    ? rows_allowed(FieldKind::extension)
-            : cf                                     ? rows_allowed(cf->kind)
-            : f && f->kind == FieldKind::card_number ? kDigitRows
-                                                     : ColumnWord{0};
+            c == extension_column ? rows_allowed(FieldKind::extension)
+            : cf                  ? rows_allowed(cf->kind)
+            : number              ? kDigitRows
+                                  : ColumnWord{0};
+        const LayoutField* sf = sync_field_at(c);
+        sync_allowed_rows.at(static_cast<std::size_t>(c)) = c == extension_column ? r2
+                                                            : sf     ? rows_allowed(sf->kind)
+                                                            : number ? kDigitRows
+                                                                     : ColumnWord{0};
     }
 }
 
 bool is_condition_card(const Card& card, const CardLayout& layout) {
     return layout.extension_column != 0 && card.punched(layout.extension_column, Row::r1);
+}
+
+bool is_sync_card(const Card& card, const CardLayout& layout) {
+    return layout.extension_column != 0 && card.punched(layout.extension_column, Row::r2);
 }
 
 const CardLayout& fig8_layout() {
@@ -315,10 +256,22 @@ DecodeResult decode(const Card& card, const CardLayout& layout) {
     DecodeResult result;
     Problems problems;
 
-    if (is_condition_card(card, layout)) {
+    const bool condition = is_condition_card(card, layout);
+    if (condition && is_sync_card(card, layout)) {
+        result.bad_punch = BadPunch{
+            layout.extension_column,
+            fmt::format("column {} punched in rows 1 and 2: row 1 marks a condition card, row 2 a "
+                        "sync card, not both",
+                        layout.extension_column)};
+        return result;
+    }
+    if (condition) {
         return decode_condition_card(card, layout);
     }
-    detail::find_strays(card, layout.allowed_rows, layout, false, problems);
+    if (is_sync_card(card, layout)) {
+        return decode_sync_card(card, layout);
+    }
+    detail::find_strays(card, layout.allowed_rows, layout, CardKind::motion, problems);
 
     CardOrders& o = result.orders;
     for (const LayoutField& f : layout.fields) {
@@ -429,6 +382,15 @@ EncodeResult encode(const CardOrders& orders, const CardLayout& layout) {
             punch_number(*f, orders.number);
         }
         if (auto error = encode_condition_card(orders, layout, card)) {
+            fail(*error);
+        }
+        return result;
+    }
+    if (orders.kind == CardKind::sync) {
+        if (const auto* f = layout.find(FieldKind::card_number)) {
+            punch_number(*f, orders.number);
+        }
+        if (auto error = encode_sync_card(orders.sync, layout, card)) {
             fail(*error);
         }
         return result;

@@ -40,6 +40,16 @@ enum class FieldKind : std::uint8_t {
     position,
     action,
     parameter,
+    // The fields of a sync card (an addition after EP 0436887; docs/card-layout.md): the
+    // position-sync mark (G101, row 0), the crank angle R (three digits, degrees), the loop
+    // mark (M99, row 0), the card number the loop goes back to, how many times, and per axis
+    // the travel per detector pulse (G95 F, five digits read 0.ddddd in; blank = none).
+    position_sync,
+    sync_angle,
+    loop_mark,
+    loop_target,
+    loop_count,
+    travel_per_pulse,
 };
 
 struct LayoutField {
@@ -70,17 +80,27 @@ struct CardLayout {
     std::vector<LayoutField> condition_fields;
     const LayoutField* condition_field_at(int column) const;
 
+    // The sync card (an addition): the fields of a card marked in row 2 of the extension
+    // column; the card number stays where the motion card has it.
+    std::vector<LayoutField> sync_fields;
+    const LayoutField* sync_field_at(int column) const;
+    const LayoutField* find_sync(FieldKind kind, std::optional<Axis> axis = std::nullopt) const;
+
     // The rows each column may be punched in (index 1..80), worked out once by index(): on a
-    // motion card, and on a condition card.
+    // motion card, on a condition card and on a sync card.
     std::array<ColumnWord, kColumns + 1> allowed_rows{};
     std::array<ColumnWord, kColumns + 1> condition_allowed_rows{};
+    std::array<ColumnWord, kColumns + 1> sync_allowed_rows{};
     void index();
 };
 
 // Is this card marked as a condition card (row 1 of the layout's extension column)?
 bool is_condition_card(const Card& card, const CardLayout& layout);
+// Is this card marked as a sync card (row 2 of the layout's extension column)?
+bool is_sync_card(const Card& card, const CardLayout& layout);
 
-// "table stop", "spindle", "card number", "condition 2 position"
+// "table stop", "spindle", "card number", "condition 2 position", "sync angle",
+// "table travel per pulse"
 std::string field_label(const LayoutField& field);
 // Short label for card pictures: "STOP", "SLOW 1", "CHECK"
 std::string_view field_short_label(FieldKind kind);

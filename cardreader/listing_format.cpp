@@ -1,6 +1,8 @@
 #include "cardreader/listing_format.hpp"
 
 #include "cardreader/deck_error.hpp"
+#include "cardreader/listing_fields.hpp"
+#include "cardreader/sync_listing.hpp"
 
 #include <fmt/format.h>
 
@@ -15,33 +17,9 @@ namespace {
 constexpr std::size_t kFieldCount = 10;
 constexpr std::size_t kMaxLineBytes = 4096;
 
-std::string_view trim(std::string_view s) {
-    const auto first = s.find_first_not_of(" \t");
-    if (first == std::string_view::npos) {
-        return {};
-    }
-    const auto last = s.find_last_not_of(" \t");
-    return s.substr(first, last - first + 1);
-}
-
-std::vector<std::string_view> split_fields(std::string_view line) {
-    std::vector<std::string_view> fields;
-    std::size_t start = 0;
-    while (true) {
-        const auto comma = line.find(',', start);
-        fields.push_back(trim(line.substr(start, comma - start)));
-        if (comma == std::string_view::npos) {
-            break;
-        }
-        start = comma + 1;
-    }
-    return fields;
-}
-
-bool all_digits(std::string_view s) {
-    return !s.empty() &&
-           std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
+using detail::all_digits;
+using detail::split_fields;
+using detail::trim;
 
 // Parses a d.ddd inch value, or throws with the reason.
 Thousandths parse_inches(std::string_view text, std::string_view field, const std::string& file,
@@ -278,6 +256,11 @@ public:
         for (int i = 0; i < decoded.orders.condition_count; ++i) {
             out_ << condition_row(decoded.orders, i) << '\n';
         }
+        if (decoded.orders.kind == CardKind::sync) {
+            for (const std::string& row : sync_rows(decoded.orders)) {
+                out_ << row << '\n';
+            }
+        }
         for (Axis a : kAxes) {
             if (decoded.orders.kind == CardKind::motion) {
                 out_ << listing_row(decoded.orders, a) << '\n';
@@ -396,6 +379,29 @@ std::optional<ListedCard> ListingReader::next_condition_card(std::string first) 
     }
 }
 
+std::optional<ListedCard> ListingReader::next_sync_card(std::string first) {
+    ListedCard card;
+    card.orders.kind = CardKind::sync;
+    card.first_line = line_;
+    SyncRowLines lines;
+    SyncOrder order;
+    int number = 0;
+    read_sync_row(first, file_, line_, number, order, lines);
+    card.orders.number = number;
+    while (auto next = next_data_line()) {
+        const auto field = split_fields(*next)[0];
+        const bool same_card = is_sync_row(*next) && all_digits(field) && field.size() <= 4 &&
+                               std::stoi(std::string(field)) == number;
+        if (!same_card) {
+            pending_ = std::move(*next); // the next card begins
+            break;
+        }
+        read_sync_row(*next, file_, line_, number, order, lines);
+    }
+    card.orders.sync = order;
+    return card;
+}
+
 std::optional<ListedCard> ListingReader::next() {
     ListedCard card;
     std::array<bool, kAxisCount> seen{};
@@ -408,16 +414,18 @@ std::optional<ListedCard> ListingReader::next() {
         } else {
             text = next_data_line();
         }
-        if (text && is_condition_row(*text)) {
+        const bool condition = text && is_condition_row(*text);
+        if (condition || (text && is_sync_row(*text))) {
             if (rows == 0) {
-                return next_condition_card(std::move(*text));
+                return condition ? next_condition_card(std::move(*text))
+                                 : next_sync_card(std::move(*text));
             }
             auto missing = std::find(seen.begin(), seen.end(), false) - seen.begin();
             throw DeckError::at_line(
                 file_, line_,
-                fmt::format("a condition row begins, but card {} (from line {}) has no row for "
-                            "the {} axis",
-                            card.orders.number, card.first_line,
+                fmt::format("a {} row begins, but card {} (from line {}) has no row for the {} "
+                            "axis",
+                            condition ? "condition" : "sync", card.orders.number, card.first_line,
                             axis_name(kAxes.at(static_cast<std::size_t>(missing)))));
         }
         if (!text) {

@@ -18,6 +18,13 @@
 //
 // sense is + (forward), - (reverse) or * (either); parameter is blank where the action takes
 // none (spindle, coolant), the tool number, the axis to hold (a name) or the lamp number.
+//
+// A sync card (an addition after EP 0436887, docs/deck-formats.md) is one row per order,
+// consecutive rows with the same card number and the word `sync` (sync_listing.hpp):
+//
+//   3,sync,position,30
+//   3,sync,speed,table,0.00417
+//   12,sync,loop,1,100
 #pragma once
 
 #include "cardreader/deck_io.hpp"
@@ -45,6 +52,7 @@ public:
 private:
     std::optional<std::string> next_data_line();
     std::optional<ListedCard> next_condition_card(std::string first);
+    std::optional<ListedCard> next_sync_card(std::string first);
 
     std::optional<std::string> pending_; // a line read ahead, the first of the next card
 

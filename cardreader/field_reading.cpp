@@ -1,0 +1,114 @@
+// Reading punched fields (field_reading.hpp): shared by the motion card, the condition card and
+// the sync card.
+#include "cardreader/field_reading.hpp"
+
+#include <fmt/format.h>
+
+#include <bit>
+
+namespace parsons::cardreader {
+
+namespace detail {
+
+std::string join_rows(ColumnWord word) {
+    std::string text;
+    for (Row r : kRowsTopToBottom) {
+        if ((word & row_bit(r)) != 0) {
+            text += text.empty() ? "" : " and ";
+            text += row_name(r);
+        }
+    }
+    return text;
+}
+
+// The digit of a column punched in one of rows 0..9, or -1 (blank or a double punch).
+// Row d is bit 9 - d of the column word.
+int digit_of(ColumnWord digits) {
+    static_assert(row_bit(digit_row(0)) == 1U << 9 && row_bit(digit_row(9)) == 1U);
+    if (digits == 0 || (digits & (digits - 1)) != 0) {
+        return -1;
+    }
+    return 9 - std::countr_zero(static_cast<unsigned>(digits));
+}
+
+std::optional<int> read_number(const Card& card, const LayoutField& f, Problems& problems) {
+    int value = 0;
+    int blanks = 0;
+    int first_blank = 0;
+    bool bad = false;
+    for (int c = f.first_column; c <= f.last_column(); ++c) {
+        ColumnWord digits = card.column(c) & kDigitRows;
+        if (digits == 0) {
+            blanks += 1;
+            first_blank = first_blank == 0 ? c : first_blank;
+            value *= 10;
+            continue;
+        }
+        int d = digit_of(digits);
+        if (d < 0) {
+            problems.add(
+                c, fmt::format("double punch (rows {}) in {}", join_rows(digits), field_label(f)));
+            bad = true;
+            continue;
+        }
+        value = value * 10 + d;
+    }
+    if (blanks == f.width) {
+        return std::nullopt;
+    }
+    if (blanks > 0) {
+        problems.add(first_blank,
+                     fmt::format("blank digit inside the number in {}", field_label(f)));
+        bad = true;
+    }
+    return bad ? 0 : value;
+}
+
+std::optional<std::string> punch_number(Card& card, const LayoutField& f, int value) {
+    int max = 1;
+    for (int i = 0; i < f.width; ++i) {
+        max *= 10;
+    }
+    if (value < 0 || value >= max) {
+        return fmt::format("{} value {} does not fit in {} digit columns", field_label(f), value,
+                           f.width);
+    }
+    for (int c = f.last_column(); c >= f.first_column; --c) {
+        card.punch(c, digit_row(value % 10));
+        value /= 10;
+    }
+    return std::nullopt;
+}
+
+void find_strays(const Card& card, const std::array<ColumnWord, kColumns + 1>& allowed,
+                 const CardLayout& layout, CardKind kind, Problems& problems) {
+    // Looked for column by column only on a card that has any (a whole-card test first,
+    // branch-free).
+    ColumnWord strays = 0;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(kColumns); ++i) {
+        strays |= static_cast<ColumnWord>(card.columns()[i] & ~allowed[i + 1]);
+    }
+    for (int c = 1; strays != 0 && c <= kColumns; ++c) {
+        ColumnWord stray = card.column(c) &
+                           static_cast<ColumnWord>(~allowed[static_cast<std::size_t>(c)]) &
+                           kAllRowsMask;
+        if (stray != 0) {
+            const LayoutField* f = kind == CardKind::condition ? layout.condition_field_at(c)
+                                   : kind == CardKind::sync    ? layout.sync_field_at(c)
+                                                               : layout.field_at(c);
+            std::string where =
+                f ? fmt::format("in {}", field_label(*f))
+                  : fmt::format("in column {}, which layout {} leaves unused{}", c, layout.name,
+                                kind == CardKind::condition ? " on a condition card"
+                                : kind == CardKind::sync    ? " on a sync card"
+                                                            : "");
+            problems.add(c, fmt::format("punch in {} {} where none belongs ({})",
+                                        hole_count(stray) == 1 ? "row" : "rows", join_rows(stray),
+                                        where));
+        }
+    }
+}
+
+} // namespace detail
+
+} // namespace parsons::cardreader
