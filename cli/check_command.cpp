@@ -51,8 +51,7 @@ ExitCode run_check(const CheckFlags& f) {
     apply_limits(profile, f.limits);
     InputDeck deck(f.input, f.deck);
     const CardLayout& layout = *deck.options().layout;
-    DeckReviewer reviewer(review_dynamics(profile));
-    reviewer.allow_conditions(profile.condition_cards, profile.name, tool_numbers(profile));
+    DeckReviewer reviewer = deck_reviewer(profile);
     std::array<double, kAxisCount> at{};
     long index = 0;
     long passing = 0;
@@ -63,7 +62,8 @@ ExitCode run_check(const CheckFlags& f) {
     Json findings = Json::array();
     std::optional<std::string> first_deck_error;
     long deck_errors = 0;
-    // A condition card's deck error (an addition): `run` refuses the deck, so check exits 2.
+    // A condition or sync card's deck error (additions): `run` refuses the deck, so check exits
+    // 2.
     auto deck_error = [&](const ReviewNote& n, const Json& number) {
         ++deck_errors;
         first_deck_error = first_deck_error.value_or(
@@ -172,8 +172,8 @@ ExitCode run_check(const CheckFlags& f) {
                    index, index == 1 ? "" : "s", passing, passing == 1 ? "" : "s", bad, stops,
                    stops == 1 ? "" : "s", warnings, warnings == 1 ? "" : "s");
         if (deck_errors > 0) {
-            fmt::print("{} deck error{} in condition cards: run refuses the deck\n", deck_errors,
-                       deck_errors == 1 ? "" : "s");
+            fmt::print("{} deck error{} in condition or sync cards: run refuses the deck\n",
+                       deck_errors, deck_errors == 1 ? "" : "s");
         }
     } else {
         Json doc = json_document("check");
@@ -217,8 +217,8 @@ void add_check_command(CLI::App& app, Command& selected) {
                                                 "may stand)"},
                                  {ExitCode::machine_stop,
                                   "the machine will stop on the deck: a card passes a limit, a "
-                                  "bad punch, or a finding marked STOP (a condition card's deck "
-                                  "error, which run refuses, is exit 2)"}}) +
+                                  "bad punch, or a finding marked STOP (a condition or sync card's "
+                                  "deck error, which run refuses, is exit 2)"}}) +
                 "Examples:\n"
                 "  parsons check decks/samples/patent-example.csv --limit table=0:9.5\n"
                 "  parsons check decks/samples/patent-example.csv --limit cross=0:2   (card 1 "

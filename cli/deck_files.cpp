@@ -1,6 +1,5 @@
 #include "cli/deck_files.hpp"
 
-#include "cardreader/condition_review.hpp"
 #include "cardreader/layout.hpp"
 #include "cli/applied_profile.hpp"
 
@@ -9,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -189,37 +189,44 @@ std::vector<int> tool_numbers(const axes::MachineProfile& profile) {
     return numbers;
 }
 
-void refuse_condition_errors(InputDeck& deck, const axes::MachineProfile& profile) {
-    cardreader::ConditionReview review(profile.condition_cards, profile.name,
-                                       tool_numbers(profile));
+cardreader::PressLimits press_limits(const axes::MachineProfile& profile) {
+    cardreader::PressLimits limits;
+    limits.strokes_per_min = profile.press.strokes_per_min;
+    limits.pulses_per_degree = profile.press.pulses_per_degree;
+    limits.fastest_factor =
+        (1.0 + std::max(0.0, profile.press.variation)) * std::max(1.0, profile.press.change_factor);
+    limits.drive_max_in_per_min = profile.sync_drive.max_in_per_min;
+    return limits;
+}
+
+cardreader::DeckReviewer deck_reviewer(const axes::MachineProfile& profile) {
+    cardreader::DeckReviewer reviewer(review_dynamics(profile));
+    reviewer.allow_conditions(profile.condition_cards, profile.name, tool_numbers(profile));
+    reviewer.allow_sync(profile.press_sync, profile.name, press_limits(profile));
+    return reviewer;
+}
+
+void refuse_deck_errors(InputDeck& deck, const axes::MachineProfile& profile) {
+    // The review `check` makes; only its deck errors matter here.
+    cardreader::DeckReviewer review = deck_reviewer(profile);
     const cardreader::CardLayout& layout = *deck.options().layout;
     const std::string& file = deck.options().file_name;
-    std::array<std::optional<cardreader::Thousandths>, cardreader::kAxisCount> at{};
-    at.fill(cardreader::Thousandths{0});
-    long index = 0;
-    auto refuse = [&](const std::vector<cardreader::ConditionFinding>& found) {
-        for (const auto& f : found) {
-            if (f.deck_error) {
+    auto refuse = [&](const std::vector<cardreader::ReviewNote>& notes) {
+        for (const auto& n : notes) {
+            if (n.deck_error) {
                 throw DeckError::at_card_column(
-                    file, f.card, f.column,
-                    f.message + " (refused before any motion; parsons check lists every one)");
+                    file, n.card, n.column,
+                    n.message + " (refused before any motion; parsons check lists every one)");
             }
         }
     };
     while (auto card = deck.cards().next()) {
-        ++index;
         const cardreader::DecodeResult decoded = cardreader::decode(*card, layout);
         if (!decoded) {
             review.skip(); // the reader stops the machine there: its own business (exit 3)
-            at.fill(std::nullopt);
             continue;
         }
-        refuse(review.card(index, decoded.orders, at));
-        if (decoded.orders.kind == cardreader::CardKind::motion) {
-            for (cardreader::Axis a : cardreader::kAxes) {
-                at.at(cardreader::axis_index(a)) = decoded.orders.axis(a).stop;
-            }
-        }
+        refuse(review.review(decoded.orders));
     }
     refuse(review.finish());
     deck.rewind();

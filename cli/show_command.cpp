@@ -13,9 +13,11 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace parsons::cli {
 namespace {
@@ -98,10 +100,85 @@ Json condition_card_json(long index, const CardOrders& o) {
             {"warnings", Json::array()}};
 }
 
+// A sync card (an addition after EP 0436887), field by field: its columns, what is punched there
+// and what it orders.
+std::vector<std::array<std::string, 3>> sync_card_fields(const CardOrders& o,
+                                                         const CardLayout& layout) {
+    std::vector<std::array<std::string, 3>> rows;
+    const SyncOrder& s = o.sync;
+    for (const LayoutField& f : layout.sync_fields) {
+        const std::string columns = f.width == 1
+                                        ? std::to_string(f.first_column)
+                                        : fmt::format("{}-{}", f.first_column, f.last_column());
+        std::string value;
+        switch (f.kind) {
+        case FieldKind::position_sync:
+            value = s.position_sync ? "G101: hold the motion card until the crank reaches the "
+                                      "angle"
+                                    : "";
+            break;
+        case FieldKind::sync_angle:
+            value =
+                s.position_sync ? fmt::format("{} degrees from top dead centre", s.angle_deg) : "";
+            break;
+        case FieldKind::loop_mark:
+            value = s.loop ? "M99: the reader goes back" : "";
+            break;
+        case FieldKind::loop_target:
+            value = s.loop ? fmt::format("to card number {:04}", s.loop_to) : "";
+            break;
+        case FieldKind::loop_count:
+            value =
+                s.loop ? fmt::format("{} time{}", s.loop_count, s.loop_count == 1 ? "" : "s") : "";
+            break;
+        case FieldKind::travel_per_pulse:
+            if (const auto& t = s.travel_per_pulse.at(axis_index(f.axis.value_or(Axis::table)))) {
+                value = fmt::format("G95: {} in per detector pulse", format_travel_per_pulse(*t));
+            }
+            break;
+        default:
+            break;
+        }
+        rows.push_back({columns, field_label(f), value.empty() ? "-" : value});
+    }
+    return rows;
+}
+
+void print_sync_card(long index, const CardOrders& o, const CardLayout& layout) {
+    fmt::print("card {} · card number {:04} (columns 77-80) · SYNC CARD (column 76 row 2; an "
+               "addition after EP 0436887, Mitsubishi)\n",
+               index, o.number);
+    fmt::print("  {:<8} {:<24} {}\n", "columns", "field", "punched");
+    for (const auto& [columns, label, value] : sync_card_fields(o, layout)) {
+        fmt::print("  {:<8} {:<24} {}\n", columns, label, value);
+    }
+}
+
+Json sync_card_json(long index, const CardOrders& o) {
+    const SyncOrder& s = o.sync;
+    Json speed = Json::object();
+    for (Axis a : kAxes) {
+        if (const auto& t = s.travel_per_pulse.at(axis_index(a))) {
+            speed[std::string(axis_name(a))] = *t / 100000.0;
+        }
+    }
+    return {{"index", index},
+            {"number", o.number},
+            {"kind", "sync"},
+            {"position_sync", s.position_sync ? Json(s.angle_deg) : Json(nullptr)},
+            {"speed_sync", speed},
+            {"loop", s.loop ? Json{{"to", s.loop_to}, {"count", s.loop_count}} : Json(nullptr)},
+            {"warnings", Json::array()}};
+}
+
 void print_card(long index, const DecodeResult& decoded, const CardLayout& layout) {
     const CardOrders& o = decoded.orders;
     if (o.kind == CardKind::condition && decoded) {
         print_condition_card(index, o);
+        return;
+    }
+    if (o.kind == CardKind::sync && decoded) {
+        print_sync_card(index, o, layout);
         return;
     }
     fmt::print("card {} · card number {:04} (columns 77-80) · spindle {} (column 1)\n", index,
@@ -131,6 +208,9 @@ void print_card(long index, const DecodeResult& decoded, const CardLayout& layou
 Json card_json(long index, const CardOrders& o, const CardLayout& layout) {
     if (o.kind == CardKind::condition) {
         return condition_card_json(index, o);
+    }
+    if (o.kind == CardKind::sync) {
+        return sync_card_json(index, o);
     }
     Json axes = Json::object();
     for (Axis a : kAxes) {
@@ -179,13 +259,13 @@ ExitCode run_show(const ShowFlags& f) {
     doc["layout"] = layout.name;
     Json cards = Json::array();
 
-    DeckReviewer reviewer(review_dynamics(profile));
-    reviewer.allow_conditions(profile.condition_cards, profile.name, tool_numbers(profile));
+    DeckReviewer reviewer = deck_reviewer(profile);
     long index = 0;
     long notes = 0;
     std::optional<std::string> first_deck_error;
     long deck_errors = 0;
-    // A condition card's deck error (an addition): printed where it is found, refused at the end.
+    // A condition or sync card's deck error (additions): printed where it is found, refused at
+    // the end.
     auto deck_error = [&](const ReviewNote& n) {
         ++deck_errors;
         const std::string where =
@@ -248,12 +328,14 @@ ExitCode run_show(const ShowFlags& f) {
         cards.push_back(std::move(card_doc));
         if (!f.svg_dir.empty()) {
             CardPictureNotes pic;
-            pic.caption = fmt::format("{} · card {} · card number {:04} · layout {}{}",
-                                      std::filesystem::path(f.input).filename().string(), index,
-                                      decoded.orders.number, layout.name,
-                                      decoded && decoded.orders.kind == CardKind::condition
-                                          ? " · condition card (an addition after EP 0640901)"
-                                          : "");
+            const CardKind kind = decoded ? decoded.orders.kind : CardKind::motion;
+            pic.caption = fmt::format(
+                "{} · card {} · card number {:04} · layout {}{}",
+                std::filesystem::path(f.input).filename().string(), index, decoded.orders.number,
+                layout.name,
+                kind == CardKind::condition ? " · condition card (an addition after EP 0640901)"
+                : kind == CardKind::sync    ? " · sync card (an addition after EP 0436887)"
+                                            : "");
             pic.bad_punch = decoded.bad_punch;
             const auto path =
                 std::filesystem::path(f.svg_dir) / fmt::format("card-{:04}.svg", index);
