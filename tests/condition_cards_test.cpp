@@ -195,9 +195,10 @@ TEST_CASE("Condition card: a bad punch is named by its column", "[conditions][ca
         CHECK(d.bad_punch->column == k.column);
         CHECK_THAT(d.bad_punch->what, Catch::Contains(k.says));
     }
-    // On a motion card column 76 is unused but for the mark: row 2 there is a bad punch.
+    // On a motion card column 76 is unused but for the marks (row 1 a condition card, row 2 a
+    // sync card): row 3 there is a bad punch.
     Card motion = encode(idle_card(1, {0, 0, 0, 0, 0}), fig8_layout()).card;
-    motion.punch(76, Row::r2);
+    motion.punch(76, Row::r3);
     const DecodeResult m = decode(motion, fig8_layout());
     REQUIRE_FALSE(m);
     CHECK(m.bad_punch->column == 76);

@@ -1,0 +1,617 @@
+// Sync cards, an addition after EP 0436887 (Mitsubishi; seeds/000): the card (column 76 row 2),
+// its listing rows, its picture, the deck review's errors and the CLI's exit codes. What the
+// sync units do with a sync card while the machine runs is relaylogic's and is tested there.
+#include "tests/machine_support.hpp"
+#include "tests/test_support.hpp"
+
+#include "cardreader/card_svg.hpp"
+#include "cardreader/deck_error.hpp"
+#include "cardreader/deck_review.hpp"
+#include "cardreader/listing_format.hpp"
+#include "cardreader/sync_card.hpp"
+#include "cardreader/sync_listing.hpp"
+#include "cardreader/sync_review.hpp"
+
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <sstream>
+
+using namespace parsons;
+using namespace parsons::cardreader;
+using parsons::test::idle_card;
+using parsons::test::order;
+
+namespace {
+
+// The seed's step 3, "G95 G101 R30 F10", on card `number`: start at 30 degrees, the table
+// 0.00150 in and the cross 0.00100 in per pulse (within what the default sync drive follows,
+// 0.00187 in per pulse).
+CardOrders seed_step3(int number) {
+    CardOrders c;
+    c.kind = CardKind::sync;
+    c.number = number;
+    c.sync.position_sync = true;
+    c.sync.angle_deg = 30;
+    c.sync.travel_per_pulse.at(axis_index(Axis::table)) = 150;
+    c.sync.travel_per_pulse.at(axis_index(Axis::cross)) = 100;
+    return c;
+}
+
+CardOrders speed_only(int number, Axis axis, int travel) {
+    CardOrders c;
+    c.kind = CardKind::sync;
+    c.number = number;
+    c.sync.travel_per_pulse.at(axis_index(axis)) = travel;
+    return c;
+}
+
+CardOrders loop_card(int number, int to, int count) {
+    CardOrders c;
+    c.kind = CardKind::sync;
+    c.number = number;
+    c.sync.loop = true;
+    c.sync.loop_to = to;
+    c.sync.loop_count = count;
+    return c;
+}
+
+// A motion card: the table and the cross from 0 to `to` at speed 3, the others idle.
+CardOrders moving_card(int number, int from, int to) {
+    CardOrders c = idle_card(number, {from, from, 0, 0, 0});
+    c.axis(Axis::table) = order(from, to, 3, {}, {}, 1);
+    c.axis(Axis::cross) = order(from, to, 3, {}, {}, 2);
+    return c;
+}
+
+Card punched(const CardOrders& o) {
+    const EncodeResult e = encode(o, fig8_layout());
+    INFO(e.error.value_or(""));
+    REQUIRE(e);
+    return e.card;
+}
+
+ColumnWord digit(int d) {
+    return row_bit(digit_row(d));
+}
+
+std::string listing_error(const std::string& rows) {
+    std::istringstream in(std::string(kListingHeader) + "\n" + rows);
+    ListingReader reader(in, "t.csv");
+    try {
+        while (reader.next()) {
+        }
+    } catch (const DeckError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+std::vector<ReviewNote> review_all(DeckReviewer& reviewer, const std::vector<CardOrders>& cards) {
+    std::vector<ReviewNote> notes;
+    for (const CardOrders& c : cards) {
+        for (ReviewNote& n : reviewer.review(c)) {
+            notes.push_back(std::move(n));
+        }
+    }
+    for (ReviewNote& n : reviewer.finish()) {
+        notes.push_back(std::move(n));
+    }
+    return notes;
+}
+
+// One motion card's five listing rows: the table and cross from 0.000 to `stop` (check = the
+// travel), the others idle.
+std::string motion_rows(int card, const char* stop, const char* check) {
+    std::string rows = fmt::format("{},0,table,+,3,,,{},{},1\n", card, stop, check);
+    rows += fmt::format("{},0,cross,+,3,,,{},{},2\n", card, stop, check);
+    for (const char* axis : {"vertical", "swivel", "tilt"}) {
+        rows += fmt::format("{},0,{},+,3,,,0.000,0.000,3\n", card, axis);
+    }
+    return rows;
+}
+
+} // namespace
+
+TEST_CASE("Sync card: the seed's G95 G101 R30 F is punched in its columns and read back, column "
+          "76 row 2 marking it",
+          "[sync_card][card]") {
+    const CardOrders card = seed_step3(3);
+    const Card c = punched(card);
+    CHECK(c.column(76) == row_bit(Row::r2));
+    CHECK(c.column(1) == 0);
+    CHECK(c.column(2) == row_bit(Row::r0)); // G101
+    CHECK(c.column(3) == digit(0));         // R 030
+    CHECK(c.column(4) == digit(3));
+    CHECK(c.column(5) == digit(0));
+    for (int col = 6; col <= 15; ++col) { // no loop
+        CHECK(c.column(col) == 0);
+    }
+    const std::array<int, 5> table = {0, 0, 1, 5, 0}; // 0.00150 in columns 16-20
+    const std::array<int, 5> cross = {0, 0, 1, 0, 0}; // 0.00100 in columns 21-25
+    for (int i = 0; i < 5; ++i) {
+        CHECK(c.column(16 + i) == digit(table.at(static_cast<std::size_t>(i))));
+        CHECK(c.column(21 + i) == digit(cross.at(static_cast<std::size_t>(i))));
+    }
+    for (int col = 26; col <= 75; ++col) { // vertical, swivel, tilt not synchronised
+        CHECK(c.column(col) == 0);
+    }
+    CHECK(c.column(79) == digit(0));
+    CHECK(c.column(80) == digit(3));
+    CHECK(is_sync_card(c, fig8_layout()));
+    CHECK_FALSE(is_condition_card(c, fig8_layout()));
+
+    const DecodeResult d = decode(c, fig8_layout());
+    REQUIRE(d);
+    CHECK(d.orders == card);
+    CHECK(d.orders.sync.speed_sync());
+
+    // Every field at its extremes, each travel field on its own axis.
+    CardOrders wide;
+    wide.kind = CardKind::sync;
+    wide.number = 9999;
+    wide.sync.position_sync = true;
+    wide.sync.angle_deg = 359;
+    for (Axis a : kAxes) {
+        wide.sync.travel_per_pulse.at(axis_index(a)) = 1 + 20000 * static_cast<int>(axis_index(a));
+    }
+    wide.sync.travel_per_pulse.at(axis_index(Axis::tilt)) = kMaxTravelPerPulse;
+    const Card w = punched(wide);
+    CHECK(w.column(40) == digit(9)); // tilt 0.99999 ends in column 40
+    CHECK(w.column(20) == digit(1)); // table 0.00001
+    CHECK(decode(w, fig8_layout()).orders == wide);
+    CardOrders zero = seed_step3(0);
+    zero.sync.angle_deg = 0; // R000: top dead centre
+    CHECK(decode(punched(zero), fig8_layout()).orders == zero);
+
+    // The seed's M99, a loop card alone: back to card 1, 100 times.
+    const CardOrders loop = loop_card(12, 1, 100);
+    const Card l = punched(loop);
+    CHECK(l.column(2) == 0);
+    CHECK(l.column(6) == row_bit(Row::r0));
+    for (int col = 7; col <= 10; ++col) { // target 0001
+        CHECK(l.column(col) == digit(col == 10 ? 1 : 0));
+    }
+    for (int col = 11; col <= 14; ++col) { // count 0100
+        CHECK(l.column(col) == digit(col == 12 ? 1 : 0));
+    }
+    CHECK(decode(l, fig8_layout()).orders == loop);
+}
+
+TEST_CASE("Sync card: orders no card can hold are refused by the keypunch", "[sync_card][card]") {
+    auto error_of = [](CardOrders o) {
+        const EncodeResult e = encode(o, fig8_layout());
+        return e.error.value_or("no error");
+    };
+    CardOrders angle = seed_step3(1);
+    angle.sync.angle_deg = 360;
+    CHECK_THAT(error_of(angle), Catch::Contains("sync angle 360 is not 0..359"));
+    CardOrders none = seed_step3(1);
+    none.sync = SyncOrder{};
+    CHECK_THAT(error_of(none), Catch::Contains("nothing on it"));
+    CardOrders both = loop_card(1, 0, 1);
+    both.sync.position_sync = true;
+    CHECK_THAT(error_of(both), Catch::Contains("stands alone"));
+    CardOrders zero = speed_only(1, Axis::swivel, 0);
+    CHECK_THAT(error_of(zero), Catch::Contains("a travel per pulse of 0"));
+    CHECK_THAT(error_of(speed_only(1, Axis::swivel, 100000)), Catch::Contains("not 1..99999"));
+    CHECK_THAT(error_of(loop_card(1, 0, 0)), Catch::Contains("loop count 0 is not 1..9999"));
+}
+
+TEST_CASE("Sync card: a bad punch is named by its column", "[sync_card][card]") {
+    const Card base = punched(seed_step3(5));
+    const Card loop = punched(loop_card(6, 1, 2));
+    struct Case {
+        const char* what;
+        const Card* from;
+        std::function<void(Card&)> spoil;
+        int column;
+        const char* says;
+    };
+    auto set_digits = [](Card& c, int first, std::initializer_list<int> digits) {
+        for (int d : digits) {
+            c.set_column(first++, digit(d));
+        }
+    };
+    auto clear = [](Card& c, int first, int last) {
+        for (int col = first; col <= last; ++col) {
+            c.set_column(col, 0);
+        }
+    };
+    const std::vector<Case> cases = {
+        {"angle 365", &base,
+         [&](Card& c) {
+             set_digits(c, 3, {3, 6, 5});
+         },
+         3, "angle 365 outside 0-359"},
+        {"angle 999", &base,
+         [&](Card& c) {
+             set_digits(c, 3, {9, 9, 9});
+         },
+         3, "angle 999 outside 0-359"},
+        {"an angle without position sync", &base, [](Card& c) { c.set_column(2, 0); }, 2,
+         "position sync (column 2, row 0) is blank"},
+        {"position sync without an angle", &base, [&](Card& c) { clear(c, 3, 5); }, 3,
+         "sync angle is blank"},
+        {"a table travel per pulse of 00000", &base,
+         [&](Card& c) {
+             set_digits(c, 16, {0, 0, 0, 0, 0});
+         },
+         16, "table travel per pulse is 00000: a travel per pulse of 0"},
+        {"a cross travel per pulse of 00000", &base,
+         [&](Card& c) {
+             set_digits(c, 21, {0, 0, 0, 0, 0});
+         },
+         21, "a travel per pulse of 0"},
+        {"a double punch in the vertical travel", &base,
+         [&](Card& c) {
+             set_digits(c, 26, {0, 0, 1, 0, 0});
+             c.punch(28, Row::r4);
+         },
+         28, "double punch (rows 1 and 4) in vertical travel per pulse"},
+        {"a blank digit inside the tilt travel", &base,
+         [&](Card& c) {
+             set_digits(c, 36, {0, 0, 1, 0});
+         },
+         40, "blank digit inside the number in tilt travel per pulse"},
+        {"a hole in the blank column 15", &base, [](Card& c) { c.punch(15, Row::r3); }, 15,
+         "column 15, which layout fig8 leaves unused on a sync card"},
+        {"a hole in column 41", &base, [](Card& c) { c.punch(41, Row::r1); }, 41,
+         "leaves unused on a sync card"},
+        {"row 1 in the position-sync column", &base, [](Card& c) { c.punch(2, Row::r1); }, 2,
+         "punch in row 1 where none belongs (in position sync)"},
+        {"row 12 over the angle", &base, [](Card& c) { c.punch(4, Row::r12); }, 4,
+         "where none belongs (in sync angle)"},
+        {"rows 1 and 2 in column 76", &base, [](Card& c) { c.punch(76, Row::r1); }, 76,
+         "row 1 marks a condition card, row 2 a sync card, not both"},
+        {"the card number blank", &base, [&](Card& c) { clear(c, 77, 80); }, 77,
+         "card number is blank"},
+        {"the mark and nothing else", &base, [&](Card& c) { clear(c, 1, 75); }, 76,
+         "no synchronisation or loop is punched"},
+        {"a loop mark without its target", &loop, [&](Card& c) { clear(c, 7, 10); }, 7,
+         "loop target is blank"},
+        {"a loop mark without its count", &loop, [&](Card& c) { clear(c, 11, 14); }, 11,
+         "loop count is blank"},
+        {"a loop count of 0000", &loop,
+         [&](Card& c) {
+             set_digits(c, 11, {0, 0, 0, 0});
+         },
+         11, "loop count 0000"},
+        {"a target and count without the loop mark", &loop, [](Card& c) { c.set_column(6, 0); }, 6,
+         "loop mark (column 6, row 0) is blank, but a loop target is punched"},
+        {"a loop with position sync", &loop,
+         [&](Card& c) {
+             c.punch(2, Row::r0);
+             set_digits(c, 3, {0, 3, 0});
+         },
+         6, "stands alone, but this one also carries position sync"},
+        {"a loop with speed sync", &loop,
+         [&](Card& c) {
+             set_digits(c, 31, {0, 0, 1, 0, 0});
+         },
+         6, "stands alone, but this one also carries speed sync"},
+    };
+    for (const Case& k : cases) {
+        INFO(k.what);
+        Card c = *k.from;
+        k.spoil(c);
+        const DecodeResult d = decode(c, fig8_layout());
+        REQUIRE_FALSE(d);
+        CHECK(d.bad_punch->column == k.column);
+        CHECK_THAT(d.bad_punch->what, Catch::Contains(k.says));
+    }
+}
+
+TEST_CASE("Sync card: listing rows position, speed and loop read as one card per card number and "
+          "are written back the same",
+          "[sync_card][listing]") {
+    const std::string rows = "3,sync,position,30\n"
+                             "3,sync,speed,table,0.00150\n"
+                             "3,sync,speed,cross,0.00100\n" +
+                             motion_rows(4, "1.000", "1.000") + "5,sync,speed,table,0.00100\n" +
+                             motion_rows(6, "0.000", "1.000") + "7,sync,loop,3,100\n";
+    const std::string text = std::string(kListingHeader) + "\n" + rows;
+    std::istringstream in(text);
+    ListingReader reader(in, "t.csv");
+    auto first = reader.next();
+    REQUIRE(first);
+    CHECK(first->orders == seed_step3(3));
+    CHECK(first->first_line == 2);
+    auto motion = reader.next();
+    REQUIRE(motion);
+    CHECK(motion->orders.kind == CardKind::motion);
+    auto second = reader.next();
+    REQUIRE(second);
+    CHECK(second->orders == speed_only(5, Axis::table, 100));
+    REQUIRE(reader.next());
+    auto loop = reader.next();
+    REQUIRE(loop);
+    CHECK(loop->orders == loop_card(7, 3, 100));
+    CHECK_FALSE(reader.next());
+
+    // Punched by the listing source, written by the listing sink: the same rows.
+    std::istringstream again(text);
+    DeckOptions options;
+    options.format = DeckFormat::listing;
+    options.file_name = "t.csv";
+    auto source = open_card_source(again, options);
+    std::ostringstream out;
+    {
+        auto sink = open_card_sink(out, options);
+        while (auto card = source->next()) {
+            sink->write(*card);
+        }
+    }
+    CHECK(out.str() == text);
+    // The rows of one card keep the order position, speed by axis, loop.
+    CardOrders two = seed_step3(9);
+    CHECK(sync_rows(two) == std::vector<std::string>{"9,sync,position,30",
+                                                     "9,sync,speed,table,0.00150",
+                                                     "9,sync,speed,cross,0.00100"});
+    // Two sync cards in a row with other numbers are two cards.
+    std::istringstream pair(std::string(kListingHeader) +
+                            "\n1,sync,position,10\n2,sync,position,20\n");
+    ListingReader pairs(pair, "p.csv");
+    CHECK(pairs.next()->orders.sync.angle_deg == 10);
+    CHECK(pairs.next()->orders.sync.angle_deg == 20);
+    CHECK_FALSE(pairs.next());
+}
+
+TEST_CASE("Sync card: the listing's errors name file and line", "[sync_card][listing]") {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"3,sync,position,365\n", "t.csv:2: angle '365' outside 0-359"},
+        {"3,sync,position\n", "t.csv:2: a sync position row has 4 comma-separated fields"},
+        {"3,sync,speed,table\n", "t.csv:2: a sync speed row has 5"},
+        {"3,sync,speed,table,0.0042\n", "t.csv:2: travel per pulse '0.0042': needs exactly five"},
+        {"3,sync,speed,table,1.00000\n", "over 0.99999 in per pulse"},
+        {"3,sync,speed,table,0.00000\n", "t.csv:2: travel per pulse '0.00000': a travel per "
+                                         "pulse of 0"},
+        {"3,sync,speed,spindle,0.00100\n", "unknown axis 'spindle'"},
+        {"3,sync,speed,table,0.00100\n3,sync,speed,table,0.00200\n",
+         "t.csv:3: card 3 has a second speed row for the table axis (first on line 2)"},
+        {"3,sync,position,10\n3,sync,position,20\n",
+         "t.csv:3: card 3 has a second position row (first on line 2)"},
+        {"3,sync,loop,1,0\n", "t.csv:2: loop count '0' is not 1..9999"},
+        {"3,sync,loop,10000,1\n", "loop target '10000' is not 0..9999"},
+        {"3,sync,position,30\n3,sync,loop,1,5\n",
+         "t.csv:3: card 3: a loop and synchronisation on one card"},
+        {"3,sync,jump,1\n", "t.csv:2: unknown sync order 'jump' (position, speed or loop)"},
+        {"3,sync\n", "t.csv:2: a sync row is card,sync,position,ANGLE"},
+        {"1,0,table,+,3,,,0.000,0.000,1\n1,sync,position,30\n",
+         "t.csv:3: a sync row begins, but card 1 (from line 2) has no row for the cross axis"},
+    };
+    for (const auto& [rows, says] : cases) {
+        INFO(rows);
+        CHECK_THAT(listing_error(rows), Catch::Contains(says));
+    }
+}
+
+TEST_CASE("Sync card: the deck review names each deck error by card and column",
+          "[sync_card][review]") {
+    SECTION("a sync card under a profile without press synchronisation: column 76") {
+        DeckReviewer faithful;
+        faithful.allow_sync(false, "parsons-1952");
+        const auto notes = review_all(faithful, {seed_step3(1), moving_card(2, 0, 1000)});
+        REQUIRE(notes.size() == 1);
+        CHECK(notes.at(0).deck_error);
+        CHECK(notes.at(0).card == 1);
+        CHECK(notes.at(0).column == 76);
+        CHECK_THAT(notes.at(0).message,
+                   Catch::Contains("a sync card (an addition after EP 0436887, Mitsubishi): "
+                                   "profile parsons-1952 has no press synchronisation; the "
+                                   "built-in profile parsons-extended has it"));
+    }
+    SECTION("a good deck has no deck error") {
+        DeckReviewer reviewer;
+        const auto notes = review_all(reviewer, {seed_step3(1), moving_card(2, 0, 1000),
+                                                 speed_only(3, Axis::cross, 100),
+                                                 moving_card(4, 1000, 0), loop_card(5, 1, 10)});
+        for (const ReviewNote& n : notes) {
+            INFO(n.message);
+            CHECK_FALSE(n.deck_error);
+        }
+    }
+    SECTION("a sync card with no motion card after it: the deck ends, or a loop card comes") {
+        DeckReviewer ends;
+        auto notes = review_all(ends, {moving_card(1, 0, 100), seed_step3(2)});
+        REQUIRE(notes.size() == 1);
+        CHECK(notes.at(0).card == 2);
+        CHECK(notes.at(0).column == 76);
+        CHECK_THAT(notes.at(0).message, Catch::Contains("no motion card after it: the deck ends"));
+        DeckReviewer looped;
+        notes = review_all(looped, {moving_card(1, 0, 100), seed_step3(2), loop_card(3, 1, 2)});
+        REQUIRE(notes.size() == 1);
+        CHECK(notes.at(0).card == 2);
+        CHECK(notes.at(0).column == 76);
+        CHECK_THAT(notes.at(0).message, Catch::Contains("loop card 3 comes next"));
+    }
+    SECTION("two sync cards before one motion card: the second, column 76") {
+        DeckReviewer reviewer;
+        const auto notes = review_all(
+            reviewer, {seed_step3(1), speed_only(2, Axis::table, 100), moving_card(3, 0, 100)});
+        REQUIRE(notes.size() == 1);
+        CHECK(notes.at(0).card == 2);
+        CHECK(notes.at(0).column == 76);
+        CHECK_THAT(notes.at(0).message,
+                   Catch::Contains("a second sync card before one motion card (the first is "
+                                   "card 1)"));
+    }
+    SECTION("speed sync on an axis the next motion card does not move: that axis's field") {
+        DeckReviewer reviewer;
+        const auto notes =
+            review_all(reviewer, {speed_only(1, Axis::vertical, 100), moving_card(2, 0, 100),
+                                  speed_only(3, Axis::table, 100), moving_card(4, 100, 200)});
+        REQUIRE(notes.size() == 1);
+        CHECK(notes.at(0).card == 1);
+        CHECK(notes.at(0).column == 26);
+        CHECK(notes.at(0).axis == Axis::vertical);
+        CHECK_THAT(notes.at(0).message,
+                   Catch::Contains("speed sync on the vertical axis (0.00100 in per pulse), which "
+                                   "motion card 2 does not move (check 0.000)"));
+    }
+    SECTION("a travel per pulse the sync drive cannot follow: its column, and what it can") {
+        DeckReviewer reviewer;
+        reviewer.allow_sync(true, "parsons-extended", PressLimits{}); // 2 strokes, 4 pulses
+        CardOrders fast = speed_only(1, Axis::table, 1000);           // 0.01000 in
+        fast.sync.travel_per_pulse.at(axis_index(Axis::cross)) = 187; // just within
+        const auto notes = review_all(reviewer, {fast, moving_card(2, 0, 100)});
+        REQUIRE(notes.size() == 1);
+        CHECK(notes.at(0).card == 1);
+        CHECK(notes.at(0).column == 16);
+        CHECK(notes.at(0).message ==
+              "table travel per pulse 0.01000 in needs 28.8 in/min at the press's fastest (2 "
+              "strokes a minute, 4 pulses a degree); the sync drive follows at most 5.4 in/min: "
+              "at most 0.00187 in per pulse");
+        // 0.00188 in is just over: 0.00188 x 48 pulses/s x 60 = 5.41 in/min.
+        DeckReviewer over;
+        const auto o = review_all(over, {speed_only(1, Axis::cross, 188), moving_card(2, 0, 100)});
+        REQUIRE(o.size() == 1);
+        CHECK(o.at(0).column == 21);
+        // A press that runs up to 25 % faster (change_factor 1.25) halves nothing but lowers
+        // the limit: 0.00187 x 1.25 is over.
+        PressLimits varying;
+        varying.fastest_factor = 1.25;
+        CHECK(varying.max_travel_per_pulse() == 150);
+        DeckReviewer faster;
+        faster.allow_sync(true, "parsons-extended", varying);
+        const auto f =
+            review_all(faster, {speed_only(1, Axis::table, 187), moving_card(2, 0, 100)});
+        REQUIRE(f.size() == 1);
+        CHECK_THAT(f.at(0).message, Catch::Contains("x 1.25 with its variation"));
+        CHECK_THAT(f.at(0).message, Catch::Contains("at most 0.00150 in per pulse"));
+    }
+    SECTION("a loop to a card number the deck does not hold before the loop card: column 7") {
+        DeckReviewer reviewer;
+        const auto notes = review_all(reviewer, {moving_card(1, 0, 100), loop_card(2, 7, 3)});
+        REQUIRE(notes.size() == 1);
+        CHECK(notes.at(0).card == 2);
+        CHECK(notes.at(0).column == 7);
+        CHECK_THAT(notes.at(0).message,
+                   Catch::Contains("a loop to card number 0007, which the deck does not hold "
+                                   "before this card"));
+        DeckReviewer self;
+        CHECK(review_all(self, {moving_card(1, 0, 100), loop_card(2, 2, 3)}).size() == 1); // itself
+        DeckReviewer back;
+        CHECK(review_all(back, {moving_card(1, 0, 100), loop_card(2, 1, 3)}).empty());
+    }
+    SECTION("a condition card between a sync card and its motion card is no motion card") {
+        DeckReviewer reviewer;
+        CardOrders cond;
+        cond.kind = CardKind::condition;
+        cond.number = 2;
+        cond.condition_count = 1;
+        cond.conditions.at(0) = {1, Axis::table, 50, PassingSense::forward, ActionKind::lamp, 1};
+        const auto notes = review_all(reviewer, {seed_step3(1), cond, moving_card(3, 0, 100)});
+        for (const ReviewNote& n : notes) {
+            INFO(n.message);
+            CHECK_FALSE(n.deck_error);
+        }
+    }
+}
+
+TEST_CASE("Sync card: check, show and run exit 2 on a sync card under parsons-1952, naming card "
+          "and column; run refuses before any motion",
+          "[sync_card][cli]") {
+    test::TempDir dir;
+    const std::string header = std::string(kListingHeader) + "\n";
+    const std::string deck = header + "1,sync,position,30\n1,sync,speed,table,0.00100\n" +
+                             motion_rows(2, "0.100", "0.100");
+    test::write_bytes(dir.path("sync.csv"), deck);
+    const std::string says = "sync.csv: card 1, column 76: a sync card (an addition after EP "
+                             "0436887, Mitsubishi): profile parsons-1952 has no press "
+                             "synchronisation; the built-in profile parsons-extended has it";
+    const auto run = test::run_parsons("run " + test::q(dir.str("sync.csv")) + " -q --events " +
+                                       test::q(dir.str("e.jsonl")));
+    CHECK(run.exit_code == 2);
+    CHECK_THAT(run.output, Catch::Contains(says));
+    CHECK_FALSE(std::filesystem::exists(dir.path("e.jsonl"))); // refused before anything ran
+    for (const char* command : {"check", "show"}) {
+        INFO(command);
+        const auto r = test::run_parsons(std::string(command) + " " + test::q(dir.str("sync.csv")));
+        CHECK(r.exit_code == 2);
+        CHECK_THAT(r.output, Catch::Contains(says));
+    }
+    // parsons-extended has press synchronisation: the deck has no deck error.
+    const auto checked =
+        test::run_parsons("check " + test::q(dir.str("sync.csv")) + " --profile parsons-extended");
+    INFO(checked.output);
+    CHECK(checked.exit_code == 0);
+
+    // A travel the drive cannot follow: run refuses it under parsons-extended too.
+    test::write_bytes(dir.path("fast.csv"),
+                      header + "1,sync,speed,table,0.01000\n" + motion_rows(2, "0.100", "0.100"));
+    const auto fast =
+        test::run_parsons("run " + test::q(dir.str("fast.csv")) + " -q --profile parsons-extended");
+    CHECK(fast.exit_code == 2);
+    CHECK_THAT(fast.output, Catch::Contains("fast.csv: card 1, column 16: table travel per pulse "
+                                            "0.01000 in needs 28.8 in/min"));
+}
+
+TEST_CASE("Sync card: show prints it field by field, in --json and as a picture",
+          "[sync_card][cli]") {
+    test::TempDir dir;
+    const std::string deck = std::string(kListingHeader) + "\n" +
+                             "1,sync,position,30\n1,sync,speed,table,0.00100\n" +
+                             motion_rows(2, "0.100", "0.100") + "3,sync,loop,1,100\n";
+    test::write_bytes(dir.path("sync.csv"), deck);
+    const auto text =
+        test::run_parsons("show " + test::q(dir.str("sync.csv")) +
+                          " --profile parsons-extended --svg " + test::q(dir.str("cards")));
+    INFO(text.output);
+    CHECK(text.exit_code == 0);
+    CHECK_THAT(text.output, Catch::Contains("SYNC CARD (column 76 row 2"));
+    CHECK_THAT(text.output, Catch::Contains("30 degrees from top dead centre"));
+    CHECK_THAT(text.output, Catch::Contains("G95: 0.00100 in per detector pulse"));
+    CHECK_THAT(text.output, Catch::Contains("to card number 0001"));
+    CHECK_THAT(text.output, Catch::Contains("100 times"));
+    const std::string svg = test::read_bytes(dir.path("cards/card-0001.svg"));
+    for (const char* label :
+         {"G101", "ANGLE R", "M99", "LOOP TO", "F/PULSE", "TABLE", "TILT", "EXTENSION", "CARD NO.",
+          "sync card (an addition after EP 0436887)"}) {
+        CHECK_THAT(svg, Catch::Contains(label));
+    }
+    CHECK_THAT(svg, !Catch::Contains("SLOW 1"));
+    CHECK_THAT(test::read_bytes(dir.path("cards/card-0002.svg")), Catch::Contains("SLOW 1"));
+
+    const auto json = test::run_parsons("show " + test::q(dir.str("sync.csv")) +
+                                        " --profile parsons-extended --json");
+    CHECK(json.exit_code == 0);
+    const auto doc = nlohmann::json::parse(json.output);
+    const auto& first = doc.at("cards").at(0);
+    CHECK(first.at("kind") == "sync");
+    CHECK(first.at("position_sync") == 30);
+    CHECK(first.at("speed_sync").at("table").get<double>() == Approx(0.001));
+    CHECK(first.at("loop").is_null());
+    const auto& loop = doc.at("cards").at(2);
+    CHECK(loop.at("loop").at("to") == 1);
+    CHECK(loop.at("loop").at("count") == 100);
+}
+
+TEST_CASE("Sync card: convert carries it through .cbn and text card images and back to the same "
+          "listing",
+          "[sync_card][cli]") {
+    test::TempDir dir;
+    const std::string deck = std::string(kListingHeader) + "\n" +
+                             "1,sync,position,190\n1,sync,speed,cross,0.00417\n" +
+                             motion_rows(2, "0.100", "0.100") + "3,sync,loop,1,9999\n";
+    test::write_bytes(dir.path("sync.csv"), deck);
+    for (const char* medium : {"cbn", "txt", "bin", "tape"}) {
+        INFO(medium);
+        const std::string cards = dir.str(std::string("sync.") + medium);
+        const std::string back = dir.str(std::string("back-") + medium + ".csv");
+        CHECK(test::run_parsons("convert " + test::q(dir.str("sync.csv")) + " -o " + test::q(cards))
+                  .exit_code == 0);
+        CHECK(test::run_parsons("convert " + test::q(cards) + " -o " + test::q(back)).exit_code ==
+              0);
+        CHECK(test::read_bytes(back) == deck);
+    }
+    // Every column of a sync card is one digit punch: a text card image keeps it as characters.
+    const std::string text = test::read_bytes(dir.path("sync.txt"));
+    const auto lines = test::lines_of(text);
+    REQUIRE(lines.size() == 3);
+    CHECK(lines.at(0).rfind(" 0190", 0) == 0);
+    CHECK(lines.at(0).substr(75, 5) == "20001");
+    CHECK(lines.at(2).substr(0, 14) == "     000019999");
+}
