@@ -512,7 +512,7 @@ TEST_CASE("Sync card: the deck review names each deck error by card and column",
 }
 
 TEST_CASE("Sync card: check, show and run exit 2 on a sync card under parsons-1952, naming card "
-          "and column; run refuses before any motion",
+          "and column, and run refuses before any motion",
           "[sync_card][cli]") {
     test::TempDir dir;
     const std::string header = std::string(kListingHeader) + "\n";

@@ -13,6 +13,7 @@
 #include "cardreader/five_card_format.hpp"
 #include "cardreader/layout.hpp"
 #include "cardreader/listing_format.hpp"
+#include "cardreader/sync_listing.hpp"
 #include "cardreader/tape_format.hpp"
 #include "cardreader/text_format.hpp"
 
@@ -21,6 +22,7 @@
 #include <functional>
 #include <sstream>
 #include <string>
+#include <string_view>
 
 namespace parsons::fuzz {
 namespace {
@@ -40,25 +42,32 @@ void check_names_file(const DeckError& e, const std::string& file) {
     }
 }
 
-// A condition card (an addition) that decodes is punched again by the keypunch into a card that
-// reads as the same orders (not always the same holes: a parameter punched 0000 is punched
+// A condition or sync card (additions) that decodes is punched again by the keypunch into a card
+// that reads as the same orders (not always the same holes: a parameter punched 0000 is punched
 // blank), and its listing rows read back as the same orders.
-void condition_round_trip(const Card& /*card*/, const CardOrders& orders) {
+void extension_round_trip(const CardOrders& orders) {
+    const std::string_view kind = orders.kind == CardKind::sync ? "sync" : "condition";
     const EncodeResult punched = encode(orders, fig8_layout());
     const DecodeResult again = punched ? decode(punched.card, fig8_layout()) : DecodeResult{};
     if (!punched || !again || again.orders != orders) {
-        throw Finding("condition card: decoded, punched again and read, it came out different");
+        throw Finding(
+            fmt::format("{} card: decoded, punched again and read, it came out different", kind));
     }
     std::ostringstream rows;
     rows << kListingHeader << '\n';
     for (int i = 0; i < orders.condition_count; ++i) {
         rows << condition_row(orders, i) << '\n';
     }
+    if (orders.kind == CardKind::sync) {
+        for (const std::string& row : sync_rows(orders)) {
+            rows << row << '\n';
+        }
+    }
     std::istringstream in(rows.str());
     ListingReader reader(in, "rows.csv");
     const auto back = reader.next();
-    if (!back || back->orders != orders) {
-        throw Finding("condition card: its listing rows read back as other orders");
+    if (!back || back->orders != orders || reader.next()) {
+        throw Finding(fmt::format("{} card: its listing rows read back as other orders", kind));
     }
 }
 
@@ -73,8 +82,8 @@ void read_deck(Bytes input, DeckOptions options, const std::function<void(const 
             const DecodeResult decoded = decode(*card, fig8_layout());
             if (decoded) {
                 reviewer.review(decoded.orders);
-                if (decoded.orders.kind == CardKind::condition) {
-                    condition_round_trip(*card, decoded.orders);
+                if (decoded.orders.kind != CardKind::motion) {
+                    extension_round_trip(decoded.orders);
                 }
             } else {
                 reviewer.skip();
