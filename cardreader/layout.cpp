@@ -240,6 +240,10 @@ bool is_sync_card(const Card& card, const CardLayout& layout) {
     return layout.extension_column != 0 && card.punched(layout.extension_column, Row::r2);
 }
 
+bool is_extension_card(const Card& card, const CardLayout& layout) {
+    return is_condition_card(card, layout) || is_sync_card(card, layout);
+}
+
 const CardLayout& fig8_layout() {
     static const CardLayout layout = make_fig8();
     return layout;

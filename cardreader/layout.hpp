@@ -98,6 +98,9 @@ struct CardLayout {
 bool is_condition_card(const Card& card, const CardLayout& layout);
 // Is this card marked as a sync card (row 2 of the layout's extension column)?
 bool is_sync_card(const Card& card, const CardLayout& layout);
+// Is it either (an extension card: an addition, whose double punches are bad punches in every
+// profile)?
+bool is_extension_card(const Card& card, const CardLayout& layout);
 
 // "table stop", "spindle", "card number", "condition 2 position", "sync angle",
 // "table travel per pulse"

@@ -148,9 +148,9 @@ void print_sync_card(long index, const CardOrders& o, const CardLayout& layout) 
     fmt::print("card {} · card number {:04} (columns 77-80) · SYNC CARD (column 76 row 2; an "
                "addition after EP 0436887, Mitsubishi)\n",
                index, o.number);
-    fmt::print("  {:<8} {:<24} {}\n", "columns", "field", "punched");
+    fmt::print("  {:<8} {:<25} {}\n", "columns", "field", "punched");
     for (const auto& [columns, label, value] : sync_card_fields(o, layout)) {
-        fmt::print("  {:<8} {:<24} {}\n", columns, label, value);
+        fmt::print("  {:<8} {:<25} {}\n", columns, label, value);
     }
 }
 

@@ -142,6 +142,8 @@ TEST_CASE("Sync card: the seed's G95 G101 R30 F is punched in its columns and re
     CHECK(c.column(80) == digit(3));
     CHECK(is_sync_card(c, fig8_layout()));
     CHECK_FALSE(is_condition_card(c, fig8_layout()));
+    CHECK(is_extension_card(c, fig8_layout()));
+    CHECK_FALSE(is_extension_card(punched(moving_card(1, 0, 100)), fig8_layout()));
 
     const DecodeResult d = decode(c, fig8_layout());
     REQUIRE(d);
