@@ -75,8 +75,7 @@ void read_sync_row(std::string_view text, const std::string& file, long line, in
     }
     number = std::stoi(std::string(fields[0]));
     auto again = [&](std::string_view what, long first) {
-        return fail(
-            fmt::format("card {} has a second {} (first on line {})", number, what, first));
+        return fail(fmt::format("card {} has a second {} (first on line {})", number, what, first));
     };
     if (fields[2] == "position") {
         expect(4, "card,sync,position,ANGLE");
