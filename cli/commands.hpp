@@ -38,6 +38,7 @@ struct RunRequest {
     std::string plot;
     std::string cut;
     std::string job;
+    std::string press_proof; // the press-feeder job file to prove the run against
     std::string profile;
     std::string feed; // cards | ribbon; empty: as the profile (and the deck's format) say
     std::vector<std::string> faults;

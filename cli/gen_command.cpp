@@ -8,6 +8,7 @@
 #include "cli/deck_files.hpp"
 #include "cli/json_output.hpp"
 #include "cli/output_file.hpp"
+#include "cli/press_feeder.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/two_tool.hpp"
 
@@ -588,6 +589,7 @@ void add_gen_command(CLI::App& app, Command& selected) {
         selected = [flags] { return run_gen(*flags); };
     });
     add_two_tool_command(*gen, selected);
+    add_press_feeder_command(*gen, selected);
 }
 
 } // namespace parsons::cli

@@ -9,6 +9,7 @@
 #include "cli/deck_files.hpp"
 #include "cli/output_file.hpp"
 #include "cli/plot_svg.hpp"
+#include "cli/press_proof.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/run_report.hpp"
 #include "cli/trace_outputs.hpp"
@@ -32,6 +33,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 #include <utility>
@@ -322,6 +324,14 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     } else {
         applied = AppliedProfile::load(f.profile);
     }
+    // --press-proof: the job's geometry; with no --profile, the profile written beside it.
+    std::optional<decks::PressFeederJob> press_job;
+    if (!f.press_proof.empty()) {
+        press_job = read_press_job(f.press_proof);
+        if (f.profile.empty() && f.resume.empty() && !press_job->profile_file.empty()) {
+            applied = AppliedProfile::load(press_job->profile_file);
+        }
+    }
     applied.apply_limits(f.limits);
     axes::MachineProfile& profile = applied.profile();
     std::vector<relaylogic::Fault> faults;
@@ -397,6 +407,18 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
             observers.add(&cutter);
         }
     }
+    std::unique_ptr<PressProof> press_proof;
+    if (press_job) {
+        if (!profile.press_sync) {
+            throw DeckError(fmt::format("--press-proof: profile {} has no press synchronisation "
+                                        "(give --profile {})",
+                                        profile.name, press_job->profile_file));
+        }
+        press_proof =
+            std::make_unique<PressProof>(profile.press, press_job->options.zone_edge_x_in,
+                                         press_job->options.safe_height_in, press_job->cycle_card);
+        observers.add(press_proof.get());
+    }
     ProgressBar progress(deck, !f.quiet);
     if (progress.shown()) {
         observers.add(&progress);
@@ -468,6 +490,13 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
                                   proof.max_gouge_in, proof.max_leftover_in, proof.max_scallop_in,
                                   proof.machined_points, design.points.size());
     }
+    if (press_proof) {
+        if (!report["press"].is_object()) {
+            report["press"] = nlohmann::json::object();
+        }
+        report["press"].update(press_block(result, *press_proof, *press_job));
+        cut_summary += press_summary(result, *press_proof);
+    }
     if (!f.report.empty()) {
         write_file(f.report, report.dump(2) + "\n");
     }
@@ -497,6 +526,14 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
         say_how_to_resume(f);
         return ExitCode::machine_stop;
     }
+    if (press_proof && press_proof->collision()) {
+        fmt::print(stderr,
+                   "parsons: press proof: {} (the emulation ran as it should: the job is "
+                   "unsafe)\n",
+                   collision_message(*press_proof, press_job->options.safe_height_in,
+                                     press_job->options.zone_edge_x_in));
+        return ExitCode::machine_stop;
+    }
     return ExitCode::ok;
 }
 
@@ -516,6 +553,10 @@ void add_run_command(CLI::App& app, Command& selected) {
                     "Sweep the cutter along the path the axes really took and draw the cut "
                     "against the design, SVG (generated decks)");
     cmd->add_option("--job", flags->job, "The job description for --cut (default DECK.job.json)");
+    cmd->add_option("--press-proof", flags->press_proof,
+                    "Prove a press-feeder job (gen press-feeder's DECK.job.json): the feeder never "
+                    "inside the die zone while the die is below its safe height; a collision is "
+                    "exit 3");
     cmd->add_option("--fault", flags->faults,
                     "Inject a fault (repeatable; docs/faults.md): drop-impulse:AXIS:N, "
                     "stuck-relay:AXIS:BANK:DIGIT, dead-relay:AXIS:BANK:DIGIT, "
@@ -542,7 +583,8 @@ void add_run_command(CLI::App& app, Command& selected) {
     add_input_flags(*cmd, flags->deck);
     cmd->footer(exit_codes_help({{ExitCode::ok, "the deck completed"},
                                  {ExitCode::machine_stop,
-                                  "the machine stopped itself (a check fired; docs/stop-codes.md)"},
+                                  "the machine stopped itself (a check fired; docs/stop-codes.md), "
+                                  "or --press-proof found a collision"},
                                  {ExitCode::interrupted, "stopped by the operator with Ctrl-C"},
                                  {ExitCode::terminated, "stopped by SIGTERM"}}) +
                 "Examples:\n"
