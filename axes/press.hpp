@@ -20,7 +20,10 @@
 //
 // Every pulse time is a pure function of the segment and the integer edge index, so the n-th
 // pulse from now has the same time whether the pulses before it were taken one by one or
-// skipped in one jump (the cabinet's fast-forward), to the last bit.
+// skipped in one jump (the cabinet's fast-forward), to the last bit. An edge that falls exactly
+// on a segment boundary is taken in the segment it ends, before the boundary. Turning backwards
+// (profile.reverse) the crank crosses [b_lo, b_hi) at speed_at(b_lo): the same function of
+// where it stands (axes/press.cpp).
 #pragma once
 
 #include "axes/lead_screw_axis.hpp"
@@ -29,6 +32,7 @@
 #include <nlohmann/json.hpp>
 
 #include <optional>
+#include <utility>
 
 namespace parsons::axes {
 
@@ -61,19 +65,22 @@ public:
     long pulses_by(double t) const;
     DetectorEdge skip_pulses(long n);
 
+    double time_s() const { return t_; }          // machine time the crank stands at
     long count() const { return count_; }         // detector pulses, unwrapped
     double theta_deg() const;                     // unwrapped crank angle now
     double angle_deg() const;                     // crank 21 now, 0 <= a < 360
     double angle_deg_at(double t) const;          // t within the current segment
     int revolution() const;                       // 1 during the first revolution, ...
     double speed_deg_per_s() const { return w_; } // signed: negative when turning back
-    bool stopped() const { return stopped_; }     // motor 22 has stopped (the profile's stop)
+    // Motor 22 has stopped: set when the crank reaches the profile's stop (or starts past it),
+    // never cleared; the press then stands for good.
+    bool stopped() const { return stopped_; }
     // Die 20 above its bottom dead centre, in inches, with the crank at angle a (slider crank:
     // r cos a + sqrt(L^2 - r^2 sin^2 a) - (L - r), r = stroke / 2).
     double die_height_in_at_angle(double a_deg) const;
     double die_height_in() const { return die_height_in_at_angle(angle_deg()); }
     // The crank angles (0..180 and 180..360) where the die passes height h going down and up;
-    // nothing if h is outside 0 .. stroke.
+    // nothing if h is outside 0 .. stroke. At the top (h = stroke) they are 0 and 360.
     std::optional<std::pair<double, double>> angles_at_height(double h_in) const;
     const PressProfile& profile() const { return profile_; }
     // The speed the profile gives at unwrapped angle theta (degrees per second, >= 0 forward,
@@ -85,8 +92,26 @@ public:
     void load(const nlohmann::json& j);
 
 private:
-    void start_segment(); // from (t_, theta_, count_): speed, end, next edge
+    // A segment as it follows from where it starts: its signed speed (0 = the press stands),
+    // the boundary that ends it and when the crank reaches that boundary.
+    struct Segment {
+        double w = 0;
+        double end_theta = 0;
+        double end_t = kNever;
+    };
+    Segment segment_from(double t0, double theta0) const;
+    double boundary_from(double theta) const; // the next boundary past theta, in the sense
+    double change_theta() const;              // where change_factor takes over
+    double stop_theta() const;                // where motor 22 stops
+    void start_segment();                     // from (t_, theta_, count_): speed, end, next edge
     void plan_pulse();
+    // Edge m stands at m / ppd degrees; the n-th coming edge (n >= 1) is edge_index(n).
+    double edge_angle(long m) const { return static_cast<double>(m) / ppd_; }
+    long edge_index(long n) const { return sense_ > 0 ? count_ + n : count_ - n + 1; }
+    bool in_segment(long m) const;
+    long edges_left() const; // edges still to come before the segment ends
+    double theta_at(double t) const;
+    DetectorEdge take_edge(long m, double t);
 
     PressProfile profile_;
     double ppd_ = 4;

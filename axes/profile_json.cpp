@@ -313,6 +313,165 @@ void put_readings(json& j, const MachineProfile& p) {
     j["first_tool"] = p.first_tool;
 }
 
+// ---- Press synchronisation (EP 0436887; axes/press.hpp, docs/press-sync.md) ----
+// A number within a range whose ends may be open; the message names the key and the range.
+double number_in(const json& j, const std::string& key, double least, bool least_open, double most,
+                 bool most_open) {
+    const bool ok = j.is_number() && std::isfinite(j.get<double>()) &&
+                    (least_open ? j.get<double>() > least : j.get<double>() >= least) &&
+                    (most_open ? j.get<double>() < most : j.get<double>() <= most);
+    if (!ok) {
+        const std::string above = fmt::format("{} {}", least_open ? "above" : "at least", least);
+        const std::string below =
+            std::isinf(most) ? ""
+                             : fmt::format(" and {} {}", most_open ? "below" : "at most", most);
+        throw ProfileError(
+            fmt::format("{}: must be a number {}{}, not {}", key, above, below, j.dump()));
+    }
+    return j.get<double>();
+}
+
+long whole_in(const json& j, const std::string& key, long least, long most) {
+    if (!j.is_number_integer() || j.get<long>() < least || j.get<long>() > most) {
+        throw ProfileError(fmt::format("{}: must be a whole number from {} to {}, not {}", key,
+                                       least, most, j.dump()));
+    }
+    return j.get<long>();
+}
+
+// The press's numbers: key, field, range (ends open or closed).
+struct PressNumber {
+    const char* key;
+    double PressProfile::*field;
+    double least;
+    bool least_open;
+    double most;
+    bool most_open;
+};
+constexpr double kNoEnd = HUGE_VAL;
+const std::array<PressNumber, 11> kPressNumbers = {{
+    {"strokes_per_min", &PressProfile::strokes_per_min, 0.1, false, 120, false},
+    {"start_angle_deg", &PressProfile::start_angle_deg, 0, false, 360, true},
+    {"stroke_in", &PressProfile::stroke_in, 0, true, kNoEnd, false},
+    {"rod_in", &PressProfile::rod_in, 0, true, kNoEnd, false},
+    {"pressing_from_deg", &PressProfile::pressing_from_deg, 0, false, 360, false},
+    {"pressing_to_deg", &PressProfile::pressing_to_deg, 0, false, 360, false},
+    {"pressing_slowdown", &PressProfile::pressing_slowdown, 0, false, 0.9, false},
+    {"drift_per_cycle", &PressProfile::drift_per_cycle, -0.1, false, 0.1, false},
+    {"variation", &PressProfile::variation, 0, false, 0.5, false},
+    {"change_angle_deg", &PressProfile::change_angle_deg, 0, false, 360, true},
+    {"change_factor", &PressProfile::change_factor, 0, true, 4, false},
+}};
+// A stop or change this many revolutions on is beyond any run (and 360 x it stays exact).
+constexpr long kMostCycles = 1000000000;
+// 360 x pulses_per_degree must fit the four decades of position register 14 (<= 9999).
+constexpr long kMostPulsesPerDegree = 27;
+
+void apply_press_key(PressProfile& p, const std::string& key, const json& value,
+                     const std::string& k) {
+    for (const PressNumber& n : kPressNumbers) {
+        if (key == n.key) {
+            p.*n.field = number_in(value, k, n.least, n.least_open, n.most, n.most_open);
+            return;
+        }
+    }
+    if (key == "pulses_per_degree") {
+        p.pulses_per_degree = static_cast<int>(whole_in(value, k, 1, kMostPulsesPerDegree));
+    } else if (key == "reverse") {
+        p.reverse = flag(value, k);
+    } else if (key == "seed") {
+        p.seed = static_cast<unsigned>(whole_in(value, k, 0, 4294967295L));
+    } else if (key == "change_cycle") {
+        p.change_cycle = static_cast<int>(whole_in(value, k, 0, kMostCycles));
+    } else if (key == "stop_cycle") {
+        p.stop_cycle = static_cast<int>(whole_in(value, k, 0, kMostCycles));
+    } else if (key == "stop_angle_deg") {
+        p.stop_angle_deg = number_in(value, k, 0, false, 360, true);
+    } else {
+        throw ProfileError(fmt::format("{}: unknown key", k));
+    }
+}
+
+void apply_press(PressProfile& p, const json& j) {
+    if (!j.is_object()) {
+        throw ProfileError("press: expected an object (the keys of docs/machine-profile.md)");
+    }
+    for (const auto& [key, value] : j.items()) {
+        apply_press_key(p, key, value, "press." + key);
+    }
+    if (!(p.rod_in > p.stroke_in / 2)) {
+        throw ProfileError(fmt::format("press.rod_in: the connecting rod ({} in) must be longer "
+                                       "than the crank throw, stroke_in / 2 ({} in)",
+                                       p.rod_in, p.stroke_in / 2));
+    }
+    if (!(p.pressing_from_deg < p.pressing_to_deg)) {
+        throw ProfileError(fmt::format("press.pressing_from_deg: must be below pressing_to_deg "
+                                       "({} is not below {})",
+                                       p.pressing_from_deg, p.pressing_to_deg));
+    }
+}
+
+json press_json(const PressProfile& p) {
+    json j = json::object();
+    for (const PressNumber& n : kPressNumbers) {
+        j[n.key] = p.*n.field;
+    }
+    j["pulses_per_degree"] = p.pulses_per_degree;
+    j["reverse"] = p.reverse;
+    j["seed"] = p.seed;
+    j["change_cycle"] = p.change_cycle;
+    j["stop_cycle"] = p.stop_cycle;
+    j["stop_angle_deg"] = p.stop_angle_deg;
+    return j;
+}
+
+// "sync_drive": {"max_in_per_min": 5.4, "acceleration_in_per_s2": 0.5}
+void apply_sync_drive(SyncDrive& d, const json& j) {
+    if (!j.is_object()) {
+        throw ProfileError("sync_drive: expected an object");
+    }
+    for (const auto& [key, value] : j.items()) {
+        const std::string k = "sync_drive." + key;
+        if (key == "max_in_per_min") {
+            d.max_in_per_min = within(value, k, kMinSpeedInPerMin, kMaxSpeedInPerMin);
+        } else if (key == "acceleration_in_per_s2") {
+            d.acceleration_in_per_s2 = within(value, k, kMinAccelerationInPerS2, HUGE_VAL);
+        } else {
+            throw ProfileError(fmt::format("{}: unknown key", k));
+        }
+    }
+}
+
+// The longest processor 17 may wait for the crank: an hour (a press of 0.1 strokes a minute
+// takes ten minutes a revolution).
+constexpr double kMostSyncTimeoutS = 3600;
+
+bool apply_press_sync(MachineProfile& p, const std::string& key, const json& value) {
+    if (key == "press_sync") {
+        p.press_sync = flag(value, key);
+    } else if (key == "press") {
+        apply_press(p.press, value);
+    } else if (key == "sync_drive") {
+        apply_sync_drive(p.sync_drive, value);
+    } else if (key == "speed_sample_s") {
+        p.speed_sample_s = duration(value, key);
+    } else if (key == "sync_timeout_s") {
+        p.sync_timeout_s = within(value, key, 0, kMostSyncTimeoutS);
+    } else {
+        return false;
+    }
+    return true;
+}
+
+void put_press_sync(json& j, const MachineProfile& p) {
+    j["press_sync"] = p.press_sync;
+    j["press"] = press_json(p.press);
+    j["sync_drive"] = {{"max_in_per_min", p.sync_drive.max_in_per_min},
+                       {"acceleration_in_per_s2", p.sync_drive.acceleration_in_per_s2}};
+    j["speed_sample_s"] = p.speed_sample_s;
+    j["sync_timeout_s"] = p.sync_timeout_s;
+}
+
 } // namespace
 
 MachineProfile profile_from_json(const std::string& json_text, MachineProfile p) {
@@ -406,8 +565,8 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
                 throw ProfileError("separate_registers: expected true or false");
             }
             p.separate_registers = value.get<bool>();
-        } else if (apply_reading(p, key, value)) {
-            // an interpretation or an addition (below)
+        } else if (apply_reading(p, key, value) || apply_press_sync(p, key, value)) {
+            // an interpretation or an addition (above)
         } else {
             throw ProfileError(fmt::format("{}: unknown key", key));
         }
@@ -450,6 +609,7 @@ std::string profile_to_json(const MachineProfile& p) {
                                    : "instrument_shaft_74"},
            {"axes", axes}};
     put_readings(j, p);
+    put_press_sync(j, p);
     return j.dump(2) + "\n";
 }
 
