@@ -96,18 +96,38 @@ void LeadScrewAxis::command(int direction, int speed_position) {
     start_phase(u);
 }
 
+void LeadScrewAxis::command_follow(int direction, double speed, double acceleration) {
+    const int dir = direction >= 0 ? +1 : -1;
+    const double u_target = std::max(0.0, speed);
+    if (target_speed_ == kFollowing && u_target == target_u_ && dir == target_dir_ &&
+        acceleration == follow_accel_) {
+        return;
+    }
+    const double u = speed_in_per_s();
+    target_dir_ = dir;
+    target_speed_ = kFollowing;
+    target_u_ = u_target;
+    follow_accel_ = acceleration;
+    start_phase(u);
+}
+
 double LeadScrewAxis::accel_toward_target(double u) const {
     if (target_u_ == 0) {
+        if (target_speed_ == kFollowing) {
+            return u > 0 ? -follow_accel_ : 0.0; // the drive ramps down to a stand
+        }
         return u > 0 ? -profile_.braking_in_per_s2 : 0.0;
     }
+    const double accel =
+        target_speed_ == kFollowing ? follow_accel_ : profile_.acceleration_in_per_s2;
     if (u > 0 && d_ != target_dir_) {
-        return -profile_.acceleration_in_per_s2; // slow to rest before reversing
+        return -accel; // slow to rest before reversing
     }
     if (u < target_u_) {
-        return profile_.acceleration_in_per_s2;
+        return accel;
     }
     if (u > target_u_) {
-        return -profile_.acceleration_in_per_s2;
+        return -accel;
     }
     return 0.0;
 }
@@ -257,6 +277,7 @@ nlohmann::json LeadScrewAxis::save() const {
                           {"target_dir", target_dir_},
                           {"target_speed", target_speed_},
                           {"target_u", exact(target_u_)},
+                          {"follow_accel", exact(follow_accel_)},
                           {"next_time", exact(next_time_)},
                           {"next_is_impulse", next_is_impulse_},
                           {"impulses", impulses_},
@@ -284,6 +305,7 @@ void LeadScrewAxis::load(const nlohmann::json& j) {
     target_dir_ = read<int>(j, "target_dir") >= 0 ? +1 : -1;
     target_speed_ = read<int>(j, "target_speed");
     target_u_ = exact(member(j, "target_u"));
+    follow_accel_ = j.contains("follow_accel") ? exact(j.at("follow_accel")) : 0.0;
     next_time_ = exact(member(j, "next_time"));
     next_is_impulse_ = read<bool>(j, "next_is_impulse");
     impulses_ = read<long>(j, "impulses");
@@ -292,8 +314,10 @@ void LeadScrewAxis::load(const nlohmann::json& j) {
     last_crossing_s_ = exact(member(j, "last_crossing_s"));
     has_crossing_ = read<bool>(j, "has_crossing");
     nut_.load(member(j, "nut_78"));
-    if (target_speed_ < 0 || target_speed_ > 3) {
-        throw StateError("target_speed must be 0..3");
+    if (target_speed_ < 0 || target_speed_ > kFollowing ||
+        (target_speed_ == kFollowing && !(follow_accel_ > 0))) {
+        throw StateError("target_speed must be 0..3, or 4 (the follower drive) with its "
+                         "follow_accel");
     }
     set_limit_range();
 }

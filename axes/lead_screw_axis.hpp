@@ -105,6 +105,12 @@ public:
     // Takes effect at the current time; the speed changes at the profile's rates. Asking for
     // what the motor is already doing changes nothing.
     void command(int direction, int speed_position);
+    // The follower drive of press synchronisation (an addition after EP 0436887; SyncDrive in
+    // the profile): direction and a speed in in/s that the drive reaches at `acceleration`
+    // in/s2 (its rate limit). Asking for what it is already doing changes nothing; command()
+    // hands the axis back to the three-speed motor.
+    void command_follow(int direction, double speed_in_per_s, double acceleration);
+    bool following() const { return target_speed_ == kFollowing; }
 
     // When the next thing happens to this axis by itself: an impulse or the end of a speed
     // change. kNever at rest.
@@ -302,6 +308,8 @@ private:
     double target_u_ = 0;
     double next_time_ = kNever;
     bool next_is_impulse_ = false;
+    static constexpr int kFollowing = 4; // target_speed_ under the follower drive
+    double follow_accel_ = 0;            // its rate limit
     long impulses_ = 0;
     long h_lo_ = 0; // crossings inside the travel limits: h_lo_ <= h <= h_hi_ (odd)
     long h_hi_ = 0;

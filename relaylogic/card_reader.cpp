@@ -38,8 +38,9 @@ SensedCard sense_card(const cardreader::Card& card, const cardreader::CardLayout
                       bool refuse_double_punch) {
     SensedCard sensed;
     sensed.decoded = cardreader::decode(card, layout);
-    // A condition card is an addition: its double punches are bad punches in every profile.
-    if (sensed.decoded || refuse_double_punch || cardreader::is_condition_card(card, layout)) {
+    // Condition and sync cards are additions: their double punches are bad punches in every
+    // profile.
+    if (sensed.decoded || refuse_double_punch || cardreader::is_extension_card(card, layout)) {
         return sensed;
     }
     // As a 1952 reader: every punched row of a digit column picks its relay. The orders are

@@ -68,6 +68,7 @@ ControlCabinet::ControlCabinet(axes::MachineProfile profile, const cardreader::C
         circuits_.back()->plant.measure_by(profile_.measuring_chain); // Fig. 3
     }
     conditions_.install(tracer_, profile_); // EP 0640901's units, if the profile has them
+    sync_.install(tracer_, profile_);       // EP 0436887's press and units, likewise
 }
 
 void ControlCabinet::attach(MachineObserver* observer) {
@@ -76,6 +77,9 @@ void ControlCabinet::attach(MachineObserver* observer) {
 
 void ControlCabinet::schedule(double t, EventKind kind, int axis) {
     queue_.push(Event{t, seq_++, kind, axis, cards_read_});
+    if (kind == EventKind::reference_block) {
+        ++blocks_queued_;
+    }
 }
 
 std::string ControlCabinet::card_name() const {
@@ -88,7 +92,9 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     deck_ = &deck;
     apply_faults(deck);
     MachineObserver* observer = tracer_.observer();
-    if (resuming_) {
+    if (resuming_ && sync_.present()) {
+        resume_tape(deck_taken_);
+    } else if (resuming_) {
         // The cards read before the saved one went through the reader already.
         for (long i = 0; i < cards_read_; ++i) {
             if (!deck_->next()) {
@@ -102,6 +108,9 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
         pace_ == Pace::fast_forward && (observer == nullptr || !observer->follows_impulses());
     const bool alone = !jumping_ && observer == nullptr;
     const bool follows_motion = observer != nullptr && observer->follows_motion();
+    if (sync_.present()) {
+        schedule_block();
+    }
     schedule(now_, EventKind::feed);
     while (true) {
         if (interrupted()) {
@@ -110,12 +119,26 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
         if (jumping_) {
             plan_quiet_stretches();
         }
+        while (blocks_queued_ > 0 && !press_running() && !queue_.empty() &&
+               queue_.top().kind == EventKind::reference_block) {
+            queue_.pop(); // the deck is done: the reference blocks end with it, taking no time
+            --blocks_queued_;
+        }
         double t = queue_.empty() ? axes::kNever : queue_.top().t;
         for (std::size_t i = 0; i < circuits_.size(); ++i) {
             t = std::min(t, next_axis_event(i));
         }
         if (t == axes::kNever && unqueued_release_s_ > now_) {
             t = unqueued_release_s_; // the last release after a stop (release_after_stop)
+        }
+        if (press_running()) {
+            // The press turns on whatever the cabinet does; when nothing else can happen and
+            // nothing waits on it, the cabinet itself is idle (a sequence stall).
+            if (idle()) {
+                t = axes::kNever;
+            } else {
+                t = std::min(t, jumping_ ? press_quiet_end_ : sync_.press().next_event_time());
+            }
         }
         if (t == axes::kNever) {
             if (!deck_finished_ && !stop_) {
@@ -128,6 +151,11 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
         tracer_.set_time(t);
         if (jumping_) {
             catch_up(t);
+            if (press_running()) {
+                // The press's quiet edges before this instant, whatever the instant brings (at
+                // impulse level each was an instant of its own).
+                press_edges(std::nextafter(t, -axes::kNever));
+            }
         }
         bool moved = false;
         for (std::size_t i = 0; i < circuits_.size(); ++i) {
@@ -139,6 +167,9 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
                     on_impulse(c, *impulse);
                 }
             }
+        }
+        if (press_running()) {
+            press_edges(t);
         }
         if (moved && follows_motion) {
             std::array<double, 5> real{};
@@ -328,6 +359,24 @@ void ControlCabinet::plan_quiet_stretches() {
             quiet_end_.at(i) = after != axes::kNever ? after : c.plant.phase_end_time();
         }
     }
+    // The press: every edge of this segment of constant crank speed only counts, but the one
+    // that brings register 14 onto a held card's angle R.
+    press_quiet_ = 0;
+    if (press_running()) {
+        const axes::Press& press = sync_.press();
+        press_quiet_end_ = press.next_event_time();
+        if (press.next_event_is_pulse()) {
+            const long in_segment = press.pulses_by(axes::kNever);
+            const long quiet = sync_.quiet_edges(in_segment);
+            if (quiet > 0) {
+                press_quiet_ = quiet;
+                // The edge after the stretch, or the stretch's last edge when the segment ends
+                // with it (the segment's end then comes up as the press's next event).
+                press_quiet_end_ =
+                    quiet < in_segment ? press.pulse_time(quiet + 1) : press.pulse_time(quiet);
+            }
+        }
+    }
 }
 
 // Fast-forward: every axis takes its quiet impulses due by time t, in one jump each.
@@ -350,7 +399,10 @@ void ControlCabinet::catch_up(double t) {
 // loop does, without looking at anything else. Back to the main loop as soon as an impulse
 // does more than count.
 void ControlCabinet::run_impulses() {
-    const double queued = queue_.empty() ? axes::kNever : queue_.top().t;
+    double queued = queue_.empty() ? axes::kNever : queue_.top().t;
+    if (press_running()) {
+        queued = std::min(queued, sync_.press().next_event_time()); // the press's edge first
+    }
     const std::size_t n = circuits_.size();
     while (true) {
         std::size_t first = 0;
@@ -400,6 +452,11 @@ void ControlCabinet::handle(const Event& e) {
     if (stop_ && e.kind != EventKind::feed) {
         return; // master switch open: the cabinet is dead
     }
+    if (e.kind == EventKind::reference_block) {
+        --blocks_queued_;
+        reference_block(); // the blocks run on whatever card is in the reader
+        return;
+    }
     if (e.kind != EventKind::feed && e.card != cards_read_) {
         return; // an action of a card the zeroizing circuit has already cleared
     }
@@ -414,7 +471,7 @@ void ControlCabinet::handle(const Event& e) {
         relays_pick();
         break;
     case EventKind::second_bank:
-        for (std::size_t i = 0; i < circuits_.size() && !condition_card_; ++i) {
+        for (std::size_t i = 0; i < circuits_.size() && !condition_card_ && !sync_card_; ++i) {
             for (int k = 0; k < circuits_[i]->order.start_speed; ++k) {
                 schedule(now_ + k * profile_.stepping_switch_step_s, EventKind::speed_step_252,
                          static_cast<int>(i));
@@ -443,6 +500,11 @@ void ControlCabinet::handle(const Event& e) {
     case EventKind::action_done:
         acknowledge(e.axis);
         break;
+    case EventKind::reference_block:
+        break; // taken above
+    case EventKind::sync_release:
+        sync_release();
+        break;
     }
 }
 
@@ -458,8 +520,20 @@ void ControlCabinet::feed() {
          {channel_294_, channel_298_, channel_300_, channel_302_, channel_304_}) {
         tracer_.set(channel, 0);
     }
-    card_ = deck_->next();
+    card_ = next_card();
     condition_card_ = false;
+    sync_card_ = false;
+    if (!card_ && sync_.present() && sync_.scp().pending()) {
+        const SynchronisationProcessor& scp = sync_.scp();
+        machine_stop(StopReason::sync_refused, std::nullopt,
+                     fmt::format("card {} (number {:04}): a sync card with no motion card after "
+                                 "it: the deck ends (its orders are for the motion card that "
+                                 "follows it; sync cards are an addition after EP 0436887, "
+                                 "Mitsubishi)",
+                                 scp.pending_card(), scp.pending_number()),
+                     "sync lamp (an addition)");
+        return;
+    }
     if (!card_ && conditions_.stored()) {
         const BufferPair& p =
             conditions_.buffer().pair(conditions_.buffer().first(PairState::stored));
@@ -524,9 +598,34 @@ void ControlCabinet::first_bank() {
     }
     previous_number_ = orders_.number;
     tracer_.set(card_number_check_, static_cast<std::uint32_t>(orders_.number));
+    if (sync_.present() && tape_index_ < tape_numbers_.size()) {
+        tape_numbers_.at(tape_index_) = orders_.number;
+    }
     if (orders_.kind == cardreader::CardKind::condition) {
         condition_card();
         return;
+    }
+    if (orders_.kind == cardreader::CardKind::sync) {
+        sync_card();
+        return;
+    }
+    if (sync_.present() && sync_.scp().pending()) {
+        // Speed synchronisation of an axis this card does not move cannot be followed.
+        const SynchronisationProcessor& scp = sync_.scp();
+        for (Axis a : cardreader::kAxes) {
+            if (scp.pending_order().travel_per_pulse.at(cardreader::axis_index(a)) &&
+                orders_.axis(a).check == 0) {
+                machine_stop(StopReason::sync_refused, a,
+                             fmt::format("{}: sync card {} (number {:04}) orders speed "
+                                         "synchronisation of the {} axis, which this card does "
+                                         "not move (check 0) (sync cards are an addition after "
+                                         "EP 0436887, Mitsubishi)",
+                                         card_name(), scp.pending_card(), scp.pending_number(),
+                                         axis_name(a)),
+                             "sync lamp (an addition)");
+                return;
+            }
+        }
     }
     if (auto refusal = conditions_.refuse_unmoved(orders_, cards_read_)) {
         machine_stop(StopReason::condition_refused, std::nullopt, *refusal,
@@ -538,6 +637,234 @@ void ControlCabinet::first_bank() {
     }
     // The brushes have sensed the card; the holding relays pick a relay's operate time later.
     schedule(now_ + profile_.relay_operate_s, EventKind::relays_pick);
+}
+
+// The reader takes the next card: from the deck, or, after a loop card sent it back, again
+// from the cards it has taken (press synchronisation keeps them, as a ribbon made into an
+// endless loop keeps its cards).
+std::optional<cardreader::Card> ControlCabinet::next_card() {
+    if (!sync_.present()) {
+        return deck_->next();
+    }
+    if (replay_ < tape_.size()) {
+        tape_index_ = replay_++;
+        return tape_.at(tape_index_);
+    }
+    std::optional<cardreader::Card> card = deck_->next();
+    if (card) {
+        ++deck_taken_;
+        tape_.push_back(*card);
+        tape_numbers_.push_back(-1); // known once the first bank has sensed it
+        tape_index_ = tape_.size() - 1;
+        replay_ = tape_.size();
+    }
+    return card;
+}
+
+// Resuming a run with press synchronisation: the cards the reader had taken from the deck are
+// taken again, their numbers read, so that a loop card finds its way back.
+void ControlCabinet::resume_tape(long taken) {
+    std::vector<cardreader::Card> saved_tape;
+    for (long i = 0; i < taken; ++i) {
+        std::optional<cardreader::Card> card = deck_->next();
+        if (!card) {
+            throw cardreader::DeckError(fmt::format(
+                "the deck has {} cards; the saved state resumes after card {}", i, taken));
+        }
+        const cardreader::DecodeResult decoded = cardreader::decode(*card, layout_);
+        tape_.push_back(*card);
+        tape_numbers_.push_back(decoded ? decoded.orders.number : -1);
+    }
+}
+
+// A sync card (an addition after EP 0436887): no axis moves; its orders wait in readers 60 and
+// 62 for the motion card after it, or, a loop card, it sends the reader back at the end of its
+// card cycle.
+void ControlCabinet::sync_card() {
+    sync_card_ = true;
+    if (!sync_.present()) {
+        machine_stop(StopReason::sync_refused, std::nullopt,
+                     fmt::format("{}, column {}: a sync card (an addition after EP 0436887, "
+                                 "Mitsubishi): profile {} has no press synchronisation; the "
+                                 "built-in profile parsons-extended has it",
+                                 card_name(), layout_.extension_column, profile_.name),
+                     "card reader 134 check lamp (an addition)");
+        return;
+    }
+    if (orders_.sync.loop) {
+        return; // at the end of its card cycle (read_complete)
+    }
+    SynchronisationProcessor& scp = sync_.scp();
+    if (scp.pending()) {
+        machine_stop(StopReason::sync_refused, std::nullopt,
+                     fmt::format("{}: a second sync card before one motion card (card {}, "
+                                 "number {:04}, waits already; sync cards are an addition after "
+                                 "EP 0436887, Mitsubishi)",
+                                 card_name(), scp.pending_card(), scp.pending_number()),
+                     "sync lamp (an addition)");
+        return;
+    }
+    scp.take(orders_.sync, cards_read_, orders_.number);
+}
+
+// The seed's M99: the reader goes back to the card numbered loop_to, loop_count times; the
+// card-number check then expects that number next.
+void ControlCabinet::loop_card() {
+    const cardreader::SyncOrder& o = orders_.sync;
+    ++cycles_;
+    const auto it = loops_left_.find(tape_index_);
+    const int left = it == loops_left_.end() ? o.loop_count : it->second;
+    if (left <= 0) {
+        loops_left_.erase(tape_index_); // done: armed again if the reader comes round again
+        return;
+    }
+    std::optional<std::size_t> target;
+    for (std::size_t j = tape_index_; j-- > 0;) {
+        if (tape_numbers_.at(j) == o.loop_to) {
+            target = j;
+            break;
+        }
+    }
+    if (!target) {
+        machine_stop(StopReason::sync_refused, std::nullopt,
+                     fmt::format("{}: a loop card to card number {:04}, which the deck does not "
+                                 "hold before it (the seed's M99; sync cards are an addition "
+                                 "after EP 0436887, Mitsubishi)",
+                                 card_name(), o.loop_to),
+                     "sync lamp (an addition)");
+        return;
+    }
+    loops_left_[tape_index_] = left - 1;
+    replay_ = *target;
+    previous_number_ = (o.loop_to + 9999) % 10000;
+    if (loop_backs_ > 0) {
+        const double cycle = now_ - last_loop_back_s_;
+        shortest_cycle_s_ = loop_backs_ == 1 ? cycle : std::min(shortest_cycle_s_, cycle);
+        longest_cycle_s_ = loop_backs_ == 1 ? cycle : std::max(longest_cycle_s_, cycle);
+    } else {
+        first_loop_back_s_ = now_;
+    }
+    last_loop_back_s_ = now_;
+    ++loop_backs_;
+}
+
+// Detector edges due by time t: in fast-forward the quiet ones in one jump, then the one due now.
+void ControlCabinet::press_edges(double t) {
+    axes::Press& press = sync_.press();
+    if (jumping_ && press_quiet_ > 0) {
+        const long n = std::min(press_quiet_, press.pulses_by(t));
+        if (n > 0) {
+            const double at = press.pulse_time(n);
+            const axes::DetectorEdge last = press.skip_pulses(n);
+            sync_.on_edges(n, last, at);
+            press_quiet_ -= n;
+        }
+    }
+    if (press.next_event_time() <= t) {
+        if (auto edge = press.advance_to(t)) {
+            if (sync_.on_edge(*edge, t)) {
+                // Detector 61 conducts; 60's hold relay drops a relay's time later.
+                schedule(t + profile_.relay_operate_s, EventKind::sync_release);
+            }
+        }
+    }
+}
+
+void ControlCabinet::schedule_block() {
+    schedule(static_cast<double>(block_) * profile_.speed_sample_s, EventKind::reference_block);
+}
+
+// A reference block of Fig. 6: the speeds processor 63 computed last block go to the drives,
+// speed register 11 is read, 63 computes the next; and the wait is timed (sync_timeout).
+void ControlCabinet::reference_block() {
+    if (deck_finished_ || stop_) {
+        return;
+    }
+    SynchronisationProcessor& scp = sync_.scp();
+    const int pulses = sync_.sample_speed();
+    if (scp.reference_block(pulses, profile_.sync_drive.max_in_per_min / 60.0)) {
+        for (auto& c : circuits_) {
+            if (scp.speed_synced(c->axis)) {
+                update_motor(*c);
+            }
+        }
+    }
+    const double timeout = profile_.sync_timeout_s;
+    if (scp.holding() && now_ - scp.hold_since() >= timeout) {
+        machine_stop(StopReason::sync_timeout, std::nullopt,
+                     fmt::format("{}: the card waited {:.1f} s for crank 21 to reach {} deg and "
+                                 "it did not (crank at {:.1f} deg{}); synchronisation control "
+                                 "processor 17 gave up after sync_timeout_s {:.1f} s (press "
+                                 "synchronisation is an addition after EP 0436887, Mitsubishi)",
+                                 card_name(), now_ - scp.hold_since(),
+                                 scp.target_pulses() / sync_.press().profile().pulses_per_degree,
+                                 sync_.press().angle_deg(),
+                                 sync_.press().stopped() ? ", motor 22 stopped" : "", timeout),
+                     "sync lamp (an addition)");
+        return;
+    }
+    if (!scp.holding() && now_ - sync_.last_edge_s() >= timeout) {
+        for (const auto& c : circuits_) {
+            if (c->powered && scp.speed_synced(c->axis)) {
+                machine_stop(StopReason::sync_timeout, c->axis,
+                             fmt::format("{}, {}: speed-synchronised, and detector 10 gave no "
+                                         "pulse for {:.1f} s (crank at {:.1f} deg{}): the axis "
+                                         "stands; synchronisation control processor 17 gave up "
+                                         "after sync_timeout_s {:.1f} s (press synchronisation "
+                                         "is an addition after EP 0436887, Mitsubishi)",
+                                         card_name(), axis_name(c->axis),
+                                         now_ - sync_.last_edge_s(), sync_.press().angle_deg(),
+                                         sync_.press().stopped() ? ", motor 22 stopped" : "",
+                                         timeout),
+                             "sync lamp (an addition)");
+                return;
+            }
+        }
+    }
+    ++block_;
+    schedule_block();
+}
+
+void ControlCabinet::sync_release() {
+    SynchronisationProcessor& scp = sync_.scp();
+    if (!scp.holding()) {
+        return;
+    }
+    waited_s_ += now_ - scp.hold_since();
+    scp.release();
+    update_motors();
+    for (auto& c : circuits_) {
+        evaluate(*c);
+    }
+}
+
+// The cabinet waits on the press: a card held for its angle, or a speed-synchronised axis
+// powered (its speed is the press's).
+bool ControlCabinet::waiting_on_press() const {
+    const SynchronisationProcessor& scp = sync_.scp();
+    if (scp.holding()) {
+        return true;
+    }
+    for (const auto& c : circuits_) {
+        if (c->powered && scp.speed_synced(c->axis)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// Nothing can happen but the press turning and the reference blocks: no axis moves, no other
+// event is queued, and nothing waits on the press.
+bool ControlCabinet::idle() const {
+    if (queue_.size() != static_cast<std::size_t>(blocks_queued_) || unqueued_release_s_ > now_) {
+        return false;
+    }
+    for (std::size_t i = 0; i < circuits_.size(); ++i) {
+        if (next_axis_event(i) != axes::kNever) {
+            return false;
+        }
+    }
+    return !waiting_on_press();
 }
 
 // A condition card (an addition after EP 0640901): no axis moves; converter UMS enters its
@@ -635,16 +962,28 @@ void ControlCabinet::relays_pick() {
         conditions_.spindle_from_card(orders_.spindle, now_);
         conditions_.arm(cards_read_); // PFR supplies each stored condition to PRG
     }
+    if (sync_.present()) {
+        sync_.scp().arm(); // a sync card's orders into readers 60 and 62
+    }
 }
 
 void ControlCabinet::read_complete() {
     reading_complete_ = true;
     tracer_.set(reader_feeding_, 0);
-    if (condition_card_) {
+    if (condition_card_ || sync_card_) {
         reading_complete_ = false;
+        if (sync_card_ && orders_.sync.loop) {
+            loop_card();
+            if (stop_) {
+                return;
+            }
+        }
         tracer_.set(channel_304_, 1); // nothing to move: the reader indexes the next card
         schedule(now_, EventKind::feed);
         return;
+    }
+    if (sync_.present() && sync_.scp().hold_unless_at(sync_.position_register().value(), now_)) {
+        return; // position reader 60 holds the card's motion until the crank reaches R
     }
     update_motors();
     for (auto& c : circuits_) {
@@ -654,7 +993,8 @@ void ControlCabinet::read_complete() {
 
 bool ControlCabinet::live(const AxisCircuit& c) const {
     return balancing_.master_switch_closed() && reading_complete_ && !c.stopped &&
-           !c.speed_switch.off() && c.sequence_switch.closed(shaft_.position());
+           !c.speed_switch.off() && c.sequence_switch.closed(shaft_.position()) &&
+           !(sync_.present() && sync_.scp().holding());
 }
 
 bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
@@ -978,6 +1318,9 @@ void ControlCabinet::zeroize() {
             [](const ActionRecord& a, const ActionRecord& b) { return a.tripped_s < b.tripped_s; });
         conditions_.zeroize(); // channel 294 clears PFR and PRG too
     }
+    if (sync_.present()) {
+        sync_.scp().clear(); // and readers 60 and 62
+    }
     tracer_.set(channel_304_, 1); // indexes card reader 134 to the next card
     reading_complete_ = false;
     update_motors();
@@ -992,7 +1335,14 @@ void ControlCabinet::update_motor(AxisCircuit& c) {
     if (auto impulse = c.plant.advance_to(now_)) {
         on_impulse(c, *impulse); // never let an impulse due now go uncounted
     }
-    c.plant.command(c.direction, on ? c.speed_switch.position() : 0);
+    if (on && sync_.present() && c.speed_switch.position() == 1 &&
+        sync_.scp().speed_synced(c.axis)) {
+        // Speed synchronisation: speed 1 is the follower drive at processor 63's speed.
+        c.plant.command_follow(c.direction, sync_.scp().output(c.axis),
+                               profile_.sync_drive.acceleration_in_per_s2);
+    } else {
+        c.plant.command(c.direction, on ? c.speed_switch.position() : 0);
+    }
     c.set_powered(on);
 }
 
@@ -1030,6 +1380,7 @@ void ControlCabinet::machine_stop(StopReason reason, std::optional<Axis> axis,
         timings_.back().end_s = now_;
     }
     queue_ = {};
+    blocks_queued_ = 0;
     unqueued_release_s_ = -axes::kNever;
     update_motors();
     if (tracer_.observer() != nullptr) {
@@ -1097,7 +1448,66 @@ nlohmann::json ControlCabinet::capture() const {
                           {"card_times", times},
                           {"faults", faults},
                           {"conditions", conditions_.save()},
-                          {"actions", actions_to_json(actions_)}};
+                          {"actions", actions_to_json(actions_)},
+                          {"sync", capture_sync()}};
+}
+
+nlohmann::json ControlCabinet::capture_sync() const {
+    if (!sync_.present()) {
+        return nullptr;
+    }
+    using axes::exact;
+    nlohmann::json loops = nlohmann::json::array();
+    for (const auto& [index, left] : loops_left_) {
+        loops.push_back({index, left});
+    }
+    return {{"units", sync_.save()},
+            {"deck_cards_taken", deck_taken_},
+            {"replay", replay_},
+            {"tape_index", tape_index_},
+            {"loops_left", loops},
+            {"cycles", cycles_},
+            {"loop_backs", loop_backs_},
+            {"first_loop_back_s", exact(first_loop_back_s_)},
+            {"last_loop_back_s", exact(last_loop_back_s_)},
+            {"shortest_cycle_s", exact(shortest_cycle_s_)},
+            {"longest_cycle_s", exact(longest_cycle_s_)},
+            {"waited_s", exact(waited_s_)},
+            {"reference_block", block_}};
+}
+
+void ControlCabinet::resume_sync(const nlohmann::json& j) {
+    using axes::exact;
+    using axes::member;
+    using axes::read;
+    if (!sync_.present()) {
+        if (!j.is_null()) {
+            throw axes::StateError("the saved machine has a press; this profile has none");
+        }
+        return;
+    }
+    if (j.is_null()) {
+        throw axes::StateError("the saved machine has no press; this profile has one");
+    }
+    sync_.load(member(j, "units"));
+    deck_taken_ = read<long>(j, "deck_cards_taken");
+    replay_ = read<std::size_t>(j, "replay");
+    tape_index_ = read<std::size_t>(j, "tape_index");
+    loops_left_.clear();
+    for (const auto& l : member(j, "loops_left")) {
+        loops_left_[l.at(0).get<std::size_t>()] = l.at(1).get<int>();
+    }
+    cycles_ = read<long>(j, "cycles");
+    loop_backs_ = read<long>(j, "loop_backs");
+    first_loop_back_s_ = exact(member(j, "first_loop_back_s"));
+    last_loop_back_s_ = exact(member(j, "last_loop_back_s"));
+    shortest_cycle_s_ = exact(member(j, "shortest_cycle_s"));
+    longest_cycle_s_ = exact(member(j, "longest_cycle_s"));
+    waited_s_ = exact(member(j, "waited_s"));
+    block_ = read<long>(j, "reference_block");
+    if (deck_taken_ < 0 || replay_ > static_cast<std::size_t>(deck_taken_) || block_ < 1) {
+        throw axes::StateError("sync: deck_cards_taken, replay and reference_block out of range");
+    }
 }
 
 void ControlCabinet::resume(const nlohmann::json& j) {
@@ -1126,6 +1536,7 @@ void ControlCabinet::resume(const nlohmann::json& j) {
     }
     conditions_.load(j.contains("conditions") ? j.at("conditions") : nlohmann::json());
     actions_ = actions_from_json(j.contains("actions") ? j.at("actions") : nlohmann::json::array());
+    resume_sync(j.contains("sync") ? j.at("sync") : nlohmann::json());
     effects_.clear();
     for (const auto& e : member(j, "faults")) {
         effects_.push_back(FaultEffect{read<std::string>(e, "fault"), read<bool>(e, "acted"),
@@ -1151,6 +1562,23 @@ RunResult ControlCabinet::result() const {
     r.actions = actions_;
     if (conditions_.present()) {
         r.tool_in_spindle = conditions_.ale().tool_in_spindle();
+    }
+    if (sync_.present()) {
+        PressResult p;
+        p.revolution = sync_.press().revolution();
+        p.crank_angle_deg = sync_.press().angle_deg();
+        p.position_register = sync_.position_register().value();
+        p.press_stopped = sync_.press().stopped();
+        p.cycles = cycles_;
+        p.loop_backs = loop_backs_;
+        if (loop_backs_ >= 2) {
+            p.mean_cycle_s =
+                (last_loop_back_s_ - first_loop_back_s_) / static_cast<double>(loop_backs_ - 1);
+            p.shortest_cycle_s = shortest_cycle_s_;
+            p.longest_cycle_s = longest_cycle_s_;
+        }
+        p.waited_s = waited_s_;
+        r.press = p;
     }
     for (std::size_t i = 0; i < circuits_.size(); ++i) {
         const AxisCircuit& c = *circuits_[i];

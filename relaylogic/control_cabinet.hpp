@@ -25,8 +25,10 @@
 #include "relaylogic/balancing_circuit.hpp"
 #include "relaylogic/condition_units.hpp"
 #include "relaylogic/faults.hpp"
+#include "relaylogic/sync_units.hpp"
 
 #include <csignal>
+#include <map>
 #include <memory>
 #include <optional>
 #include <queue>
@@ -54,6 +56,21 @@ struct CardTiming {
     double end_s = 0;
 };
 
+// Press synchronisation (an addition after EP 0436887): the press and the job's cycles.
+struct PressResult {
+    int revolution = 0;         // the crank's revolution (1 = the first)
+    double crank_angle_deg = 0; // where crank 21 stood at the last detector edge taken
+    int position_register = 0;  // register 14, detector pulses
+    bool press_stopped = false; // motor 22 stopped (the profile's stop)
+    long cycles = 0;            // how many times the job reached its loop card (M99)
+    long loop_backs = 0;        // how many times the reader went back
+    // Time between two loop-backs: the job's cycle (none with fewer than two loop-backs).
+    std::optional<double> mean_cycle_s;
+    std::optional<double> shortest_cycle_s;
+    std::optional<double> longest_cycle_s;
+    double waited_s = 0; // machine time cards spent held by position reader 60
+};
+
 struct RunResult {
     bool completed = false;
     long cards_read = 0;
@@ -65,6 +82,7 @@ struct RunResult {
     // Condition cards (an addition): the actions acknowledged, and the tool in the spindle.
     std::vector<ActionRecord> actions;
     std::optional<int> tool_in_spindle; // when the profile has a tool changer
+    std::optional<PressResult> press;   // when the profile has press synchronisation
 };
 
 // How the cabinet spends its time. Both give the same machine, event for event: impulse level
@@ -113,7 +131,9 @@ private:
         read_complete,
         delay_258_release,
         shaft_step,
-        action_done, // an action of ALE is done (axis: its channel)
+        action_done,     // an action of ALE is done (axis: its channel)
+        reference_block, // press synchronisation: a reference block of Fig. 6 (any card)
+        sync_release,    // detector 61 conducted: 60's hold relay drops
     };
     struct Event {
         double t;
@@ -157,6 +177,19 @@ private:
     bool conditions_met(AxisCircuit& c);
     void acknowledge(int channel);
     void tell(int channel, ConditionEventKind kind);
+    std::optional<cardreader::Card> next_card();
+    void sync_card();
+    void loop_card();
+    void press_edges(double t);
+    void reference_block();
+    void sync_release();
+    bool press_running() const { return sync_.present() && !deck_finished_ && !stop_; }
+    bool waiting_on_press() const;
+    bool idle() const;
+    void schedule_block();
+    void resume_tape(long taken);
+    nlohmann::json capture_sync() const;
+    void resume_sync(const nlohmann::json& j);
     void update_motors();
     void update_motor(AxisCircuit& c);
     void machine_stop(StopReason reason, std::optional<cardreader::Axis> axis,
@@ -211,6 +244,28 @@ private:
     bool zeroize_waiting_ = false;
     double motion_end_s_ = 0;
     std::vector<ActionRecord> actions_;
+    // Press synchronisation (an addition): the units, the card being a sync card, the cards the
+    // reader has taken (a loop card sends it back among them, as round a ribbon made into an
+    // endless loop), the reference blocks, fast-forward's quiet detector edges.
+    SyncUnits sync_;
+    bool sync_card_ = false;
+    std::vector<cardreader::Card> tape_;
+    std::vector<int> tape_numbers_;
+    std::size_t replay_ = 0;     // the next card comes from tape_[replay_] if within it
+    std::size_t tape_index_ = 0; // the card in the reader
+    long deck_taken_ = 0;        // cards taken from the deck itself
+    std::map<std::size_t, int> loops_left_;
+    long cycles_ = 0;
+    long loop_backs_ = 0;
+    double last_loop_back_s_ = 0;
+    double first_loop_back_s_ = 0;
+    double shortest_cycle_s_ = 0;
+    double longest_cycle_s_ = 0;
+    double waited_s_ = 0;
+    long block_ = 1;        // the reference block queued next: at block_ x speed_sample_s
+    int blocks_queued_ = 0; // reference blocks in the queue (0 or 1)
+    long press_quiet_ = 0;  // fast-forward: edges that only count, ahead of the press
+    double press_quiet_end_ = axes::kNever; // ... and when the press's next event that matters is
 
     SignalId reader_card_;
     SignalId reader_feeding_;

@@ -37,6 +37,8 @@ enum class StopReason : std::uint8_t {
     soft_limit,
     condition_not_met, // a condition card's condition was not met by the end of its motion card
     condition_refused, // the cabinet cannot take a condition card (profile, deck, buffer)
+    sync_timeout,      // press synchronisation: the crank never came, or stood (an addition)
+    sync_refused,      // the cabinet cannot take a sync card (profile, deck)
     interrupted,       // not a check: the operator stopped the run (SIGINT, SIGTERM)
 };
 

@@ -20,6 +20,10 @@ std::string_view stop_reason_name(StopReason r) {
         return "condition_not_met";
     case StopReason::condition_refused:
         return "condition_refused";
+    case StopReason::sync_timeout:
+        return "sync_timeout";
+    case StopReason::sync_refused:
+        return "sync_refused";
     case StopReason::interrupted:
         return "interrupted";
     }

@@ -40,6 +40,17 @@
 //                before one card share one condition card (five to a card). They come after
 //                all eight flips (two equal triples flip a hole back), so that inputs kept
 //                before condition cards existed replay the same deck.
+//   then         1 byte, press synchronisation (an addition after EP 0436887): bit 0 on turns
+//                the profile's press on (parsons-extended's, 6 strokes a minute, 2 pulses a
+//                degree); bits 1-2: 1 + b % 4 sync cards of 3 bytes each: the motion card they
+//                stand before (b % cards), the angle R (b * 360 / 256; none when b % 4 == 3:
+//                speed sync only), the speed-synchronised axis (b % 5, none when b / 5 % 3 == 0)
+//                with a travel per pulse of 10 + b * 2 hundred-thousandths; bit 3 a loop card
+//                at the end back to the first card, 1 + (b >> 4) % 3 times; bit 4 the press
+//                slows 30 % while pressing; bit 5 a lasting change to 0.7 of its speed in the
+//                first revolution at 100 deg; bit 6 motor 22 stops in the second revolution at
+//                200 deg; bit 7 the crank turns backwards. Two sync cards before one motion
+//                card, or one before nothing, are the cabinet's to refuse.
 // Missing bytes read as zero: an empty input is one card on which nothing moves, and every
 // reading the patent's.
 #include "tests/fuzz/fuzz_targets.hpp"
@@ -232,6 +243,90 @@ std::vector<CardOrders> with_conditions(Recipe& recipe, std::vector<CardOrders> 
     return deck;
 }
 
+// The press byte and its sync cards, put before motion cards of a deck that may hold condition
+// cards already; the whole deck is numbered again from its first card's number.
+std::vector<CardOrders> with_sync(Recipe& recipe, std::vector<CardOrders> deck,
+                                  axes::MachineProfile& profile) {
+    const std::uint8_t bits = recipe.next();
+    if ((bits & 0x01) == 0) {
+        return deck;
+    }
+    profile.press_sync = true;
+    profile.press.strokes_per_min = 6;
+    profile.press.pulses_per_degree = 2;
+    profile.press.reverse = (bits & 0x80) != 0;
+    if (bits & 0x10) {
+        profile.press.pressing_slowdown = 0.3;
+    }
+    if (bits & 0x20) {
+        profile.press.change_cycle = 1;
+        profile.press.change_angle_deg = 100;
+        profile.press.change_factor = 0.7;
+    }
+    if (bits & 0x40) {
+        profile.press.stop_cycle = 2;
+        profile.press.stop_angle_deg = 200;
+    }
+    profile.sync_timeout_s = 30;
+    std::vector<std::size_t> motion_at;
+    for (std::size_t i = 0; i < deck.size(); ++i) {
+        if (deck.at(i).kind == CardKind::motion) {
+            motion_at.push_back(i);
+        }
+    }
+    std::vector<std::vector<SyncOrder>> before(deck.size());
+    const int count = 1 + (bits >> 1) % 4;
+    for (int n = 0; n < count; ++n) {
+        const std::size_t card = motion_at.at(recipe.next() % motion_at.size());
+        SyncOrder o;
+        const int angle = recipe.next();
+        if (angle % 4 != 3) {
+            o.position_sync = true;
+            o.angle_deg = angle * 360 / 256;
+        }
+        const int axis = recipe.next();
+        const int travel = recipe.next();
+        if (axis / 5 % 3 != 0 || !o.position_sync) {
+            o.travel_per_pulse.at(static_cast<std::size_t>(axis % 5)) = 10 + travel * 2;
+        }
+        before.at(card).push_back(o);
+    }
+    std::vector<CardOrders> out;
+    for (std::size_t i = 0; i < deck.size(); ++i) {
+        // Before the card and any condition cards standing before it.
+        std::size_t k = i;
+        while (k < deck.size() && deck.at(k).kind != CardKind::motion) {
+            ++k;
+        }
+        // i is a motion card or the first of the condition cards before one: its sync cards
+        // go first.
+        if (i == 0 || deck.at(i - 1).kind == CardKind::motion) {
+            for (const SyncOrder& o : before.at(k < deck.size() ? k : i)) {
+                CardOrders card;
+                card.kind = CardKind::sync;
+                card.sync = o;
+                out.push_back(card);
+            }
+        }
+        out.push_back(deck.at(i));
+    }
+    const int first = deck.front().number;
+    if (bits & 0x08) {
+        CardOrders loop;
+        loop.kind = CardKind::sync;
+        loop.sync.loop = true;
+        loop.sync.loop_to = first;
+        loop.sync.loop_count = 1 + (bits >> 4) % 3;
+        out.push_back(loop);
+    }
+    int number = first;
+    for (CardOrders& o : out) {
+        o.number = number;
+        number = (number + 1) % 10000;
+    }
+    return out;
+}
+
 std::vector<Card> deck_from_recipe(Recipe& recipe, axes::MachineProfile& profile) {
     const int count = 1 + recipe.next() % kMaxCards;
     recipe.next(); // the profile byte, read by the caller
@@ -259,7 +354,8 @@ std::vector<Card> deck_from_recipe(Recipe& recipe, axes::MachineProfile& profile
         flips.push_back({card, column, recipe.next()});
     }
     std::vector<Card> cards;
-    for (const CardOrders& orders : with_conditions(recipe, std::move(motion), from, profile)) {
+    for (const CardOrders& orders :
+         with_sync(recipe, with_conditions(recipe, std::move(motion), from, profile), profile)) {
         EncodeResult punched = encode(orders, fig8_layout());
         if (!punched) {
             throw Finding("machine: the keypunch refused orders the layout holds: " +

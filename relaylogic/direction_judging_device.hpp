@@ -1,0 +1,44 @@
+// Direction judging device 13 of EP 0436887 (Mitsubishi; seeds/000, claim 3): an addition, not
+// in the 1952 patent. Detector 10 on crank 21 gives a two-phase signal, phases A and B in
+// quadrature; device 13 tells from each edge which way the crank turned and sends the pulse to
+// position register 14 as a count up or a count down.
+//
+// Built as relays: relay A and relay B follow the two phases; each edge changes one of them.
+// Forward the pair steps 00 -> 10 -> 11 -> 01 -> 00 (axes/press.hpp), backward the other way
+// round, so the edge is forward exactly when the new pair is the old pair's successor in that
+// ring. An edge that changes both phases at once (a pulse lost between them) is no count at
+// all: the device cannot tell the sense, and the count is missed.
+#pragma once
+
+#include "axes/press.hpp"
+#include "relaylogic/tracer.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace parsons::relaylogic {
+
+class DirectionJudgingDevice {
+public:
+    explicit DirectionJudgingDevice(Tracer& tracer);
+    // The relays A and B stand at the phases of count c (the run's start, a loaded state).
+    void stand_at(long count);
+    // An edge of detector 10: +1 count up, -1 count down, 0 no count (both phases changed or
+    // neither did).
+    int judge(const axes::DetectorEdge& edge);
+    // Fast-forward: after edges all in one sense, the relays stand at the last one's phases.
+    void jump_to(long count, int sense);
+    int last_sense() const { return sense_; }
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
+
+private:
+    Tracer& tracer_;
+    int a_ = 0;
+    int b_ = 0;
+    int sense_ = +1;
+    SignalId relay_a_;
+    SignalId relay_b_;
+    SignalId sense_relay_;
+};
+
+} // namespace parsons::relaylogic

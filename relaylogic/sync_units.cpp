@@ -1,0 +1,117 @@
+#include "relaylogic/sync_units.hpp"
+
+#include "axes/state_json.hpp"
+
+#include <cmath>
+
+namespace parsons::relaylogic {
+
+void SyncUnits::install(Tracer& tracer, const axes::MachineProfile& profile) {
+    if (!profile.press_sync) {
+        return;
+    }
+    tracer_ = &tracer;
+    press_ = std::make_unique<axes::Press>(profile.press);
+    crank_21_ = tracer.define("press", "crank_21.angle",
+                              "crank 21 of the press: angle from top dead centre, tenths of a "
+                              "degree (EP 0436887 Fig. 2A)",
+                              "21", 12);
+    die_20_ = tracer.define("press", "die_20.height",
+                            "die 20: height above bottom dead centre, thousandths of an inch "
+                            "(Fig. 2B)",
+                            "20", 16);
+    motor_22_ =
+        tracer.define("press", "motor_22.running",
+                      "motor 22 turns the crank (the control does not drive it)", "22", 1, 1);
+    device_13_ = std::make_unique<DirectionJudgingDevice>(tracer);
+    register_14_ =
+        std::make_unique<PositionRegister>(tracer, 360 * profile.press.pulses_per_degree);
+    register_11_ = std::make_unique<SpeedRegister>(tracer);
+    scp_ = std::make_unique<SynchronisationProcessor>(tracer, profile.press.pulses_per_degree,
+                                                      profile.speed_sample_s);
+    // Lined up with top dead centre before the run (switch 16A at the top, then the crank
+    // turned to its start): the register reads the crank's angle.
+    device_13_->stand_at(press_->count());
+    const long d16 = register_14_->device_16();
+    register_14_->preset(static_cast<int>(((press_->count() % d16) + d16) % d16));
+}
+
+bool SyncUnits::on_edge(const axes::DetectorEdge& edge, double t) {
+    last_edge_s_ = t;
+    const int sense = device_13_->judge(edge);
+    register_14_->count(sense);
+    if (sense != 0) {
+        register_11_->pulse();
+    }
+    if (tracer_->observer() != nullptr) {
+        show_press();
+    }
+    return scp_->detector_61(register_14_->value());
+}
+
+void SyncUnits::on_edges(long n, const axes::DetectorEdge& last, double t) {
+    if (n <= 0) {
+        return;
+    }
+    last_edge_s_ = t;
+    const int sense = press_->speed_deg_per_s() < 0 ? -1 : +1;
+    device_13_->jump_to(last.count, sense);
+    register_14_->count_many(n, sense);
+    register_11_->count_many(n);
+    if (tracer_->observer() != nullptr) {
+        show_press();
+    }
+}
+
+long SyncUnits::quiet_edges(long limit) const {
+    if (!scp_->holding()) {
+        return limit;
+    }
+    // The edge that brings register 14 onto R makes 61 conduct: every edge before it is quiet.
+    const long d = register_14_->device_16();
+    const long v = register_14_->value();
+    const long target = scp_->target_pulses();
+    const long ahead =
+        press_->speed_deg_per_s() < 0 ? ((v - target) % d + d) % d : ((target - v) % d + d) % d;
+    const long to_target = ahead == 0 ? d : ahead;
+    return std::min(limit, to_target - 1);
+}
+
+void SyncUnits::show_press() {
+    tracer_->set(crank_21_,
+                 static_cast<std::uint32_t>(std::lround(press_->angle_deg() * 10)) % 3600U);
+    tracer_->set(die_20_, static_cast<std::uint32_t>(std::lround(press_->die_height_in() * 1000)));
+    tracer_->set(motor_22_, press_->stopped() ? 0U : 1U);
+}
+
+nlohmann::json SyncUnits::save() const {
+    if (!present()) {
+        return nullptr;
+    }
+    return {{"press", press_->save()},
+            {"direction_judging_13", device_13_->save()},
+            {"position_register_14", register_14_->save()},
+            {"speed_register_11", register_11_->save()},
+            {"synchronisation_processor_17", scp_->save()},
+            {"last_edge_s", axes::exact(last_edge_s_)}};
+}
+
+void SyncUnits::load(const nlohmann::json& j) {
+    if (!present()) {
+        if (!j.is_null()) {
+            throw axes::StateError("the saved machine has a press; this profile has none");
+        }
+        return;
+    }
+    if (j.is_null()) {
+        throw axes::StateError("the saved machine has no press; this profile has one");
+    }
+    press_->load(axes::member(j, "press"));
+    device_13_->load(axes::member(j, "direction_judging_13"));
+    register_14_->load(axes::member(j, "position_register_14"));
+    register_11_->load(axes::member(j, "speed_register_11"));
+    scp_->load(axes::member(j, "synchronisation_processor_17"));
+    last_edge_s_ = axes::exact(axes::member(j, "last_edge_s"));
+}
+
+} // namespace parsons::relaylogic
