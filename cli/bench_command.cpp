@@ -11,6 +11,10 @@
 //   deck generation .................... a 100,000-station template deck, written
 //   peak memory ........................ resident size of `parsons run` on 1,000 / 10,000 /
 //                                        100,000 cards (a child process each)
+//   press cycles ....................... a press-feeder cycle looped 1,000 times under
+//                                        parsons-extended, fast-forward (press sync, an
+//                                        addition after EP 0436887): seconds, and the peak
+//                                        memory of 100 and 1,000 cycles (flat)
 // A benchmark, not a test: it asserts nothing about time. --json for the same as JSON.
 #include "cli/commands.hpp"
 #include "cli/output_file.hpp"
@@ -59,6 +63,7 @@ struct BenchOptions {
     std::string child_report; // internal: where the child writes its peak resident size
     bool child_impulse_level = false;
     std::string child_trace;
+    std::string child_profile;
 };
 
 double median(std::vector<double> v) {
@@ -118,6 +123,57 @@ void write_deck(const std::string& path, int cards, const std::array<Shuttle, 5>
             at.at(i) = to;
         }
         sink->write(cardreader::encode(o, cardreader::fig8_layout()).card);
+    }
+    sink.reset();
+    file.commit();
+}
+
+// The press job (an addition after EP 0436887), `cycles` times round its loop card: wait for
+// crank 21 at 30 deg, the table out 0.600 in at 0.00125 in a detector pulse (speed sync), back
+// at the three-speed motor's speed 1, loop. Each cycle is one revolution of the press.
+void write_press_deck(const std::string& path, int cycles) {
+    OutputFile file(path);
+    cardreader::DeckOptions options;
+    options.file_name = path;
+    auto sink = cardreader::open_card_sink(file.stream(), options);
+    auto idle = [](CardOrders& o) {
+        for (std::size_t i = 1; i < 5; ++i) {
+            o.axes.at(i) = move(500, 500, 3, static_cast<cardreader::SequencePattern>(1U << i));
+        }
+    };
+    CardOrders sync;
+    sync.kind = cardreader::CardKind::sync;
+    sync.number = 1;
+    sync.sync.position_sync = true;
+    sync.sync.angle_deg = 30;
+    sync.sync.travel_per_pulse.at(0) = 125;
+    CardOrders out;
+    out.number = 2;
+    out.axes.at(0) = move(500, 1100, 1, 0b00001);
+    idle(out);
+    CardOrders back;
+    back.number = 3;
+    back.axes.at(0) = move(1100, 500, 1, 0b00001);
+    idle(back);
+    CardOrders loop;
+    loop.kind = cardreader::CardKind::sync;
+    loop.number = 4;
+    loop.sync.loop = true;
+    loop.sync.loop_to = 1;
+    loop.sync.loop_count = cycles - 1;
+    // Before the loop every axis stands at 0.500: a first card takes them there.
+    CardOrders first;
+    first.number = 0;
+    first.axes.at(0) = move(0, 500, 2, 0b00001);
+    for (std::size_t i = 1; i < 5; ++i) {
+        first.axes.at(i) = move(0, 500, 2, static_cast<cardreader::SequencePattern>(1U << i));
+    }
+    for (const CardOrders& o : {first, sync, out, back, loop}) {
+        const cardreader::EncodeResult e = cardreader::encode(o, cardreader::fig8_layout());
+        if (!e) {
+            throw std::logic_error("press benchmark deck: " + *e.error);
+        }
+        sink->write(e.card);
     }
     sink.reset();
     file.commit();
@@ -217,7 +273,7 @@ double own_peak_mb() {
 // deck as `parsons run DECK -q` does and writes its own peak (VmHWM) to FILE, in MB. (The
 // kernel's ru_maxrss of a child would include this process's size from before the exec.)
 double child_peak_mb(const std::string& deck, const std::string& report,
-                     const std::vector<std::string>& extra = {}) {
+                     const std::vector<std::string>& extra) {
     std::vector<std::string> args = {"/proc/self/exe", "bench", "--child-deck", deck,
                                      "--child-report", report};
     args.insert(args.end(), extra.begin(), extra.end());
@@ -274,6 +330,7 @@ ExitCode run_bench(const BenchOptions& o) {
         RunRequest child = quiet_run(o.child_deck);
         child.impulse_level = o.child_impulse_level;
         child.trace = o.child_trace;
+        child.profile = o.child_profile;
         const ExitCode code = run_deck(child);
         std::ofstream(o.child_report) << own_peak_mb() << "\n";
         return code;
@@ -293,7 +350,7 @@ ExitCode run_bench(const BenchOptions& o) {
                     {"cores", sysconf(_SC_NPROCESSORS_ONLN)},
                     {"build", PARSONS_BUILD_TYPE}};
     j["runs"] = o.runs;
-    Stages stages(11 + (o.scaling ? 4 : 0));
+    Stages stages(12 + (o.scaling ? 4 : 0));
     auto say = [&o, &stages](const std::string& s) {
         stages.clear();
         if (!o.json) {
@@ -414,12 +471,37 @@ ExitCode run_bench(const BenchOptions& o) {
         stages.begin(fmt::format("peak memory, {} cards", cards));
         const std::string deck = path(fmt::format("mem{}.cbn", cards));
         write_deck(deck, cards, kShortMoves);
-        const double peak = child_peak_mb(deck, path("peak.txt"));
+        const double peak = child_peak_mb(deck, path("peak.txt"), {});
         memory[std::to_string(cards)] = peak;
         line += fmt::format("{}{:.1f} MB ({} cards)", line.empty() ? "" : ", ", peak, cards);
     }
     j["peak_memory_mb"] = memory;
     say(fmt::format("peak memory of parsons run  {}", line));
+
+    // Press synchronisation: 1,000 press cycles in fast-forward, and memory flat in cycles.
+    stages.begin("press cycles");
+    write_press_deck(path("press.cbn"), 1000);
+    RunRequest press = quiet_run(path("press.cbn"));
+    press.profile = "parsons-extended";
+    const Timed pc = time_run(press, o.runs, stages);
+    if (!pc.result.press || pc.result.press->cycles != 1000) {
+        throw std::logic_error("the press benchmark deck did not run 1,000 cycles");
+    }
+    write_press_deck(path("press100.cbn"), 100);
+    const double peak_100 = child_peak_mb(path("press100.cbn"), path("peak.txt"),
+                                          {"--child-profile", "parsons-extended"});
+    const double peak_1000 =
+        child_peak_mb(path("press.cbn"), path("peak.txt"), {"--child-profile", "parsons-extended"});
+    j["press_cycles"] = {{"cycles", 1000},
+                         {"cards", pc.result.cards_read},
+                         {"machine_seconds", pc.result.machine_seconds},
+                         {"seconds", pc.seconds},
+                         {"peak_mb_100_cycles", peak_100},
+                         {"peak_mb_1000_cycles", peak_1000}};
+    say(fmt::format("press cycles, fast-forward  {:>8.3f} s         (1,000 cycles, {} cards, "
+                    "{:.0f} s of machine time; peak {:.1f} MB at 100 cycles, {:.1f} MB at 1,000)",
+                    pc.seconds, pc.result.cards_read, pc.result.machine_seconds, peak_100,
+                    peak_1000));
 
     if (o.scaling) {
         // How cost grows: decks of short moves, 10^3 .. 10^6 cards, each run once in a child
@@ -432,7 +514,7 @@ ExitCode run_bench(const BenchOptions& o) {
             const std::string deck = path("scale.cbn");
             write_deck(deck, cards, kShortMoves);
             double peak = 0;
-            const double ff_s = seconds([&] { peak = child_peak_mb(deck, path("peak.txt")); });
+            const double ff_s = seconds([&] { peak = child_peak_mb(deck, path("peak.txt"), {}); });
             const double il_s =
                 seconds([&] { child_peak_mb(deck, path("peak.txt"), {"--child-impulse-level"}); });
             double vcd_s = 0;
@@ -488,6 +570,7 @@ void add_bench_command(CLI::App& app, Command& selected) {
     cmd->add_option("--child-report", o->child_report)->group("");
     cmd->add_flag("--child-impulse-level", o->child_impulse_level)->group("");
     cmd->add_option("--child-trace", o->child_trace)->group("");
+    cmd->add_option("--child-profile", o->child_profile)->group("");
     cmd->footer(exit_codes_help({{ExitCode::ok, "the figures were printed"}}) +
                 "Examples:\n  parsons bench\n  parsons bench --runs 7 --json > bench.json");
     cmd->callback([&selected, o] { selected = [o] { return run_bench(*o); }; });

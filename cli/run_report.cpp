@@ -120,6 +120,23 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const AppliedProfile&
         j["actions"] = actions;
         j["actions_overlap_seconds"] = time_s(saved);
     }
+    // Press synchronisation (an addition after EP 0436887): only in a profile that has it.
+    if (r.press) {
+        const relaylogic::PressResult& p = *r.press;
+        auto seconds = [](const std::optional<double>& v) {
+            return v ? json(time_s(*v)) : json(nullptr);
+        };
+        j["press"] = json{{"revolution", p.revolution},
+                          {"crank_angle_deg", std::round(p.crank_angle_deg * 1000) / 1000},
+                          {"position_register_14", p.position_register},
+                          {"press_stopped", p.press_stopped},
+                          {"cycles", p.cycles},
+                          {"loop_backs", p.loop_backs},
+                          {"mean_cycle_seconds", seconds(p.mean_cycle_s)},
+                          {"shortest_cycle_seconds", seconds(p.shortest_cycle_s)},
+                          {"longest_cycle_seconds", seconds(p.longest_cycle_s)},
+                          {"waited_seconds", time_s(p.waited_s)}};
+    }
     return j;
 }
 
@@ -166,6 +183,19 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
     }
     if (r.tool_in_spindle) {
         line(fmt::format("  tool           {} in the spindle", *r.tool_in_spindle));
+    }
+    if (r.press) {
+        const relaylogic::PressResult& p = *r.press;
+        line(fmt::format("  press          revolution {}, crank at {:.2f} deg{}; {} cycle{} of "
+                         "the job{}; cards held {:.3f} s for the crank",
+                         p.revolution, p.crank_angle_deg, p.press_stopped ? " (stopped)" : "",
+                         p.cycles, p.cycles == 1 ? "" : "s",
+                         p.mean_cycle_s
+                             ? fmt::format(", {:.3f} s each (shortest {:.3f}, "
+                                           "longest {:.3f})",
+                                           *p.mean_cycle_s, *p.shortest_cycle_s, *p.longest_cycle_s)
+                             : "",
+                         p.waited_s));
     }
     for (Axis a : cardreader::kAxes) {
         const auto& x = r.axes.at(cardreader::axis_index(a));

@@ -322,7 +322,31 @@ TEST_CASE("Report: docs/report.md names every key a report carries", "[cli][repo
     REQUIRE(run_parsons("run " + q(dir.str("w.cbn")) + " -q --cut " + q(dir.str("w.svg")) +
                         " --report " + q(dir.str("d.json")))
                 .exit_code == 0);
-    for (const char* name : {"a.json", "b.json", "c.json", "d.json"}) {
+    // Press synchronisation (an addition): a sync card, a move, a loop, under parsons-extended.
+    write_bytes(dir.path("press.csv"), "card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq\n"
+                                       "1,sync,position,30\n"
+                                       "2,0,table,+,1,0.200,0.250,0.300,0.300,1\n"
+                                       "2,0,cross,+,3,,,0.000,0.000,2\n"
+                                       "2,0,vertical,+,3,,,0.000,0.000,3\n"
+                                       "2,0,swivel,+,3,,,0.000,0.000,4\n"
+                                       "2,0,tilt,+,3,,,0.000,0.000,5\n"
+                                       "3,0,table,-,1,0.050,0.020,0.000,0.300,1\n"
+                                       "3,0,cross,+,3,,,0.000,0.000,2\n"
+                                       "3,0,vertical,+,3,,,0.000,0.000,3\n"
+                                       "3,0,swivel,+,3,,,0.000,0.000,4\n"
+                                       "3,0,tilt,+,3,,,0.000,0.000,5\n"
+                                       "4,sync,loop,1,2\n");
+    const auto pressed =
+        run_parsons("run " + q(dir.str("press.csv")) + " -q --profile parsons-extended --report " +
+                    q(dir.str("e.json")));
+    INFO(pressed.output);
+    REQUIRE(pressed.exit_code == 0);
+    const auto press_report = read_json(dir.path("e.json"));
+    CHECK(press_report["press"]["cycles"] == 3);
+    CHECK(press_report["press"]["loop_backs"] == 2);
+    CHECK(press_report["press"]["mean_cycle_seconds"].get<double>() ==
+          Approx(30.0).margin(1.0 / 48));
+    for (const char* name : {"a.json", "b.json", "c.json", "d.json", "e.json"}) {
         collect_keys(read_json(dir.path(name)), keys);
     }
     // The reports exercised what they were meant to.
@@ -351,13 +375,13 @@ TEST_CASE("Progress: a line on standard error for bench, run and gen on a termin
     const auto tty = on_terminal(bench);
     REQUIRE(tty.exit_code == 0);
     CHECK_THAT(tty.output, Catch::Contains("\r[#####"));
-    CHECK_THAT(tty.output, Catch::Contains("fast-forward, short moves (4/11)"));
-    CHECK_THAT(tty.output, Catch::Contains("peak memory, 100000 cards (11/11)"));
+    CHECK_THAT(tty.output, Catch::Contains("fast-forward, short moves (4/12)"));
+    CHECK_THAT(tty.output, Catch::Contains("press cycles (12/12)"));
     CHECK_THAT(tty.output, Catch::Contains("deck generation"));
     const auto piped = run_parsons(bench);
     REQUIRE(piped.exit_code == 0);
     CHECK(piped.output.find('\r') == std::string::npos);
-    CHECK(piped.output.find("(4/11)") == std::string::npos);
+    CHECK(piped.output.find("(4/12)") == std::string::npos);
 
     const auto run_tty = on_terminal("run " + q(dir.str("deck.csv")));
     REQUIRE(run_tty.exit_code == 0);
