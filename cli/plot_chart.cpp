@@ -2,6 +2,8 @@
 #include "cli/plot_svg.hpp"
 
 #include "cardreader/card_svg.hpp"
+#include "cli/plot_geometry.hpp"
+#include "cli/plot_press_lanes.hpp"
 
 #include <fmt/format.h>
 
@@ -27,13 +29,22 @@ using Point = PlotSvgRecorder::Point;
 //   |  speed switch step line (right scale)      | speed 3
 //   +--------------------------------------------+ off
 //   cross ... vertical ... swivel ... tilt
+//   crank 21 ... die 20 ... registers 14, 11 ... reader 60 ...   <- with a press only
 //   0     100     200 ...  machine time (s)
 
 namespace {
 
-constexpr double kWidth = 1100;
-constexpr double kLeft = 86;           // the plot area, px
-constexpr double kRight = kWidth - 92; // leaves room for the speed scale
+using plot::kCardColour;
+using plot::kGridColour;
+using plot::kLeft;
+using plot::kRight;
+using plot::kStopColour;
+using plot::kTextColour;
+using plot::kWidth;
+using plot::nice_ticks;
+using plot::Scale;
+using plot::Ticks;
+
 constexpr double kPanelHeight = 150;
 constexpr double kPanelGap = 42;
 constexpr double kBottomMargin = 62;
@@ -41,48 +52,6 @@ constexpr double kBottomMargin = 62;
 constexpr const char* kPositionColour = "#1f4e9c";
 constexpr const char* kSpeedColour = "#f28e2b";
 constexpr const char* kSlowDownColour = "#c4530b";
-constexpr const char* kStopColour = "#d62728";
-constexpr const char* kCardColour = "#9a9a9a";
-constexpr const char* kGridColour = "#e4e4e4";
-constexpr const char* kTextColour = "#222222";
-
-// A linear map from data to page coordinates.
-struct Scale {
-    double d0, d1, p0, p1;
-    double operator()(double v) const { return p0 + (v - d0) * (p1 - p0) / (d1 - d0); }
-};
-
-struct Ticks {
-    std::vector<double> values;
-    int decimals = 0;
-};
-
-// Round steps of 1, 2, 2.5 or 5 times a power of ten, about `target` of them over [lo, hi].
-Ticks nice_ticks(double lo, double hi, int target) {
-    Ticks ticks;
-    const double raw = (hi - lo) / target;
-    if (!(raw > 0) || !std::isfinite(raw)) {
-        ticks.values.push_back(lo);
-        return ticks;
-    }
-    const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-    double step = 10 * magnitude;
-    double multiple = 10;
-    for (double m : {1.0, 2.0, 2.5, 5.0}) {
-        if (m * magnitude >= raw * 0.999) {
-            step = m * magnitude;
-            multiple = m;
-            break;
-        }
-    }
-    ticks.decimals =
-        std::max(0, static_cast<int>(-std::floor(std::log10(step) + 1e-9))) + (multiple == 2.5);
-    for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + step * 1e-9; k += 1) {
-        const double v = k * step;
-        ticks.values.push_back(std::fabs(v) < step * 1e-9 ? 0.0 : v);
-    }
-    return ticks;
-}
 
 // Word-wraps text into at most max_lines lines of about width characters ("..." if cut).
 std::vector<std::string> wrap(std::string_view text, std::size_t width, std::size_t max_lines) {
@@ -188,9 +157,12 @@ struct StopMark {
 
 class ChartWriter {
 public:
-    ChartWriter(double t_end, std::size_t message_lines)
-        : tx_{0, t_end > 0 ? t_end : 1.0, kLeft, kRight}, time_ticks_(nice_ticks(0, tx_.d1, 10)),
-          legend_y_(80 + 16 * static_cast<double>(message_lines)), first_top_(legend_y_ + 62) {
+    // press: the run's press (an addition), drawn in lanes under the panels if present.
+    ChartWriter(double t_end, std::size_t message_lines, const PressTrace& press)
+        : press_(press), tx_{0, t_end > 0 ? t_end : 1.0, kLeft, kRight},
+          time_ticks_(nice_ticks(0, tx_.d1, 10)),
+          legend_y_(80 + 16 * static_cast<double>(message_lines)),
+          first_top_(legend_y_ + 62 + 20 * press_legend_rows(press)) {
         svg_.reserve(64 * 1024);
     }
 
@@ -201,6 +173,7 @@ public:
     void cards(const std::vector<CardLine>& cards);
     void panel(std::size_t i, const Panel& p, const std::vector<CardLine>& cards,
                const std::optional<StopMark>& stop);
+    void press(const std::vector<CardLine>& cards, const std::optional<StopMark>& stop);
     void time_axis(const std::optional<StopMark>& stop);
     std::string finish() {
         fmt::format_to(out(), "</svg>\n");
@@ -213,13 +186,17 @@ private:
     double top(std::size_t i) const {
         return first_top_ + static_cast<double>(i) * (kPanelHeight + kPanelGap);
     }
-    double height() const { return top(cardreader::kAxisCount - 1) + kPanelHeight + kBottomMargin; }
+    // The panels' bottom, then the press lanes' (an addition; none in a 1952 run).
+    double panels_bottom() const { return top(cardreader::kAxisCount - 1) + kPanelHeight; }
+    double time_axis_y() const { return panels_bottom() + press_lanes_height(press_); }
+    double height() const { return time_axis_y() + kBottomMargin; }
     void polyline(const std::vector<std::vector<std::pair<double, double>>>& runs,
                   const char* attributes);
     void speed_line(const Panel& p, double bottom);
     void markers(const Panel& p, const Scale& ty);
     void trip_markers(const Panel& p, const Scale& ty);
 
+    const PressTrace& press_;
     std::string svg_;
     Scale tx_;
     Ticks time_ticks_;
@@ -241,6 +218,7 @@ void ChartWriter::begin() {
                        "\n",
                        i, kLeft - 7, top(i) - 13, kRight - kLeft + 14, kPanelHeight + 20);
     }
+    press_clip_paths(svg_, press_, panels_bottom() + kPanelGap);
     fmt::format_to(out(), "</defs>\n");
 }
 
@@ -322,6 +300,7 @@ void ChartWriter::legend(bool with_conditions) {
         x += 16;
         label("condition met (EP 0640901)");
     }
+    press_legend(svg_, press_, y + 20); // press synchronisation (an addition): a row of its own
 }
 
 // One label per card where there is room: "card N" when every card has room, else "N".
@@ -532,8 +511,23 @@ void ChartWriter::panel(std::size_t i, const Panel& p, const std::vector<CardLin
     fmt::format_to(out(), "</g>\n</g>\n");
 }
 
+// The press lanes (an addition after EP 0436887) under the panels, on their time axis.
+void ChartWriter::press(const std::vector<CardLine>& cards, const std::optional<StopMark>& stop) {
+    if (!press_.present()) {
+        return;
+    }
+    LaneFrame frame{tx_, &time_ticks_, panels_bottom() + kPanelGap, {}, std::nullopt};
+    for (const CardLine& c : cards) {
+        frame.card_x.push_back(c.x);
+    }
+    if (stop) {
+        frame.stop_x = tx_(stop->t);
+    }
+    press_lanes(svg_, press_, frame);
+}
+
 void ChartWriter::time_axis(const std::optional<StopMark>& stop) {
-    const double axis_y = top(cardreader::kAxisCount - 1) + kPanelHeight;
+    const double axis_y = time_axis_y();
     for (double v : time_ticks_.values) {
         fmt::format_to(out(),
                        R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" )"
@@ -566,7 +560,7 @@ std::string PlotSvgRecorder::svg() const {
     const double t_end = end_time();
     const std::vector<std::string> message =
         stop_ ? wrap(stop_->message, 140, 3) : std::vector<std::string>{};
-    ChartWriter chart(t_end, message.size());
+    ChartWriter chart(t_end, message.size(), press_);
     std::optional<StopMark> stop;
     if (stop_) {
         stop = StopMark{stop_t_, std::string(relaylogic::stop_reason_name(stop_->reason))};
@@ -606,6 +600,7 @@ std::string PlotSvgRecorder::svg() const {
         p.trips = &a.trips;
         chart.panel(i, p, cards, stop);
     }
+    chart.press(cards, stop);
     chart.time_axis(stop);
     return chart.finish();
 }

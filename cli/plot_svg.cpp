@@ -23,6 +23,10 @@ void PlotSvgRecorder::on_signal_defined(const relaylogic::SignalInfo& info, std:
     if (roles_.size() <= info.id) {
         roles_.resize(info.id + std::size_t{1});
     }
+    if (const auto slot = press_.define(info, initial)) {
+        roles_.at(info.id) = {Role::press, *slot};
+        return;
+    }
     const auto axis = cardreader::axis_named(info.scope);
     if (!axis) {
         return;
@@ -41,13 +45,17 @@ void PlotSvgRecorder::on_signal_defined(const relaylogic::SignalInfo& info, std:
     }
 }
 
-void PlotSvgRecorder::on_signal(double seconds, SignalId id, std::uint32_t /*old_value*/,
+void PlotSvgRecorder::on_signal(double seconds, SignalId id, std::uint32_t old_value,
                                 std::uint32_t new_value) {
     if (id >= roles_.size() || roles_[id].role == Role::none) {
         return;
     }
-    AxisTrace& a = axes_.at(roles_[id].axis);
     last_t_ = std::max(last_t_, seconds);
+    if (roles_[id].role == Role::press) {
+        press_.change(roles_[id].axis, seconds, old_value, new_value);
+        return;
+    }
+    AxisTrace& a = axes_.at(roles_[id].axis);
     if (roles_[id].role == Role::motor) {
         a.motor_on = new_value != 0;
         a.motor.push_back(Point{seconds, a.motor_on ? 1.0 : 0.0});
@@ -127,6 +135,7 @@ void PlotSvgRecorder::on_motion(double seconds, const std::array<double, 5>& rea
 
 void PlotSvgRecorder::on_card(double seconds, long index, const cardreader::CardOrders& orders) {
     cards_.push_back(CardMark{seconds, index, orders.number});
+    press_.card(seconds, orders);
     last_t_ = std::max(last_t_, seconds);
 }
 
@@ -138,6 +147,7 @@ void PlotSvgRecorder::on_stop(double seconds, const relaylogic::StopInfo& stop) 
 
 void PlotSvgRecorder::on_finish(double seconds) {
     last_t_ = std::max(last_t_, seconds);
+    press_.finish(seconds);
     for (AxisTrace& a : axes_) {
         if (a.latest && seconds > a.latest->t) {
             add_sample(a, Point{seconds, a.latest->x}); // at rest to the end

@@ -12,8 +12,14 @@
 // 4 * kMaxBuckets points per axis whatever the run's length, and the moments an axis starts
 // and stops are never lost (they are a bucket's first, last or extreme point). Speed-switch
 // steps, markers and cards are few (a handful per card) and are kept whole.
+//
+// A run with a press (press synchronisation, an addition after EP 0436887; parsons-extended)
+// has lanes under the panels on the same time axis: crank 21, die 20, registers 14 and 11,
+// reader 60's hold and processor 63's speeds, recorded from the "press" signals
+// (plot_press.hpp). A run without one draws exactly the chart it drew before them.
 #pragma once
 
+#include "cli/plot_press.hpp"
 #include "relaylogic/machine_observer.hpp"
 
 #include <array>
@@ -60,6 +66,8 @@ public:
         std::string label; // "event 7: lamp 3"
     };
     const std::vector<Trip>& trips(cardreader::Axis axis) const;
+    // The press lanes' record (present() is false in a run without a press).
+    const PressTrace& press() const { return press_; }
 
 private:
     struct Bucket {
@@ -83,10 +91,10 @@ private:
         long index = 0;
         int number = 0;
     };
-    enum class Role : std::uint8_t { none, speed_switch, motor };
+    enum class Role : std::uint8_t { none, speed_switch, motor, press };
     struct SignalRole {
         Role role = Role::none;
-        std::size_t axis = 0;
+        std::size_t axis = 0; // or, for Role::press, the press trace's slot
     };
 
     void add_sample(AxisTrace& a, Point p);
@@ -97,6 +105,7 @@ private:
     std::array<AxisTrace, cardreader::kAxisCount> axes_{};
     std::vector<SignalRole> roles_;
     std::vector<CardMark> cards_;
+    PressTrace press_;
     std::optional<relaylogic::StopInfo> stop_;
     double stop_t_ = 0;
     double bucket_s_ = 1.0 / 64;
