@@ -6,10 +6,16 @@
 // parsons-extended; the difference of their machine times is what the seed saves.
 #include "cli/commands.hpp"
 #include "cli/output_file.hpp"
+#include "cli/press_feeder.hpp"
+#include "cli/press_proof.hpp"
 #include "cli/two_tool.hpp"
 
+#include "axes/profile_json.hpp"
 #include "cardreader/card_svg.hpp"
 #include "cardreader/layout.hpp"
+#include "cli/deck_files.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <fmt/format.h>
 
@@ -75,6 +81,51 @@ ExitCode run_two_tool_demo(const std::string& dir) {
     return ExitCode::ok;
 }
 
+// The press-feeder job (press synchronisation, an addition after EP 0436887), both variants,
+// with the press slowing 25 % in the second cycle: the proof's figures side by side.
+ExitCode run_press_demo(const std::string& dir) {
+    fmt::print("\npress feeder (press synchronisation, an addition after EP 0436887; profile "
+               "parsons-extended): 3 cycles, the press slowing 25 % in cycle 2 at 180 deg\n");
+    for (bool speed_only : {false, true}) {
+        decks::PressFeederOptions o;
+        o.cycles = 3;
+        o.speed_only = speed_only;
+        const std::string deck =
+            dir + (speed_only ? "/press-feeder-speed-only.csv" : "/press-feeder.csv");
+        GeneratedPressJob g = generate_press_job(o, axes::extended_profile(), deck, "");
+        g.profile.press.change_cycle = 2;
+        g.profile.press.change_angle_deg = 180;
+        g.profile.press.change_factor = 0.75;
+        write_file(deck + ".slowing.json", axes::profile_to_json(g.profile));
+        RunRequest run;
+        run.input = deck;
+        run.profile = deck + ".slowing.json";
+        run.press_proof = deck + ".job.json";
+        run.report = deck + ".report.json";
+        run.quiet = true;
+        relaylogic::RunResult result;
+        const ExitCode code = run_deck(run, &result);
+        const auto report = nlohmann::json::parse(read_text_file(run.report));
+        const auto& p = report.at("press");
+        fmt::print("  {} ({}): smallest clearance {:.4f} in, least time margin {} s, {}\n", deck,
+                   g.job.variant, p.at("min_clearance_in").get<double>(),
+                   p.at("min_time_margin_s").dump(),
+                   p.at("collision").is_null()
+                       ? std::string("no collision")
+                       : fmt::format("COLLISION in cycle {} at {:.2f} s, crank {:.1f} deg",
+                                     p.at("collision").at("cycle").get<long>(),
+                                     p.at("collision").at("machine_seconds").get<double>(),
+                                     p.at("collision").at("crank_angle_deg").get<double>()));
+        if (code != ExitCode::ok && code != ExitCode::machine_stop) {
+            return code;
+        }
+        if (code == ExitCode::machine_stop && (!speed_only || result.stop)) {
+            throw std::logic_error("the demo's press-feeder deck did not run as planned");
+        }
+    }
+    return ExitCode::ok;
+}
+
 ExitCode run_demo(const std::string& dir) {
     make_folder(dir + "/cards");
     decks::JobDescription description;
@@ -111,10 +162,16 @@ ExitCode run_demo(const std::string& dir) {
     if (code == ExitCode::ok) {
         code = run_two_tool_demo(dir);
     }
+    if (code == ExitCode::ok) {
+        code = run_press_demo(dir);
+    }
     fmt::print("\nwrote {0}/naca2412.cbn (+ .job.json), {0}/cards/, {0}/report.json, "
                "{0}/plot.svg, {0}/cut.svg, {0}/trace.vcd (gtkwave), {0}/path.csv, "
                "{0}/centres.csv, and for two tools {0}/two-tool-boundary.csv and "
-               "{0}/two-tool-tripped.csv (each + .job.json, .report.json, .cut.svg)\n",
+               "{0}/two-tool-tripped.csv (each + .job.json, .report.json, .cut.svg), and for the "
+               "press feeder "
+               "{0}/press-feeder.csv and {0}/press-feeder-speed-only.csv (each + .job.json, "
+               ".profile.json, .slowing.json, .report.json)\n",
                dir);
     return code;
 }
