@@ -189,7 +189,24 @@ TEST_CASE("Output formats: every field, event kind, stop reason and signal of ru
         // Condition cards (an addition): their three lines, and condition_not_met.
         {q(source_path("decks/samples/condition-cards.csv")) + " --profile parsons-extended", 0},
         {q(dir.str("not-met.csv")) + " --profile parsons-extended", 3},
+        // Press synchronisation (an addition): a sync card (position and speed) and its motion
+        // card, and the same deck with a processor 17 too impatient for the crank.
+        {q(dir.str("press.csv")) + " --profile parsons-extended", 0},
+        {q(dir.str("press.csv")) + " --profile " + q(dir.str("impatient.json")), 3},
     };
+    // Card 1 waits for the crank at 30 deg and has the table follow it at 0.00150 in a pulse;
+    // card 2 takes the table out 0.3 in. With sync_timeout_s 1 the crank (12 deg/s from top
+    // dead centre) is still short of 30 deg when processor 17 gives up: sync_timeout.
+    write_bytes(dir.path("press.csv"), "card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq\n"
+                                       "1,sync,position,30\n"
+                                       "1,sync,speed,table,0.00150\n"
+                                       "2,0,table,+,1,0.100,0.200,0.300,0.300,1\n"
+                                       "2,0,cross,+,3,,,0.000,0.000,2\n"
+                                       "2,0,vertical,+,3,,,0.000,0.000,3\n"
+                                       "2,0,swivel,+,3,,,0.000,0.000,4\n"
+                                       "2,0,tilt,+,3,,,0.000,0.000,5\n");
+    write_bytes(dir.path("impatient.json"),
+                R"({"base": "parsons-extended", "sync_timeout_s": 1.0})");
     {
         std::string deck = read_bytes(source_path("decks/samples/condition-cards.csv"));
         const std::string row = "1,if,7,table,+,5.000,lamp,3";
@@ -207,9 +224,18 @@ TEST_CASE("Output formats: every field, event kind, stop reason and signal of ru
     CHECK(seen.lines > 1000);
     CHECK(seen.kinds == std::set<std::string>{"card", "stop", "finish", "condition_met",
                                               "action_started", "action_acknowledged"});
-    CHECK(seen.reasons == std::set<std::string>{"check_mismatch", "out_of_order_card",
-                                                "missed_impulse", "bad_punch", "soft_limit",
-                                                "sequence_stall", "condition_not_met"});
+    CHECK(seen.reasons == std::set<std::string>{
+                              "check_mismatch", "out_of_order_card", "missed_impulse", "bad_punch",
+                              "soft_limit", "sequence_stall", "condition_not_met", "sync_timeout"});
+    // The press's signals are in the stream, those of every edge and those of the sync card.
+    for (const char* name :
+         {"press.crank_21.angle", "press.die_20.height", "press.detector_10.phase_a",
+          "press.position_register_14", "press.speed_register_11.stored",
+          "press.position_reader_60.hold", "press.sync_position_detector_61",
+          "press.feed_speed_reader_62.table", "press.processor_63.table"}) {
+        INFO(name);
+        CHECK(seen.signals.count(name) == 1);
+    }
 
     const std::string section = doc_section("--events");
     const auto rows = documented(section);
@@ -230,7 +256,7 @@ TEST_CASE("Output formats: every field, event kind, stop reason and signal of ru
     parsons::relaylogic::ControlCabinet cabinet(parsons::axes::default_profile(),
                                                 parsons::cardreader::fig8_layout());
     cabinet.attach(&defined);
-    // ... and the condition units' (parsons-extended).
+    // ... and the condition units' and the press's (parsons-extended).
     parsons::relaylogic::ControlCabinet extended(parsons::axes::extended_profile(),
                                                  parsons::cardreader::fig8_layout());
     extended.attach(&defined);
