@@ -11,18 +11,17 @@
 //
 //   card 1     HOME: table to the retracted X, cross slide to the press line (no sync)
 //   card 2     CARRY-IN (Fig. 3 N01): cross slide to the carry-in conveyor (fixed speed)
-//   card 3     SYNC: position R = insert angle (30) + speed F on the table (N03)
-//   card 4     INSERT: table into the die zone (speed-synchronised), cross slide back to the
-//              press line (fixed speed) in the same card
-//   card 5     SYNC: speed F only (N05)
-//   card 6     RETRACT: table back out of the zone (speed-synchronised)
-//   card 7     SYNC: position R = take-out angle (190) + speed F (N06)
-//   card 8     TAKE-OUT: table into the die zone again (speed-synchronised)
-//   card 9     SYNC: speed F only (N08)
-//   card 10    CARRY-OUT: table out (speed-synchronised), cross slide to the carry-out
-//              conveyor (fixed speed)
-//   card 11    RETURN (N10): cross slide back to the press line (fixed speed, no sync)
-//   card 12    LOOP (N11, M99): back to card 2, cycles - 1 times
+//   card 3     cross slide back to the press line (the Y half of N03; fixed speed)
+//   cards 4, 5 SYNC position R = insert angle (30) + speed F; INSERT: table into the zone
+//   cards 6, 7 SYNC speed F only (N05); RETRACT: table back out of the zone
+//   cards 8, 9 SYNC position R = take-out angle (190) + speed F (N06); TAKE-OUT
+//   cards 10, 11 SYNC speed F only; CARRY-OUT: table out (the X half of N08)
+//   card 12    cross slide to the carry-out conveyor (the Y half of N08; fixed speed)
+//   card 13    RETURN (N10): cross slide back to the press line (fixed speed, no sync)
+//   card 14    LOOP (N11, M99): back to card 2, cycles - 1 times
+// Fig. 3's joint X-Y travels are split: in a 1952 card two axes running together must be
+// punched so that the one that stops first is known (col. 11's sequence), and the cross slide
+// is never speed-synchronised (below).
 // Clamp and unclamp (M15, M16) take no time of their own here: the card cycle between two
 // moves stands for them.
 //
@@ -38,7 +37,7 @@
 //
 // Emulation note: the cross slide has one slow-down field (layout fig8), so it cannot start on
 // speed 1 and still stop on speed 3: it is never speed-synchronised (the seed's F covers the
-// X-Y path); it runs at its fixed speeds in the same card as the table.
+// X-Y path); it runs at its fixed speeds on cards of its own.
 #pragma once
 
 #include "axes/machine_profile.hpp"
