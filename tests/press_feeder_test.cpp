@@ -115,7 +115,7 @@ TEST_CASE("Press feeder: the proof's clearance at one instant is the hand calcul
 }
 
 TEST_CASE("Press feeder: the generated deck passes check under the job's profile with no "
-          "warnings; run --press-proof reports the press block; a collision is exit 3",
+          "warnings, run --press-proof reports the press block, and a collision is exit 3",
           "[press_feeder][cli]") {
     TempDir dir;
     const std::string deck = dir.str("feeder.csv");
