@@ -34,15 +34,7 @@ constexpr double kLaneHeight = 64; // a lane with a scale
 constexpr double kBarHeight = 30;  // reader 60's bars
 constexpr double kLaneGap = 34;
 
-constexpr const char* kCrankColour = "#7b3294";
-constexpr const char* kDieColour = "#00897b";
-constexpr const char* kRegister14Colour = "#8c564b";
-constexpr const char* kRegister11Colour = "#e377c2";
-constexpr const char* kHoldColour = "#edc948";
-constexpr const char* kHoldEdge = "#a67c00";
-constexpr const char* kWaitColour = "#bbbbbb";
-constexpr std::array<const char*, cardreader::kAxisCount> kAxisColours = {
-    "#1f4e9c", "#59a14f", "#76b7b2", "#9c755f", "#bab0ac"};
+using namespace press_colours;
 
 enum class LaneKind : std::uint8_t { crank_21, die_20, register_14, register_11, reader_60, p63 };
 
@@ -385,76 +377,6 @@ std::vector<double> lane_tops(const std::vector<LaneSpec>& lanes, double top) {
     return tops;
 }
 
-// The legend entries, laid out in rows from kLeft; draws them if svg is given. Returns the rows.
-int legend_rows(std::string* svg, const PressTrace& press, double y) {
-    const auto lanes = lanes_of(press);
-    if (lanes.empty()) {
-        return 0;
-    }
-    struct Entry {
-        const char* glyph; // line, step, bar, mark
-        const char* colour;
-        const char* text;
-    };
-    std::vector<Entry> entries = {
-        {"line", kCrankColour, "crank 21 angle, deg"},
-        {"line", kDieColour, "die 20 height, in"},
-        {"line", kRegister14Colour, "position register 14, pulses"},
-        {"step", kRegister11Colour, "speed register 11 stored, pulses"},
-        {"bar", kHoldColour, "reader 60 holds a card for its angle R"},
-        {"mark", kHoldEdge, "detector 61: crank on R"},
-    };
-    if (press.any_speed_63()) {
-        entries.push_back({"step", kAxisColours[0], "processor 63 speed, in/min"});
-    }
-    int rows = 1;
-    double x = kLeft;
-    for (const Entry& e : entries) {
-        const double w = 30 + static_cast<double>(std::string_view(e.text).size()) * 6.9 + 26;
-        if (x + w - 26 > plot::kWidth - 8) {
-            ++rows;
-            x = kLeft;
-            y += 20;
-        }
-        if (svg != nullptr) {
-            const std::string_view g = e.glyph;
-            if (g == "line") {
-                fmt::format_to(out(*svg),
-                               R"(<polyline fill="none" stroke="{}" stroke-width="1.8" )"
-                               R"(points="{:.1f},{:.1f} {:.1f},{:.1f} {:.1f},{:.1f}"/>)"
-                               "\n",
-                               e.colour, x, y + 5, x + 16, y - 5, x + 16, y + 5);
-            } else if (g == "step") {
-                fmt::format_to(out(*svg),
-                               R"(<polyline fill="none" stroke="{}" stroke-width="1.8" )"
-                               R"(points="{:.1f},{:.1f} {:.1f},{:.1f} {:.1f},{:.1f} )"
-                               R"({:.1f},{:.1f}"/>)"
-                               "\n",
-                               e.colour, x, y + 4, x + 12, y + 4, x + 12, y - 5, x + 24, y - 5);
-            } else if (g == "bar") {
-                fmt::format_to(out(*svg),
-                               R"(<rect x="{:.1f}" y="{:.1f}" width="24" height="10" fill="{}" )"
-                               R"(stroke="{}" stroke-width="0.8"/>)"
-                               "\n",
-                               x, y - 5, e.colour, kHoldEdge);
-            } else {
-                fmt::format_to(out(*svg),
-                               R"(<path d="M{:.1f},{:.1f} l5,9 h-10 z" fill="{}" stroke="white" )"
-                               R"(stroke-width="0.8"/>)"
-                               "\n",
-                               x + 8, y - 5, e.colour);
-            }
-            fmt::format_to(out(*svg),
-                           R"(<text class="press-legend" x="{:.1f}" y="{:.1f}" font-size="12" )"
-                           R"(fill="{}">{}</text>)"
-                           "\n",
-                           x + 30, y + 4, plot::kTextColour, e.text);
-        }
-        x += w;
-    }
-    return rows;
-}
-
 } // namespace
 
 PagePoints thin_to_pixels(const PagePoints& points) {
@@ -492,10 +414,6 @@ double press_lanes_height(const PressTrace& press) {
     return h;
 }
 
-int press_legend_rows(const PressTrace& press) {
-    return legend_rows(nullptr, press, 0);
-}
-
 void press_clip_paths(std::string& svg, const PressTrace& press, double top) {
     const auto lanes = lanes_of(press);
     const auto tops = lane_tops(lanes, top);
@@ -506,10 +424,6 @@ void press_clip_paths(std::string& svg, const PressTrace& press, double top) {
                        "\n",
                        i, kLeft - 7, tops[i] - 3, kRight - kLeft + 14, lanes[i].height + 6);
     }
-}
-
-void press_legend(std::string& svg, const PressTrace& press, double y) {
-    legend_rows(&svg, press, y);
 }
 
 void press_lanes(std::string& svg, const PressTrace& press, const LaneFrame& frame) {

@@ -6,11 +6,25 @@
 #include "cli/plot_geometry.hpp"
 #include "cli/plot_press.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace parsons::cli {
+
+namespace press_colours { // the lanes' and their legend entries'
+inline constexpr const char* kCrankColour = "#7b3294";
+inline constexpr const char* kDieColour = "#00897b";
+inline constexpr const char* kRegister14Colour = "#8c564b";
+inline constexpr const char* kRegister11Colour = "#e377c2";
+inline constexpr const char* kHoldColour = "#edc948";
+inline constexpr const char* kHoldEdge = "#a67c00";
+inline constexpr const char* kWaitColour = "#bbbbbb";
+inline constexpr std::array<const char*, cardreader::kAxisCount> kAxisColours = {
+    "#1f4e9c", "#59a14f", "#76b7b2", "#9c755f", "#bab0ac"};
+
+} // namespace press_colours
 
 // Where the lanes stand and what crosses every one of them.
 struct LaneFrame {

@@ -164,9 +164,10 @@ TEST_CASE("Press plot: crank 21's values on the chart are the press's, and its s
     }
 }
 
-TEST_CASE("Press plot: die 20, register 14 and register 11 follow the crank; reader 60 holds each "
-          "card until detector 61 finds the crank on R",
-          "[press_plot]") {
+TEST_CASE(
+    "Press plot: die 20, register 14 and register 11 follow the crank, and reader 60 holds each "
+    "card until detector 61 finds the crank on R",
+    "[press_plot]") {
     const PlottedRun& run = press_run();
     REQUIRE(run.result.completed);
     const PressTrace& press = run.plot.press();
