@@ -309,6 +309,11 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     nlohmann::json state;
     std::vector<std::string> fault_specs = f.faults;
     AppliedProfile applied;
+    if (!f.resume.empty() && !f.press_proof.empty()) {
+        throw DeckError("--press-proof with --resume: the proof follows the press from the start "
+                        "of the job, so it proves whole runs only (run the deck from its first "
+                        "card)");
+    }
     if (!f.resume.empty()) {
         if (!f.profile.empty() || !f.faults.empty()) {
             throw DeckError("--resume: the saved state carries its machine profile and faults; "

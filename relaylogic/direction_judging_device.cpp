@@ -13,12 +13,14 @@ int ring_index(int a, int b) {
 
 } // namespace
 
-DirectionJudgingDevice::DirectionJudgingDevice(Tracer& tracer)
-    : tracer_(tracer),
+DirectionJudgingDevice::DirectionJudgingDevice(Tracer& tracer, long count)
+    : tracer_(tracer), a_(axes::phases_at(count).phase_a), b_(axes::phases_at(count).phase_b),
       relay_a_(tracer.define("press", "detector_10.phase_a",
-                             "detector 10 phase A (relay following it; EP 0436887)", "10", 1)),
+                             "detector 10 phase A (relay following it; EP 0436887)", "10", 1,
+                             static_cast<std::uint32_t>(a_))),
       relay_b_(tracer.define("press", "detector_10.phase_b",
-                             "detector 10 phase B, a quarter behind A (EP 0436887)", "10", 1)),
+                             "detector 10 phase B, a quarter behind A (EP 0436887)", "10", 1,
+                             static_cast<std::uint32_t>(b_))),
       sense_relay_(tracer.define("press", "direction_judging_13.forward",
                                  "direction judging device 13: the last edge counted up "
                                  "(1) or down (0) (EP 0436887 claim 3)",

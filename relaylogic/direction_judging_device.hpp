@@ -19,7 +19,8 @@ namespace parsons::relaylogic {
 
 class DirectionJudgingDevice {
 public:
-    explicit DirectionJudgingDevice(Tracer& tracer);
+    // The relays stand at the phases of pulse count `count` (the crank where the run starts).
+    DirectionJudgingDevice(Tracer& tracer, long count);
     // The relays A and B stand at the phases of count c (the run's start, a loaded state).
     void stand_at(long count);
     // An edge of detector 10: +1 count up, -1 count down, 0 no count (both phases changed or

@@ -4,19 +4,20 @@
 
 namespace parsons::relaylogic {
 
-PositionRegister::PositionRegister(Tracer& tracer, int device_16)
-    : tracer_(tracer), device_16_(device_16) {
+PositionRegister::PositionRegister(Tracer& tracer, int device_16, int value)
+    : tracer_(tracer), device_16_(device_16), value_(value) {
     const std::array<const char*, 4> what = {"thousands", "hundreds", "tens", "units"};
+    const Digits d = digits();
     for (std::size_t i = 0; i < 4; ++i) {
         switches_.at(i) = tracer.define("press", std::string("position_register_14.") + what.at(i),
                                         std::string("position register 14 stepping switch (") +
                                             what.at(i) + " of pulses)",
-                                        "14", 4);
+                                        "14", 4, static_cast<std::uint32_t>(d.at(i)));
     }
     value_signal_ = tracer.define("press", "position_register_14",
                                   "position register 14: the crank's angle in detector pulses "
                                   "(EP 0436887)",
-                                  "14", 14);
+                                  "14", 14, static_cast<std::uint32_t>(value_));
     setter_15_ = tracer.define("press", "setter_15",
                                "setter 15: operated when register 14 reaches device 16's "
                                "value (a revolution) and presets it",

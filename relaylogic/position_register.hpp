@@ -29,8 +29,9 @@ namespace parsons::relaylogic {
 
 class PositionRegister {
 public:
-    // device_16: a revolution in pulses (1 .. 9999).
-    PositionRegister(Tracer& tracer, int device_16);
+    // device_16: a revolution in pulses (1 .. 9999); the register stands at `value` (0 ..
+    // device_16 - 1) when the run starts.
+    PositionRegister(Tracer& tracer, int device_16, int value = 0);
 
     // One count from device 13 (+1 up, -1 down).
     void count(int sense);

@@ -12,28 +12,35 @@ void SyncUnits::install(Tracer& tracer, const axes::MachineProfile& profile) {
     }
     tracer_ = &tracer;
     press_ = std::make_unique<axes::Press>(profile.press);
+    // Every signal starts where the press stands when the run starts.
     crank_21_ = tracer.define("press", "crank_21.angle",
                               "crank 21 of the press: angle from top dead centre, tenths of a "
                               "degree (EP 0436887 Fig. 2A)",
-                              "21", 12);
+                              "21", 12, crank_tenths());
     die_20_ = tracer.define("press", "die_20.height",
                             "die 20: height above bottom dead centre, thousandths of an inch "
                             "(Fig. 2B)",
-                            "20", 16);
-    motor_22_ =
-        tracer.define("press", "motor_22.running",
-                      "motor 22 turns the crank (the control does not drive it)", "22", 1, 1);
-    device_13_ = std::make_unique<DirectionJudgingDevice>(tracer);
-    register_14_ =
-        std::make_unique<PositionRegister>(tracer, 360 * profile.press.pulses_per_degree);
+                            "20", 16, die_thousandths());
+    motor_22_ = tracer.define("press", "motor_22.running",
+                              "motor 22 turns the crank (the control does not drive it)", "22", 1,
+                              press_->stopped() ? 0U : 1U);
+    device_13_ = std::make_unique<DirectionJudgingDevice>(tracer, press_->count());
+    // Lined up with top dead centre before the run (switch 16A at the top, then the crank
+    // turned to its start): the register reads the crank's angle.
+    const long d16 = 360L * profile.press.pulses_per_degree;
+    register_14_ = std::make_unique<PositionRegister>(
+        tracer, static_cast<int>(d16), static_cast<int>(((press_->count() % d16) + d16) % d16));
     register_11_ = std::make_unique<SpeedRegister>(tracer);
     scp_ = std::make_unique<SynchronisationProcessor>(tracer, profile.press.pulses_per_degree,
                                                       profile.speed_sample_s);
-    // Lined up with top dead centre before the run (switch 16A at the top, then the crank
-    // turned to its start): the register reads the crank's angle.
-    device_13_->stand_at(press_->count());
-    const long d16 = register_14_->device_16();
-    register_14_->preset(static_cast<int>(((press_->count() % d16) + d16) % d16));
+}
+
+std::uint32_t SyncUnits::crank_tenths() const {
+    return static_cast<std::uint32_t>(std::lround(press_->angle_deg() * 10)) % 3600U;
+}
+
+std::uint32_t SyncUnits::die_thousandths() const {
+    return static_cast<std::uint32_t>(std::lround(press_->die_height_in() * 1000));
 }
 
 bool SyncUnits::on_edge(const axes::DetectorEdge& edge, double t) {
@@ -78,9 +85,8 @@ long SyncUnits::quiet_edges(long limit) const {
 }
 
 void SyncUnits::show_press() {
-    tracer_->set(crank_21_,
-                 static_cast<std::uint32_t>(std::lround(press_->angle_deg() * 10)) % 3600U);
-    tracer_->set(die_20_, static_cast<std::uint32_t>(std::lround(press_->die_height_in() * 1000)));
+    tracer_->set(crank_21_, crank_tenths());
+    tracer_->set(die_20_, die_thousandths());
     tracer_->set(motor_22_, press_->stopped() ? 0U : 1U);
 }
 

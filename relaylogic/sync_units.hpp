@@ -65,6 +65,9 @@ public:
     void load(const nlohmann::json& j);
 
 private:
+    std::uint32_t crank_tenths() const;
+    std::uint32_t die_thousandths() const;
+
     std::unique_ptr<axes::Press> press_;
     std::unique_ptr<DirectionJudgingDevice> device_13_;
     std::unique_ptr<PositionRegister> register_14_;

@@ -146,6 +146,13 @@ TEST_CASE("Press feeder: the generated deck passes check under the job's profile
                                   " --press-proof " + q(conv + ".job.json"));
     CHECK(slow.exit_code == 3);
     CHECK(slow.output.find("collision in cycle 2") != std::string::npos);
+
+    // The proof follows the press from the job's start: a resumed run is not proved.
+    test::write_bytes(dir.path("s.json"), "{}");
+    const auto resumed = run_parsons("run " + q(deck) + " -q --resume " + q(dir.str("s.json")) +
+                                     " --press-proof " + q(deck + ".job.json"));
+    CHECK(resumed.exit_code == 2);
+    CHECK(resumed.output.find("--press-proof with --resume") != std::string::npos);
 }
 
 TEST_CASE("Press feeder: impossible geometry is refused with exit 2", "[press_feeder][cli]") {

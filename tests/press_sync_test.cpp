@@ -18,9 +18,9 @@
 using namespace parsons;
 using namespace parsons::cardreader;
 using namespace parsons::relaylogic;
+using parsons::test::Change;
 using parsons::test::idle_card;
 using parsons::test::order;
-using parsons::test::Change;
 using parsons::test::Recorder;
 
 namespace {
@@ -132,8 +132,7 @@ TEST_CASE("Press sync: direction judging device 13 counts up for the forward seq
           "phases, down for the backward one, and not at all when both phases change",
           "[press_sync][units]") {
     Tracer tracer;
-    DirectionJudgingDevice device(tracer);
-    device.stand_at(0);
+    DirectionJudgingDevice device(tracer, 0);
     for (long c = 1; c <= 9; ++c) {
         CHECK(device.judge(axes::phases_at(c)) == +1);
     }
@@ -475,4 +474,25 @@ TEST_CASE("Press sync: a run saved in the middle of a looped job resumes to the 
         CHECK(r.axes.at(0).real_in == end.axes.at(0).real_in);
         CHECK(r.axes.at(0).impulses == end.axes.at(0).impulses);
     }
+}
+
+TEST_CASE("Press sync: the press's signals start where the crank stands when the run starts",
+          "[press_sync][units]") {
+    axes::MachineProfile p = press_profile();
+    p.press.start_angle_deg = 100.1; // register 14 at 400 pulses, the crank at 1001 tenths
+    Recorder rec;
+    const RunResult r = test::run_orders({table_move(1, 0, 300)}, p, &rec);
+    REQUIRE(r.completed);
+    const std::vector<Change> reg = rec.of("press.position_register_14");
+    REQUIRE_FALSE(reg.empty());
+    CHECK(reg.front().old_value == 400);
+    CHECK(reg.front().new_value == 401);
+    const std::vector<Change> crank = rec.of("press.crank_21.angle");
+    REQUIRE_FALSE(crank.empty());
+    CHECK(crank.front().old_value == 1001);
+    const std::vector<Change> die = rec.of("press.die_20.height");
+    REQUIRE_FALSE(die.empty());
+    axes::Press press(p.press);
+    CHECK(die.front().old_value ==
+          static_cast<std::uint32_t>(std::lround(press.die_height_in() * 1000)));
 }

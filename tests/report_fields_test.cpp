@@ -346,12 +346,18 @@ TEST_CASE("Report: docs/report.md names every key a report carries", "[cli][repo
     CHECK(press_report["press"]["loop_backs"] == 2);
     CHECK(press_report["press"]["mean_cycle_seconds"].get<double>() ==
           Approx(30.0).margin(1.0 / 48));
-    for (const char* name : {"a.json", "b.json", "c.json", "d.json", "e.json"}) {
+    // The press-feeder job's proof adds its figures to the press block.
+    REQUIRE(run_parsons("gen press-feeder --cycles 1 -o " + q(dir.str("f.csv"))).exit_code == 0);
+    REQUIRE(run_parsons("run " + q(dir.str("f.csv")) + " -q --press-proof " +
+                        q(dir.str("f.csv.job.json")) + " --report " + q(dir.str("f.json")))
+                .exit_code == 0);
+    for (const char* name : {"a.json", "b.json", "c.json", "d.json", "e.json", "f.json"}) {
         collect_keys(read_json(dir.path(name)), keys);
     }
     // The reports exercised what they were meant to.
-    for (const char* expected : {"fixture_angle_deg", "max_scallop_in", "root", "lamps", "effect",
-                                 "named_value", "movement_range"}) {
+    for (const char* expected :
+         {"fixture_angle_deg", "max_scallop_in", "root", "lamps", "effect", "named_value",
+          "movement_range", "loop_backs", "min_clearance_in"}) {
         CHECK(keys.count(expected) == 1);
     }
     const std::string doc = read_bytes(source_path("docs/report.md"));
