@@ -138,6 +138,11 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
                 t = axes::kNever;
             } else {
                 t = std::min(t, jumping_ ? press_quiet_end_ : sync_.press().next_event_time());
+                if (unqueued_release_s_ > now_) {
+                    // The last release after a stop (release_after_stop) is an instant of its
+                    // own here too: a stall comes at it, whatever the press's pace.
+                    t = std::min(t, unqueued_release_s_);
+                }
             }
         }
         if (t == axes::kNever) {
