@@ -4,6 +4,7 @@
 #include "cardreader/card_svg.hpp"
 #include "cli/plot_geometry.hpp"
 #include "cli/plot_press_lanes.hpp"
+#include "cli/plot_reduce.hpp"
 
 #include <fmt/format.h>
 
@@ -42,6 +43,7 @@ using plot::kStopColour;
 using plot::kTextColour;
 using plot::kWidth;
 using plot::nice_ticks;
+using plot::on_intervals;
 using plot::Scale;
 using plot::Ticks;
 
@@ -104,26 +106,6 @@ double step_value_at(const std::vector<Point>& steps, double t) {
         v = s.x;
     }
     return v;
-}
-
-// The intervals in which a 0/1 step signal is 1, up to t_end.
-std::vector<std::pair<double, double>> on_intervals(const std::vector<Point>& steps, double t_end) {
-    std::vector<std::pair<double, double>> out;
-    bool on = false;
-    double since = 0;
-    for (const Point& s : steps) {
-        if (s.x != 0 && !on) {
-            on = true;
-            since = s.t;
-        } else if (s.x == 0 && on) {
-            out.emplace_back(since, s.t);
-            on = false;
-        }
-    }
-    if (on) {
-        out.emplace_back(since, t_end);
-    }
-    return out;
 }
 
 // The speed-switch scale of a panel: slower is lower, off at the bottom, then 3 (slowest), 2,

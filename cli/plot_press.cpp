@@ -1,5 +1,7 @@
 #include "cli/plot_press.hpp"
 
+#include "cli/plot_reduce.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -33,26 +35,7 @@ void PressTrace::Reduced::add(Point p) {
 
 void PressTrace::Reduced::widen() {
     bucket_s_ *= 2;
-    std::vector<Bucket> merged;
-    merged.reserve(buckets_.size() / 2 + 1);
-    for (const Bucket& b : buckets_) {
-        const long slot = static_cast<long>(std::floor(b.first.t / bucket_s_));
-        if (merged.empty() || merged.back().slot != slot) {
-            Bucket m = b;
-            m.slot = slot;
-            merged.push_back(m);
-            continue;
-        }
-        Bucket& m = merged.back();
-        m.last = b.last;
-        if (b.low.x < m.low.x) {
-            m.low = b.low;
-        }
-        if (b.high.x > m.high.x) {
-            m.high = b.high;
-        }
-    }
-    buckets_ = std::move(merged);
+    buckets_ = plot::widened(buckets_, bucket_s_);
 }
 
 std::vector<Point> PressTrace::Reduced::points() const {
@@ -187,35 +170,12 @@ std::vector<Point> PressTrace::speed_63(cardreader::Axis axis) const {
     return speed_.at(cardreader::axis_index(axis)).points();
 }
 
-namespace {
-
-std::vector<std::pair<double, double>> intervals(const std::vector<Point>& steps, double t_end) {
-    std::vector<std::pair<double, double>> out;
-    bool on = false;
-    double since = 0;
-    for (const Point& s : steps) {
-        if (s.x != 0 && !on) {
-            on = true;
-            since = s.t;
-        } else if (s.x == 0 && on) {
-            out.emplace_back(since, s.t);
-            on = false;
-        }
-    }
-    if (on) {
-        out.emplace_back(since, t_end);
-    }
-    return out;
-}
-
-} // namespace
-
 std::vector<std::pair<double, double>> PressTrace::holds(double t_end) const {
-    return intervals(hold_, t_end);
+    return plot::on_intervals(hold_, t_end);
 }
 
 std::vector<std::pair<double, double>> PressTrace::waiting_cards(double t_end) const {
-    return intervals(cards_, t_end);
+    return plot::on_intervals(cards_, t_end);
 }
 
 } // namespace parsons::cli

@@ -1,6 +1,7 @@
 #include "cli/plot_svg.hpp"
 
 #include "cardreader/card_svg.hpp"
+#include "cli/plot_reduce.hpp"
 
 #include <fmt/format.h>
 
@@ -94,26 +95,7 @@ void PlotSvgRecorder::add_sample(AxisTrace& a, Point p) {
 void PlotSvgRecorder::widen_buckets() {
     bucket_s_ *= 2;
     for (AxisTrace& a : axes_) {
-        std::vector<Bucket> merged;
-        merged.reserve(a.buckets.size() / 2 + 1);
-        for (const Bucket& b : a.buckets) {
-            const long slot = static_cast<long>(std::floor(b.first.t / bucket_s_));
-            if (merged.empty() || merged.back().slot != slot) {
-                Bucket m = b;
-                m.slot = slot;
-                merged.push_back(m);
-                continue;
-            }
-            Bucket& m = merged.back();
-            m.last = b.last;
-            if (b.low.x < m.low.x) {
-                m.low = b.low;
-            }
-            if (b.high.x > m.high.x) {
-                m.high = b.high;
-            }
-        }
-        a.buckets = std::move(merged);
+        a.buckets = plot::widened(a.buckets, bucket_s_);
     }
 }
 

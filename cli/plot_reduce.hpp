@@ -1,0 +1,64 @@
+// What the chart of run --plot does alike for the lead-screw panels (plot_svg.cpp,
+// plot_chart.cpp) and the press lanes (plot_press.cpp): the widening of the "M4" reduction's
+// time buckets, and the intervals in which a 0/1 step signal is on. Templates, so each keeps its
+// own point and bucket types (plot_svg.hpp, plot_press.hpp).
+#pragma once
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace parsons::cli::plot {
+
+// The buckets merged for a bucket width twice the one they were filled with (bucket_s is the
+// new, doubled width): neighbours that now share a slot become one bucket that keeps the first
+// bucket's first point, the last one's last point, and the lowest and highest points of all
+// (the earlier of equal ones). Bucket has `long slot` and points `first`, `low`, `high` and
+// `last`, each with a time `t` (seconds) and a value `x`.
+template <class Bucket>
+std::vector<Bucket> widened(const std::vector<Bucket>& buckets, double bucket_s) {
+    std::vector<Bucket> merged;
+    merged.reserve(buckets.size() / 2 + 1);
+    for (const Bucket& b : buckets) {
+        const long slot = static_cast<long>(std::floor(b.first.t / bucket_s));
+        if (merged.empty() || merged.back().slot != slot) {
+            Bucket m = b;
+            m.slot = slot;
+            merged.push_back(m);
+            continue;
+        }
+        Bucket& m = merged.back();
+        m.last = b.last;
+        if (b.low.x < m.low.x) {
+            m.low = b.low;
+        }
+        if (b.high.x > m.high.x) {
+            m.high = b.high;
+        }
+    }
+    return merged;
+}
+
+// The intervals in which a 0/1 step signal (its value at t = 0, then every change: points with
+// a time `t` and a value `x`) is 1; one still on at the end is open until t_end.
+template <class Point>
+std::vector<std::pair<double, double>> on_intervals(const std::vector<Point>& steps, double t_end) {
+    std::vector<std::pair<double, double>> out;
+    bool on = false;
+    double since = 0;
+    for (const Point& s : steps) {
+        if (s.x != 0 && !on) {
+            on = true;
+            since = s.t;
+        } else if (s.x == 0 && on) {
+            out.emplace_back(since, s.t);
+            on = false;
+        }
+    }
+    if (on) {
+        out.emplace_back(since, t_end);
+    }
+    return out;
+}
+
+} // namespace parsons::cli::plot
