@@ -496,3 +496,31 @@ TEST_CASE("Press sync: the press's signals start where the crank stands when the
     CHECK(die.front().old_value ==
           static_cast<std::uint32_t>(std::lround(press.die_height_in() * 1000)));
 }
+
+TEST_CASE("Press sync (speed): processor 63's speed goes to the drive one reference block after "
+          "the sample it comes from (Fig. 6), and the axis runs at it",
+          "[press_sync][speed]") {
+    const Pace pace = GENERATE(Pace::impulse_level, Pace::fast_forward);
+    const axes::MachineProfile p = press_profile();
+    SparseRecorder sparse;
+    Recorder full;
+    Recorder& rec = pace == Pace::fast_forward ? static_cast<Recorder&>(sparse) : full;
+    const RunResult r = test::run_orders(
+        {sync_card(1, speed_sync(Axis::table, 100)), table_move(2, 0, 1000)}, p, &rec, {}, pace);
+    REQUIRE(r.completed);
+    // The motion card's relays pick at 0.76 s (card 2 fed at 0.6 s, first bank 0.15 s later, a
+    // relay's 10 ms): the block at 1.0 s samples 24 pulses and computes 0.001 x 24 / 0.5 s =
+    // 2.88 in/min; the block at 1.5 s sends it to the drive.
+    const std::vector<Change> out = rec.of("press.processor_63.table");
+    REQUIRE_FALSE(out.empty());
+    CHECK(out.front().t == Approx(1.5).margin(1e-12));
+    CHECK(out.front().new_value == 2880);
+    CHECK(first_time(rec, "press.speed_register_11.stored", 24) == Approx(0.5).margin(1e-12));
+    // Not before: the table stands until the drive has a speed.
+    if (pace == Pace::impulse_level) {
+        for (const Change& c : rec.of("table.absolute_counter_110")) {
+            CHECK(c.t > 1.5);
+            break;
+        }
+    }
+}
