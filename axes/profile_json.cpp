@@ -582,6 +582,22 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
         throw ProfileError("feed_gap_s < first_bank_s must hold (the gap between two cards "
                            "passes the brushes before the first bank senses the card)");
     }
+    if (p.press_sync) {
+        // Position register 14 and speed register 11 are stepping switches: the press's
+        // pulses, at its fastest, must come no faster than they step.
+        const PressProfile& press = p.press;
+        const double fastest = press.strokes_per_min * 6.0 * press.pulses_per_degree *
+                               (1 + press.variation) * std::max(1.0, press.change_factor);
+        if (fastest > p.max_stepping_rate_per_s) {
+            throw ProfileError(fmt::format(
+                "press.strokes_per_min: {} strokes a minute at {} pulses a degree give up to "
+                "{:.0f} detector pulses a second (with variation and change_factor), faster than "
+                "the stepping switches of registers 14 and 11 follow (max_stepping_rate_per_s "
+                "{}): at most {:.2f} strokes a minute",
+                press.strokes_per_min, press.pulses_per_degree, fastest, p.max_stepping_rate_per_s,
+                press.strokes_per_min * p.max_stepping_rate_per_s / fastest));
+        }
+    }
     return p;
 }
 

@@ -636,6 +636,7 @@ TEST_CASE("Press profile: every press key reads back from the profile's JSON", "
     p.sync_drive = SyncDrive{3.25, 0.125};
     p.speed_sample_s = 0.25;
     p.sync_timeout_s = 600;
+    p.max_stepping_rate_per_s = 600; // switches that follow its 506 pulses a second
     const MachineProfile q = profile_from_json(profile_to_json(p), default_profile());
     CHECK(q.press_sync);
     CHECK(q.press.strokes_per_min == 7.5);
@@ -735,4 +736,27 @@ TEST_CASE("Press profile: a value out of range is an error naming its key", "[pr
     }));
     INFO(bad.json);
     CHECK_THROWS_WITH(profile_from_json(bad.json, default_profile()), Catch::StartsWith(bad.key));
+}
+
+TEST_CASE("Press profile: a press whose pulses come faster than registers 14 and 11 step is "
+          "refused, naming strokes_per_min and what they can follow",
+          "[press]") {
+    const MachineProfile extended = extended_profile(); // 100 steps a second, 4 pulses a degree
+    // 4 strokes a minute: 96 pulses a second, within; 5: 120, beyond.
+    CHECK_NOTHROW(profile_from_json(R"({"press": {"strokes_per_min": 4}})", extended));
+    CHECK_THROWS_WITH(profile_from_json(R"({"press": {"strokes_per_min": 5}})", extended),
+                      Catch::StartsWith("press.strokes_per_min:") &&
+                          Catch::Contains("120 detector pulses a second") &&
+                          Catch::Contains("at most 4.17 strokes a minute"));
+    // Variation and a lasting change count at their fastest.
+    CHECK_THROWS_WITH(
+        profile_from_json(R"({"press": {"strokes_per_min": 4, "variation": 0.1}})", extended),
+        Catch::StartsWith("press.strokes_per_min:"));
+    CHECK_THROWS_WITH(
+        profile_from_json(R"({"press": {"strokes_per_min": 4, "change_factor": 1.1}})", extended),
+        Catch::StartsWith("press.strokes_per_min:"));
+    // Faster switches follow a faster press; without press synchronisation nothing is judged.
+    CHECK_NOTHROW(profile_from_json(
+        R"({"press": {"strokes_per_min": 5}, "max_stepping_rate_per_s": 130})", extended));
+    CHECK_NOTHROW(profile_from_json(R"({"press": {"strokes_per_min": 5}})", default_profile()));
 }
