@@ -15,21 +15,8 @@ using Point = PressTrace::Point;
 
 void PressTrace::Reduced::add(Point p) {
     latest_ = p;
-    const long slot = static_cast<long>(std::floor(p.t / bucket_s_));
-    if (buckets_.empty() || slot != buckets_.back().slot) {
-        buckets_.push_back(Bucket{slot, p, p, p, p});
-        if (buckets_.size() > kMaxBuckets) {
-            widen();
-        }
-        return;
-    }
-    Bucket& b = buckets_.back();
-    b.last = p;
-    if (p.x < b.low.x) {
-        b.low = p;
-    }
-    if (p.x > b.high.x) {
-        b.high = p;
+    if (plot::add_to_buckets(buckets_, p, bucket_s_) && buckets_.size() > kMaxBuckets) {
+        widen();
     }
 }
 
@@ -39,19 +26,7 @@ void PressTrace::Reduced::widen() {
 }
 
 std::vector<Point> PressTrace::Reduced::points() const {
-    std::vector<Point> out;
-    out.reserve(buckets_.size() * 4);
-    for (const Bucket& b : buckets_) {
-        std::array<Point, 4> four = {b.first, b.low, b.high, b.last};
-        std::stable_sort(four.begin(), four.end(),
-                         [](const Point& p, const Point& q) { return p.t < q.t; });
-        for (const Point& p : four) {
-            if (out.empty() || out.back().t != p.t || out.back().x != p.x) {
-                out.push_back(p);
-            }
-        }
-    }
-    return out;
+    return plot::bucket_points<Point>(buckets_);
 }
 
 // ---------------------------------------------------------------------------------------------

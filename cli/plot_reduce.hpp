@@ -1,14 +1,55 @@
 // What the chart of run --plot does alike for the lead-screw panels (plot_svg.cpp,
-// plot_chart.cpp) and the press lanes (plot_press.cpp): the widening of the "M4" reduction's
-// time buckets, and the intervals in which a 0/1 step signal is on. Templates, so each keeps its
+// plot_chart.cpp) and the press lanes (plot_press.cpp): the "M4" reduction's time buckets (a
+// sample folded in, the widening, the points kept), and the intervals in which a 0/1 step
+// signal is on. Templates, so each keeps its
 // own point and bucket types (plot_svg.hpp, plot_press.hpp).
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
 
 namespace parsons::cli::plot {
+
+// Folds sample p into the buckets of width bucket_s: the last bucket's last, lowest or highest
+// point, or the first point of a new bucket (returns true then).
+template <class Bucket, class Point>
+bool add_to_buckets(std::vector<Bucket>& buckets, const Point& p, double bucket_s) {
+    const long slot = static_cast<long>(std::floor(p.t / bucket_s));
+    if (buckets.empty() || slot != buckets.back().slot) {
+        buckets.push_back(Bucket{slot, p, p, p, p});
+        return true;
+    }
+    Bucket& b = buckets.back();
+    b.last = p;
+    if (p.x < b.low.x) {
+        b.low = p;
+    }
+    if (p.x > b.high.x) {
+        b.high = p;
+    }
+    return false;
+}
+
+// The points the buckets keep, in time order, no point twice in a row.
+template <class Point, class Bucket>
+std::vector<Point> bucket_points(const std::vector<Bucket>& buckets) {
+    std::vector<Point> out;
+    out.reserve(buckets.size() * 4);
+    for (const Bucket& b : buckets) {
+        std::array<Point, 4> four = {b.first, b.low, b.high, b.last};
+        std::stable_sort(four.begin(), four.end(),
+                         [](const Point& p, const Point& q) { return p.t < q.t; });
+        for (const Point& p : four) {
+            if (out.empty() || out.back().t != p.t || out.back().x != p.x) {
+                out.push_back(p);
+            }
+        }
+    }
+    return out;
+}
 
 // The buckets merged for a bucket width twice the one they were filled with (bucket_s is the
 // new, doubled width): neighbours that now share a slot become one bucket that keeps the first

@@ -77,19 +77,7 @@ void PlotSvgRecorder::on_signal(double seconds, SignalId id, std::uint32_t old_v
 
 void PlotSvgRecorder::add_sample(AxisTrace& a, Point p) {
     a.latest = p;
-    const long slot = static_cast<long>(std::floor(p.t / bucket_s_));
-    if (a.buckets.empty() || slot != a.buckets.back().slot) {
-        a.buckets.push_back(Bucket{slot, p, p, p, p});
-        return;
-    }
-    Bucket& b = a.buckets.back();
-    b.last = p;
-    if (p.x < b.low.x) {
-        b.low = p;
-    }
-    if (p.x > b.high.x) {
-        b.high = p;
-    }
+    plot::add_to_buckets(a.buckets, p, bucket_s_);
 }
 
 void PlotSvgRecorder::widen_buckets() {
@@ -142,20 +130,7 @@ double PlotSvgRecorder::end_time() const {
 }
 
 std::vector<PlotSvgRecorder::Point> PlotSvgRecorder::path(Axis axis) const {
-    const AxisTrace& a = axes_.at(cardreader::axis_index(axis));
-    std::vector<Point> out;
-    out.reserve(a.buckets.size() * 4);
-    for (const Bucket& b : a.buckets) {
-        std::array<Point, 4> four = {b.first, b.low, b.high, b.last};
-        std::stable_sort(four.begin(), four.end(),
-                         [](const Point& p, const Point& q) { return p.t < q.t; });
-        for (const Point& p : four) {
-            if (out.empty() || out.back().t != p.t || out.back().x != p.x) {
-                out.push_back(p);
-            }
-        }
-    }
-    return out;
+    return plot::bucket_points<Point>(axes_.at(cardreader::axis_index(axis)).buckets);
 }
 
 const std::vector<PlotSvgRecorder::Point>& PlotSvgRecorder::speed_steps(Axis axis) const {

@@ -91,9 +91,6 @@ void SyncUnits::show_press() {
 }
 
 nlohmann::json SyncUnits::save() const {
-    if (!present()) {
-        return nullptr;
-    }
     return {{"press", press_->save()},
             {"direction_judging_13", device_13_->save()},
             {"position_register_14", register_14_->save()},
@@ -103,15 +100,6 @@ nlohmann::json SyncUnits::save() const {
 }
 
 void SyncUnits::load(const nlohmann::json& j) {
-    if (!present()) {
-        if (!j.is_null()) {
-            throw axes::StateError("the saved machine has a press; this profile has none");
-        }
-        return;
-    }
-    if (j.is_null()) {
-        throw axes::StateError("the saved machine has no press; this profile has one");
-    }
     press_->load(axes::member(j, "press"));
     device_13_->load(axes::member(j, "direction_judging_13"));
     register_14_->load(axes::member(j, "position_register_14"));

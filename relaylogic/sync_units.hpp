@@ -61,6 +61,7 @@ public:
     // Crank angle and die height as trace signals (at each edge, with an observer).
     void show_press();
 
+    // The units' state (present() only: the cabinet keeps null for a machine without them).
     nlohmann::json save() const;
     void load(const nlohmann::json& j);
 
