@@ -31,6 +31,7 @@ MachineProfile extended_profile() {
     p.name = "parsons-extended";
     p.condition_cards = true;
     p.press_sync = true;
+    p.spindle_sync = true;
     return p;
 }
 

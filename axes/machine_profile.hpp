@@ -118,6 +118,66 @@ struct SyncDrive {
     double acceleration_in_per_s2 = 0.5; // its rate limit, both ways
 };
 
+// Spindle synchronisation (an addition after EP 0360190, Mitsubishi; seeds/001): spindle motor
+// 27 with encoder 32 on its shaft, gear unit 30 and the interchangeable spindle heads 31, each
+// holding one tool; programmable controller 130 exchanges the heads; the NC feeds one axis in
+// step with the tool (S x A, tapping). Figures: docs/tapping.md.
+struct SpindleHead {
+    int tool = 1;       // the tool number T a tap card calls the head by (1..99)
+    double ratio = 0.5; // gear unit 30 with this head: tool revolutions per motor revolution (A)
+    // The tool the head holds: a tap of this pitch (inches per tool revolution), or a cutter of
+    // this radius (exactly one of the two).
+    std::optional<double> pitch_in;
+    std::optional<double> radius_in;
+};
+
+// How the gear ratio reaches gear ratio data memory 12a: sent by PC 130 over bus 35 after each
+// head exchange (the seed's first embodiment, Figs. 3-4), or stored for every tool number in
+// advance and selected by the tool number the card calls for (second embodiment, Figs. 5-7).
+enum class RatioSource : std::uint8_t { transferred, stored };
+
+struct SpindleSyncProfile {
+    // Motor 27: its fastest speed and how fast it runs up and down (rev/min per second).
+    double max_rpm = 240.0;
+    double run_up_rpm_per_s = 240.0;
+    double run_down_rpm_per_s = 320.0;
+    // Encoder 32 on the motor: edges of its phases A and B per motor revolution. Its counter in
+    // spindle encoder interface 33 is stepping switches, so max_rpm x this / 60 must stay within
+    // max_stepping_rate_per_s (checked when the profile is loaded).
+    int encoder_pulses_per_rev = 24;
+    // The NC reads the encoder (interface 33) and sets the feed this often.
+    double sample_s = 0.050;
+    // Position correction of the synchronised feed: the feed's speed gains this much per second
+    // of the tool's lead the feed is behind (1/s).
+    double feed_gain_per_s = 10.0;
+    // A lasting change of the motor's speed (its supply sags, a heavy cut): from change_at_s
+    // (machine time; none = no change) the motor turns at change_factor x its commanded speed.
+    std::optional<double> change_at_s;
+    double change_factor = 1.0;
+    // Gear unit 30's heads and the one on the spindle when the run starts.
+    std::vector<SpindleHead> heads = {{1, 0.25, 0.05, std::nullopt},
+                                      {2, 1.0 / 3.0, 0.0625, std::nullopt},
+                                      {3, 0.5, std::nullopt, 0.25}};
+    int first_tool = 1;
+    RatioSource ratio_source = RatioSource::transferred;
+    // PC 130: one scan of its ladder; a head exchange; how long the NC waits for a transfer.
+    double pc_scan_s = 0.020;
+    double head_change_s = 6.0;
+    double transfer_timeout_s = 2.0;
+    // The tap's chamfer: the last threads at the bottom of a hole are not full (the thread
+    // proof judges the pitch above them), in tool revolutions.
+    double chamfer_revs = 3.0;
+
+    const SpindleHead* head(int tool) const {
+        for (const SpindleHead& h : heads) {
+            if (h.tool == tool) {
+                return &h;
+            }
+        }
+        return nullptr;
+    }
+};
+
 // What the counters measure (DESIGN.md 4.3).
 enum class MeasuringChain : std::uint8_t {
     instrument_shaft_74, // the patent: the part's position, through shaft 74 and follower 76
@@ -204,6 +264,12 @@ struct MachineProfile {
     // How long the synchronisation control processor 17 waits for the crank (position sync) or
     // for a pulse (speed sync) before it stops the machine: sync_timeout.
     double sync_timeout_s = 90.0;
+    // Addition after EP 0360190 (Mitsubishi; seeds/001): spindle synchronisation (motor 27
+    // with a speed, encoder 32, gear unit 30, heads 31, PC 130, memory 12a) and tap cards. Off
+    // in parsons-1952 and parsons-safe (a deck with a tap card is refused), on in
+    // parsons-extended.
+    bool spindle_sync = false;
+    SpindleSyncProfile spindle;
     // The cutter radius of a tool, if the changer holds it.
     std::optional<double> tool_radius_in(int tool) const {
         for (const Tool& t : tools) {
@@ -221,7 +287,7 @@ MachineProfile default_profile();
 // parsons-safe: parsons-1952 with the emulator's protective additions on.
 MachineProfile safe_profile();
 // parsons-extended: parsons-safe with the later seeds' additions on (condition cards, press
-// synchronisation).
+// synchronisation, spindle synchronisation).
 MachineProfile extended_profile();
 // The profile a name ("parsons-1952", ...) gives, if there is one; the names in order.
 inline constexpr std::array<const char*, 3> kBuiltinProfiles = {"parsons-1952", "parsons-safe",

@@ -119,6 +119,10 @@ std::string format_travel_per_pulse(int hundred_thousandths) {
     return fmt::format("{}.{:05}", hundred_thousandths / 100000, hundred_thousandths % 100000);
 }
 
+std::string format_pitch(int hundred_thousandths) {
+    return format_travel_per_pulse(hundred_thousandths);
+}
+
 std::string format_sequence(SequencePattern pattern) {
     std::string text;
     for (int k = 1; k <= kSequencePositions; ++k) {

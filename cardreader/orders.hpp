@@ -64,8 +64,9 @@ struct AxisOrder {
 // the motion card it watches (claim 4).
 
 // Which kind of card this is: column 76, the extension mark (blank on a 1952 card).
-// Row 1 a condition card, row 2 a sync card (the press synchronisation of EP 0436887).
-enum class CardKind : std::uint8_t { motion, condition, sync };
+// Row 1 a condition card, row 2 a sync card (the press synchronisation of EP 0436887), row 3 a
+// tap card (the spindle synchronisation of EP 0360190).
+enum class CardKind : std::uint8_t { motion, condition, sync, tap };
 
 // The sense in which the axis must pass the position: its counters counting up (forward),
 // down (reverse), or either.
@@ -142,6 +143,28 @@ struct SyncOrder {
 // "0.00417" (hundred-thousandths of an inch per pulse)
 std::string format_travel_per_pulse(int hundred_thousandths);
 
+// ---- Tap cards: an addition after EP 0360190 (Mitsubishi; seeds/001), not in the patent.
+// A tap card (column 76 punched in row 3, docs/card-layout.md) calls for a tool (PC 130 puts
+// its spindle head on, and the head's gear ratio reaches memory 12a) and taps one hole: motor 27
+// runs forward at S, the axis feeds into the work in step with the tool (the ordered pitch per
+// tool revolution, from the encoder's speed times the ratio, S x A) to the depth, and comes back
+// out as the spindle reverses. It stands alone: no axis moves by the 1952 columns on it.
+inline constexpr int kMaxPitch = 99999; // 0.99999 in per tool revolution
+
+struct TapOrder {
+    int tool = 0;                    // T: the head to tap with (1..99)
+    Axis axis = Axis::vertical;      // the feed shaft
+    Motion motion = Motion::reverse; // the sense into the work (its counters' sense)
+    Thousandths depth = 0;           // travel into the work and back, d.ddd in (1..9999)
+    int pitch = 0;                   // per tool revolution, hundred-thousandths of an inch
+    int rpm = 0;                     // S: motor 27's speed, revolutions a minute (1..9999)
+
+    bool operator==(const TapOrder&) const = default;
+};
+
+// "0.05000" (hundred-thousandths of an inch per tool revolution)
+std::string format_pitch(int hundred_thousandths);
+
 struct CardOrders {
     int number = 0; // card number, 0000 .. 9999
     Spindle spindle = Spindle::off;
@@ -152,6 +175,8 @@ struct CardOrders {
     std::array<ConditionOrder, kConditionsPerCard> conditions{};
     // A sync card (an addition): its orders; the axes above are unused and left default.
     SyncOrder sync{};
+    // A tap card (an addition): its order; the axes above are unused and left default.
+    TapOrder tap{};
 
     const AxisOrder& axis(Axis a) const { return axes.at(axis_index(a)); }
     AxisOrder& axis(Axis a) { return axes.at(axis_index(a)); }

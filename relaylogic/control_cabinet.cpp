@@ -261,6 +261,9 @@ void ControlCabinet::apply_faults(cardreader::CardSource& deck) {
             break;
         case FaultKind::drop_impulse:
             break;
+        case FaultKind::stale_ratio:
+        case FaultKind::transfer_hang:
+            break; // PC 130's (tapping units, when the profile has them)
         }
     }
     if (!feed_faults.empty()) {

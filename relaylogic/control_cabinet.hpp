@@ -71,6 +71,44 @@ struct PressResult {
     double waited_s = 0; // machine time cards spent held by position reader 60
 };
 
+// Spindle synchronisation (an addition after EP 0360190): each tap card's hole.
+struct TapSample {
+    double t = 0;         // machine time (every sample of interface 33, and the tap's ends)
+    double tool_revs = 0; // the tool's revolutions (the plant's, unwrapped; the true ones)
+    double feed_in = 0;   // where the part really is on the feed axis
+};
+
+struct HoleRecord {
+    long card = 0;                      // position in the deck (1-based)
+    int number = 0;                     // the card number
+    int tool = 0;                       // the head on the spindle while it tapped (what really cut)
+    std::optional<double> tap_pitch_in; // that head's tap (none: the head holds a cutter)
+    double head_ratio = 0;              // that head's real ratio A
+    double ratio_used = 0;              // the ratio in memory 12a the NC computed with
+    double pitch_ordered_in = 0;
+    int rpm = 0; // S ordered
+    cardreader::Axis axis = cardreader::Axis::vertical;
+    int sense = -1;        // +1 / -1: the part's travel into the work
+    double start_in = 0;   // the part on the feed axis where the tap started
+    double depth_in = 0;   // ordered
+    double deepest_in = 0; // how far into the work it really went (along sense)
+    double end_in = 0;     // where it stood when the card ended
+    double start_s = 0;
+    double reverse_s = 0; // when the NC reversed the spindle at the bottom
+    double end_s = 0;
+    bool completed = false;         // came back out and stood (false: the machine stopped first)
+    std::vector<TapSample> samples; // if asked for (record_tap_samples)
+};
+
+struct TappingResult {
+    int tool_on_spindle = 0;
+    double ratio_in_memory = 0; // 12a when the run ended
+    long head_exchanges = 0;
+    long transfers = 0;       // ratios PC 130 sent (S6)
+    long ratios_received = 0; // ratios the NC stored (S16)
+    std::vector<HoleRecord> holes;
+};
+
 struct RunResult {
     bool completed = false;
     long cards_read = 0;
@@ -81,8 +119,9 @@ struct RunResult {
     std::vector<FaultEffect> faults; // what each injected fault did
     // Condition cards (an addition): the actions acknowledged, and the tool in the spindle.
     std::vector<ActionRecord> actions;
-    std::optional<int> tool_in_spindle; // when the profile has a tool changer
-    std::optional<PressResult> press;   // when the profile has press synchronisation
+    std::optional<int> tool_in_spindle;   // when the profile has a tool changer
+    std::optional<PressResult> press;     // when the profile has press synchronisation
+    std::optional<TappingResult> tapping; // when the profile has spindle synchronisation
 };
 
 // How the cabinet spends its time. Both give the same machine, event for event: impulse level
@@ -103,6 +142,8 @@ public:
     void set_pace(Pace pace) { pace_ = pace; }
     // Keep each card's start and end time for the result (memory grows with the deck).
     void record_card_times(bool on) { record_times_ = on; }
+    // Keep every tap's samples (tool revolutions, feed position) for the thread proof.
+    void record_tap_samples(bool on) { record_tap_samples_ = on; }
 
     // Runs the deck to the end or to a stop, then lets every axis coast to rest. A deck file
     // that cannot be read throws cardreader::DeckError.
@@ -235,6 +276,7 @@ private:
     int last_sequence_position_ = 5;
     long cards_read_ = 0;
     bool record_times_ = false;
+    bool record_tap_samples_ = false;
     std::vector<CardTiming> timings_;
     std::optional<StopInfo> stop_;
     // Condition cards (an addition): the seed's units, the card being a condition card, the

@@ -40,7 +40,8 @@ cardreader::Axis axis_of(const std::string& spec, const std::string& text) {
 
 constexpr const char* kForms =
     "drop-impulse:AXIS:N, stuck-relay:AXIS:BANK:DIGIT, dead-relay:AXIS:BANK:DIGIT, "
-    "skip-step:AXIS:SWITCH:N, feed-twice:N, swap-cards:N, short-card:N or slip:AXIS:N:M";
+    "skip-step:AXIS:SWITCH:N, feed-twice:N, swap-cards:N, short-card:N, slip:AXIS:N:M, "
+    "stale-ratio:N or transfer-hang:N";
 
 } // namespace
 
@@ -105,6 +106,11 @@ Fault parse_fault(const std::string& spec) {
         f.kind = kind == "feed-twice"   ? FaultKind::feed_twice
                  : kind == "swap-cards" ? FaultKind::swap_cards
                                         : FaultKind::short_card;
+        f.n = count_from_1(spec, p[1], "N");
+    } else if (kind == "stale-ratio" || kind == "transfer-hang") {
+        expect(2, "stale-ratio:N (N: the head exchange, from 1) or transfer-hang:N (N: the gear "
+                  "ratio transfer, from 1)");
+        f.kind = kind == "stale-ratio" ? FaultKind::stale_ratio : FaultKind::transfer_hang;
         f.n = count_from_1(spec, p[1], "N");
     } else if (kind == "slip") {
         expect(4, "slip:AXIS:N:M (e.g. slip:table:2000:25, 0.025 in of screw travel from the "

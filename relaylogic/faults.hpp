@@ -16,6 +16,11 @@
 //                                the part stands. Instrument shaft 74 follows the part, so the
 //                                patent's counters do not count it; counting screw turns (a
 //                                departure) they do, and the part lags them
+//   stale-ratio:N                spindle synchronisation (an addition after EP 0360190): at
+//                                the Nth head exchange PC 130 sends no gear ratio; the NC
+//                                computes the tool's speed with the old one
+//   transfer-hang:N              the Nth gear ratio transfer never completes (the data never
+//                                reaches the NC): transfer_timeout
 //
 // Impulses and steps count from 1 over the whole run; cards by their place in the deck.
 #pragma once
@@ -39,6 +44,8 @@ enum class FaultKind : std::uint8_t {
     swap_cards,
     short_card,
     slip,
+    stale_ratio,   // spindle sync: the Nth head exchange transfers no ratio
+    transfer_hang, // spindle sync: the Nth ratio transfer never completes
 };
 
 struct Fault {

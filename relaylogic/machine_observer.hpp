@@ -39,6 +39,8 @@ enum class StopReason : std::uint8_t {
     condition_refused, // the cabinet cannot take a condition card (profile, deck, buffer)
     sync_timeout,      // press synchronisation: the crank never came, or stood (an addition)
     sync_refused,      // the cabinet cannot take a sync card (profile, deck)
+    transfer_timeout,  // spindle sync: PC 130's gear ratio transfer never completed (an addition)
+    tap_refused,       // the cabinet cannot take a tap card (profile, tool, speed)
     interrupted,       // not a check: the operator stopped the run (SIGINT, SIGTERM)
 };
 

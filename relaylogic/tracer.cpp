@@ -24,6 +24,10 @@ std::string_view stop_reason_name(StopReason r) {
         return "sync_timeout";
     case StopReason::sync_refused:
         return "sync_refused";
+    case StopReason::transfer_timeout:
+        return "transfer_timeout";
+    case StopReason::tap_refused:
+        return "tap_refused";
     case StopReason::interrupted:
         return "interrupted";
     }

@@ -1,0 +1,107 @@
+// The spindle of EP 0360190 (Mitsubishi; seeds/001), Figs. 1 and 3: spindle motor 27 turning at
+// a speed the NC commands (not only on, off and reverse), encoder 32 coupled directly to the
+// motor, gear unit 30 and the interchangeable spindle heads 31, each holding its tool 16 (a tap
+// of a given pitch, or a cutter). An addition to the 1952 machine (DESIGN.md 4.14), present
+// only when the profile has spindle synchronisation (parsons-extended).
+//
+// How we represent it: the motor's unwrapped angle phi (motor revolutions, 0 where the run
+// starts, growing forward) moves with a speed that changes at a constant rate between
+// "segment boundaries": a command, the end of a run-up or run-down, the instant the speed
+// passes through zero on a reversal (so each segment turns one way only), and the profile's
+// lasting change (change_at_s: from then on the motor turns at change_factor x its commanded
+// speed). Run-up (the speed's magnitude growing) is at run_up_rpm_per_s, run-down at
+// run_down_rpm_per_s; a reversal runs down to rest, then up the other way (plugging).
+//
+// Encoder 32: phases A and B in quadrature, encoder_pulses_per_rev edges a motor revolution.
+// The count c = floor(phi x ppr): an edge at each whole multiple m / ppr of a revolution
+// (forward, c becomes m; backward, c becomes m - 1); the phases after count c stand at the
+// Gray code of c mod 4, as detector 10 of the press (axes/press.hpp: phases_at()), so the same
+// direction judging device 13 tells the sense.
+//
+// Every edge time is a pure function of the segment and the integer edge index (the root of
+// the segment's quadratic), so the n-th edge from now has the same time whether the edges
+// before it were taken one by one or skipped in one jump (the cabinet's fast-forward), to the
+// last bit. An edge that falls exactly on a segment boundary is taken in the segment it ends,
+// before the boundary.
+//
+// Gear unit 30 and head 31: the tool turns at ratio A x the motor (S x A, the seed's
+// expression); its angle is kept as tool revolutions, whatever heads were on before. Heads are
+// exchanged with the motor at rest (PC 130 does it, relaylogic/programmable_controller.hpp).
+#pragma once
+
+#include "axes/machine_profile.hpp"
+#include "axes/press.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+
+namespace parsons::axes {
+
+class Spindle {
+public:
+    explicit Spindle(const SpindleSyncProfile& profile);
+
+    // Motor 27 commanded at the current time (time_s()): rev/min, + forward, - reverse, 0 to
+    // rest; |rpm| is at most the profile's max_rpm (the caller checks). Asking for what it is
+    // already commanded changes nothing.
+    void command_rpm(double rpm);
+    double commanded_rpm() const { return commanded_rpm_; }
+
+    // When the next thing happens by itself: an encoder edge, or a segment boundary. kNever
+    // when the motor stands and nothing is coming.
+    double next_event_time() const { return next_time_; }
+    bool next_event_is_pulse() const { return next_is_pulse_; }
+    // The one gateway: moves the motor to machine time t (t <= next_event_time()). Returns the
+    // edge if t is its time; at a segment boundary the next segment begins.
+    std::optional<DetectorEdge> advance_to(double t);
+
+    // Fast-forward: the time of the n-th coming edge (n >= 1) within this segment, or kNever if
+    // the segment ends first; how many come at or before t; take the next n at once (the n-th
+    // is returned, as advance_to() would return it).
+    double pulse_time(long n) const;
+    long pulses_by(double t) const;
+    DetectorEdge skip_pulses(long n);
+
+    double time_s() const { return t_; }
+    long count() const { return count_; } // encoder edges, unwrapped (negative backwards)
+    double motor_revs() const;            // phi now
+    double motor_revs_at(double t) const; // t within the current segment
+    double rpm() const;                   // motor 27 now, signed
+    double rpm_at(double t) const;        // t within the current segment
+    bool at_rest() const;                 // standing, and commanded to stand
+
+    // Gear unit 30 and head 31. mount() puts the head holding `tool` on (the motor at rest);
+    // the tool then turns at that head's ratio. An unknown tool mounts nothing (tool() 0).
+    void mount(int tool);
+    int tool() const { return tool_; }
+    double ratio() const { return ratio_; } // the head's real ratio A (0 with no head)
+    double tool_revs() const;               // the tool's revolutions, unwrapped
+    double tool_revs_at(double t) const;    // t within the current segment
+
+    const SpindleSyncProfile& profile() const { return profile_; }
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
+
+private:
+    SpindleSyncProfile profile_;
+    double t_ = 0;
+    double commanded_rpm_ = 0;
+    long count_ = 0;
+    int tool_ = 0;
+    double ratio_ = 0;
+    double next_time_ = kNever;
+    bool next_is_pulse_ = false;
+    // The implementation keeps its segment here (start time, angle, speed, acceleration, end)
+    // and the tool's revolutions at the last mount; see axes/spindle.cpp.
+    double seg_t0_ = 0;
+    double seg_phi0_ = 0;
+    double seg_w0_ = 0; // rev/s at the segment's start, signed
+    double seg_a_ = 0;  // rev/s2, signed
+    double seg_end_ = kNever;
+    double mount_phi_ = 0;
+    double mount_tool_revs_ = 0;
+    bool changed_ = false; // the lasting change has come
+};
+
+} // namespace parsons::axes

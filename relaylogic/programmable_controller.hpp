@@ -1,0 +1,90 @@
+// Programmable controller 130 of EP 0360190 (Mitsubishi; seeds/001), Fig. 3: the controller
+// that does the machine's sequence control beside the NC, joined to it by parallel bus 35. An
+// addition, not in the 1952 patent: present only when the profile has spindle synchronisation.
+//
+// Here PC 130 is a small ladder of relays with its own scan (the profile's pc_scan_s): every
+// scan it reads the bus as the NC left it, solves its rungs top to bottom, and sets its outputs.
+// What it does is the seed's Fig. 4, left column, for the tool the card calls for:
+//   S1  tool specifying signal on the bus (a tap card's T): if another head is on the spindle,
+//       exchange it (the motor at rest; the exchange takes the profile's head_change_s), the
+//       new head's gear 30b engaging gear 30a
+//   S2  must the gear ratio in the NC change? (first embodiment: yes after every exchange)
+//   S3  select the new head's ratio A from the PC's memory 132 (the profile's heads)
+//   S4  transfer request to the NC              S5  wait for the NC's "ready" (S13)
+//   S6  transfer: the ratio on the data lines   S7/S8  wait for the NC's "received" (S15)
+//   then drop request and data, and tell the NC the tool is ready.
+// Second embodiment (ratio_source stored, Figs. 5-7): the PC exchanges the head and tells the NC
+// the tool is ready; there is no transfer (steps S2-S8 answer "no"), the NC selects the ratio
+// stored for the tool number in memory 12a itself (relaylogic/gear_ratio_memory.hpp).
+//
+// The NC's side of the handshake (operation I, S11-S16) is gear_ratio_memory.hpp. Both sides
+// act once per scan each (PC first, then the NC), so every step of the handshake is a scan of
+// its own, visible in the trace (scope "spindle": pc130.* relays, bus35.* signals).
+//
+// Faults the seed is about (run --fault, relaylogic/faults.hpp):
+//   stale-ratio:N    at the Nth head exchange the PC's step S2 answers "no change": the head is
+//                    exchanged and the ratio is not transferred; the NC computes with the old one
+//   transfer-hang:N  the Nth transfer never completes: the PC raises the request and the NC
+//                    answers ready, but the data never reaches the NC (the PC stands in S6); the
+//                    NC gives up after transfer_timeout_s (transfer_timeout, exit 3)
+#pragma once
+
+#include "axes/machine_profile.hpp"
+#include "axes/spindle.hpp"
+#include "relaylogic/tracer.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace parsons::relaylogic {
+
+// Parallel bus 35 between NC 10 and PC 130 (through interfaces 9 and 133a).
+struct Bus35 {
+    // NC -> PC
+    int tool_call = 0;        // the tool specifying signal: T, 0 = none
+    bool nc_ready = false;    // S13: NC device preparation completion
+    bool nc_received = false; // S15: data reception completion
+    // PC -> NC
+    bool transfer_request = false; // S4
+    bool data_valid = false;       // S6: the ratio stands on the data lines
+    double data_ratio = 0;         // ... this ratio (from the PC's memory 132)
+    bool tool_ready = false;       // the called head is on the spindle and the PC's sequence done
+
+    bool operator==(const Bus35&) const = default;
+};
+
+class ProgrammableController {
+public:
+    ProgrammableController(Tracer& tracer, const axes::SpindleSyncProfile& profile);
+
+    // Faults (stale-ratio:N, transfer-hang:N): N counts head exchanges / transfers from 1.
+    void stale_ratio_at(long exchange) { stale_ratio_at_ = exchange; }
+    void transfer_hang_at(long transfer) { transfer_hang_at_ = transfer; }
+
+    // One scan of the ladder at machine time t. Reads the NC's signals on the bus, sets its own;
+    // mounts the new head on the spindle when an exchange completes (the motor must stand).
+    void scan(double t, Bus35& bus, axes::Spindle& spindle);
+    // A sequence is under way: more scans are needed (a tool call not yet answered, an
+    // exchange timing, a transfer in progress).
+    bool busy(const Bus35& bus) const;
+
+    long exchanges() const { return exchanges_; } // head exchanges done
+    long transfers() const { return transfers_; } // ratios sent to the NC (S6)
+    bool exchanging() const { return exchange_done_s_ >= 0; }
+
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
+
+private:
+    Tracer& tracer_;
+    axes::SpindleSyncProfile profile_;
+    long stale_ratio_at_ = 0;
+    long transfer_hang_at_ = 0;
+    long exchanges_ = 0;
+    long transfers_ = 0;
+    double exchange_done_s_ = -1; // when the exchange under way completes; -1 = none
+    // The ladder's relays (helper state; each traced): see programmable_controller.cpp.
+    int step_ = 0; // the seed's step the sequence stands at (1..8; 0 idle)
+    int answered_tool_ = 0;
+};
+
+} // namespace parsons::relaylogic
