@@ -148,6 +148,13 @@ std::optional<std::string> TappingUnits::refusal(const cardreader::TapOrder& o,
         return fmt::format("spindle speed {} rev/min: motor 27 turns at most {:g} rev/min", o.rpm,
                            p.max_rpm);
     }
+    const double fastest = o.rpm * std::max(1.0, p.change_factor) / 60.0; // rev/s
+    if (fastest * p.sample_s >= 0.5) {
+        return fmt::format("spindle speed {} rev/min turns motor 27 half a revolution or more "
+                           "between two samples of interface 33 (sample_s {:g} s): its counter "
+                           "could not tell the sense",
+                           o.rpm, p.sample_s);
+    }
     const double feed = o.pitch / 100000.0 * head->ratio * o.rpm;
     if (feed > profile.sync_drive.max_in_per_min) {
         return fmt::format(
