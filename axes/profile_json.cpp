@@ -1,7 +1,6 @@
 #include "axes/profile_json.hpp"
 
 #include "axes/screw_error_table.hpp"
-#include "axes/spindle_json.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -566,8 +565,7 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
                 throw ProfileError("separate_registers: expected true or false");
             }
             p.separate_registers = value.get<bool>();
-        } else if (apply_reading(p, key, value) || apply_press_sync(p, key, value) ||
-                   apply_spindle_sync(p, key, value)) {
+        } else if (apply_reading(p, key, value) || apply_press_sync(p, key, value)) {
             // an interpretation or an addition (above)
         } else {
             throw ProfileError(fmt::format("{}: unknown key", key));
@@ -600,7 +598,6 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
                 press.strokes_per_min * p.max_stepping_rate_per_s / fastest));
         }
     }
-    check_spindle_sync(p);
     return p;
 }
 
@@ -629,7 +626,6 @@ std::string profile_to_json(const MachineProfile& p) {
            {"axes", axes}};
     put_readings(j, p);
     put_press_sync(j, p);
-    put_spindle_sync(j, p);
     return j.dump(2) + "\n";
 }
 

@@ -10,8 +10,6 @@
 // Processor 63 reads the bank.
 #pragma once
 
-#include "relaylogic/direction_judging_device.hpp"
-
 #include "relaylogic/counters.hpp"
 #include "relaylogic/tracer.hpp"
 
@@ -21,9 +19,7 @@ namespace parsons::relaylogic {
 
 class SpeedRegister {
 public:
-    // source names the signals: the press's register 11, or interface 33's count of encoder 32
-    // edges per sample (the speed S of motor 27, EP 0360190).
-    explicit SpeedRegister(Tracer& tracer, PulseSource source = PulseSource::press_detector_10);
+    explicit SpeedRegister(Tracer& tracer);
     void pulse() { count_many(1); }
     void count_many(long n);
     // The sampling instant: the count moves into the holding bank; the counter homes.
@@ -37,8 +33,8 @@ private:
     Tracer& tracer_;
     int count_ = 0;
     int stored_ = 0;
-    SignalId count_signal_ = 0;
-    SignalId stored_signal_ = 0;
+    SignalId count_signal_;
+    SignalId stored_signal_;
 };
 
 } // namespace parsons::relaylogic
