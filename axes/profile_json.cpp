@@ -1,6 +1,8 @@
 #include "axes/profile_json.hpp"
+#include "axes/profile_values.hpp"
 
 #include "axes/screw_error_table.hpp"
+#include "axes/spindle_json.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -13,6 +15,9 @@ namespace parsons::axes {
 namespace {
 
 using nlohmann::json;
+using profile_values::flag;
+using profile_values::number_in;
+using profile_values::whole_in;
 
 // A screw-error table a real screw can have: positions along a screw of a few feet, errors of
 // thousandths left after compensating cam 160. Far beyond, the interpolation overflows.
@@ -212,12 +217,6 @@ json axis_json(const AxisProfile& a) {
 }
 
 // ---- Readings of the patent and additions (MachineProfile's last group) ----
-bool flag(const json& j, const std::string& key) {
-    if (!j.is_boolean()) {
-        throw ProfileError(fmt::format("{}: expected true or false", key));
-    }
-    return j.get<bool>();
-}
 
 // "actions": {"tool_change_s": 8, ...}: each a duration.
 void apply_actions(ActionTimes& a, const json& j) {
@@ -314,30 +313,6 @@ void put_readings(json& j, const MachineProfile& p) {
 }
 
 // ---- Press synchronisation (EP 0436887; axes/press.hpp, docs/press-sync.md) ----
-// A number within a range whose ends may be open; the message names the key and the range.
-double number_in(const json& j, const std::string& key, double least, bool least_open, double most,
-                 bool most_open) {
-    const bool ok = j.is_number() && std::isfinite(j.get<double>()) &&
-                    (least_open ? j.get<double>() > least : j.get<double>() >= least) &&
-                    (most_open ? j.get<double>() < most : j.get<double>() <= most);
-    if (!ok) {
-        const std::string above = fmt::format("{} {}", least_open ? "above" : "at least", least);
-        const std::string below =
-            std::isinf(most) ? ""
-                             : fmt::format(" and {} {}", most_open ? "below" : "at most", most);
-        throw ProfileError(
-            fmt::format("{}: must be a number {}{}, not {}", key, above, below, j.dump()));
-    }
-    return j.get<double>();
-}
-
-long whole_in(const json& j, const std::string& key, long least, long most) {
-    if (!j.is_number_integer() || j.get<long>() < least || j.get<long>() > most) {
-        throw ProfileError(fmt::format("{}: must be a whole number from {} to {}, not {}", key,
-                                       least, most, j.dump()));
-    }
-    return j.get<long>();
-}
 
 // The press's numbers: key, field, range (ends open or closed).
 struct PressNumber {
@@ -565,7 +540,8 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
                 throw ProfileError("separate_registers: expected true or false");
             }
             p.separate_registers = value.get<bool>();
-        } else if (apply_reading(p, key, value) || apply_press_sync(p, key, value)) {
+        } else if (apply_reading(p, key, value) || apply_press_sync(p, key, value) ||
+                   apply_spindle_sync(p, key, value)) {
             // an interpretation or an addition (above)
         } else {
             throw ProfileError(fmt::format("{}: unknown key", key));
@@ -598,6 +574,7 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
                 press.strokes_per_min * p.max_stepping_rate_per_s / fastest));
         }
     }
+    check_spindle_sync(p);
     return p;
 }
 
@@ -626,6 +603,7 @@ std::string profile_to_json(const MachineProfile& p) {
            {"axes", axes}};
     put_readings(j, p);
     put_press_sync(j, p);
+    put_spindle_sync(j, p);
     return j.dump(2) + "\n";
 }
 

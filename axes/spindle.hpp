@@ -10,7 +10,9 @@
 // passes through zero on a reversal (so each segment turns one way only), and the profile's
 // lasting change (change_at_s: from then on the motor turns at change_factor x its commanded
 // speed). Run-up (the speed's magnitude growing) is at run_up_rpm_per_s, run-down at
-// run_down_rpm_per_s; a reversal runs down to rest, then up the other way (plugging).
+// run_down_rpm_per_s; a reversal runs down to rest, then up the other way (plugging). The
+// lasting change is a boundary of every segment that spans change_at_s, unless the motor stands
+// commanded to stand: then nothing happens there, and the next command finds the change come.
 //
 // Encoder 32: phases A and B in quadrature, encoder_pulses_per_rev edges a motor revolution.
 // The count c = floor(phi x ppr): an edge at each whole multiple m / ppr of a revolution
@@ -57,8 +59,9 @@ public:
     std::optional<DetectorEdge> advance_to(double t);
 
     // Fast-forward: the time of the n-th coming edge (n >= 1) within this segment, or kNever if
-    // the segment ends first; how many come at or before t; take the next n at once (the n-th
-    // is returned, as advance_to() would return it).
+    // the segment ends first; how many come at or before t (exactly the n with pulse_time(n)
+    // <= t; pulses_by(kNever) is all the segment's edges, LONG_MAX for a steady speed that never
+    // ends); take the next n at once (the n-th is returned, as advance_to() would return it).
     double pulse_time(long n) const;
     long pulses_by(double t) const;
     DetectorEdge skip_pulses(long n);
@@ -84,24 +87,48 @@ public:
     void load(const nlohmann::json& j);
 
 private:
+    // A segment as it follows from where it starts (time t0, angle phi0, speed rpm0) and what
+    // is commanded: its constant acceleration, the boundary that ends it, the angle and speed
+    // there, and the sense it turns (+1, -1; 0 standing).
+    struct Segment {
+        double a_rpm_per_s = 0;
+        double end_t = kNever;
+        double end_revs = 0;
+        double end_rpm = 0;
+        int sense = 0;
+    };
+    Segment segment_from(double t0, double phi0, double rpm0) const;
+    bool changed_at(double t) const; // the lasting change has come by time t
+    void start_segment(double t0, double phi0, double rpm0);
+    void plan_pulse();
+    // Edge m stands at m / ppr motor revolutions; the n-th coming edge (n >= 1) is
+    // edge_index(n).
+    double edge_revs(long m) const { return static_cast<double>(m) / ppr_; }
+    long edge_index(long n) const { return seg_.sense > 0 ? count_ + n : count_ - n + 1; }
+    bool in_segment(long m) const;
+    long edges_left() const; // edges still to come before the segment ends
+    double edge_time(long m) const;
+    double revs_formula(double t) const; // the segment's quadratic, unclamped
+    DetectorEdge take_edge(long m, double t);
+
     SpindleSyncProfile profile_;
+    double ppr_ = 24;
     double t_ = 0;
+    double phi_ = 0; // motor revolutions now, unwrapped
     double commanded_rpm_ = 0;
     long count_ = 0;
     int tool_ = 0;
     double ratio_ = 0;
     double next_time_ = kNever;
     bool next_is_pulse_ = false;
-    // The implementation keeps its segment here (start time, angle, speed, acceleration, end)
-    // and the tool's revolutions at the last mount; see axes/spindle.cpp.
+    // The segment: from time seg_t0_ at angle seg_phi0_ and speed seg_rpm0_ (rev/min, signed).
     double seg_t0_ = 0;
     double seg_phi0_ = 0;
-    double seg_w0_ = 0; // rev/s at the segment's start, signed
-    double seg_a_ = 0;  // rev/s2, signed
-    double seg_end_ = kNever;
+    double seg_rpm0_ = 0;
+    Segment seg_;
+    // Where the motor and the tool stood at the last mount (tool_revs() continues from there).
     double mount_phi_ = 0;
     double mount_tool_revs_ = 0;
-    bool changed_ = false; // the lasting change has come
 };
 
 } // namespace parsons::axes

@@ -72,7 +72,8 @@ bool starts_section(const LayoutField& f) {
     return f.kind == FieldKind::spindle || f.kind == FieldKind::motion ||
            f.kind == FieldKind::card_number || f.kind == FieldKind::event ||
            f.kind == FieldKind::extension || f.kind == FieldKind::position_sync ||
-           f.kind == FieldKind::loop_mark || f.kind == FieldKind::travel_per_pulse;
+           f.kind == FieldKind::loop_mark || f.kind == FieldKind::travel_per_pulse ||
+           f.kind == FieldKind::tap_tool;
 }
 
 // A section name in bold over columns first..last.
@@ -89,8 +90,9 @@ void section_name(std::string& svg, std::string name, int first, int last) {
 
 // Field names and rules over the columns: the layout's motion-card fields, or on a condition
 // card (an addition after EP 0640901) its five condition slots, or on a sync card (an addition
-// after EP 0436887) its position sync, loop and travel-per-pulse fields; on both the extension
-// mark in column 76 and the card number.
+// after EP 0436887) its position sync, loop and travel-per-pulse fields, or on a tap card (an
+// addition after EP 0360190) its tool, feed axis, sense, depth, pitch and speed; on each of
+// them the extension mark in column 76 and the card number.
 void draw_fields(std::string& svg, const CardLayout& layout, CardKind kind) {
     const bool condition_card = kind == CardKind::condition;
     svg += fmt::format(R"(<g font-family="DejaVu Sans, Arial, sans-serif" fill="{}" )"
@@ -99,7 +101,9 @@ void draw_fields(std::string& svg, const CardLayout& layout, CardKind kind) {
                        kInk);
     std::vector<LayoutField> fields = layout.fields;
     if (kind != CardKind::motion) {
-        fields = condition_card ? layout.condition_fields : layout.sync_fields;
+        fields = condition_card           ? layout.condition_fields
+                 : kind == CardKind::sync ? layout.sync_fields
+                                          : layout.tap_fields;
         fields.push_back({FieldKind::extension, std::nullopt, layout.extension_column, 1});
         if (const LayoutField* number = layout.find(FieldKind::card_number)) {
             fields.push_back(*number);
@@ -146,6 +150,14 @@ void draw_fields(std::string& svg, const CardLayout& layout, CardKind kind) {
                 section_name(svg, std::string(axis_name(f.axis.value_or(Axis::table))),
                              f.first_column - 2, f.last_column());
             }
+        }
+        svg += "\n</g>\n";
+        return;
+    }
+    if (kind == CardKind::tap) {
+        if (!layout.tap_fields.empty()) {
+            section_name(svg, "tap (EP 0360190)", layout.tap_fields.front().first_column,
+                         layout.tap_fields.back().last_column() - 2);
         }
         svg += "\n</g>\n";
         return;
@@ -257,6 +269,7 @@ std::string card_svg(const Card& card, const CardLayout& layout, const CardPictu
     draw_fields(svg, layout,
                 is_condition_card(card, layout) ? CardKind::condition
                 : is_sync_card(card, layout)    ? CardKind::sync
+                : is_tap_card(card, layout)     ? CardKind::tap
                                                 : CardKind::motion);
     draw_interpretation(svg, card, code);
     draw_holes(svg, card, notes.bad_punch);

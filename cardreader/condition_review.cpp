@@ -30,8 +30,10 @@ std::vector<ConditionFinding>
 ConditionReview::card(long index, const CardOrders& orders,
                       const std::array<std::optional<Thousandths>, kAxisCount>& at) {
     std::vector<ConditionFinding> found;
-    if (orders.kind == CardKind::sync) {
-        return found; // a sync card moves nothing: the conditions wait for the motion card
+    if (orders.kind == CardKind::sync || orders.kind == CardKind::tap) {
+        // A sync card moves nothing, and a tap card's feed is not a motion card's: the
+        // conditions wait for the motion card.
+        return found;
     }
     if (orders.kind == CardKind::condition) {
         if (!allowed_) {

@@ -196,6 +196,9 @@ std::vector<ReviewNote> DeckReviewer::condition_notes(const CardOrders& orders) 
     for (SyncFinding& f : sync_.card(index_, orders)) {
         notes.push_back({f.axis, std::move(f.message), true, f.card, f.column, true});
     }
+    for (TapFinding& f : tap_.card(index_, orders)) {
+        notes.push_back({f.axis, std::move(f.message), true, f.card, f.column, true});
+    }
     return notes;
 }
 
@@ -226,7 +229,7 @@ std::vector<ReviewNote> DeckReviewer::review(const CardOrders& orders) {
     }
     previous_number_ = orders.number;
     if (orders.kind != CardKind::motion) {
-        return notes; // no axis moves on a condition card or a sync card
+        return notes; // no axis moves by the 1952 columns on a condition, sync or tap card
     }
 
     std::array<std::optional<Thousandths>, kAxisCount> travel{};

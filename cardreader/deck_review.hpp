@@ -21,6 +21,7 @@
 #include "cardreader/condition_review.hpp"
 #include "cardreader/orders.hpp"
 #include "cardreader/sync_review.hpp"
+#include "cardreader/tap_review.hpp"
 
 #include <array>
 #include <optional>
@@ -65,7 +66,7 @@ struct ReviewNote {
     // travel, a sequence stall in every order, a coast the next check will count), not
     // only a risk: `parsons check` then exits 3. The coast is a STOP on the card after it.
     bool stops = false;
-    // Condition and sync cards (additions): the card and column the note is about (0: this
+    // Condition, sync and tap cards (additions): the card and column the note is about (0: this
     // card, no column), and whether it is a deck error (`run` refuses the deck; show and check
     // exit 2).
     long card = 0;
@@ -96,6 +97,11 @@ public:
     void allow_sync(bool allowed, std::string profile, PressLimits limits = {}) {
         sync_ = SyncReview(allowed, std::move(profile), limits);
     }
+    // Tap cards: whether the profile has spindle synchronisation (default: yes), its name and
+    // what its spindle heads, motor 27 and follower drive allow.
+    void allow_tap(bool allowed, std::string profile, SpindleLimits limits = {}) {
+        tap_ = TapReview(allowed, std::move(profile), std::move(limits));
+    }
     // After the last card: a condition or sync card with no motion card after it.
     std::vector<ReviewNote> finish();
 
@@ -109,6 +115,7 @@ private:
     std::optional<std::array<AxisDynamics, kAxisCount>> dynamics_;
     ConditionReview conditions_;
     SyncReview sync_;
+    TapReview tap_;
     long index_ = 0; // cards reviewed or skipped
     std::optional<int> previous_number_;
     // The coast the previous card's stop leaves on each axis (0 where none is warned of): the

@@ -1,5 +1,5 @@
-// Reading punched fields (field_reading.hpp): shared by the motion card, the condition card and
-// the sync card.
+// Reading punched fields (field_reading.hpp): shared by the motion card, the condition card, the
+// sync card and the tap card.
 #include "cardreader/field_reading.hpp"
 
 #include <fmt/format.h>
@@ -95,12 +95,14 @@ void find_strays(const Card& card, const std::array<ColumnWord, kColumns + 1>& a
         if (stray != 0) {
             const LayoutField* f = kind == CardKind::condition ? layout.condition_field_at(c)
                                    : kind == CardKind::sync    ? layout.sync_field_at(c)
+                                   : kind == CardKind::tap     ? layout.tap_field_at(c)
                                                                : layout.field_at(c);
             std::string where =
                 f ? fmt::format("in {}", field_label(*f))
                   : fmt::format("in column {}, which layout {} leaves unused{}", c, layout.name,
                                 kind == CardKind::condition ? " on a condition card"
                                 : kind == CardKind::sync    ? " on a sync card"
+                                : kind == CardKind::tap     ? " on a tap card"
                                                             : "");
             problems.add(c, fmt::format("punch in {} {} where none belongs ({})",
                                         hole_count(stray) == 1 ? "row" : "rows", join_rows(stray),

@@ -1,6 +1,7 @@
 // Reading punched fields, shared by the motion card's decode (layout.cpp), the condition
-// card's (condition_card.cpp) and the sync card's (sync_card.cpp): a digit column, a number of
-// digit columns, and the collection of bad punches that reports the lowest column first.
+// card's (condition_card.cpp), the sync card's (sync_card.cpp) and the tap card's (tap_card.cpp):
+// a digit column, a number of digit columns, and the collection of bad punches that reports the
+// lowest column first.
 #pragma once
 
 #include "cardreader/card.hpp"

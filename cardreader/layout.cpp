@@ -3,6 +3,7 @@
 #include "cardreader/condition_card.hpp"
 #include "cardreader/field_reading.hpp"
 #include "cardreader/sync_card.hpp"
+#include "cardreader/tap_card.hpp"
 
 #include <fmt/format.h>
 
@@ -18,6 +19,7 @@ using detail::read_number;
 constexpr ColumnWord r0 = row_bit(Row::r0);
 constexpr ColumnWord r1 = row_bit(Row::r1);
 constexpr ColumnWord r2 = row_bit(Row::r2);
+constexpr ColumnWord r3 = row_bit(Row::r3);
 constexpr ColumnWord r12 = row_bit(Row::r12);
 
 // The rows a field may punch in its columns (the 12-row cross marks are added separately).
@@ -31,6 +33,7 @@ ColumnWord rows_allowed(FieldKind k) {
     case FieldKind::extension:
         return r1;
     case FieldKind::sense:
+    case FieldKind::tap_sense:
         return r0 | r1;
     case FieldKind::position_sync:
     case FieldKind::loop_mark:
@@ -68,8 +71,47 @@ CardLayout make_fig8() {
     layout.extension_column = 76;
     add_condition_fields(layout);
     add_sync_fields(layout);
+    add_tap_fields(layout);
     layout.index();
     return layout;
+}
+
+// More than one extension mark in column 76 (rows 1, 2 and 3 each mark a kind of card): a bad
+// punch naming the rows and what each marks.
+std::optional<BadPunch> two_marks(const Card& card, const CardLayout& layout) {
+    if (layout.extension_column == 0) {
+        return std::nullopt;
+    }
+    static constexpr std::array<std::pair<Row, std::string_view>, 3> kMarks = {
+        std::pair{Row::r1, std::string_view("a condition card")},
+        std::pair{Row::r2, std::string_view("a sync card")},
+        std::pair{Row::r3, std::string_view("a tap card")}};
+    std::vector<std::string> rows;
+    std::vector<std::string> meanings;
+    for (const auto& [row, kind] : kMarks) {
+        if (card.punched(layout.extension_column, row)) {
+            rows.emplace_back(row_name(row));
+            meanings.push_back(
+                fmt::format("row {}{} {}", row_name(row), meanings.empty() ? " marks" : "", kind));
+        }
+    }
+    if (rows.size() < 2) {
+        return std::nullopt;
+    }
+    auto join = [](const std::vector<std::string>& words, std::string_view last) {
+        std::string text;
+        for (std::size_t i = 0; i < words.size(); ++i) {
+            text += i == 0 ? "" : i + 1 == words.size() ? std::string(last) : ", ";
+            text += words.at(i);
+        }
+        return text;
+    };
+    // "column 76 punched in rows 1 and 2: row 1 marks a condition card, row 2 a sync card, not
+    // both"
+    return BadPunch{layout.extension_column,
+                    fmt::format("column {} punched in rows {}: {}, {}", layout.extension_column,
+                                join(rows, " and "), join(meanings, ", "),
+                                rows.size() == 2 ? "not both" : "only one of them")};
 }
 
 } // namespace
@@ -99,6 +141,19 @@ const LayoutField* CardLayout::find_sync(FieldKind kind, std::optional<Axis> axi
     auto it = std::find_if(sync_fields.begin(), sync_fields.end(),
                            [&](const LayoutField& f) { return f.kind == kind && f.axis == axis; });
     return it == sync_fields.end() ? nullptr : &*it;
+}
+
+const LayoutField* CardLayout::tap_field_at(int column) const {
+    auto it = std::find_if(tap_fields.begin(), tap_fields.end(), [column](const LayoutField& f) {
+        return column >= f.first_column && column <= f.last_column();
+    });
+    return it == tap_fields.end() ? nullptr : &*it;
+}
+
+const LayoutField* CardLayout::find_tap(FieldKind kind) const {
+    auto it = std::find_if(tap_fields.begin(), tap_fields.end(),
+                           [kind](const LayoutField& f) { return f.kind == kind; });
+    return it == tap_fields.end() ? nullptr : &*it;
 }
 
 const LayoutField* CardLayout::field_at(int column) const {
@@ -157,6 +212,13 @@ std::string_view field_short_label(FieldKind kind) {
     case FieldKind::loop_count:
     case FieldKind::travel_per_pulse:
         return sync_field_short_label(kind);
+    case FieldKind::tap_tool:
+    case FieldKind::tap_axis:
+    case FieldKind::tap_sense:
+    case FieldKind::tap_depth:
+    case FieldKind::tap_pitch:
+    case FieldKind::tap_rpm:
+        return tap_field_short_label(kind);
     }
     return "";
 }
@@ -184,6 +246,13 @@ std::string field_label(const LayoutField& field) {
     case FieldKind::loop_count:
     case FieldKind::travel_per_pulse:
         return sync_field_label(field);
+    case FieldKind::tap_tool:
+    case FieldKind::tap_axis:
+    case FieldKind::tap_sense:
+    case FieldKind::tap_depth:
+    case FieldKind::tap_pitch:
+    case FieldKind::tap_rpm:
+        return tap_field_label(field);
     case FieldKind::motion:
         what = "motion";
         break;
@@ -229,6 +298,11 @@ void CardLayout::index() {
                                                             : sf     ? rows_allowed(sf->kind)
                                                             : number ? kDigitRows
                                                                      : ColumnWord{0};
+        const LayoutField* tf = tap_field_at(c);
+        tap_allowed_rows.at(static_cast<std::size_t>(c)) = c == extension_column ? r3
+                                                           : tf     ? rows_allowed(tf->kind)
+                                                           : number ? kDigitRows
+                                                                    : ColumnWord{0};
     }
 }
 
@@ -240,8 +314,13 @@ bool is_sync_card(const Card& card, const CardLayout& layout) {
     return layout.extension_column != 0 && card.punched(layout.extension_column, Row::r2);
 }
 
+bool is_tap_card(const Card& card, const CardLayout& layout) {
+    return layout.extension_column != 0 && card.punched(layout.extension_column, Row::r3);
+}
+
 bool is_extension_card(const Card& card, const CardLayout& layout) {
-    return is_condition_card(card, layout) || is_sync_card(card, layout);
+    return is_condition_card(card, layout) || is_sync_card(card, layout) ||
+           is_tap_card(card, layout);
 }
 
 const CardLayout& fig8_layout() {
@@ -260,20 +339,18 @@ DecodeResult decode(const Card& card, const CardLayout& layout) {
     DecodeResult result;
     Problems problems;
 
-    const bool condition = is_condition_card(card, layout);
-    if (condition && is_sync_card(card, layout)) {
-        result.bad_punch = BadPunch{
-            layout.extension_column,
-            fmt::format("column {} punched in rows 1 and 2: row 1 marks a condition card, row 2 a "
-                        "sync card, not both",
-                        layout.extension_column)};
+    if (auto both = two_marks(card, layout)) {
+        result.bad_punch = std::move(both);
         return result;
     }
-    if (condition) {
+    if (is_condition_card(card, layout)) {
         return decode_condition_card(card, layout);
     }
     if (is_sync_card(card, layout)) {
         return decode_sync_card(card, layout);
+    }
+    if (is_tap_card(card, layout)) {
+        return decode_tap_card(card, layout);
     }
     detail::find_strays(card, layout.allowed_rows, layout, CardKind::motion, problems);
 
@@ -395,6 +472,15 @@ EncodeResult encode(const CardOrders& orders, const CardLayout& layout) {
             punch_number(*f, orders.number);
         }
         if (auto error = encode_sync_card(orders.sync, layout, card)) {
+            fail(*error);
+        }
+        return result;
+    }
+    if (orders.kind == CardKind::tap) {
+        if (const auto* f = layout.find(FieldKind::card_number)) {
+            punch_number(*f, orders.number);
+        }
+        if (auto error = encode_tap_card(orders.tap, layout, card)) {
             fail(*error);
         }
         return result;

@@ -50,6 +50,16 @@ enum class FieldKind : std::uint8_t {
     loop_target,
     loop_count,
     travel_per_pulse,
+    // The fields of a tap card (an addition after EP 0360190; docs/card-layout.md): the tool T
+    // (two digits, 01-99), the feed axis (one digit 1-5), the sense into the work (row 0
+    // forward, row 1 reverse), the depth (d.ddd in), the pitch (five digits read 0.ddddd in per
+    // tool revolution) and spindle motor 27's speed S (four digits, rev/min).
+    tap_tool,
+    tap_axis,
+    tap_sense,
+    tap_depth,
+    tap_pitch,
+    tap_rpm,
 };
 
 struct LayoutField {
@@ -86,11 +96,18 @@ struct CardLayout {
     const LayoutField* sync_field_at(int column) const;
     const LayoutField* find_sync(FieldKind kind, std::optional<Axis> axis = std::nullopt) const;
 
+    // The tap card (an addition): the fields of a card marked in row 3 of the extension column;
+    // the card number stays where the motion card has it.
+    std::vector<LayoutField> tap_fields;
+    const LayoutField* tap_field_at(int column) const;
+    const LayoutField* find_tap(FieldKind kind) const;
+
     // The rows each column may be punched in (index 1..80), worked out once by index(): on a
-    // motion card, on a condition card and on a sync card.
+    // motion card, on a condition card, on a sync card and on a tap card.
     std::array<ColumnWord, kColumns + 1> allowed_rows{};
     std::array<ColumnWord, kColumns + 1> condition_allowed_rows{};
     std::array<ColumnWord, kColumns + 1> sync_allowed_rows{};
+    std::array<ColumnWord, kColumns + 1> tap_allowed_rows{};
     void index();
 };
 
@@ -98,12 +115,14 @@ struct CardLayout {
 bool is_condition_card(const Card& card, const CardLayout& layout);
 // Is this card marked as a sync card (row 2 of the layout's extension column)?
 bool is_sync_card(const Card& card, const CardLayout& layout);
-// Is it either (an extension card: an addition, whose double punches are bad punches in every
-// profile)?
+// Is this card marked as a tap card (row 3 of the layout's extension column)?
+bool is_tap_card(const Card& card, const CardLayout& layout);
+// Is it any of them (an extension card: an addition, whose double punches are bad punches in
+// every profile)?
 bool is_extension_card(const Card& card, const CardLayout& layout);
 
 // "table stop", "spindle", "card number", "condition 2 position", "sync angle",
-// "table travel per pulse"
+// "table travel per pulse", "tap pitch"
 std::string field_label(const LayoutField& field);
 // Short label for card pictures: "STOP", "SLOW 1", "CHECK"
 std::string_view field_short_label(FieldKind kind);

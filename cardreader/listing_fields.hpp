@@ -1,9 +1,12 @@
-// The listing's fields (listing_format.hpp): trimming, splitting at commas and digit tests,
-// shared by the motion and condition rows (listing_format.cpp) and the sync rows
-// (sync_listing.cpp).
+// The listing's fields (listing_format.hpp): trimming, splitting at commas, digit tests and
+// d.ddd inches, shared by the motion and condition rows (listing_format.cpp), the sync rows
+// (sync_listing.cpp) and the tap rows (tap_listing.cpp).
 #pragma once
 
+#include "cardreader/orders.hpp"
+
 #include <algorithm>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -36,5 +39,10 @@ inline bool all_digits(std::string_view s) {
     return !s.empty() &&
            std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
+
+// Parses a d.ddd inch value (listing_format.cpp), or throws DeckError naming file, line and
+// `field` with the reason.
+Thousandths parse_inches(std::string_view text, std::string_view field, const std::string& file,
+                         long line);
 
 } // namespace parsons::cardreader::detail

@@ -3,6 +3,7 @@
 #include "cardreader/deck_error.hpp"
 #include "cardreader/listing_fields.hpp"
 #include "cardreader/sync_listing.hpp"
+#include "cardreader/tap_listing.hpp"
 
 #include <fmt/format.h>
 
@@ -18,12 +19,14 @@ constexpr std::size_t kFieldCount = 10;
 constexpr std::size_t kMaxLineBytes = 4096;
 
 using detail::all_digits;
+using detail::parse_inches;
 using detail::split_fields;
 using detail::trim;
 
-// Parses a d.ddd inch value, or throws with the reason.
-Thousandths parse_inches(std::string_view text, std::string_view field, const std::string& file,
-                         long line) {
+} // namespace
+
+Thousandths detail::parse_inches(std::string_view text, std::string_view field,
+                                 const std::string& file, long line) {
     auto fail = [&](const std::string& why) {
         return DeckError::at_line(file, line, fmt::format("{} '{}': {}", field, text, why));
     };
@@ -51,6 +54,8 @@ Thousandths parse_inches(std::string_view text, std::string_view field, const st
     value += (decimals[0] - '0') * 100 + (decimals[1] - '0') * 10 + (decimals[2] - '0');
     return static_cast<Thousandths>(value);
 }
+
+namespace {
 
 struct ListingRow {
     int card = 0;
@@ -261,6 +266,9 @@ public:
                 out_ << row << '\n';
             }
         }
+        if (decoded.orders.kind == CardKind::tap) {
+            out_ << tap_row(decoded.orders) << '\n';
+        }
         for (Axis a : kAxes) {
             if (decoded.orders.kind == CardKind::motion) {
                 out_ << listing_row(decoded.orders, a) << '\n';
@@ -402,6 +410,28 @@ std::optional<ListedCard> ListingReader::next_sync_card(std::string first) {
     return card;
 }
 
+std::optional<ListedCard> ListingReader::next_tap_card(std::string first) {
+    ListedCard card;
+    card.orders.kind = CardKind::tap;
+    card.first_line = line_;
+    auto [number, order] = read_tap_row(first, file_, line_);
+    card.orders.number = number;
+    card.orders.tap = order;
+    if (auto next = next_data_line()) {
+        const auto field = split_fields(*next)[0];
+        if (is_tap_row(*next) && all_digits(field) && field.size() <= 4 &&
+            std::stoi(std::string(field)) == number) {
+            throw DeckError::at_line(file_, line_,
+                                     fmt::format("card {} has a second tap row (first on line "
+                                                 "{}): a tap card taps one hole; give the next "
+                                                 "its own card number",
+                                                 number, card.first_line));
+        }
+        pending_ = std::move(*next); // the next card begins
+    }
+    return card;
+}
+
 std::optional<ListedCard> ListingReader::next() {
     ListedCard card;
     std::array<bool, kAxisCount> seen{};
@@ -414,18 +444,23 @@ std::optional<ListedCard> ListingReader::next() {
         } else {
             text = next_data_line();
         }
-        const bool condition = text && is_condition_row(*text);
-        if (condition || (text && is_sync_row(*text))) {
+        const std::string_view kind = !text                     ? ""
+                                      : is_condition_row(*text) ? "condition"
+                                      : is_sync_row(*text)      ? "sync"
+                                      : is_tap_row(*text)       ? "tap"
+                                                                : "";
+        if (!kind.empty()) {
             if (rows == 0) {
-                return condition ? next_condition_card(std::move(*text))
-                                 : next_sync_card(std::move(*text));
+                return kind == "condition" ? next_condition_card(std::move(*text))
+                       : kind == "sync"    ? next_sync_card(std::move(*text))
+                                           : next_tap_card(std::move(*text));
             }
             auto missing = std::find(seen.begin(), seen.end(), false) - seen.begin();
             throw DeckError::at_line(
                 file_, line_,
                 fmt::format("a {} row begins, but card {} (from line {}) has no row for the {} "
                             "axis",
-                            condition ? "condition" : "sync", card.orders.number, card.first_line,
+                            kind, card.orders.number, card.first_line,
                             axis_name(kAxes.at(static_cast<std::size_t>(missing)))));
         }
         if (!text) {

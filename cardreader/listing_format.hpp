@@ -25,6 +25,11 @@
 //   3,sync,position,30
 //   3,sync,speed,table,0.00417
 //   12,sync,loop,1,100
+//
+// A tap card (an addition after EP 0360190, docs/deck-formats.md) is one row with the word `tap`
+// (tap_listing.hpp):
+//
+//   12,tap,1,vertical,reverse,0.600,0.05000,240
 #pragma once
 
 #include "cardreader/deck_io.hpp"
@@ -53,6 +58,7 @@ private:
     std::optional<std::string> next_data_line();
     std::optional<ListedCard> next_condition_card(std::string first);
     std::optional<ListedCard> next_sync_card(std::string first);
+    std::optional<ListedCard> next_tap_card(std::string first);
 
     std::optional<std::string> pending_; // a line read ahead, the first of the next card
 

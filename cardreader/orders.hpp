@@ -150,6 +150,8 @@ std::string format_travel_per_pulse(int hundred_thousandths);
 // tool revolution, from the encoder's speed times the ratio, S x A) to the depth, and comes back
 // out as the spindle reverses. It stands alone: no axis moves by the 1952 columns on it.
 inline constexpr int kMaxPitch = 99999; // 0.99999 in per tool revolution
+inline constexpr int kMaxTapTool = 99;  // T: two digits on the card
+inline constexpr int kMaxTapRpm = 9999; // S: four digits on the card, rev/min
 
 struct TapOrder {
     int tool = 0;                    // T: the head to tap with (1..99)

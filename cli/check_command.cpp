@@ -4,8 +4,9 @@
 // runs; with the careful operator's warnings of `parsons show` (deck_review) beside them.
 //
 // The moves are the cards' own: each axis travels its check in the sense of its motion
-// column, from where the last card left it (every axis starts the deck at zero). Coast and
-// screw error are the run's business, not the check's.
+// column, from where the last card left it (every axis starts the deck at zero); a tap card
+// (an addition after EP 0360190) takes its feed axis its depth into the work and back. Coast
+// and screw error are the run's business, not the check's.
 //
 // Exit 0: the deck will run through (warnings of risks may stand). Exit 3: the machine will
 // stop on it: a card passes a limit, a bad punch, or a review finding marked STOP (a card
@@ -62,8 +63,8 @@ ExitCode run_check(const CheckFlags& f) {
     Json findings = Json::array();
     std::optional<std::string> first_deck_error;
     long deck_errors = 0;
-    // A condition or sync card's deck error (additions): `run` refuses the deck, so check exits
-    // 2.
+    // A condition, sync or tap card's deck error (additions): `run` refuses the deck, so check
+    // exits 2.
     auto deck_error = [&](const ReviewNote& n, const Json& number) {
         ++deck_errors;
         first_deck_error = first_deck_error.value_or(
@@ -125,11 +126,10 @@ ExitCode run_check(const CheckFlags& f) {
             findings.push_back(
                 finding(index, o.number, n.stops ? "stop" : "warning", n.axis, n.message));
         }
-        for (Axis a : kAxes) {
+        // The axis moves `move` inches from where it stands; a tap comes back (`returns`).
+        auto judge = [&](Axis a, double move, bool returns) {
             const auto& p = profile.axes.at(axis_index(a));
-            const AxisOrder& x = o.axis(a);
             double& pos = at.at(axis_index(a));
-            const double move = (x.motion == Motion::forward ? 1 : -1) * x.check / 1000.0;
             const double to = pos + move;
             std::string past;
             double limit = 0;
@@ -147,8 +147,8 @@ ExitCode run_check(const CheckFlags& f) {
             if (!past.empty()) {
                 ++passing;
                 const std::string message =
-                    fmt::format("{} moves {:+.3f} in, from {:.3f} to {:.3f} in, past {}",
-                                axis_name(a), move, pos, to, past);
+                    fmt::format("{} {} {:+.3f} in, from {:.3f} to {:.3f} in, past {}", axis_name(a),
+                                returns ? "taps" : "moves", move, pos, to, past);
                 if (text) {
                     fmt::print("card {} (number {:04}): {}\n", index, o.number, message);
                 }
@@ -159,7 +159,16 @@ ExitCode run_check(const CheckFlags& f) {
                 found["limit_kind"] = limit_kind;
                 findings.push_back(std::move(found));
             }
-            pos = to;
+            pos = returns ? pos : to;
+        };
+        if (o.kind == CardKind::tap) {
+            const TapOrder& t = o.tap;
+            judge(t.axis, (t.motion == Motion::forward ? 1 : -1) * t.depth / 1000.0, true);
+            continue;
+        }
+        for (Axis a : kAxes) {
+            const AxisOrder& x = o.axis(a);
+            judge(a, (x.motion == Motion::forward ? 1 : -1) * x.check / 1000.0, false);
         }
     }
     for (const ReviewNote& n : reviewer.finish()) {
@@ -172,7 +181,7 @@ ExitCode run_check(const CheckFlags& f) {
                    index, index == 1 ? "" : "s", passing, passing == 1 ? "" : "s", bad, stops,
                    stops == 1 ? "" : "s", warnings, warnings == 1 ? "" : "s");
         if (deck_errors > 0) {
-            fmt::print("{} deck error{} in condition or sync cards: run refuses the deck\n",
+            fmt::print("{} deck error{} in condition, sync or tap cards: run refuses the deck\n",
                        deck_errors, deck_errors == 1 ? "" : "s");
         }
     } else {
@@ -217,8 +226,8 @@ void add_check_command(CLI::App& app, Command& selected) {
                                                 "may stand)"},
                                  {ExitCode::machine_stop,
                                   "the machine will stop on the deck: a card passes a limit, a "
-                                  "bad punch, or a finding marked STOP (a condition or sync card's "
-                                  "deck error, which run refuses, is exit 2)"}}) +
+                                  "bad punch, or a finding marked STOP (a condition, sync or tap "
+                                  "card's deck error, which run refuses, is exit 2)"}}) +
                 "Examples:\n"
                 "  parsons check decks/samples/patent-example.csv --limit table=0:9.5\n"
                 "  parsons check decks/samples/patent-example.csv --limit cross=0:2   (card 1 "

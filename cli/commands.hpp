@@ -13,6 +13,9 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace parsons::cli {
 
@@ -38,7 +41,9 @@ struct RunRequest {
     std::string plot;
     std::string cut;
     std::string job;
-    std::string press_proof; // the press-feeder job file to prove the run against
+    std::string press_proof;  // the press-feeder job file to prove the run against
+    std::string thread_proof; // the tapping job file to prove the run's threads against
+    std::optional<double> thread_tolerance_percent; // --thread-tolerance (else the job's)
     std::string profile;
     std::string feed; // cards | ribbon; empty: as the profile (and the deck's format) say
     std::vector<std::string> faults;

@@ -199,10 +199,22 @@ cardreader::PressLimits press_limits(const axes::MachineProfile& profile) {
     return limits;
 }
 
+cardreader::SpindleLimits spindle_limits(const axes::MachineProfile& profile) {
+    cardreader::SpindleLimits limits;
+    limits.heads.clear();
+    for (const axes::SpindleHead& h : profile.spindle.heads) {
+        limits.heads.push_back({h.tool, h.ratio});
+    }
+    limits.max_rpm = profile.spindle.max_rpm;
+    limits.drive_max_in_per_min = profile.sync_drive.max_in_per_min;
+    return limits;
+}
+
 cardreader::DeckReviewer deck_reviewer(const axes::MachineProfile& profile) {
     cardreader::DeckReviewer reviewer(review_dynamics(profile));
     reviewer.allow_conditions(profile.condition_cards, profile.name, tool_numbers(profile));
     reviewer.allow_sync(profile.press_sync, profile.name, press_limits(profile));
+    reviewer.allow_tap(profile.spindle_sync, profile.name, spindle_limits(profile));
     return reviewer;
 }
 

@@ -71,20 +71,25 @@ private:
     std::unique_ptr<cardreader::CardSource> source_;
 };
 
-// Condition and sync cards (additions): the deck's first deck error (relaylogic cannot take
-// it: a condition or sync card the profile does not allow, a duplicate event, a condition on an
-// axis its motion card does not move, a condition or sync card with no motion card after it,
-// speed sync on an axis that does not move or faster than the sync drive follows, a loop to a
-// card the deck does not hold) as a DeckError naming file, card and column, read before any
-// card runs; the deck is rewound after.
+// Condition, sync and tap cards (additions): the deck's first deck error (relaylogic cannot take
+// it: a condition, sync or tap card the profile does not allow, a duplicate event, a condition
+// on an axis its motion card does not move, a condition or sync card with no motion card after
+// it, speed sync on an axis that does not move or faster than the sync drive follows, a loop to
+// a card the deck does not hold, a tap with a tool no spindle head holds, a speed above motor
+// 27's fastest or a feed the follower drive cannot follow) as a DeckError naming file, card and
+// column, read before any card runs; the deck is rewound after.
 void refuse_deck_errors(InputDeck& deck, const axes::MachineProfile& profile);
-// The name run_command.cpp calls: the same as refuse_deck_errors (condition and sync cards).
+// The name run_command.cpp calls: the same as refuse_deck_errors (condition, sync and tap
+// cards).
 inline void refuse_condition_errors(InputDeck& deck, const axes::MachineProfile& profile) {
     refuse_deck_errors(deck, profile);
 }
 // The review's view of the profile's press and sync drive (sync cards).
 cardreader::PressLimits press_limits(const axes::MachineProfile& profile);
-// A DeckReviewer for `profile`: its motors' dynamics, condition units and press sync.
+// The review's view of the profile's spindle heads, motor 27 and follower drive (tap cards).
+cardreader::SpindleLimits spindle_limits(const axes::MachineProfile& profile);
+// A DeckReviewer for `profile`: its motors' dynamics, condition units, press sync and spindle
+// sync.
 cardreader::DeckReviewer deck_reviewer(const axes::MachineProfile& profile);
 // The numbers of the tools the profile's changer holds (for the condition cards' review).
 std::vector<int> tool_numbers(const axes::MachineProfile& profile);

@@ -3,11 +3,15 @@
 // Then the job that shows the point of EP 0640901 (condition cards, an addition): the same
 // template roughed and finished with two tools, once with the tool change tripped at the change
 // position and once during the return move (decks/two_tool_job.hpp), run under
-// parsons-extended; the difference of their machine times is what the seed saves.
+// parsons-extended; the difference of their machine times is what the seed saves. Then the
+// press feeder (EP 0436887) and the tapping job (EP 0360190): a plate tapped with two taps on two
+// heads, the gear ratio transferred by PC 130 and stored in advance, and once with a head
+// exchange that sends no ratio, which the thread proof names hole by hole.
 #include "cli/commands.hpp"
 #include "cli/output_file.hpp"
 #include "cli/press_feeder.hpp"
 #include "cli/press_proof.hpp"
+#include "cli/tapping.hpp"
 #include "cli/two_tool.hpp"
 
 #include "axes/profile_json.hpp"
@@ -22,6 +26,8 @@
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace parsons::cli {
 namespace {
@@ -126,6 +132,87 @@ ExitCode run_press_demo(const std::string& dir) {
     return ExitCode::ok;
 }
 
+// One run of the tapping job for the demo: its report's tapping block.
+struct TappingRun {
+    ExitCode code = ExitCode::ok;
+    nlohmann::json block;
+};
+
+TappingRun run_tapping(const std::string& deck, const std::string& report,
+                       const std::vector<std::string>& faults) {
+    RunRequest run;
+    run.input = deck;
+    run.thread_proof = deck + ".job.json";
+    run.report = report;
+    run.faults = faults;
+    run.quiet = true;
+    TappingRun r;
+    r.code = run_deck(run);
+    r.block = nlohmann::json::parse(read_text_file(report)).at("tapping");
+    return r;
+}
+
+// "worst pitch error +0.21 % (hole 3)"
+std::string worst_of(const nlohmann::json& block) {
+    const auto& w = block.at("worst_hole");
+    if (w.is_null()) {
+        return "no hole measured";
+    }
+    return fmt::format("worst pitch error {:+.2f} % (hole {})",
+                       w.at("worst_error_percent").get<double>(), w.at("hole").dump());
+}
+
+// The tapping job (spindle synchronisation, an addition after EP 0360190): the ratio
+// transferred, stored, and a head exchange without its transfer (stale-ratio:1).
+ExitCode run_tapping_demo(const std::string& dir) {
+    decks::TappingOptions o;
+    const auto base = axes::extended_profile();
+    fmt::print("\ntapping (spindle synchronisation, an addition after EP 0360190; profile "
+               "parsons-extended): {} holes in {} rows, tool 1 then tool 2 on their own spindle "
+               "heads, each hole's pitch proved to {:g} %\n",
+               o.rows * o.holes_per_row, o.rows, o.tolerance_percent);
+    for (axes::RatioSource source : {axes::RatioSource::transferred, axes::RatioSource::stored}) {
+        o.ratio_source = source;
+        const std::string name = decks::ratio_source_name(source);
+        const std::string deck = dir + "/tapping-" + name + ".csv";
+        generate_tapping_job(o, base, deck, "");
+        const TappingRun r = run_tapping(deck, deck + ".report.json", {});
+        if (r.code != ExitCode::ok) {
+            throw std::logic_error("the demo's tapping deck did not run as planned");
+        }
+        fmt::print("  {} (ratio {}): {} holes, {}, {} head exchange{}, {} ratio{} transferred; "
+                   "every hole within tolerance\n",
+                   deck, name, r.block.at("holes").size(), worst_of(r.block),
+                   r.block.at("head_exchanges").get<long>(),
+                   r.block.at("head_exchanges").get<long>() == 1 ? "" : "s",
+                   r.block.at("transfers").get<long>(),
+                   r.block.at("transfers").get<long>() == 1 ? "" : "s");
+    }
+    const std::string deck = dir + "/tapping-transferred.csv";
+    const TappingRun stale =
+        run_tapping(deck, dir + "/tapping-stale-ratio.report.json", {"stale-ratio:1"});
+    if (stale.code != ExitCode::machine_stop || stale.block.at("holes_flagged").get<long>() == 0) {
+        throw std::logic_error("the demo's stale-ratio run did not cut the wrong pitch it should");
+    }
+    fmt::print("  {} --fault stale-ratio:1 (head exchange 1 sends no ratio): {} of {} holes "
+               "flagged\n",
+               deck, stale.block.at("holes_flagged").get<long>(), stale.block.at("holes").size());
+    for (const auto& h : stale.block.at("holes")) {
+        if (!h.at("flagged").get<bool>() || !h.at("measured").get<bool>()) {
+            continue;
+        }
+        fmt::print("    hole {} (card {:04}, tool {}): pitch cut {:.5f} in against the tap's "
+                   "{:.5f} in ({:+.1f} %, worst revolution {:+.1f} %); memory 12a held ratio "
+                   "{:.4f}, the head's is {:.4f}\n",
+                   h.at("hole").dump(), h.at("number").get<int>(), h.at("tool").get<int>(),
+                   h.at("mean_pitch_in").get<double>(), h.at("tap_pitch_in").get<double>(),
+                   h.at("mean_error_percent").get<double>(),
+                   h.at("worst_error_percent").get<double>(), h.at("ratio_used").get<double>(),
+                   h.at("head_ratio").get<double>());
+    }
+    return ExitCode::ok;
+}
+
 ExitCode run_demo(const std::string& dir) {
     make_folder(dir + "/cards");
     decks::JobDescription description;
@@ -165,13 +252,18 @@ ExitCode run_demo(const std::string& dir) {
     if (code == ExitCode::ok) {
         code = run_press_demo(dir);
     }
+    if (code == ExitCode::ok) {
+        code = run_tapping_demo(dir);
+    }
     fmt::print("\nwrote {0}/naca2412.cbn (+ .job.json), {0}/cards/, {0}/report.json, "
                "{0}/plot.svg, {0}/cut.svg, {0}/trace.vcd (gtkwave), {0}/path.csv, "
                "{0}/centres.csv, and for two tools {0}/two-tool-boundary.csv and "
                "{0}/two-tool-tripped.csv (each + .job.json, .report.json, .cut.svg), and for the "
                "press feeder "
                "{0}/press-feeder.csv and {0}/press-feeder-speed-only.csv (each + .job.json, "
-               ".profile.json, .slowing.json, .report.json)\n",
+               ".profile.json, .slowing.json, .report.json), and for tapping "
+               "{0}/tapping-transferred.csv and {0}/tapping-stored.csv (each + .job.json, "
+               ".profile.json, .report.json) and {0}/tapping-stale-ratio.report.json\n",
                dir);
     return code;
 }
@@ -182,7 +274,8 @@ void add_demo_command(CLI::App& app, Command& selected) {
     auto dir = std::make_shared<std::string>("out/demo");
     CLI::App* cmd = app.add_subcommand(
         "demo", "The default job: generate a NACA 2412 template deck, run it, prove the cut; "
-                "then the two-tool job with its tool change tripped early (EP 0640901)");
+                "then the two-tool job with its tool change tripped early (EP 0640901), the "
+                "press feeder (EP 0436887) and the tapping job (EP 0360190)");
     cmd->add_option("--out", *dir, "Folder for everything the demo writes")->capture_default_str();
     cmd->footer(exit_codes_help({{ExitCode::ok, "the demo ran and its deck completed"},
                                  {ExitCode::interrupted, "stopped by the operator with Ctrl-C"},

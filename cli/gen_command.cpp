@@ -3,13 +3,16 @@
 // With --json, what it prints about the deck is one document for scripts (docs/json-output.md).
 // parsons gen two-tool: the template roughed with one tool and finished with another, the tool
 // change tripped by a condition card during the return move (decks/two_tool_job.hpp; an
-// addition after EP 0640901, run under --profile parsons-extended).
+// addition after EP 0640901, run under --profile parsons-extended). parsons gen press-feeder and
+// parsons gen tapping: the jobs of the press and spindle synchronisations (cli/press_feeder.hpp,
+// cli/tapping.hpp).
 #include "cli/commands.hpp"
 #include "cli/deck_files.hpp"
 #include "cli/json_output.hpp"
 #include "cli/output_file.hpp"
 #include "cli/press_feeder.hpp"
 #include "cli/progress_line.hpp"
+#include "cli/tapping.hpp"
 #include "cli/two_tool.hpp"
 
 #include "cardreader/deck_error.hpp"
@@ -590,6 +593,7 @@ void add_gen_command(CLI::App& app, Command& selected) {
     });
     add_two_tool_command(*gen, selected);
     add_press_feeder_command(*gen, selected);
+    add_tapping_command(*gen, selected);
 }
 
 } // namespace parsons::cli

@@ -5,6 +5,7 @@
 #include "cli/plot_geometry.hpp"
 #include "cli/plot_press_lanes.hpp"
 #include "cli/plot_reduce.hpp"
+#include "cli/plot_spindle_lanes.hpp"
 
 #include <fmt/format.h>
 
@@ -31,6 +32,7 @@ using Point = PlotSvgRecorder::Point;
 //   +--------------------------------------------+ off
 //   cross ... vertical ... swivel ... tilt
 //   crank 21 ... die 20 ... registers 14, 11 ... reader 60 ...   <- with a press only
+//   motor 27 ... tool 16 ... 12a ... feed ... bus 35, PC 130     <- with a tap card only
 //   0     100     200 ...  machine time (s)
 
 namespace {
@@ -139,12 +141,15 @@ struct StopMark {
 
 class ChartWriter {
 public:
-    // press: the run's press (an addition), drawn in lanes under the panels if present.
-    ChartWriter(double t_end, std::size_t message_lines, const PressTrace& press)
-        : press_(press), tx_{0, t_end > 0 ? t_end : 1.0, kLeft, kRight},
+    // press, spindle: the run's press and spindle synchronisation (additions), drawn in lanes
+    // under the panels if present.
+    ChartWriter(double t_end, std::size_t message_lines, const PressTrace& press,
+                const SpindleTrace& spindle)
+        : press_(press), spindle_(spindle), tx_{0, t_end > 0 ? t_end : 1.0, kLeft, kRight},
           time_ticks_(nice_ticks(0, tx_.d1, 10)),
           legend_y_(80 + 16 * static_cast<double>(message_lines)),
-          first_top_(legend_y_ + 62 + 20 * press_legend_rows(press)) {
+          first_top_(legend_y_ + 62 + 20 * press_legend_rows(press) +
+                     20 * spindle_legend_rows(spindle)) {
         svg_.reserve(64 * 1024);
     }
 
@@ -156,6 +161,7 @@ public:
     void panel(std::size_t i, const Panel& p, const std::vector<CardLine>& cards,
                const std::optional<StopMark>& stop);
     void press(const std::vector<CardLine>& cards, const std::optional<StopMark>& stop);
+    void spindle(const std::vector<CardLine>& cards, const std::optional<StopMark>& stop);
     void time_axis(const std::optional<StopMark>& stop);
     std::string finish() {
         fmt::format_to(out(), "</svg>\n");
@@ -168,9 +174,13 @@ private:
     double top(std::size_t i) const {
         return first_top_ + static_cast<double>(i) * (kPanelHeight + kPanelGap);
     }
-    // The panels' bottom, then the press lanes' (an addition; none in a 1952 run).
+    // The panels' bottom, then the press lanes', then the spindle lanes' (additions; none in a
+    // 1952 run).
     double panels_bottom() const { return top(cardreader::kAxisCount - 1) + kPanelHeight; }
-    double time_axis_y() const { return panels_bottom() + press_lanes_height(press_); }
+    double press_bottom() const { return panels_bottom() + press_lanes_height(press_); }
+    double time_axis_y() const { return press_bottom() + spindle_lanes_height(spindle_); }
+    LaneFrame lane_frame_at(double top, const std::vector<CardLine>& cards,
+                            const std::optional<StopMark>& stop) const;
     double height() const { return time_axis_y() + kBottomMargin; }
     void polyline(const std::vector<std::vector<std::pair<double, double>>>& runs,
                   const char* attributes);
@@ -179,6 +189,7 @@ private:
     void trip_markers(const Panel& p, const Scale& ty);
 
     const PressTrace& press_;
+    const SpindleTrace& spindle_;
     std::string svg_;
     Scale tx_;
     Ticks time_ticks_;
@@ -201,6 +212,7 @@ void ChartWriter::begin() {
                        i, kLeft - 7, top(i) - 13, kRight - kLeft + 14, kPanelHeight + 20);
     }
     press_clip_paths(svg_, press_, panels_bottom() + kPanelGap);
+    spindle_clip_paths(svg_, spindle_, press_bottom() + kPanelGap);
     fmt::format_to(out(), "</defs>\n");
 }
 
@@ -283,6 +295,7 @@ void ChartWriter::legend(bool with_conditions) {
         label("condition met (EP 0640901)");
     }
     press_legend(svg_, press_, y + 20); // press synchronisation (an addition): a row of its own
+    spindle_legend(svg_, spindle_, y + 20 + 20 * press_legend_rows(press_)); // spindle sync.
 }
 
 // One label per card where there is room: "card N" when every card has room, else "N".
@@ -493,19 +506,31 @@ void ChartWriter::panel(std::size_t i, const Panel& p, const std::vector<CardLin
     fmt::format_to(out(), "</g>\n</g>\n");
 }
 
-// The press lanes (an addition after EP 0436887) under the panels, on their time axis.
-void ChartWriter::press(const std::vector<CardLine>& cards, const std::optional<StopMark>& stop) {
-    if (!press_.present()) {
-        return;
-    }
-    LaneFrame frame{tx_, &time_ticks_, panels_bottom() + kPanelGap, {}, std::nullopt};
+// Where a group of lanes under the panels stands, on their time axis.
+LaneFrame ChartWriter::lane_frame_at(double top, const std::vector<CardLine>& cards,
+                                     const std::optional<StopMark>& stop) const {
+    LaneFrame frame{tx_, &time_ticks_, top, {}, std::nullopt};
     for (const CardLine& c : cards) {
         frame.card_x.push_back(c.x);
     }
     if (stop) {
         frame.stop_x = tx_(stop->t);
     }
-    press_lanes(svg_, press_, frame);
+    return frame;
+}
+
+// The press lanes (an addition after EP 0436887) under the panels, on their time axis.
+void ChartWriter::press(const std::vector<CardLine>& cards, const std::optional<StopMark>& stop) {
+    if (press_.present()) {
+        press_lanes(svg_, press_, lane_frame_at(panels_bottom() + kPanelGap, cards, stop));
+    }
+}
+
+// The spindle lanes (an addition after EP 0360190) under those, on the same time axis.
+void ChartWriter::spindle(const std::vector<CardLine>& cards, const std::optional<StopMark>& stop) {
+    if (spindle_.present()) {
+        spindle_lanes(svg_, spindle_, lane_frame_at(press_bottom() + kPanelGap, cards, stop));
+    }
 }
 
 void ChartWriter::time_axis(const std::optional<StopMark>& stop) {
@@ -542,7 +567,7 @@ std::string PlotSvgRecorder::svg() const {
     const double t_end = end_time();
     const std::vector<std::string> message =
         stop_ ? wrap(stop_->message, 140, 3) : std::vector<std::string>{};
-    ChartWriter chart(t_end, message.size(), press_);
+    ChartWriter chart(t_end, message.size(), press_, spindle_);
     std::optional<StopMark> stop;
     if (stop_) {
         stop = StopMark{stop_t_, std::string(relaylogic::stop_reason_name(stop_->reason))};
@@ -583,6 +608,7 @@ std::string PlotSvgRecorder::svg() const {
         chart.panel(i, p, cards, stop);
     }
     chart.press(cards, stop);
+    chart.spindle(cards, stop);
     chart.time_axis(stop);
     return chart.finish();
 }

@@ -1,6 +1,7 @@
 // The page geometry the chart of run --plot shares between its parts: the five lead-screw
-// panels (plot_chart.cpp) and the press lanes under them (plot_press_lanes.cpp) stand on one
-// time axis, so they share its margins, its scale and its round ticks.
+// panels (plot_chart.cpp) and the lanes of the additions under them (plot_lanes.hpp: the
+// press's, the spindle's) stand on one time axis, so they share its margins, its scale and its
+// round ticks.
 #pragma once
 
 #include <algorithm>

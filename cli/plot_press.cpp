@@ -11,25 +11,6 @@ namespace parsons::cli {
 using Point = PressTrace::Point;
 
 // ---------------------------------------------------------------------------------------------
-// The reduction (as PlotSvgRecorder's, plot_svg.cpp)
-
-void PressTrace::Reduced::add(Point p) {
-    latest_ = p;
-    if (plot::add_to_buckets(buckets_, p, bucket_s_) && buckets_.size() > kMaxBuckets) {
-        widen();
-    }
-}
-
-void PressTrace::Reduced::widen() {
-    bucket_s_ *= 2;
-    buckets_ = plot::widened(buckets_, bucket_s_);
-}
-
-std::vector<Point> PressTrace::Reduced::points() const {
-    return plot::bucket_points<Point>(buckets_);
-}
-
-// ---------------------------------------------------------------------------------------------
 // Recording
 
 std::optional<std::size_t> PressTrace::define(const relaylogic::SignalInfo& info,
@@ -123,17 +104,11 @@ void PressTrace::card(double seconds, const cardreader::CardOrders& orders) {
 }
 
 void PressTrace::finish(double seconds) {
-    auto hold_on = [seconds](Reduced& r) {
-        const auto latest = r.latest();
-        if (latest && seconds > latest->t) {
-            r.add(Point{seconds, latest->x}); // as it stands to the end
-        }
-    };
     for (Reduced& r : series_) {
-        hold_on(r);
+        r.hold_to(seconds);
     }
     for (Reduced& r : speed_) {
-        hold_on(r);
+        r.hold_to(seconds);
     }
 }
 

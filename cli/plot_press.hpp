@@ -30,6 +30,7 @@
 #pragma once
 
 #include "cardreader/orders.hpp"
+#include "cli/plot_reduce.hpp"
 #include "relaylogic/machine_observer.hpp"
 
 #include <array>
@@ -47,25 +48,8 @@ public:
         double t = 0; // machine seconds
         double x = 0; // in the lane's unit
     };
-    // One signal kept as a line: the M4 reduction, with buckets of its own that widen by
-    // themselves (the press turns while the axes stand, so it cannot wait for theirs).
-    class Reduced {
-    public:
-        static constexpr std::size_t kMaxBuckets = 1000;
-        void add(Point p);
-        std::vector<Point> points() const; // time order, no point twice
-        std::optional<Point> latest() const { return latest_; }
-
-    private:
-        struct Bucket {
-            long slot = 0;
-            Point first, low, high, last;
-        };
-        void widen();
-        std::vector<Bucket> buckets_;
-        std::optional<Point> latest_;
-        double bucket_s_ = 1.0 / 64;
-    };
+    // One signal kept as a line: the M4 reduction (plot_reduce.hpp).
+    using Reduced = plot::ReducedLine<Point>;
     enum class Series : std::uint8_t {
         crank_21_deg,       // crank_21.angle / 10
         die_20_in,          // die_20.height / 1000

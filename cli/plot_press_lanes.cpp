@@ -11,12 +11,9 @@
 //   0     100     200 ...  machine time (s)
 #include "cli/plot_press_lanes.hpp"
 
-#include "cardreader/card_svg.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
 #include <iterator>
 
 namespace parsons::cli {
@@ -25,14 +22,11 @@ using plot::kLeft;
 using plot::kRight;
 using plot::Scale;
 using Point = PressTrace::Point;
-using PagePoints = std::vector<std::pair<double, double>>;
 
 namespace {
 
-constexpr double kPanelGap = 42;   // as the panels' (plot_chart.cpp)
-constexpr double kLaneHeight = 64; // a lane with a scale
-constexpr double kBarHeight = 30;  // reader 60's bars
-constexpr double kLaneGap = 34;
+using lanes::kLaneHeight;
+constexpr double kBarHeight = 30; // reader 60's bars
 
 using namespace press_colours;
 
@@ -81,46 +75,6 @@ std::back_insert_iterator<std::string> out(std::string& svg) {
     return std::back_inserter(svg);
 }
 
-// A path's d attribute, to a tenth of a pixel, no point twice in a row.
-std::string path_d(const PagePoints& points) {
-    std::string d;
-    double lx = -1e9;
-    double ly = -1e9;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const double x = std::round(points[i].first * 10) / 10;
-        const double y = std::round(points[i].second * 10) / 10;
-        if (x == lx && y == ly) {
-            continue;
-        }
-        fmt::format_to(std::back_inserter(d), "{}{:.1f},{:.1f}", d.empty() ? "M" : " L", x, y);
-        lx = x;
-        ly = y;
-    }
-    return d;
-}
-
-// A series on the page: as a line (the crank, the die: they move between edges) or as steps
-// (a register holds its count until the next).
-PagePoints on_page(const std::vector<Point>& series, const Scale& tx, const Scale& ty, bool steps) {
-    PagePoints points;
-    points.reserve(series.size() * (steps ? 2 : 1));
-    for (const Point& p : series) {
-        if (steps && !points.empty()) {
-            points.emplace_back(tx(p.t), points.back().second);
-        }
-        points.emplace_back(tx(p.t), ty(p.x));
-    }
-    return points;
-}
-
-double max_of(const std::vector<Point>& series, double at_least) {
-    double hi = at_least;
-    for (const Point& p : series) {
-        hi = std::max(hi, p.x);
-    }
-    return hi;
-}
-
 // The value of a line at t (linear between its points).
 double value_at(const std::vector<Point>& series, double t) {
     auto it = std::lower_bound(series.begin(), series.end(), t,
@@ -158,64 +112,12 @@ private:
 
 void LaneWriter::frame(const LaneSpec& spec, double top, double bottom,
                        const std::optional<Scale>& ty, const plot::Ticks& ticks) {
-    fmt::format_to(
-        out(svg_),
-        R"(<text x="{0:.1f}" y="{1:.1f}" font-size="13" fill="{2}">)"
-        R"(<tspan font-weight="bold">{3}</tspan><tspan dx="9" fill="#666" font-size="11.5">{4})"
-        R"(</tspan></text>)"
-        "\n"
-        R"(<rect x="{0:.1f}" y="{5:.1f}" width="{6:.1f}" height="{7:.1f}" )"
-        R"(fill="#fdfdfd" stroke="#b8b8b8"/>)"
-        "\n",
-        kLeft, top - 8, plot::kTextColour, spec.name, cardreader::xml_escape(spec.what), top,
-        kRight - kLeft, bottom - top);
-    if (ty) {
-        for (double v : ticks.values) {
-            const double y = (*ty)(v);
-            fmt::format_to(out(svg_),
-                           R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}"/>)"
-                           R"(<text x="{:.1f}" y="{:.1f}" font-size="10.5" text-anchor="end" )"
-                           R"(fill="{}">{:.{}f}</text>)"
-                           "\n",
-                           kLeft, y, kRight, y, plot::kGridColour, kLeft - 6, y + 3.5, spec.colour,
-                           v, ticks.decimals);
-        }
-        fmt::format_to(out(svg_),
-                       R"(<text x="{:.1f}" y="{:.1f}" font-size="10.5" fill="{}">{}</text>)"
-                       "\n",
-                       kRight + 7, (top + bottom) / 2 + 4, spec.colour, spec.unit);
-    }
-    for (double v : frame_.time_ticks->values) {
-        fmt::format_to(out(svg_),
-                       R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" stroke="{3}"/>)"
-                       "\n",
-                       frame_.tx(v), top, bottom, plot::kGridColour);
-    }
-    for (double x : frame_.card_x) {
-        fmt::format_to(out(svg_),
-                       R"(<line class="card" x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" )"
-                       R"(stroke="{3}" stroke-width="0.8" stroke-dasharray="3,2"/>)"
-                       "\n",
-                       x, top, bottom, plot::kCardColour);
-    }
-    if (frame_.stop_x) {
-        fmt::format_to(out(svg_),
-                       R"(<line x1="{0:.1f}" y1="{1:.1f}" x2="{0:.1f}" y2="{2:.1f}" )"
-                       R"(stroke="{3}" stroke-width="1.2" stroke-dasharray="6,3"/>)"
-                       "\n",
-                       *frame_.stop_x, top, bottom, plot::kStopColour);
-    }
+    lane_frame(svg_, frame_, LaneTitle{spec.name, spec.what, spec.unit, spec.colour}, top, bottom,
+               ty, ticks);
 }
 
 void LaneWriter::line(const PagePoints& points, const char* cls, const char* colour, double width) {
-    const std::string d = path_d(thin_to_pixels(points));
-    if (!d.empty()) {
-        fmt::format_to(out(svg_),
-                       R"(<path class="{}" fill="none" stroke="{}" stroke-width="{}" )"
-                       R"(stroke-linejoin="round" d="{}"/>)"
-                       "\n",
-                       cls, colour, width, d);
-    }
+    lane_path(svg_, points, cls, colour, width);
 }
 
 // The crank: its sawtooth, R dashed while a card waits for it, a mark where 61 conducted.
@@ -367,68 +269,19 @@ void LaneWriter::lane(std::size_t index, const LaneSpec& spec, double top) {
     fmt::format_to(out(svg_), "</g>\n</g>\n");
 }
 
-// Each lane's top, from the first.
-std::vector<double> lane_tops(const std::vector<LaneSpec>& lanes, double top) {
-    std::vector<double> tops;
-    for (const LaneSpec& l : lanes) {
-        tops.push_back(top);
-        top += l.height + kLaneGap;
-    }
-    return tops;
-}
-
 } // namespace
 
-PagePoints thin_to_pixels(const PagePoints& points) {
-    if (points.size() <= 2) {
-        return points;
-    }
-    PagePoints kept;
-    kept.push_back(points.front());
-    std::size_t last = 0; // index of the last point kept
-    for (std::size_t i = 1; i + 1 < points.size(); ++i) {
-        if (std::fabs(points[i].second - kept.back().second) >= 1.0) {
-            if (i - 1 != last) {
-                kept.push_back(points[i - 1]);
-            }
-            kept.push_back(points[i]);
-            last = i;
-        }
-    }
-    if (points.size() - 2 != last) {
-        kept.push_back(points[points.size() - 2]);
-    }
-    kept.push_back(points.back());
-    return kept;
-}
-
 double press_lanes_height(const PressTrace& press) {
-    const auto lanes = lanes_of(press);
-    if (lanes.empty()) {
-        return 0;
-    }
-    double h = kPanelGap - kLaneGap;
-    for (const LaneSpec& l : lanes) {
-        h += kLaneGap + l.height;
-    }
-    return h;
+    return lanes_height(heights_of(lanes_of(press)));
 }
 
 void press_clip_paths(std::string& svg, const PressTrace& press, double top) {
-    const auto lanes = lanes_of(press);
-    const auto tops = lane_tops(lanes, top);
-    for (std::size_t i = 0; i < lanes.size(); ++i) {
-        fmt::format_to(out(svg),
-                       R"(<clipPath id="press-clip-{}"><rect x="{:.1f}" y="{:.1f}" )"
-                       R"(width="{:.1f}" height="{:.1f}"/></clipPath>)"
-                       "\n",
-                       i, kLeft - 7, tops[i] - 3, kRight - kLeft + 14, lanes[i].height + 6);
-    }
+    lane_clip_paths(svg, "press", heights_of(lanes_of(press)), top);
 }
 
 void press_lanes(std::string& svg, const PressTrace& press, const LaneFrame& frame) {
     const auto lanes = lanes_of(press);
-    const auto tops = lane_tops(lanes, frame.top);
+    const auto tops = lane_tops(heights_of(lanes), frame.top);
     LaneWriter writer(svg, press, frame);
     for (std::size_t i = 0; i < lanes.size(); ++i) {
         writer.lane(i, lanes[i], tops[i]);

@@ -3,13 +3,11 @@
 // drawn as before, byte for byte.
 #pragma once
 
-#include "cli/plot_geometry.hpp"
+#include "cli/plot_lanes.hpp"
 #include "cli/plot_press.hpp"
 
 #include <array>
-#include <optional>
 #include <string>
-#include <vector>
 
 namespace parsons::cli {
 
@@ -26,15 +24,6 @@ inline constexpr std::array<const char*, cardreader::kAxisCount> kAxisColours = 
 
 } // namespace press_colours
 
-// Where the lanes stand and what crosses every one of them.
-struct LaneFrame {
-    plot::Scale tx;                  // machine time -> page x, the panels' own
-    const plot::Ticks* time_ticks{}; // the panels' time grid
-    double top = 0;                  // the first lane's frame, px
-    std::vector<double> card_x;      // a dashed line at each card read
-    std::optional<double> stop_x;    // the stop, if the machine stopped itself
-};
-
 // How much taller the page is for the lanes (0 without a press): from the last panel's bottom
 // to the last lane's bottom.
 double press_lanes_height(const PressTrace& press);
@@ -44,11 +33,5 @@ int press_legend_rows(const PressTrace& press);
 void press_clip_paths(std::string& svg, const PressTrace& press, double top);
 void press_legend(std::string& svg, const PressTrace& press, double y);
 void press_lanes(std::string& svg, const PressTrace& press, const LaneFrame& frame);
-
-// A polyline of page points thinned for drawing: a point is kept when it lies a pixel or more
-// above or below the last one kept, together with the point just before it (so a jump stays a
-// jump, where it happened); the first and last are always kept. Exposed for tests.
-std::vector<std::pair<double, double>>
-thin_to_pixels(const std::vector<std::pair<double, double>>& points);
 
 } // namespace parsons::cli

@@ -1,13 +1,16 @@
 // What the chart of run --plot does alike for the lead-screw panels (plot_svg.cpp,
-// plot_chart.cpp) and the press lanes (plot_press.cpp): the "M4" reduction's time buckets (a
-// sample folded in, the widening, the points kept), and the intervals in which a 0/1 step
-// signal is on. Templates, so each keeps its
-// own point and bucket types (plot_svg.hpp, plot_press.hpp).
+// plot_chart.cpp) and the lanes of the additions under them (plot_press.cpp, plot_spindle.cpp):
+// the "M4" reduction's time buckets (a sample folded in, the widening, the points kept), one
+// signal kept that way (ReducedLine), and the intervals in which a 0/1 step signal is on.
+// Templates, so each keeps its own point and bucket types (plot_svg.hpp, plot_press.hpp,
+// plot_spindle.hpp).
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -79,6 +82,41 @@ std::vector<Bucket> widened(const std::vector<Bucket>& buckets, double bucket_s)
     }
     return merged;
 }
+
+// One signal of a lane kept as a line: the M4 reduction, with buckets of its own that widen by
+// themselves (a press or a spindle turns while the axes stand, so it cannot wait for theirs).
+// Memory stays under 4 * kMaxBuckets points whatever the run's length. Point has a time `t`
+// (seconds) and a value `x`.
+template <class Point>
+class ReducedLine {
+public:
+    static constexpr std::size_t kMaxBuckets = 1000;
+
+    void add(Point p) {
+        latest_ = p;
+        if (add_to_buckets(buckets_, p, bucket_s_) && buckets_.size() > kMaxBuckets) {
+            bucket_s_ *= 2;
+            buckets_ = widened(buckets_, bucket_s_);
+        }
+    }
+    std::vector<Point> points() const { return bucket_points<Point>(buckets_); } // time order
+    std::optional<Point> latest() const { return latest_; }
+    // The run ended at `seconds`: the line as it stands to the end.
+    void hold_to(double seconds) {
+        if (latest_ && seconds > latest_->t) {
+            add(Point{seconds, latest_->x});
+        }
+    }
+
+private:
+    struct Bucket {
+        long slot = 0;
+        Point first, low, high, last;
+    };
+    std::vector<Bucket> buckets_;
+    std::optional<Point> latest_;
+    double bucket_s_ = 1.0 / 64;
+};
 
 // The intervals in which a 0/1 step signal (its value at t = 0, then every change: points with
 // a time `t` and a value `x`) is 1; one still on at the end is open until t_end.

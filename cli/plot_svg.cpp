@@ -28,6 +28,10 @@ void PlotSvgRecorder::on_signal_defined(const relaylogic::SignalInfo& info, std:
         roles_.at(info.id) = {Role::press, *slot};
         return;
     }
+    if (const auto slot = spindle_.define(info, initial)) {
+        roles_.at(info.id) = {Role::spindle, *slot};
+        return;
+    }
     const auto axis = cardreader::axis_named(info.scope);
     if (!axis) {
         return;
@@ -54,6 +58,10 @@ void PlotSvgRecorder::on_signal(double seconds, SignalId id, std::uint32_t old_v
     last_t_ = std::max(last_t_, seconds);
     if (roles_[id].role == Role::press) {
         press_.change(roles_[id].axis, seconds, old_value, new_value);
+        return;
+    }
+    if (roles_[id].role == Role::spindle) {
+        spindle_.change(roles_[id].axis, seconds, new_value);
         return;
     }
     AxisTrace& a = axes_.at(roles_[id].axis);
@@ -106,6 +114,7 @@ void PlotSvgRecorder::on_motion(double seconds, const std::array<double, 5>& rea
 void PlotSvgRecorder::on_card(double seconds, long index, const cardreader::CardOrders& orders) {
     cards_.push_back(CardMark{seconds, index, orders.number});
     press_.card(seconds, orders);
+    spindle_.card(seconds, orders);
     last_t_ = std::max(last_t_, seconds);
 }
 
@@ -118,6 +127,7 @@ void PlotSvgRecorder::on_stop(double seconds, const relaylogic::StopInfo& stop) 
 void PlotSvgRecorder::on_finish(double seconds) {
     last_t_ = std::max(last_t_, seconds);
     press_.finish(seconds);
+    spindle_.finish(seconds);
     for (AxisTrace& a : axes_) {
         if (a.latest && seconds > a.latest->t) {
             add_sample(a, Point{seconds, a.latest->x}); // at rest to the end

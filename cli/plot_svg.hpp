@@ -16,10 +16,15 @@
 // A run with a press (press synchronisation, an addition after EP 0436887; parsons-extended)
 // has lanes under the panels on the same time axis: crank 21, die 20, registers 14 and 11,
 // reader 60's hold and processor 63's speeds, recorded from the "press" signals
-// (plot_press.hpp). A run without one draws exactly the chart it drew before them.
+// (plot_press.hpp). A run that read a tap card (spindle synchronisation, an addition after
+// EP 0360190) has lanes under those: motor 27, tool 16, interface 33, memory 12a, the feed and
+// depth the synchronous control calls, bus 35's handshake and PC 130's relays, recorded from the
+// "spindle" signals (plot_spindle.hpp). A run without a press or a tap card draws exactly the
+// chart it drew before them.
 #pragma once
 
 #include "cli/plot_press.hpp"
+#include "cli/plot_spindle.hpp"
 #include "relaylogic/machine_observer.hpp"
 
 #include <array>
@@ -68,6 +73,8 @@ public:
     const std::vector<Trip>& trips(cardreader::Axis axis) const;
     // The press lanes' record (present() is false in a run without a press).
     const PressTrace& press() const { return press_; }
+    // The spindle lanes' record (present() is false in a run without a tap card).
+    const SpindleTrace& spindle() const { return spindle_; }
 
 private:
     struct Bucket {
@@ -91,10 +98,10 @@ private:
         long index = 0;
         int number = 0;
     };
-    enum class Role : std::uint8_t { none, speed_switch, motor, press };
+    enum class Role : std::uint8_t { none, speed_switch, motor, press, spindle };
     struct SignalRole {
         Role role = Role::none;
-        std::size_t axis = 0; // or, for Role::press, the press trace's slot
+        std::size_t axis = 0; // or, for Role::press and spindle, the trace's slot
     };
 
     void add_sample(AxisTrace& a, Point p);
@@ -106,6 +113,7 @@ private:
     std::vector<SignalRole> roles_;
     std::vector<CardMark> cards_;
     PressTrace press_;
+    SpindleTrace spindle_;
     std::optional<relaylogic::StopInfo> stop_;
     double stop_t_ = 0;
     double bucket_s_ = 1.0 / 64;

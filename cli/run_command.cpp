@@ -12,6 +12,7 @@
 #include "cli/press_proof.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/run_report.hpp"
+#include "cli/thread_proof.hpp"
 #include "cli/trace_outputs.hpp"
 #include "cli/two_tool.hpp"
 
@@ -314,6 +315,21 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
                         "of the job, so it proves whole runs only (run the deck from its first "
                         "card)");
     }
+    if (!f.resume.empty() && !f.thread_proof.empty()) {
+        throw DeckError("--thread-proof with --resume: the proof judges each hole from the tap's "
+                        "first turn and the job's from its first card, so it proves whole runs "
+                        "only (run the deck from its first card)");
+    }
+    if (f.thread_tolerance_percent && f.thread_proof.empty()) {
+        throw DeckError("--thread-tolerance: give it with --thread-proof JOB (the tolerance of "
+                        "the thread proof)");
+    }
+    if (f.thread_tolerance_percent &&
+        !(*f.thread_tolerance_percent > 0 && *f.thread_tolerance_percent < 100)) {
+        throw DeckError(fmt::format("--thread-tolerance {}: give a percentage of the pitch, more "
+                                    "than 0 and less than 100",
+                                    *f.thread_tolerance_percent));
+    }
     if (!f.resume.empty()) {
         if (!f.profile.empty() || !f.faults.empty()) {
             throw DeckError("--resume: the saved state carries its machine profile and faults; "
@@ -335,6 +351,15 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
         press_job = read_press_job(f.press_proof);
         if (f.profile.empty() && f.resume.empty() && !press_job->profile_file.empty()) {
             applied = AppliedProfile::load(press_job->profile_file);
+        }
+    }
+    // --thread-proof: the job's holes; with no --profile, the profile written beside it.
+    std::optional<decks::TappingJob> tapping_job;
+    if (!f.thread_proof.empty()) {
+        tapping_job = read_tapping_job(f.thread_proof);
+        if (f.profile.empty() && f.resume.empty() && !press_job &&
+            !tapping_job->profile_file.empty()) {
+            applied = AppliedProfile::load(tapping_job->profile_file);
         }
     }
     applied.apply_limits(f.limits);
@@ -424,6 +449,17 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
                                          press_job->options.safe_height_in, press_job->cycle_card);
         observers.add(press_proof.get());
     }
+    if (tapping_job) {
+        if (!profile.spindle_sync) {
+            throw DeckError(fmt::format("--thread-proof: profile {} has no spindle "
+                                        "synchronisation (give --profile {})",
+                                        profile.name,
+                                        tapping_job->profile_file.empty()
+                                            ? std::string("parsons-extended")
+                                            : tapping_job->profile_file));
+        }
+        cabinet.record_tap_samples(true);
+    }
     ProgressBar progress(deck, !f.quiet);
     if (progress.shown()) {
         observers.add(&progress);
@@ -502,6 +538,16 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
         report["press"].update(press_block(result, *press_proof, *press_job));
         cut_summary += press_summary(result, *press_proof);
     }
+    std::optional<ThreadProof> thread_proof;
+    if (tapping_job && result.tapping) {
+        thread_proof = prove_threads(*result.tapping, *tapping_job, profile.spindle,
+                                     f.thread_tolerance_percent);
+        if (!report["tapping"].is_object()) {
+            report["tapping"] = nlohmann::json::object();
+        }
+        add_thread_proof(report["tapping"], *thread_proof);
+        cut_summary += thread_summary(*thread_proof);
+    }
     if (!f.report.empty()) {
         write_file(f.report, report.dump(2) + "\n");
     }
@@ -539,6 +585,18 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
                                      press_job->options.zone_edge_x_in));
         return ExitCode::machine_stop;
     }
+    if (thread_proof && thread_proof->flagged() > 0) {
+        const auto lines = wrong_pitch_lines(*thread_proof);
+        fmt::print(stderr,
+                   "parsons: thread proof: wrong pitch in {} of {} hole{} (the emulation ran as "
+                   "it should: the threads are wrong):\n",
+                   lines.size(), thread_proof->holes.size(),
+                   thread_proof->holes.size() == 1 ? "" : "s");
+        for (const std::string& line : lines) {
+            fmt::print(stderr, "  {}\n", line);
+        }
+        return ExitCode::machine_stop;
+    }
     return ExitCode::ok;
 }
 
@@ -562,11 +620,17 @@ void add_run_command(CLI::App& app, Command& selected) {
                     "Prove a press-feeder job (gen press-feeder's DECK.job.json): the feeder never "
                     "inside the die zone while the die is below its safe height; a collision is "
                     "exit 3");
+    cmd->add_option("--thread-proof", flags->thread_proof,
+                    "Prove a tapping job (gen tapping's DECK.job.json): the pitch each hole was "
+                    "cut with against its tap's; a hole beyond the tolerance is exit 3");
+    cmd->add_option("--thread-tolerance", flags->thread_tolerance_percent,
+                    "The thread proof's tolerance, percent of the tap's pitch (default: the "
+                    "job's, 5)");
     cmd->add_option("--fault", flags->faults,
                     "Inject a fault (repeatable; docs/faults.md): drop-impulse:AXIS:N, "
                     "stuck-relay:AXIS:BANK:DIGIT, dead-relay:AXIS:BANK:DIGIT, "
                     "skip-step:AXIS:SWITCH:N, feed-twice:N, swap-cards:N, short-card:N, "
-                    "slip:AXIS:N:M");
+                    "slip:AXIS:N:M, stale-ratio:N, transfer-hang:N");
     cmd->add_option("--profile", flags->profile, "Machine profile JSON (see 'parsons profile')");
     cmd->add_option("--feed", flags->feed,
                     "cards (separate cards, a feed gap each) or ribbon (Fig. 9: cards end to end, "
@@ -589,7 +653,8 @@ void add_run_command(CLI::App& app, Command& selected) {
     cmd->footer(exit_codes_help({{ExitCode::ok, "the deck completed"},
                                  {ExitCode::machine_stop,
                                   "the machine stopped itself (a check fired; docs/stop-codes.md), "
-                                  "or --press-proof found a collision"},
+                                  "or --press-proof found a collision, or --thread-proof a wrong "
+                                  "pitch"},
                                  {ExitCode::interrupted, "stopped by the operator with Ctrl-C"},
                                  {ExitCode::terminated, "stopped by SIGTERM"}}) +
                 "Examples:\n"

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace parsons::cli {
@@ -22,6 +23,44 @@ double rounded(double v, double step) {
     }
     const double r = std::round(v / step) * step;
     return r == 0 ? 0.0 : r; // no -0
+}
+
+// v to `places` decimals, as the nearest double to that decimal (no 0.59912000000000001).
+double decimals(double v, int places) {
+    const double scale = std::pow(10.0, places);
+    const double r = std::round(v * scale) / scale;
+    return r == 0 ? 0.0 : r;
+}
+
+nlohmann::json tapping_json(const relaylogic::TappingResult& t) {
+    using nlohmann::json;
+    json holes = json::array();
+    for (const relaylogic::HoleRecord& h : t.holes) {
+        holes.push_back(
+            json{{"card", h.card},
+                 {"number", h.number},
+                 {"tool_called", h.tool_called},
+                 {"tool", h.tool},
+                 {"tap_pitch_in", h.tap_pitch_in ? json(*h.tap_pitch_in) : json(nullptr)},
+                 {"head_ratio", decimals(h.head_ratio, 6)},
+                 {"ratio_used", decimals(h.ratio_used, 6)},
+                 {"pitch_ordered_in", decimals(h.pitch_ordered_in, 5)},
+                 {"rpm", h.rpm},
+                 {"axis", std::string(axis_name(h.axis))},
+                 {"sense", h.sense > 0 ? "forward" : "reverse"},
+                 {"start_in", decimals(h.start_in, 5)},
+                 {"depth_in", decimals(h.depth_in, 3)},
+                 {"deepest_in", decimals(h.deepest_in, 5)},
+                 {"end_in", decimals(h.end_in, 5)},
+                 {"start_seconds", decimals(h.start_s, 6)},
+                 {"reverse_seconds", decimals(h.reverse_s, 6)},
+                 {"end_seconds", decimals(h.end_s, 6)},
+                 {"completed", h.completed}});
+    }
+    return json{
+        {"tool_on_spindle", t.tool_on_spindle}, {"ratio_in_memory", decimals(t.ratio_in_memory, 6)},
+        {"head_exchanges", t.head_exchanges},   {"transfers", t.transfers},
+        {"ratios_received", t.ratios_received}, {"holes", holes}};
 }
 
 } // namespace
@@ -137,6 +176,10 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const AppliedProfile&
                           {"longest_cycle_seconds", seconds(p.longest_cycle_s)},
                           {"waited_seconds", time_s(p.waited_s)}};
     }
+    // Spindle synchronisation (an addition after EP 0360190): only in a profile that has it.
+    if (r.tapping) {
+        j["tapping"] = tapping_json(*r.tapping);
+    }
     return j;
 }
 
@@ -182,7 +225,8 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
                          a.acknowledged_s, a.overlap_s()));
     }
     if (r.tool_in_spindle) {
-        line(fmt::format("  tool           {} in the spindle", *r.tool_in_spindle));
+        line(fmt::format("  tool           {} in the spindle (the condition cards' tool changer)",
+                         *r.tool_in_spindle));
     }
     if (r.press) {
         const relaylogic::PressResult& p = *r.press;
@@ -196,6 +240,22 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
                                            *p.mean_cycle_s, *p.shortest_cycle_s, *p.longest_cycle_s)
                              : "",
                          p.waited_s));
+    }
+    if (r.tapping) {
+        const relaylogic::TappingResult& t = *r.tapping;
+        const long done =
+            std::count_if(t.holes.begin(), t.holes.end(),
+                          [](const relaylogic::HoleRecord& h) { return h.completed; });
+        line(fmt::format(
+            "  tapping        head 31 of tool {} on gear unit 30, memory 12a holds gear ratio "
+            "{:.4f}; {} head exchange{}, {} ratio{} transferred ({} received); {} "
+            "hole{} tapped{}",
+            t.tool_on_spindle, t.ratio_in_memory, t.head_exchanges,
+            t.head_exchanges == 1 ? "" : "s", t.transfers, t.transfers == 1 ? "" : "s",
+            t.ratios_received, done, done == 1 ? "" : "s",
+            static_cast<std::size_t>(done) < t.holes.size()
+                ? fmt::format(" ({} begun)", t.holes.size())
+                : std::string()));
     }
     for (Axis a : cardreader::kAxes) {
         const auto& x = r.axes.at(cardreader::axis_index(a));

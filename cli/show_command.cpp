@@ -171,7 +171,85 @@ Json sync_card_json(long index, const CardOrders& o) {
             {"warnings", Json::array()}};
 }
 
-void print_card(long index, const DecodeResult& decoded, const CardLayout& layout) {
+// A tap card (an addition after EP 0360190), field by field: its columns, what is punched there
+// and what it orders.
+std::vector<std::array<std::string, 3>> tap_card_fields(const CardOrders& o,
+                                                        const CardLayout& layout) {
+    std::vector<std::array<std::string, 3>> rows;
+    const TapOrder& t = o.tap;
+    for (const LayoutField& f : layout.tap_fields) {
+        const std::string columns = f.width == 1
+                                        ? std::to_string(f.first_column)
+                                        : fmt::format("{}-{}", f.first_column, f.last_column());
+        std::string value;
+        switch (f.kind) {
+        case FieldKind::tap_tool:
+            value = fmt::format("T{:02}: PC 130 puts on the spindle head that holds it; memory "
+                                "12a gets its gear ratio",
+                                t.tool);
+            break;
+        case FieldKind::tap_axis:
+            value = fmt::format("{}: the {} axis feeds in step with the tool",
+                                axis_index(t.axis) + 1, axis_name(t.axis));
+            break;
+        case FieldKind::tap_sense:
+            value = t.motion == Motion::forward
+                        ? "row 0: forward into the work (its counters count up)"
+                        : "row 1: reverse into the work (its counters count down)";
+            break;
+        case FieldKind::tap_depth:
+            value = fmt::format("{} in into the work, and back out as the spindle reverses",
+                                format_inches(t.depth));
+            break;
+        case FieldKind::tap_pitch:
+            value = fmt::format("{} in per tool revolution", format_pitch(t.pitch));
+            break;
+        case FieldKind::tap_rpm:
+            value = fmt::format("S {} rev/min of spindle motor 27", t.rpm);
+            break;
+        default:
+            break;
+        }
+        rows.push_back({columns, field_label(f), value});
+    }
+    return rows;
+}
+
+void print_tap_card(long index, const CardOrders& o, const CardLayout& layout,
+                    const axes::MachineProfile& profile) {
+    fmt::print("card {} · card number {:04} (columns 77-80) · TAP CARD (column 76 row 3; an "
+               "addition after EP 0360190, Mitsubishi)\n",
+               index, o.number);
+    fmt::print("  {:<8} {:<14} {}\n", "columns", "field", "punched");
+    for (const auto& [columns, label, value] : tap_card_fields(o, layout)) {
+        fmt::print("  {:<8} {:<14} {}\n", columns, label, value);
+    }
+    const TapOrder& t = o.tap;
+    if (const axes::SpindleHead* head = profile.spindle.head(t.tool)) {
+        fmt::print("  the tool turns S x A = {} x {:.4g} = {:.1f} rev/min (A: head {}'s gear ratio "
+                   "in profile {}), so the {} axis feeds {} x {:.1f} = {:.2f} in/min\n",
+                   t.rpm, head->ratio, t.rpm * head->ratio, t.tool, profile.name, axis_name(t.axis),
+                   format_pitch(t.pitch), t.rpm * head->ratio,
+                   SpindleLimits::feed_in_per_min(t.pitch, t.rpm, head->ratio));
+    }
+}
+
+Json tap_card_json(long index, const CardOrders& o) {
+    const TapOrder& t = o.tap;
+    return {{"index", index},
+            {"number", o.number},
+            {"kind", "tap"},
+            {"tool", t.tool},
+            {"axis", std::string(axis_name(t.axis))},
+            {"sense", t.motion == Motion::forward ? "forward" : "reverse"},
+            {"depth", inches_json(t.depth)},
+            {"pitch", t.pitch / 100000.0},
+            {"rpm", t.rpm},
+            {"warnings", Json::array()}};
+}
+
+void print_card(long index, const DecodeResult& decoded, const CardLayout& layout,
+                const axes::MachineProfile& profile) {
     const CardOrders& o = decoded.orders;
     if (o.kind == CardKind::condition && decoded) {
         print_condition_card(index, o);
@@ -179,6 +257,10 @@ void print_card(long index, const DecodeResult& decoded, const CardLayout& layou
     }
     if (o.kind == CardKind::sync && decoded) {
         print_sync_card(index, o, layout);
+        return;
+    }
+    if (o.kind == CardKind::tap && decoded) {
+        print_tap_card(index, o, layout, profile);
         return;
     }
     fmt::print("card {} · card number {:04} (columns 77-80) · spindle {} (column 1)\n", index,
@@ -211,6 +293,9 @@ Json card_json(long index, const CardOrders& o, const CardLayout& layout) {
     }
     if (o.kind == CardKind::sync) {
         return sync_card_json(index, o);
+    }
+    if (o.kind == CardKind::tap) {
+        return tap_card_json(index, o);
     }
     Json axes = Json::object();
     for (Axis a : kAxes) {
@@ -264,8 +349,8 @@ ExitCode run_show(const ShowFlags& f) {
     long notes = 0;
     std::optional<std::string> first_deck_error;
     long deck_errors = 0;
-    // A condition or sync card's deck error (additions): printed where it is found, refused at
-    // the end.
+    // A condition, sync or tap card's deck error (additions): printed where it is found, refused
+    // at the end.
     auto deck_error = [&](const ReviewNote& n) {
         ++deck_errors;
         const std::string where =
@@ -281,7 +366,7 @@ ExitCode run_show(const ShowFlags& f) {
         ++index;
         DecodeResult decoded = decode(*card, layout);
         if (text) {
-            print_card(index, decoded, layout);
+            print_card(index, decoded, layout, profile);
         }
         // A card with a bad punch is given by its index and the punch alone: its other
         // fields were not all read.
@@ -335,6 +420,7 @@ ExitCode run_show(const ShowFlags& f) {
                 layout.name,
                 kind == CardKind::condition ? " · condition card (an addition after EP 0640901)"
                 : kind == CardKind::sync    ? " · sync card (an addition after EP 0436887)"
+                : kind == CardKind::tap     ? " · tap card (an addition after EP 0360190)"
                                             : "");
             pic.bad_punch = decoded.bad_punch;
             const auto path =

@@ -38,8 +38,8 @@ SensedCard sense_card(const cardreader::Card& card, const cardreader::CardLayout
                       bool refuse_double_punch) {
     SensedCard sensed;
     sensed.decoded = cardreader::decode(card, layout);
-    // Condition and sync cards are additions: their double punches are bad punches in every
-    // profile.
+    // Condition, sync and tap cards are additions: their double punches (and any other fault
+    // of their holes, a tap of depth 0 among them) are bad punches in every profile.
     if (sensed.decoded || refuse_double_punch || cardreader::is_extension_card(card, layout)) {
         return sensed;
     }

@@ -69,6 +69,7 @@ ControlCabinet::ControlCabinet(axes::MachineProfile profile, const cardreader::C
     }
     conditions_.install(tracer_, profile_); // EP 0640901's units, if the profile has them
     sync_.install(tracer_, profile_);       // EP 0436887's press and units, likewise
+    tapping_.install(tracer_, profile_);    // EP 0360190's spindle, PC 130 and 12a, likewise
 }
 
 void ControlCabinet::attach(MachineObserver* observer) {
@@ -91,6 +92,10 @@ std::string ControlCabinet::card_name() const {
 RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     deck_ = &deck;
     apply_faults(deck);
+    if (tapping_.present()) {
+        tapping_.inject(faults_);
+        tapping_.keep_samples(record_tap_samples_);
+    }
     MachineObserver* observer = tracer_.observer();
     if (resuming_ && sync_.present()) {
         resume_tape(deck_taken_);
@@ -154,6 +159,9 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
         }
         now_ = t;
         tracer_.set_time(t);
+        if (tapping_.present()) {
+            spindle_edges(t);
+        }
         if (jumping_) {
             catch_up(t);
             if (press_running()) {
@@ -194,6 +202,9 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     }
     for (const auto& c : circuits_) {
         c->plant.advance_to(now_);
+    }
+    if (tapping_.present()) {
+        spindle_edges(now_);
     }
     report_faults();
     if (tracer_.observer() != nullptr) {
@@ -396,6 +407,13 @@ void ControlCabinet::catch_up(double t) {
         AxisCircuit& c = *circuits_[i];
         const long n = std::min(quiet_.at(i), c.plant.impulses_by(t));
         if (n > 0) {
+            if (tapping_.present() && tapping_.feeding(c.axis) &&
+                c.direction != c.plant.moving_direction()) {
+                // Reversing control 214 follows the drive at the first impulse of the jump.
+                tracer_.set_time(c.plant.impulse_time(1));
+                tap_counting_sense(c, c.plant.moving_direction());
+                tracer_.set_time(t);
+            }
             jump_quiet_impulses(c, n);
             quiet_.at(i) -= n;
         }
@@ -479,7 +497,8 @@ void ControlCabinet::handle(const Event& e) {
         relays_pick();
         break;
     case EventKind::second_bank:
-        for (std::size_t i = 0; i < circuits_.size() && !condition_card_ && !sync_card_; ++i) {
+        for (std::size_t i = 0;
+             i < circuits_.size() && !condition_card_ && !sync_card_ && !tap_card_; ++i) {
             for (int k = 0; k < circuits_[i]->order.start_speed; ++k) {
                 schedule(now_ + k * profile_.stepping_switch_step_s, EventKind::speed_step_252,
                          static_cast<int>(i));
@@ -513,6 +532,12 @@ void ControlCabinet::handle(const Event& e) {
     case EventKind::sync_release:
         sync_release();
         break;
+    case EventKind::pc_scan:
+        pc_scan();
+        break;
+    case EventKind::spindle_sample:
+        spindle_sample();
+        break;
     }
 }
 
@@ -531,6 +556,7 @@ void ControlCabinet::feed() {
     card_ = next_card();
     condition_card_ = false;
     sync_card_ = false;
+    tap_card_ = false;
     if (!card_ && sync_.present() && sync_.scp().pending()) {
         const SynchronisationProcessor& scp = sync_.scp();
         machine_stop(StopReason::sync_refused, std::nullopt,
@@ -615,6 +641,10 @@ void ControlCabinet::first_bank() {
     }
     if (orders_.kind == cardreader::CardKind::sync) {
         sync_card();
+        return;
+    }
+    if (orders_.kind == cardreader::CardKind::tap) {
+        tap_card();
         return;
     }
     if (sync_.present() && sync_.scp().pending()) {
@@ -978,6 +1008,11 @@ void ControlCabinet::relays_pick() {
 void ControlCabinet::read_complete() {
     reading_complete_ = true;
     tracer_.set(reader_feeding_, 0);
+    if (tap_card_) {
+        reading_complete_ = false; // no axis moves by the 1952 columns
+        start_tool_call();
+        return;
+    }
     if (condition_card_ || sync_card_) {
         reading_complete_ = false;
         if (sync_card_ && orders_.sync.loop) {
@@ -1014,6 +1049,9 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     c.show_contacts(); // the contacts, then the switches they step
     // The patent's answer to stepping-rate loss (col. 8), a profile option: while the speed
     // switch stands on speed 1, count only every hundredth until the first slow-down.
+    if (tapping_.present() && tapping_.feeding(c.axis) && !stop_) {
+        tap_counting_sense(c, impulse.direction);
+    }
     const bool hundredths_only =
         profile_.count_hundredths_at_speed_1 && c.speed_switch.position() == 1 && !stop_;
     // The counters count up or down as reversing control 214 set them (the motion column),
@@ -1343,6 +1381,14 @@ void ControlCabinet::update_motor(AxisCircuit& c) {
     if (auto impulse = c.plant.advance_to(now_)) {
         on_impulse(c, *impulse); // never let an impulse due now go uncounted
     }
+    if (tapping_.present() && tapping_.feeding(c.axis) && !stop_) {
+        // A tap: the synchronous operation control sets the follower drive.
+        const FeedCommand f = tapping_.feed();
+        c.plant.command_follow(f.direction, f.speed_in_per_s,
+                               profile_.sync_drive.acceleration_in_per_s2);
+        c.set_powered(true);
+        return;
+    }
     if (on && sync_.present() && c.speed_switch.position() == 1 &&
         sync_.scp().speed_synced(c.axis)) {
         // Speed synchronisation: speed 1 is the follower drive at processor 63's speed.
@@ -1390,6 +1436,10 @@ void ControlCabinet::machine_stop(StopReason reason, std::optional<Axis> axis,
     queue_ = {};
     blocks_queued_ = 0;
     unqueued_release_s_ = -axes::kNever;
+    if (tapping_.present()) {
+        spindle_edges(now_);
+        tapping_.halt(); // motor 27 runs down to rest; the feed is the 1952 motor's again
+    }
     update_motors();
     if (tracer_.observer() != nullptr) {
         tracer_.observer()->on_stop(now_, info);
@@ -1457,7 +1507,8 @@ nlohmann::json ControlCabinet::capture() const {
                           {"faults", faults},
                           {"conditions", conditions_.save()},
                           {"actions", actions_to_json(actions_)},
-                          {"sync", capture_sync()}};
+                          {"sync", capture_sync()},
+                          {"tapping", tapping_.present() ? tapping_.save() : nlohmann::json()}};
 }
 
 nlohmann::json ControlCabinet::capture_sync() const {
@@ -1545,6 +1596,16 @@ void ControlCabinet::resume(const nlohmann::json& j) {
     conditions_.load(j.contains("conditions") ? j.at("conditions") : nlohmann::json());
     actions_ = actions_from_json(j.contains("actions") ? j.at("actions") : nlohmann::json::array());
     resume_sync(j.contains("sync") ? j.at("sync") : nlohmann::json());
+    const bool saved_tapping = j.contains("tapping") && !j.at("tapping").is_null();
+    if (saved_tapping != tapping_.present()) {
+        throw axes::StateError(saved_tapping ? "the saved state has spindle synchronisation and "
+                                               "this profile has none"
+                                             : "this profile has spindle synchronisation and the "
+                                               "saved state has none");
+    }
+    if (saved_tapping) {
+        tapping_.load(j.at("tapping"));
+    }
     effects_.clear();
     for (const auto& e : member(j, "faults")) {
         effects_.push_back(FaultEffect{read<std::string>(e, "fault"), read<bool>(e, "acted"),
@@ -1587,6 +1648,16 @@ RunResult ControlCabinet::result() const {
         }
         p.waited_s = waited_s_;
         r.press = p;
+    }
+    if (tapping_.present()) {
+        TappingResult tr;
+        tr.tool_on_spindle = tapping_.spindle().tool();
+        tr.ratio_in_memory = tapping_.memory().ratio();
+        tr.head_exchanges = tapping_.pc().exchanges();
+        tr.transfers = tapping_.pc().transfers();
+        tr.ratios_received = tapping_.memory().received();
+        tr.holes = tapping_.holes();
+        r.tapping = std::move(tr);
     }
     for (std::size_t i = 0; i < circuits_.size(); ++i) {
         const AxisCircuit& c = *circuits_[i];

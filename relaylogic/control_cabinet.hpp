@@ -26,6 +26,7 @@
 #include "relaylogic/condition_units.hpp"
 #include "relaylogic/faults.hpp"
 #include "relaylogic/sync_units.hpp"
+#include "relaylogic/tapping_units.hpp"
 
 #include <csignal>
 #include <map>
@@ -69,44 +70,6 @@ struct PressResult {
     std::optional<double> shortest_cycle_s;
     std::optional<double> longest_cycle_s;
     double waited_s = 0; // machine time cards spent held by position reader 60
-};
-
-// Spindle synchronisation (an addition after EP 0360190): each tap card's hole.
-struct TapSample {
-    double t = 0;         // machine time (every sample of interface 33, and the tap's ends)
-    double tool_revs = 0; // the tool's revolutions (the plant's, unwrapped; the true ones)
-    double feed_in = 0;   // where the part really is on the feed axis
-};
-
-struct HoleRecord {
-    long card = 0;                      // position in the deck (1-based)
-    int number = 0;                     // the card number
-    int tool = 0;                       // the head on the spindle while it tapped (what really cut)
-    std::optional<double> tap_pitch_in; // that head's tap (none: the head holds a cutter)
-    double head_ratio = 0;              // that head's real ratio A
-    double ratio_used = 0;              // the ratio in memory 12a the NC computed with
-    double pitch_ordered_in = 0;
-    int rpm = 0; // S ordered
-    cardreader::Axis axis = cardreader::Axis::vertical;
-    int sense = -1;        // +1 / -1: the part's travel into the work
-    double start_in = 0;   // the part on the feed axis where the tap started
-    double depth_in = 0;   // ordered
-    double deepest_in = 0; // how far into the work it really went (along sense)
-    double end_in = 0;     // where it stood when the card ended
-    double start_s = 0;
-    double reverse_s = 0; // when the NC reversed the spindle at the bottom
-    double end_s = 0;
-    bool completed = false;         // came back out and stood (false: the machine stopped first)
-    std::vector<TapSample> samples; // if asked for (record_tap_samples)
-};
-
-struct TappingResult {
-    int tool_on_spindle = 0;
-    double ratio_in_memory = 0; // 12a when the run ended
-    long head_exchanges = 0;
-    long transfers = 0;       // ratios PC 130 sent (S6)
-    long ratios_received = 0; // ratios the NC stored (S16)
-    std::vector<HoleRecord> holes;
 };
 
 struct RunResult {
@@ -175,6 +138,8 @@ private:
         action_done,     // an action of ALE is done (axis: its channel)
         reference_block, // press synchronisation: a reference block of Fig. 6 (any card)
         sync_release,    // detector 61 conducted: 60's hold relay drops
+        pc_scan,         // spindle synchronisation: a scan of PC 130 (a tap card's tool call)
+        spindle_sample,  // spindle synchronisation: a sample of encoder interface 33
     };
     struct Event {
         double t;
@@ -231,6 +196,12 @@ private:
     void resume_tape(long taken);
     nlohmann::json capture_sync() const;
     void resume_sync(const nlohmann::json& j);
+    void tap_card();
+    void start_tool_call();
+    void pc_scan();
+    void spindle_sample();
+    void spindle_edges(double t);
+    void tap_counting_sense(AxisCircuit& c, int direction);
     void update_motors();
     void update_motor(AxisCircuit& c);
     void machine_stop(StopReason reason, std::optional<cardreader::Axis> axis,
@@ -308,6 +279,10 @@ private:
     int blocks_queued_ = 0; // reference blocks in the queue (0 or 1)
     long press_quiet_ = 0;  // fast-forward: edges that only count, ahead of the press
     double press_quiet_end_ = axes::kNever; // ... and when the press's next event that matters is
+
+    // Spindle synchronisation (an addition): the units, the card being a tap card.
+    TappingUnits tapping_;
+    bool tap_card_ = false;
 
     SignalId reader_card_;
     SignalId reader_feeding_;

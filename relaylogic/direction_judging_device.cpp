@@ -13,18 +13,33 @@ int ring_index(int a, int b) {
 
 } // namespace
 
-DirectionJudgingDevice::DirectionJudgingDevice(Tracer& tracer, long count)
-    : tracer_(tracer), a_(axes::phases_at(count).phase_a), b_(axes::phases_at(count).phase_b),
-      relay_a_(tracer.define("press", "detector_10.phase_a",
+DirectionJudgingDevice::DirectionJudgingDevice(Tracer& tracer, long count, PulseSource source)
+    : tracer_(tracer), a_(axes::phases_at(count).phase_a), b_(axes::phases_at(count).phase_b) {
+    if (source == PulseSource::spindle_encoder_32) {
+        relay_a_ = tracer.define("spindle", "encoder_32.phase_a",
+                                 "encoder 32 on motor 27, phase A (relay following it in "
+                                 "interface 33; EP 0360190)",
+                                 "32", 1, static_cast<std::uint32_t>(a_));
+        relay_b_ = tracer.define("spindle", "encoder_32.phase_b",
+                                 "encoder 32 phase B, a quarter behind A (EP 0360190)", "32", 1,
+                                 static_cast<std::uint32_t>(b_));
+        sense_relay_ = tracer.define("spindle", "interface_33.forward",
+                                     "spindle encoder interface 33: the last edge counted up (1, "
+                                     "motor forward) or down (0); device 13 of EP 0436887 reused",
+                                     "33", 1, 1);
+        return;
+    }
+    relay_a_ = tracer.define("press", "detector_10.phase_a",
                              "detector 10 phase A (relay following it; EP 0436887)", "10", 1,
-                             static_cast<std::uint32_t>(a_))),
-      relay_b_(tracer.define("press", "detector_10.phase_b",
+                             static_cast<std::uint32_t>(a_));
+    relay_b_ = tracer.define("press", "detector_10.phase_b",
                              "detector 10 phase B, a quarter behind A (EP 0436887)", "10", 1,
-                             static_cast<std::uint32_t>(b_))),
-      sense_relay_(tracer.define("press", "direction_judging_13.forward",
+                             static_cast<std::uint32_t>(b_));
+    sense_relay_ = tracer.define("press", "direction_judging_13.forward",
                                  "direction judging device 13: the last edge counted up "
                                  "(1) or down (0) (EP 0436887 claim 3)",
-                                 "13", 1, 1)) {}
+                                 "13", 1, 1);
+}
 
 void DirectionJudgingDevice::stand_at(long count) {
     const axes::DetectorEdge e = axes::phases_at(count);

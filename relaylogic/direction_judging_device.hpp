@@ -17,10 +17,16 @@
 
 namespace parsons::relaylogic {
 
+// Whose two-phase signal a unit counts: detector 10 on the press's crank (EP 0436887, the
+// default), or encoder 32 on spindle motor 27, counted in spindle encoder interface 33 (EP
+// 0360190, which reuses these units). It names the unit's signals.
+enum class PulseSource : std::uint8_t { press_detector_10, spindle_encoder_32 };
+
 class DirectionJudgingDevice {
 public:
     // The relays stand at the phases of pulse count `count` (the crank where the run starts).
-    DirectionJudgingDevice(Tracer& tracer, long count);
+    DirectionJudgingDevice(Tracer& tracer, long count,
+                           PulseSource source = PulseSource::press_detector_10);
     // The relays A and B stand at the phases of count c (the run's start, a loaded state).
     void stand_at(long count);
     // An edge of detector 10: +1 count up, -1 count down, 0 no count (both phases changed or
@@ -37,9 +43,9 @@ private:
     int a_ = 0;
     int b_ = 0;
     int sense_ = +1;
-    SignalId relay_a_;
-    SignalId relay_b_;
-    SignalId sense_relay_;
+    SignalId relay_a_ = 0;
+    SignalId relay_b_ = 0;
+    SignalId sense_relay_ = 0;
 };
 
 } // namespace parsons::relaylogic

@@ -12,7 +12,7 @@
 // (Fig. 7, S31-S33). Either way ratio() is the A the NC computes the tool's speed with (S x A).
 //
 // Built as the rest of the cabinet: the memory is a bank of holding relays standing for the
-// ratio's digits (traced as ratio_12a in millionths), the handshake's signals relays.
+// ratio's digits (traced as memory_12a.ratio in millionths), the handshake's signals relays.
 #pragma once
 
 #include "axes/machine_profile.hpp"
@@ -45,6 +45,8 @@ public:
     void load(const nlohmann::json& j);
 
 private:
+    void idle();
+
     Tracer& tracer_;
     axes::SpindleSyncProfile profile_;
     double ratio_ = 0;
@@ -52,6 +54,11 @@ private:
     double request_since_s_ = -1;
     long received_ = 0;
     int step_ = 0; // the seed's step the NC stands at (11..16; 0 idle)
+    SignalId ratio_signal_;
+    SignalId buffer_signal_;
+    SignalId ready_signal_;
+    SignalId received_signal_;
+    SignalId step_signal_;
 };
 
 } // namespace parsons::relaylogic

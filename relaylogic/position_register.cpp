@@ -4,10 +4,28 @@
 
 namespace parsons::relaylogic {
 
-PositionRegister::PositionRegister(Tracer& tracer, int device_16, int value)
+PositionRegister::PositionRegister(Tracer& tracer, int device_16, int value, PulseSource source)
     : tracer_(tracer), device_16_(device_16), value_(value) {
     const std::array<const char*, 4> what = {"thousands", "hundreds", "tens", "units"};
     const Digits d = digits();
+    if (source == PulseSource::spindle_encoder_32) {
+        for (std::size_t i = 0; i < 4; ++i) {
+            switches_.at(i) =
+                tracer.define("spindle", std::string("interface_33.counter.") + what.at(i),
+                              std::string("interface 33 encoder counter stepping switch (") +
+                                  what.at(i) + " of edges; register 14 of EP 0436887 reused)",
+                              "33", 4, static_cast<std::uint32_t>(d.at(i)));
+        }
+        value_signal_ = tracer.define("spindle", "interface_33.counter",
+                                      "spindle encoder interface 33: motor 27's angle in encoder "
+                                      "edges, up forward, down in reverse (EP 0360190)",
+                                      "33", 14, static_cast<std::uint32_t>(value_));
+        setter_15_ = tracer.define("spindle", "interface_33.revolution",
+                                   "interface 33: operated when its counter passes a motor "
+                                   "revolution and presets it",
+                                   "33", 1);
+        return;
+    }
     for (std::size_t i = 0; i < 4; ++i) {
         switches_.at(i) = tracer.define("press", std::string("position_register_14.") + what.at(i),
                                         std::string("position register 14 stepping switch (") +

@@ -20,6 +20,8 @@
 // profile is loaded), so no count is lost to a moving wiper.
 #pragma once
 
+#include "relaylogic/direction_judging_device.hpp"
+
 #include "relaylogic/counters.hpp"
 #include "relaylogic/tracer.hpp"
 
@@ -31,7 +33,10 @@ class PositionRegister {
 public:
     // device_16: a revolution in pulses (1 .. 9999); the register stands at `value` (0 ..
     // device_16 - 1) when the run starts.
-    PositionRegister(Tracer& tracer, int device_16, int value = 0);
+    // source names the signals: the press's register 14, or the encoder counter of spindle
+    // encoder interface 33 (EP 0360190), device 16 then being a motor revolution's edges.
+    PositionRegister(Tracer& tracer, int device_16, int value = 0,
+                     PulseSource source = PulseSource::press_detector_10);
 
     // One count from device 13 (+1 up, -1 down).
     void count(int sense);
@@ -57,8 +62,8 @@ private:
     int value_ = 0;
     long presets_ = 0;
     std::array<SignalId, 4> switches_{};
-    SignalId setter_15_;
-    SignalId value_signal_;
+    SignalId setter_15_ = 0;
+    SignalId value_signal_ = 0;
 };
 
 } // namespace parsons::relaylogic

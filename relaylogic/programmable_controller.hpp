@@ -35,6 +35,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
+#include <cstdint>
+
 namespace parsons::relaylogic {
 
 // Parallel bus 35 between NC 10 and PC 130 (through interfaces 9 and 133a).
@@ -63,18 +66,38 @@ public:
     // One scan of the ladder at machine time t. Reads the NC's signals on the bus, sets its own;
     // mounts the new head on the spindle when an exchange completes (the motor must stand).
     void scan(double t, Bus35& bus, axes::Spindle& spindle);
-    // A sequence is under way: more scans are needed (a tool call not yet answered, an
-    // exchange timing, a transfer in progress).
+    // A scan could still change something: a call of a tool with a head not yet answered, or
+    // relays to drop after the call went; an exchange timing or waiting for the motor to rest;
+    // the handshake under way (a hung transfer: for ever; the NC's transfer_timeout is the
+    // caller's); the NC's ready and received still to drop. False when idle, when tool ready
+    // stands with nothing pending, and for a call of a tool memory 132 has no head for.
     bool busy(const Bus35& bus) const;
 
     long exchanges() const { return exchanges_; } // head exchanges done
-    long transfers() const { return transfers_; } // ratios sent to the NC (S6)
+    long transfers() const { return transfers_; } // transfers begun (S6), a hung one included
     bool exchanging() const { return exchange_done_s_ >= 0; }
 
     nlohmann::json save() const;
     void load(const nlohmann::json& j);
 
+    // The ladder's relays, one rung each (programmable_controller.cpp: what picks and what
+    // drops each, with the seed's steps).
+    enum Relay : std::uint8_t {
+        cr1_tool_call,
+        cr2_exchange,
+        cr3_exchanged,
+        cr4_head_on,
+        cr5_ratio_change,
+        cr6_request,
+        cr7_transfer,
+        cr8_done,
+        kRelays
+    };
+
 private:
+    bool change_wanted() const;
+    void show(const Bus35& bus);
+
     Tracer& tracer_;
     axes::SpindleSyncProfile profile_;
     long stale_ratio_at_ = 0;
@@ -82,9 +105,20 @@ private:
     long exchanges_ = 0;
     long transfers_ = 0;
     double exchange_done_s_ = -1; // when the exchange under way completes; -1 = none
-    // The ladder's relays (helper state; each traced): see programmable_controller.cpp.
-    int step_ = 0; // the seed's step the sequence stands at (1..8; 0 idle)
-    int answered_tool_ = 0;
+    std::array<bool, kRelays> relay_{};
+    int answered_tool_ = 0;   // the tool CR1 latched (the head an exchange fetches)
+    double register_132_ = 0; // S3: the ratio selected from memory 132 for the transfer
+    std::array<SignalId, kRelays> relay_signal_{};
+    SignalId register_signal_;
+    SignalId tool_call_signal_;
+    SignalId request_signal_;
+    SignalId data_valid_signal_;
+    SignalId data_ratio_signal_;
+    SignalId tool_ready_signal_;
 };
+
+// Bus 35's lines as JSON (the state file; data_ratio exactly), and back.
+nlohmann::json save_bus35(const Bus35& bus);
+Bus35 load_bus35(const nlohmann::json& j);
 
 } // namespace parsons::relaylogic

@@ -10,6 +10,8 @@
 // Processor 63 reads the bank.
 #pragma once
 
+#include "relaylogic/direction_judging_device.hpp"
+
 #include "relaylogic/counters.hpp"
 #include "relaylogic/tracer.hpp"
 
@@ -19,7 +21,9 @@ namespace parsons::relaylogic {
 
 class SpeedRegister {
 public:
-    explicit SpeedRegister(Tracer& tracer);
+    // source names the signals: the press's register 11, or interface 33's count of encoder 32
+    // edges per sample (the speed S of motor 27, EP 0360190).
+    explicit SpeedRegister(Tracer& tracer, PulseSource source = PulseSource::press_detector_10);
     void pulse() { count_many(1); }
     void count_many(long n);
     // The sampling instant: the count moves into the holding bank; the counter homes.
@@ -33,8 +37,8 @@ private:
     Tracer& tracer_;
     int count_ = 0;
     int stored_ = 0;
-    SignalId count_signal_;
-    SignalId stored_signal_;
+    SignalId count_signal_ = 0;
+    SignalId stored_signal_ = 0;
 };
 
 } // namespace parsons::relaylogic

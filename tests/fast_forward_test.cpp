@@ -53,6 +53,12 @@ bool press_driven(const SignalInfo& info) {
     return false;
 }
 
+// Encoder 32's edges drive interface 33's relays likewise (spindle synchronisation).
+bool encoder_driven(const SignalInfo& info) {
+    return info.scope == "spindle" &&
+           (info.name.rfind("encoder_32", 0) == 0 || info.name.rfind("interface_33", 0) == 0);
+}
+
 class Events : public MachineObserver {
 public:
     explicit Events(bool follows) : follows_(follows) {}
@@ -62,7 +68,7 @@ public:
         const bool driven = n.find("counter_") != std::string::npos ||
                             n.find("comparer") != std::string::npos || n == "stepping_relay_256" ||
                             n == "delay_device_258" || n.find("commutator_") == 0 ||
-                            n.find("lamp_27") == 0 || press_driven(info);
+                            n.find("lamp_27") == 0 || press_driven(info) || encoder_driven(info);
         driven_.push_back(driven);
         values_.push_back(initial);
         if (n == "zeroizing_circuit_292") {
@@ -111,7 +117,14 @@ struct Case {
 // Condition cards come from their own generator `crng`, so that the decks of rng stay what they
 // were before condition cards were added (and with them the stops, lost steps and faults).
 // Press synchronisation likewise comes from `srng`: the press, the sync cards and the loop.
-Case random_case(std::mt19937& rng, std::mt19937& crng, std::mt19937& srng) {
+Case random_case(std::mt19937& rng, std::mt19937& crng, std::mt19937& srng, std::mt19937& trng) {
+    auto tpick = [&trng](int lo, int hi) {
+        return std::uniform_int_distribution<int>(lo, hi)(trng);
+    };
+    auto tchance = [&trng](double p) { return std::bernoulli_distribution(p)(trng); };
+    auto treal = [&trng](double lo, double hi) {
+        return std::uniform_real_distribution<double>(lo, hi)(trng);
+    };
     auto spick = [&srng](int lo, int hi) {
         return std::uniform_int_distribution<int>(lo, hi)(srng);
     };
@@ -236,6 +249,36 @@ Case random_case(std::mt19937& rng, std::mt19937& crng, std::mt19937& srng) {
         c.medium = schance(0.5) ? DeckFormat::cbn : DeckFormat::tape; // .five has no column 76
     }
 
+    // Spindle synchronisation (an addition after EP 0360190): a spindle of any temper, tap cards
+    // before some motion cards, now and then a fault of PC 130's transfer. From `trng`, so the
+    // decks above stay what they were.
+    p.spindle_sync = tchance(0.3);
+    if (p.spindle_sync) {
+        axes::SpindleSyncProfile& sp = p.spindle;
+        sp.encoder_pulses_per_rev = tpick(4, 40);
+        sp.sample_s = treal(0.01, 0.2);
+        if (tchance(0.3)) {
+            sp.change_at_s = treal(0, 60);
+            sp.change_factor = treal(0.3, 1.5);
+        }
+        // Within what interface 33's switches follow, and under half a turn a sample, at the
+        // fastest the lasting change makes it (the profile's check).
+        sp.max_rpm =
+            treal(30, std::min(p.max_stepping_rate_per_s * 60.0 / sp.encoder_pulses_per_rev,
+                               0.45 * 60.0 / sp.sample_s) /
+                          std::max(1.0, sp.change_factor));
+        sp.run_up_rpm_per_s = treal(20, 2000);
+        sp.run_down_rpm_per_s = treal(20, 2000);
+        sp.feed_gain_per_s = treal(0, 30);
+        sp.ratio_source = tchance(0.5) ? axes::RatioSource::transferred : axes::RatioSource::stored;
+        sp.head_change_s = treal(0.05, 10);
+        sp.pc_scan_s = treal(0.005, 0.1);
+        sp.transfer_timeout_s = treal(0.2, 5);
+        p.sync_drive.max_in_per_min = treal(1, 8);
+        p.sync_drive.acceleration_in_per_s2 = treal(0.05, 3);
+        c.medium = tchance(0.5) ? DeckFormat::cbn : DeckFormat::tape; // .five has no column 76
+    }
+
     // Half the decks are valid; the others have one mistake, on one card and axis.
     const int mistake = chance(0.5) ? 0 : pick(1, 7);
     const int cards = pick(1, 8);
@@ -244,6 +287,23 @@ Case random_case(std::mt19937& rng, std::mt19937& crng, std::mt19937& srng) {
     std::array<int, 5> at{};
     int number = pick(0, 9990);
     for (int n = 0; n < cards; ++n) {
+        if (p.spindle_sync && tchance(0.5)) {
+            CardOrders t;
+            t.kind = CardKind::tap;
+            t.number = number++;
+            t.tap.tool = tchance(0.95) ? tpick(1, 3) : tpick(4, 99);
+            t.tap.axis = kAxes.at(static_cast<std::size_t>(tpick(0, 4)));
+            t.tap.motion = tchance(0.5) ? Motion::forward : Motion::reverse;
+            t.tap.depth = static_cast<Thousandths>(tpick(1, tchance(0.8) ? 300 : 2000));
+            t.tap.rpm = std::max(1, static_cast<int>(treal(0.2, 1.05) * p.spindle.max_rpm));
+            const axes::SpindleHead* head = p.spindle.head(t.tap.tool);
+            const double ratio = head != nullptr ? head->ratio : 0.5;
+            // A feed between the drive's least and (now and then more than) its most.
+            const double feed = treal(0.5, p.sync_drive.max_in_per_min * 1.05);
+            t.tap.pitch =
+                std::clamp(static_cast<int>(feed / (ratio * t.tap.rpm) * 100000), 1, kMaxPitch);
+            c.cards.push_back(t);
+        }
         const bool sync = p.press_sync && schance(0.6);
         const int sync_number = number;
         number += sync ? 1 : 0;
@@ -375,6 +435,10 @@ Case random_case(std::mt19937& rng, std::mt19937& crng, std::mt19937& srng) {
         c.faults.push_back(
             parse_fault(fmt::format("slip:{}:{}:{}", axis, pick(1, 400), pick(1, 300))));
     }
+    if (p.spindle_sync && tchance(0.2)) {
+        c.faults.push_back(parse_fault(
+            fmt::format("{}:{}", tchance(0.5) ? "stale-ratio" : "transfer-hang", tpick(1, 3))));
+    }
     if (chance(0.25)) {
         const std::string axis(axis_name(kAxes.at(static_cast<std::size_t>(pick(0, 4)))));
         const std::array<std::string, 8> specs = {
@@ -395,7 +459,8 @@ RunResult run_at(const Case& c, Pace pace, MachineObserver* observer) {
     std::vector<Card> punched;
     for (const auto& o : c.cards) {
         const EncodeResult e = encode(o, fig8_layout());
-        if (o.kind == CardKind::sync) { // (a motion card may hold what its fields cannot)
+        if (o.kind == CardKind::sync || o.kind == CardKind::tap) { // (a motion card may hold
+                                                                   // what its fields cannot)
             INFO((e.error ? *e.error : std::string()));
             REQUIRE(e);
         }
@@ -475,6 +540,24 @@ void require_same(const RunResult& a, const RunResult& b) {
         REQUIRE(a.press->mean_cycle_s == b.press->mean_cycle_s);
         REQUIRE(a.press->waited_s == b.press->waited_s);
     }
+    REQUIRE(a.tapping.has_value() == b.tapping.has_value());
+    if (a.tapping) {
+        REQUIRE(a.tapping->tool_on_spindle == b.tapping->tool_on_spindle);
+        REQUIRE(a.tapping->ratio_in_memory == b.tapping->ratio_in_memory);
+        REQUIRE(a.tapping->head_exchanges == b.tapping->head_exchanges);
+        REQUIRE(a.tapping->transfers == b.tapping->transfers);
+        REQUIRE(a.tapping->holes.size() == b.tapping->holes.size());
+        for (std::size_t i = 0; i < a.tapping->holes.size(); ++i) {
+            const HoleRecord& x = a.tapping->holes.at(i);
+            const HoleRecord& y = b.tapping->holes.at(i);
+            REQUIRE(x.start_s == y.start_s);
+            REQUIRE(x.reverse_s == y.reverse_s);
+            REQUIRE(x.end_s == y.end_s);
+            REQUIRE(x.deepest_in == y.deepest_in);
+            REQUIRE(x.end_in == y.end_in);
+            REQUIRE(x.completed == y.completed);
+        }
+    }
     REQUIRE(a.cards.size() == b.cards.size());
     for (std::size_t i = 0; i < a.cards.size(); ++i) {
         REQUIRE(a.cards.at(i).start_s == b.cards.at(i).start_s);
@@ -490,6 +573,9 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
     std::mt19937 rng(1952);
     std::mt19937 crng(640901);
     std::mt19937 srng(436887);
+    std::mt19937 trng(360190);
+    long holes = 0;      // spindle synchronisation: tap cards that tapped
+    int tap_stops = 0;   // ... runs that stopped on transfer_timeout or tap_refused
     long loop_backs = 0; // press synchronisation: loop cards that sent the reader back
     int synced = 0;      // runs with a press
     int timeouts = 0;    // ... that stopped on sync_timeout
@@ -502,7 +588,7 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
     int not_met = 0; // runs that stopped on condition_not_met
     int refused = 0; // ... on condition_refused
     for (int n = 0; n < 240; ++n) {
-        const Case c = random_case(rng, crng, srng);
+        const Case c = random_case(rng, crng, srng, trng);
         INFO("deck " << n);
         const RunResult reference = run_at(c, Pace::impulse_level, nullptr);
         const RunResult jumped = run_at(c, Pace::fast_forward, nullptr);
@@ -522,6 +608,14 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
         trips += static_cast<long>(reference.actions.size());
         not_met += reference.stop && reference.stop->reason == StopReason::condition_not_met;
         refused += reference.stop && reference.stop->reason == StopReason::condition_refused;
+        if (reference.tapping) {
+            for (const HoleRecord& h : reference.tapping->holes) {
+                holes += h.completed ? 1 : 0;
+            }
+            tap_stops +=
+                reference.stop && (reference.stop->reason == StopReason::transfer_timeout ||
+                                   reference.stop->reason == StopReason::tap_refused);
+        }
         if (reference.press) {
             ++synced;
             loop_backs += reference.press->loop_backs;
@@ -554,6 +648,8 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
     CHECK(synced >= 40);
     CHECK(loop_backs >= 5);
     CHECK(timeouts >= 2);
+    CHECK(holes >= 20);
+    CHECK(tap_stops >= 3);
 }
 
 TEST_CASE("Fast-forward: a jump leaves every stepping switch, its last-step time and the screw "

@@ -567,7 +567,7 @@ TEST_CASE("CLI --json: docs/json-output.md names every field the commands emit",
     TempDir dir;
     const std::string sample = q(source_path(kSample));
     // Documents that between them carry every field: warnings, bad punches, every kind of
-    // finding, both gen jobs.
+    // finding, both airfoil jobs and the tapping job.
     const std::string stall = q(stall_deck(dir));
     const std::string bad = q(sample_with_row5(dir, 2, 13));
     const std::vector<std::string> runs = {
@@ -580,7 +580,8 @@ TEST_CASE("CLI --json: docs/json-output.md names every field the commands emit",
         "check " + stall + " --json",
         "punch " + sample + " -o " + q(dir.str("d.cbn")) + " --json",
         "gen airfoil --naca 2412 --stations 10 -o " + q(dir.str("t.cbn")) + " --json",
-        "gen airfoil --naca 0012 --job wing --stations 8 -o " + q(dir.str("w.cbn")) + " --json"};
+        "gen airfoil --naca 0012 --job wing --stations 8 -o " + q(dir.str("w.cbn")) + " --json",
+        "gen tapping -o " + q(dir.str("p.csv")) + " --json"};
     std::set<std::string> keys;
     for (const std::string& args : runs) {
         const auto r = run_split(dir, args);
@@ -588,8 +589,9 @@ TEST_CASE("CLI --json: docs/json-output.md names every field the commands emit",
         REQUIRE_FALSE(r.out.empty());
         collect_keys(r.doc(), keys);
     }
-    for (const char* key : {"from_in", "limit_in", "bad_punch", "column", "stops", "zero_in",
-                            "work_zero_in", "slow_down_2", "will_run_through"}) {
+    for (const char* key :
+         {"from_in", "limit_in", "bad_punch", "column", "stops", "zero_in", "work_zero_in",
+          "slow_down_2", "will_run_through", "profile_file", "feed_in_per_min"}) {
         CHECK(keys.count(key) == 1); // the runs above do reach every kind of field
     }
     const std::string doc = read_bytes(source_path("docs/json-output.md"));

@@ -14,6 +14,7 @@
 #include "cardreader/layout.hpp"
 #include "cardreader/listing_format.hpp"
 #include "cardreader/sync_listing.hpp"
+#include "cardreader/tap_listing.hpp"
 #include "cardreader/tape_format.hpp"
 #include "cardreader/text_format.hpp"
 
@@ -42,11 +43,13 @@ void check_names_file(const DeckError& e, const std::string& file) {
     }
 }
 
-// A condition or sync card (additions) that decodes is punched again by the keypunch into a card
-// that reads as the same orders (not always the same holes: a parameter punched 0000 is punched
-// blank), and its listing rows read back as the same orders.
+// A condition, sync or tap card (additions) that decodes is punched again by the keypunch into a
+// card that reads as the same orders (not always the same holes: a parameter punched 0000 is
+// punched blank), and its listing rows read back as the same orders.
 void extension_round_trip(const CardOrders& orders) {
-    const std::string_view kind = orders.kind == CardKind::sync ? "sync" : "condition";
+    const std::string_view kind = orders.kind == CardKind::sync  ? "sync"
+                                  : orders.kind == CardKind::tap ? "tap"
+                                                                 : "condition";
     const EncodeResult punched = encode(orders, fig8_layout());
     const DecodeResult again = punched ? decode(punched.card, fig8_layout()) : DecodeResult{};
     if (!punched || !again || again.orders != orders) {
@@ -62,6 +65,9 @@ void extension_round_trip(const CardOrders& orders) {
         for (const std::string& row : sync_rows(orders)) {
             rows << row << '\n';
         }
+    }
+    if (orders.kind == CardKind::tap) {
+        rows << tap_row(orders) << '\n';
     }
     std::istringstream in(rows.str());
     ListingReader reader(in, "rows.csv");

@@ -1,0 +1,107 @@
+#include "cardreader/tap_listing.hpp"
+
+#include "cardreader/deck_error.hpp"
+#include "cardreader/listing_fields.hpp"
+#include "cardreader/tap_card.hpp"
+
+#include <fmt/format.h>
+
+namespace parsons::cardreader {
+namespace {
+
+using detail::all_digits;
+using detail::split_fields;
+
+constexpr std::size_t kTapFieldCount = 8;
+constexpr int kPitchDecimals = 5;
+
+// "0.05000" -> 5000 (hundred-thousandths of an inch per tool revolution), or why not.
+int parse_pitch(std::string_view text, const std::string& file, long line) {
+    auto fail = [&](const std::string& why) {
+        return DeckError::at_line(file, line, fmt::format("pitch '{}': {}", text, why));
+    };
+    const auto dot = text.find('.');
+    const std::string_view whole = text.substr(0, dot);
+    const std::string_view decimals =
+        dot == std::string_view::npos ? std::string_view{} : text.substr(dot + 1);
+    if (!all_digits(whole) || !all_digits(decimals)) {
+        throw fail("not a number of inches (write 0.ddddd per tool revolution, e.g. 0.05000)");
+    }
+    if (decimals.size() != kPitchDecimals) {
+        throw fail("needs exactly five decimals, 0.ddddd (the card holds hundred-thousandths)");
+    }
+    if (whole.find_first_not_of('0') != std::string_view::npos) {
+        throw fail("over 0.99999 in per tool revolution (the card's five digits hold 0.00001 .. "
+                   "0.99999)");
+    }
+    const int value = std::stoi(std::string(decimals));
+    if (value == 0) {
+        throw fail("a pitch of 0 feeds nothing");
+    }
+    return value;
+}
+
+int parse_count(std::string_view text, std::string_view what, std::size_t digits, int max,
+                const std::string& file, long line) {
+    if (!all_digits(text) || text.size() > digits || std::stoi(std::string(text)) < 1 ||
+        std::stoi(std::string(text)) > max) {
+        throw DeckError::at_line(file, line, fmt::format("{} '{}' is not 1..{}", what, text, max));
+    }
+    return std::stoi(std::string(text));
+}
+
+} // namespace
+
+bool is_tap_row(std::string_view text) {
+    const auto fields = split_fields(text);
+    return fields.size() >= 2 && fields[1] == "tap";
+}
+
+std::pair<int, TapOrder> read_tap_row(std::string_view text, const std::string& file, long line) {
+    const auto fields = split_fields(text);
+    auto fail = [&](const std::string& why) { return DeckError::at_line(file, line, why); };
+    if (fields.size() != kTapFieldCount) {
+        throw fail(fmt::format("a tap row has 8 comma-separated fields "
+                               "(card,tap,TOOL,AXIS,SENSE,DEPTH,PITCH,RPM), found {}",
+                               fields.size()));
+    }
+    if (!all_digits(fields[0]) || fields[0].size() > 4) {
+        throw fail(fmt::format("card number '{}' is not 0..9999", fields[0]));
+    }
+    TapOrder t;
+    t.tool = parse_count(fields[2], "tool", 2, kMaxTapTool, file, line);
+    const auto axis = axis_named(fields[3]);
+    if (!axis) {
+        throw fail(
+            fmt::format("unknown axis '{}' (table, cross, vertical, swivel or tilt)", fields[3]));
+    }
+    t.axis = *axis;
+    if (fields[4] == "forward") {
+        t.motion = Motion::forward;
+    } else if (fields[4] == "reverse") {
+        t.motion = Motion::reverse;
+    } else {
+        throw fail(fmt::format("sense '{}' is not forward (counters count up into the work) or "
+                               "reverse (count down)",
+                               fields[4]));
+    }
+    if (fields[5].empty()) {
+        throw fail("depth is blank (a tap card always has its depth)");
+    }
+    t.depth = detail::parse_inches(fields[5], "depth", file, line);
+    if (t.depth == 0) {
+        throw fail(fmt::format("depth '{}': a tap of depth 0 taps nothing", fields[5]));
+    }
+    t.pitch = parse_pitch(fields[6], file, line);
+    t.rpm = parse_count(fields[7], "speed", 4, kMaxTapRpm, file, line);
+    return {std::stoi(std::string(fields[0])), t};
+}
+
+std::string tap_row(const CardOrders& orders) {
+    const TapOrder& t = orders.tap;
+    return fmt::format("{},tap,{},{},{},{},{},{}", orders.number, t.tool, axis_name(t.axis),
+                       t.motion == Motion::forward ? "forward" : "reverse", format_inches(t.depth),
+                       format_pitch(t.pitch), t.rpm);
+}
+
+} // namespace parsons::cardreader

@@ -1,0 +1,116 @@
+#include "cardreader/tap_review.hpp"
+
+#include "cardreader/layout.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace parsons::cardreader {
+namespace {
+
+constexpr double kHundredThousandths = 1e5;
+
+int column_of(FieldKind kind) {
+    const LayoutField* f = fig8_layout().find_tap(kind);
+    return f ? f->first_column : 0;
+}
+
+std::string held_tools(const SpindleLimits& limits) {
+    std::string held;
+    for (const SpindleLimits::Head& h : limits.heads) {
+        held += fmt::format("{}{}", held.empty() ? "" : ", ", h.tool);
+    }
+    return held.empty() ? std::string("none") : held;
+}
+
+} // namespace
+
+const SpindleLimits::Head* SpindleLimits::head(int tool) const {
+    for (const Head& h : heads) {
+        if (h.tool == tool) {
+            return &h;
+        }
+    }
+    return nullptr;
+}
+
+double SpindleLimits::feed_in_per_min(int pitch, int rpm, double ratio) {
+    return pitch / kHundredThousandths * rpm * ratio;
+}
+
+int SpindleLimits::max_pitch(int rpm, double ratio) const {
+    const double tool_rpm = rpm * ratio;
+    if (tool_rpm <= 0) {
+        return kMaxPitch;
+    }
+    const double most = std::floor(drive_max_in_per_min / tool_rpm * kHundredThousandths + 1e-9);
+    return static_cast<int>(std::min<double>(most, kMaxPitch));
+}
+
+int SpindleLimits::min_pitch(int rpm, double ratio) {
+    const double tool_rpm = rpm * ratio;
+    if (tool_rpm <= 0) {
+        return kMaxPitch;
+    }
+    const double least = std::ceil(kLeastTapFeedInPerMin / tool_rpm * kHundredThousandths - 1e-9);
+    return static_cast<int>(std::min<double>(least, kMaxPitch));
+}
+
+std::vector<TapFinding> TapReview::card(long index, const CardOrders& orders) const {
+    std::vector<TapFinding> found;
+    if (orders.kind != CardKind::tap) {
+        return found;
+    }
+    const TapOrder& t = orders.tap;
+    if (!allowed_) {
+        found.push_back({index, fig8_layout().extension_column, std::nullopt,
+                         fmt::format("a tap card (an addition after EP 0360190, Mitsubishi): "
+                                     "profile {} has no spindle synchronisation; the built-in "
+                                     "profile parsons-extended has it (--profile "
+                                     "parsons-extended)",
+                                     profile_)});
+        return found; // the rest is judged against a spindle the profile does not have
+    }
+    const SpindleLimits::Head* head = limits_.head(t.tool);
+    if (!head) {
+        found.push_back({index, column_of(FieldKind::tap_tool), t.axis,
+                         fmt::format("tap tool {}: no spindle head 31 of profile {} holds it "
+                                     "(its heads hold tools {}): PC 130 has nothing to put on",
+                                     t.tool, profile_, held_tools(limits_))});
+    }
+    if (t.rpm > limits_.max_rpm + 1e-9) {
+        found.push_back({index, column_of(FieldKind::tap_rpm), t.axis,
+                         fmt::format("tap speed S {} rev/min is above spindle motor 27's fastest, "
+                                     "{:g} rev/min (max_rpm of profile {})",
+                                     t.rpm, limits_.max_rpm, profile_)});
+    }
+    if (head) {
+        const double feed = SpindleLimits::feed_in_per_min(t.pitch, t.rpm, head->ratio);
+        if (feed > limits_.drive_max_in_per_min + 1e-9) {
+            found.push_back(
+                {index, column_of(FieldKind::tap_pitch), t.axis,
+                 fmt::format("tap pitch {} in at S {} rev/min through tool {}'s gear ratio "
+                             "{:.4g} needs the {} axis to feed {:.2f} in/min; the follower drive "
+                             "follows at most {:g} in/min: at most {} in per tool revolution at "
+                             "that speed",
+                             format_pitch(t.pitch), t.rpm, t.tool, head->ratio, axis_name(t.axis),
+                             feed, limits_.drive_max_in_per_min,
+                             format_pitch(limits_.max_pitch(t.rpm, head->ratio)))});
+        } else if (feed < kLeastTapFeedInPerMin - 1e-9) {
+            found.push_back(
+                {index, column_of(FieldKind::tap_pitch), t.axis,
+                 fmt::format("tap pitch {} in at S {} rev/min through tool {}'s gear ratio "
+                             "{:.4g} feeds the {} axis {:.3f} in/min; the follower drive feeds "
+                             "no slower than {:g} in/min: at least {} in per tool revolution at "
+                             "that speed",
+                             format_pitch(t.pitch), t.rpm, t.tool, head->ratio, axis_name(t.axis),
+                             feed, kLeastTapFeedInPerMin,
+                             format_pitch(SpindleLimits::min_pitch(t.rpm, head->ratio)))});
+        }
+    }
+    return found;
+}
+
+} // namespace parsons::cardreader

@@ -1,0 +1,76 @@
+// Reading a deck's tap cards (an addition after EP 0360190, Mitsubishi; tap_card.hpp) as the
+// operator would before the deck goes into reader 134, with the card and column of every
+// finding. All are deck errors: `run` refuses the deck with exit 2 before any motion, `show` and
+// `check` name them and exit 2.
+//   - a tap card under a profile without spindle synchronisation (parsons-1952, parsons-safe):
+//     column 76;
+//   - a tool no spindle head 31 of the profile holds (PC 130 has nothing to put on): column 2;
+//   - a speed S above spindle motor 27's fastest: column 15;
+//   - a feed the follower drive cannot follow: the tool turns S x A rev/min (A: the ratio of
+//     gear unit 30 with that tool's head, the figure memory 12a holds, claim 1), so the axis
+//     must feed pitch x S x A in/min: column 10, with the most pitch it can be at that speed;
+//   - a feed slower than the drive's least (kLeastTapFeedInPerMin): column 10, with the least
+//     pitch at that speed.
+// Emulation note: a static reading of the cards, not a run; what motor 27, PC 130 and the feed
+// do with the card is relaylogic's business.
+#pragma once
+
+#include "cardreader/orders.hpp"
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace parsons::cardreader {
+
+// The slowest feed a tap card may order (the follower drive's least steady speed, in/min): a
+// slower one would take hours a hole. The review refuses it on the card; the cabinet's own
+// refusal (relaylogic/tapping_units.cpp) uses the same figure.
+inline constexpr double kLeastTapFeedInPerMin = 0.5;
+
+// What the review needs of the spindle and the follower drive (from the machine profile;
+// cardreader/ does not depend on axes/). The defaults are the built-in profile's.
+struct SpindleLimits {
+    struct Head {
+        int tool = 0;
+        double ratio = 1.0; // tool revolutions per motor revolution (A)
+    };
+    std::vector<Head> heads = {{1, 0.25}, {2, 1.0 / 3.0}, {3, 0.5}};
+    double max_rpm = 240.0;            // motor 27's fastest
+    double drive_max_in_per_min = 5.4; // the fastest the follower drive follows
+
+    const Head* head(int tool) const;
+    // The feed (in/min) a tap of this pitch at this speed with this head needs: pitch x S x A.
+    static double feed_in_per_min(int pitch, int rpm, double ratio);
+    // The largest pitch (hundred-thousandths of an inch per tool revolution) the drive can
+    // follow at `rpm` through `ratio`.
+    int max_pitch(int rpm, double ratio) const;
+    // The smallest pitch that feeds at least kLeastTapFeedInPerMin at `rpm` through `ratio`.
+    static int min_pitch(int rpm, double ratio);
+};
+
+struct TapFinding {
+    long card = 0;  // deck position the finding is on
+    int column = 0; // the column to look at on that card
+    std::optional<Axis> axis;
+    std::string message;
+};
+
+class TapReview {
+public:
+    // allowed: the profile has spindle synchronisation; profile: its name, for the message.
+    explicit TapReview(bool allowed = true, std::string profile = "parsons-extended",
+                       SpindleLimits limits = {})
+        : allowed_(allowed), profile_(std::move(profile)), limits_(std::move(limits)) {}
+    // The next readable card of the deck (index 1-based): findings on a tap card, none on any
+    // other card.
+    std::vector<TapFinding> card(long index, const CardOrders& orders) const;
+
+private:
+    bool allowed_;
+    std::string profile_;
+    SpindleLimits limits_;
+};
+
+} // namespace parsons::cardreader

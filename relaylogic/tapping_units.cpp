@@ -1,0 +1,395 @@
+#include "relaylogic/tapping_units.hpp"
+
+#include "axes/state_json.hpp"
+#include "cardreader/tap_review.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace parsons::relaylogic {
+namespace {
+
+using axes::exact;
+
+// The feed creeps onto its starting count for at most this long after the spindle stands.
+constexpr double kSettleLimitS = 5.0;
+
+std::uint32_t thousandths(double x) {
+    return static_cast<std::uint32_t>(std::lround(std::clamp(x, 0.0, 4e6) * 1000));
+}
+
+} // namespace
+
+void TappingUnits::install(Tracer& tracer, const axes::MachineProfile& profile) {
+    if (!profile.spindle_sync) {
+        return;
+    }
+    profile_ = profile;
+    tracer_ = &tracer;
+    max_feed_in_per_s_ = profile.sync_drive.max_in_per_min / 60.0;
+    const axes::SpindleSyncProfile& p = profile.spindle;
+    spindle_ = std::make_unique<axes::Spindle>(p);
+    spindle_->mount(p.first_tool);
+    pc_ = std::make_unique<ProgrammableController>(tracer, p);
+    memory_ = std::make_unique<GearRatioMemory>(tracer, p);
+    device_13_ =
+        std::make_unique<DirectionJudgingDevice>(tracer, 0, PulseSource::spindle_encoder_32);
+    counter_33_ = std::make_unique<PositionRegister>(tracer, p.encoder_pulses_per_rev, 0,
+                                                     PulseSource::spindle_encoder_32);
+    speed_33_ = std::make_unique<SpeedRegister>(tracer, PulseSource::spindle_encoder_32);
+    motor_rpm_ = tracer.define("spindle", "motor_27.rpm",
+                               "spindle motor 27: its speed, rev/min (reverse shown as its size; "
+                               "EP 0360190)",
+                               "27", 14);
+    tool_rpm_ = tracer.define("spindle", "tool_16.rpm",
+                              "tool 16 on head 31: its speed, motor speed x the head's ratio, "
+                              "rev/min",
+                              "16", 14);
+    head_ = tracer.define("spindle", "head_31.tool",
+                          "spindle head 31 on the spindle: the tool number it holds", "31", 7,
+                          static_cast<std::uint32_t>(p.first_tool));
+    phase_signal_ = tracer.define("spindle", "synchronous_control.phase",
+                                  "synchronous operation control: 0 idle, 1 tool call, 2 in, 3 "
+                                  "out, 4 spindle stopping, 5 feed settling",
+                                  "", 3);
+    z_cmd_signal_ = tracer.define("spindle", "synchronous_control.depth_called",
+                                  "the depth the tool's turns call for (S x A x pitch summed), "
+                                  "thousandths of an inch",
+                                  "", 14);
+    feed_signal_ = tracer.define("spindle", "synchronous_control.feed",
+                                 "the follower drive's commanded feed, thousandths of an inch a "
+                                 "minute",
+                                 "", 14);
+}
+
+void TappingUnits::inject(const std::vector<Fault>& faults) {
+    for (const Fault& f : faults) {
+        if (f.kind == FaultKind::stale_ratio) {
+            pc_->stale_ratio_at(f.n);
+        } else if (f.kind == FaultKind::transfer_hang) {
+            pc_->transfer_hang_at(f.n);
+        }
+    }
+}
+
+void TappingUnits::on_edge(const axes::DetectorEdge& edge) {
+    const int sense = device_13_->judge(edge);
+    if (sense != 0) {
+        counter_33_->count(sense);
+        speed_33_->pulse();
+    }
+}
+
+void TappingUnits::catch_up(double t) {
+    bool moved = false;
+    while (spindle_->next_event_time() <= t) {
+        const double at = spindle_->next_event_time();
+        if (auto edge = spindle_->advance_to(at)) {
+            tracer_->set_time(at);
+            on_edge(*edge);
+            moved = true;
+        }
+    }
+    if (moved) {
+        tracer_->set_time(t);
+    }
+    spindle_->advance_to(t); // the motor stands at t (nothing due: only its clock moves)
+}
+
+void TappingUnits::halt() {
+    phase_ = Phase::idle;
+    feed_.speed_in_per_s = 0;
+    spindle_->command_rpm(0);
+    show();
+}
+
+// The card ends: the NC withdraws its tool call, and PC 130 (every relay dropping with the call,
+// in one scan) and the NC's side of the handshake answer it in a scan at that instant.
+void TappingUnits::withdraw_call(double t) {
+    bus_.tool_call = 0;
+    pc_->scan(t, bus_, *spindle_);
+    memory_->scan(t, bus_);
+}
+
+void TappingUnits::jump_to(double t) {
+    while (true) {
+        const long n = spindle_->pulses_by(t);
+        if (n > 0) {
+            const long before = spindle_->count();
+            const axes::DetectorEdge last = spindle_->skip_pulses(n);
+            const int way = last.count >= before ? +1 : -1;
+            device_13_->jump_to(last.count, way);
+            counter_33_->count_many(n, way);
+            speed_33_->count_many(n);
+        }
+        if (spindle_->next_event_time() > t) {
+            spindle_->advance_to(t); // nothing due: only the motor's clock moves
+            return;
+        }
+        // A segment boundary (or, never with an exact pulses_by, an edge left over).
+        if (auto edge = spindle_->advance_to(spindle_->next_event_time())) {
+            on_edge(*edge);
+        }
+    }
+}
+
+std::optional<std::string> TappingUnits::refusal(const cardreader::TapOrder& o,
+                                                 const axes::MachineProfile& profile) const {
+    const axes::SpindleSyncProfile& p = profile.spindle;
+    const axes::SpindleHead* head = p.head(o.tool);
+    if (head == nullptr) {
+        return fmt::format("tool {} is on no spindle head of profile {}", o.tool, profile.name);
+    }
+    if (o.rpm < 1 || o.rpm > p.max_rpm) {
+        return fmt::format("spindle speed {} rev/min: motor 27 turns at most {:g} rev/min", o.rpm,
+                           p.max_rpm);
+    }
+    const double fastest = // rev/s, at the lasting change's speed if it is faster
+        o.rpm * (p.change_at_s ? std::max(1.0, p.change_factor) : 1.0) / 60.0;
+    if (fastest * p.sample_s >= 0.5) {
+        return fmt::format("spindle speed {} rev/min turns motor 27 half a revolution or more "
+                           "between two samples of interface 33 (sample_s {:g} s): its counter "
+                           "could not tell the sense",
+                           o.rpm, p.sample_s);
+    }
+    const double feed = o.pitch / 100000.0 * head->ratio * o.rpm;
+    if (feed > profile.sync_drive.max_in_per_min) {
+        return fmt::format(
+            "pitch {} at {} rev/min with tool {} (ratio {:.4f}) feeds {:.2f} in/min; "
+            "the sync drive follows at most {:g} in/min",
+            cardreader::format_pitch(o.pitch), o.rpm, o.tool, head->ratio, feed,
+            profile.sync_drive.max_in_per_min);
+    }
+    if (feed < cardreader::kLeastTapFeedInPerMin) {
+        return fmt::format("pitch {} at {} rev/min with tool {} (ratio {:.4f}) feeds {:.3f} "
+                           "in/min; the sync drive follows no slower than {:g} in/min",
+                           cardreader::format_pitch(o.pitch), o.rpm, o.tool, head->ratio, feed,
+                           cardreader::kLeastTapFeedInPerMin);
+    }
+    if (o.depth < 1) {
+        return std::string("depth 0.000: a tap card taps at least 0.001 in");
+    }
+    return std::nullopt;
+}
+
+void TappingUnits::begin(const cardreader::TapOrder& order, double /*t*/) {
+    order_ = order;
+    phase_ = Phase::tool;
+    timed_out_ = false;
+    selected_ = false;
+    bus_.tool_call = order.tool;
+    show();
+}
+
+bool TappingUnits::scan(double t) {
+    pc_->scan(t, bus_, *spindle_);
+    memory_->scan(t, bus_);
+    tracer_->set(head_, static_cast<std::uint32_t>(spindle_->tool()));
+    if (memory_->transfer_under_way() &&
+        t - memory_->request_since_s() >= profile_.spindle.transfer_timeout_s) {
+        timed_out_ = true;
+        return false;
+    }
+    if (!bus_.tool_ready) {
+        return false;
+    }
+    if (profile_.spindle.ratio_source == axes::RatioSource::stored && !selected_) {
+        memory_->select(order_.tool); // Fig. 7, S31-S33
+        selected_ = true;
+    }
+    return true;
+}
+
+HoleRecord& TappingUnits::open_hole(long card, int number, int tool_called) {
+    HoleRecord h;
+    h.card = card;
+    h.number = number;
+    h.tool_called = tool_called;
+    holes_.push_back(std::move(h));
+    return holes_.back();
+}
+
+double TappingUnits::travel_per_edge() const {
+    return memory_->ratio() * (order_.pitch / 100000.0) / profile_.spindle.encoder_pulses_per_rev;
+}
+
+// The feed the motor covers running down to rest from `edges_per_sample`.
+double TappingUnits::run_down_travel(double edges_per_sample) const {
+    const auto& p = profile_.spindle;
+    const double s = edges_per_sample / p.encoder_pulses_per_rev / p.sample_s; // rev/s
+    const double a = p.run_down_rpm_per_s / 60.0;
+    const double revs = s * s / (2 * a);
+    return revs * memory_->ratio() * (order_.pitch / 100000.0) +
+           0.5 * edges_per_sample * travel_per_edge();
+}
+
+void TappingUnits::start(double t, int counter, double real_in) {
+    phase_ = Phase::run_in;
+    start_counter_ = counter;
+    z_cmd_in_ = 0;
+    last_counter_33_ = counter_33_->value();
+    speed_33_->sample(); // the first sample counts from here
+    const axes::SpindleHead* head = profile_.spindle.head(spindle_->tool());
+    HoleRecord& h = holes_.back();
+    h.tool = spindle_->tool();
+    h.tap_pitch_in = head != nullptr ? head->pitch_in : std::nullopt;
+    h.head_ratio = spindle_->ratio();
+    h.ratio_used = memory_->ratio();
+    h.pitch_ordered_in = order_.pitch / 100000.0;
+    h.rpm = order_.rpm;
+    h.axis = order_.axis;
+    h.sense = order_.motion == cardreader::Motion::forward ? +1 : -1;
+    h.start_in = real_in;
+    h.depth_in = order_.depth / 1000.0;
+    h.start_s = t;
+    spindle_->command_rpm(order_.rpm);
+    feed_ = FeedCommand{h.sense, 0.0};
+    record(t, real_in);
+    show();
+}
+
+void TappingUnits::record(double t, double real_in) {
+    HoleRecord& h = holes_.back();
+    const double z = h.sense * (real_in - h.start_in);
+    h.deepest_in = std::max(h.deepest_in, z);
+    h.end_in = real_in;
+    h.end_s = t;
+    if (keep_samples_) {
+        h.samples.push_back(TapSample{t, spindle_->tool_revs(), real_in});
+    }
+}
+
+bool TappingUnits::sample(double t, int counter, double real_in, bool feed_at_rest) {
+    const auto& p = profile_.spindle;
+    const int ppr = p.encoder_pulses_per_rev;
+    speed_33_->sample();
+    const int edges = speed_33_->stored(); // n: the motor's speed S over the last sample
+    // d: the net edges since the last sample, from the counter's two readings (less than half
+    // a revolution a sample: the profile keeps it so).
+    int d = (counter_33_->value() - last_counter_33_) % ppr;
+    if (d > ppr / 2) {
+        d -= ppr;
+    } else if (d < -ppr / 2) {
+        d += ppr;
+    }
+    last_counter_33_ = counter_33_->value();
+    const int sense = order_.motion == cardreader::Motion::forward ? +1 : -1;
+    int moved = (counter - start_counter_) % 10000;
+    if (moved > 5000) {
+        moved -= 10000;
+    } else if (moved < -5000) {
+        moved += 10000;
+    }
+    const double z_counted = sense * moved / 1000.0;
+    const double per_edge = travel_per_edge();
+    z_cmd_in_ += d * per_edge;
+    const double depth = order_.depth / 1000.0;
+    record(t, real_in);
+    HoleRecord& h = holes_.back();
+    switch (phase_) {
+    case Phase::run_in:
+        if (depth - z_cmd_in_ <= run_down_travel(edges)) {
+            spindle_->command_rpm(-order_.rpm); // reverse: run down at the depth, then out
+            h.reverse_s = t;
+            phase_ = Phase::run_out;
+        }
+        break;
+    case Phase::run_out:
+        if (d < 0 && z_cmd_in_ <= run_down_travel(edges)) {
+            spindle_->command_rpm(0);
+            phase_ = Phase::stopping;
+        }
+        break;
+    case Phase::stopping:
+        if (spindle_->at_rest()) {
+            phase_ = Phase::settle;
+            settle_since_s_ = t;
+        }
+        break;
+    default:
+        break;
+    }
+    double v = 0;
+    if (phase_ == Phase::settle) {
+        // The tool stands clear of the work: the feed creeps onto the count it started from.
+        if (moved == 0 && feed_at_rest) {
+            h.completed = true;
+            phase_ = Phase::idle;
+            feed_ = FeedCommand{sense, 0.0};
+            withdraw_call(t);
+            show();
+            return true;
+        }
+        if (t - settle_since_s_ >= kSettleLimitS) {
+            phase_ = Phase::idle;
+            feed_ = FeedCommand{sense, 0.0};
+            withdraw_call(t);
+            show();
+            return true;
+        }
+        v = p.feed_gain_per_s * (0.0 - z_counted);
+    } else {
+        v = d * per_edge / p.sample_s + p.feed_gain_per_s * (z_cmd_in_ - z_counted);
+    }
+    const double speed = std::min(std::abs(v), max_feed_in_per_s_);
+    feed_ = FeedCommand{v < 0 ? -sense : sense, speed};
+    show();
+    return false;
+}
+
+void TappingUnits::show() {
+    if (tracer_ == nullptr) {
+        return;
+    }
+    tracer_->set(motor_rpm_, static_cast<std::uint32_t>(std::lround(std::abs(spindle_->rpm()))));
+    tracer_->set(tool_rpm_, static_cast<std::uint32_t>(
+                                std::lround(std::abs(spindle_->rpm()) * spindle_->ratio())));
+    tracer_->set(head_, static_cast<std::uint32_t>(spindle_->tool()));
+    tracer_->set(phase_signal_, static_cast<std::uint32_t>(phase_));
+    tracer_->set(z_cmd_signal_, thousandths(z_cmd_in_));
+    tracer_->set(feed_signal_, thousandths(feed_.speed_in_per_s * 60.0));
+}
+
+nlohmann::json TappingUnits::save() const {
+    nlohmann::json j;
+    j["spindle"] = spindle_->save();
+    j["pc130"] = pc_->save();
+    j["memory_12a"] = memory_->save();
+    j["device_13"] = device_13_->save();
+    j["counter_33"] = counter_33_->save();
+    j["speed_33"] = speed_33_->save();
+    j["bus35"] = {{"tool_call", bus_.tool_call},     {"nc_ready", bus_.nc_ready},
+                  {"nc_received", bus_.nc_received}, {"transfer_request", bus_.transfer_request},
+                  {"data_valid", bus_.data_valid},   {"data_ratio", exact(bus_.data_ratio)},
+                  {"tool_ready", bus_.tool_ready}};
+    j["phase"] = static_cast<int>(phase_);
+    return j;
+}
+
+void TappingUnits::load(const nlohmann::json& j) {
+    spindle_->load(j.at("spindle"));
+    pc_->load(j.at("pc130"));
+    memory_->load(j.at("memory_12a"));
+    device_13_->load(j.at("device_13"));
+    counter_33_->load(j.at("counter_33"));
+    speed_33_->load(j.at("speed_33"));
+    const nlohmann::json& b = j.at("bus35");
+    bus_.tool_call = b.at("tool_call").get<int>();
+    bus_.nc_ready = b.at("nc_ready").get<bool>();
+    bus_.nc_received = b.at("nc_received").get<bool>();
+    bus_.transfer_request = b.at("transfer_request").get<bool>();
+    bus_.data_valid = b.at("data_valid").get<bool>();
+    bus_.data_ratio = axes::exact(b.at("data_ratio"));
+    bus_.tool_ready = b.at("tool_ready").get<bool>();
+    const int phase = j.at("phase").get<int>();
+    if (phase != 0) {
+        throw std::runtime_error("saved state: a tap card was under way (states are saved "
+                                 "between cards)");
+    }
+    phase_ = Phase::idle;
+    show();
+}
+
+} // namespace parsons::relaylogic

@@ -1,0 +1,200 @@
+// The spindle synchronisation of EP 0360190 (Mitsubishi; seeds/001) wired into the cabinet:
+// spindle motor 27 with encoder 32, gear unit 30 and heads 31 (axes/spindle.hpp), programmable
+// controller 130 and bus 35 (programmable_controller.hpp), gear ratio data memory 12a with the
+// NC's side of the handshake (gear_ratio_memory.hpp), spindle encoder interface 33 (direction
+// judging device 13, position register 14 and speed register 11 of the press synchronisation,
+// reused on encoder 32), and the seed's "synchronous operation control means", which feeds one
+// axis in step with the tool. An addition, not in the 1952 patent: present only when the
+// profile has spindle synchronisation (parsons-extended).
+//
+// A tap card, as the cabinet runs it:
+//   read complete ... the NC puts the card's tool T on bus 35 (the tool specifying signal);
+//                     PC 130 scans every pc_scan_s: exchanges the head if another is on,
+//                     transfers the ratio to 12a (first embodiment) or the NC selects the one
+//                     stored for T (second); a transfer not done within transfer_timeout_s of
+//                     its request stops the machine (transfer_timeout)
+//   tool ready ...... motor 27 is commanded forward at S; every sample_s the NC reads interface
+//                     33 (the encoder's net edges d and the edges of the last sample n) and the
+//                     feed axis's absolute counter, and sets the follower drive (the sync drive
+//                     of the profile) to
+//                         v = d / ppr x A x pitch / sample_s  +  gain x (z_cmd - z_counted)
+//                     where z_cmd, the depth the tool's turns call for, grows by d / ppr x A x
+//                     pitch each sample (S x A: A is the ratio in 12a, right or stale)
+//   near the depth .. when the depth left is what motor 27 covers running down from the speed
+//                     S = n / (ppr x sample_s) (plus half a sample's travel), the NC reverses the
+//                     motor (-S): it runs down, stops about at the depth and runs up backwards;
+//                     the feed follows it out
+//   near the top .... the same, commanding the motor to rest; once it stands, the feed creeps
+//                     to the counter reading it started from and stops (the card ends there)
+//   end ............. the NC drops the tool call; the zeroizing circuit indexes the next card
+//
+// Emulation notes: the counters of the feed axis count the way the drive really turns during a
+// tap (the NC sets reversing control 214 from the drive's sense). The feed's place is judged
+// from the 1952 counter (thousandths). Every decision is taken at a sample instant, so the
+// machine is the same at impulse level and in fast-forward, where the encoder's edges between
+// two samples are taken in one jump.
+#pragma once
+
+#include "axes/machine_profile.hpp"
+#include "axes/spindle.hpp"
+#include "cardreader/orders.hpp"
+#include "relaylogic/direction_judging_device.hpp"
+#include "relaylogic/faults.hpp"
+#include "relaylogic/gear_ratio_memory.hpp"
+#include "relaylogic/position_register.hpp"
+#include "relaylogic/programmable_controller.hpp"
+#include "relaylogic/speed_register.hpp"
+#include "relaylogic/tracer.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace parsons::relaylogic {
+
+// Spindle synchronisation (an addition after EP 0360190): each tap card's hole.
+struct TapSample {
+    double t = 0;         // machine time (every sample of interface 33, and the tap's ends)
+    double tool_revs = 0; // the tool's revolutions (the plant's, unwrapped; the true ones)
+    double feed_in = 0;   // where the part really is on the feed axis
+};
+
+struct HoleRecord {
+    long card = 0;       // position in the deck (1-based)
+    int number = 0;      // the card number
+    int tool_called = 0; // the tool the card called for
+    int tool = 0; // the head on the spindle while it tapped (what really cut; 0: never began)
+    std::optional<double> tap_pitch_in; // that head's tap (none: the head holds a cutter)
+    double head_ratio = 0;              // that head's real ratio A
+    double ratio_used = 0;              // the ratio in memory 12a the NC computed with
+    double pitch_ordered_in = 0;
+    int rpm = 0; // S ordered
+    cardreader::Axis axis = cardreader::Axis::vertical;
+    int sense = -1;        // +1 / -1: the part's travel into the work
+    double start_in = 0;   // the part on the feed axis where the tap started
+    double depth_in = 0;   // ordered
+    double deepest_in = 0; // how far into the work it really went (along sense)
+    double end_in = 0;     // where it stood when the card ended
+    double start_s = 0;
+    double reverse_s = 0; // when the NC reversed the spindle at the bottom
+    double end_s = 0;
+    bool completed = false;         // came back out and stood (false: the machine stopped first)
+    std::vector<TapSample> samples; // if asked for (record_tap_samples)
+};
+
+struct TappingResult {
+    int tool_on_spindle = 0;
+    double ratio_in_memory = 0; // 12a when the run ended
+    long head_exchanges = 0;
+    long transfers = 0;       // ratios PC 130 sent (S6)
+    long ratios_received = 0; // ratios the NC stored (S16)
+    std::vector<HoleRecord> holes;
+};
+
+// What the synchronous operation control asks of the feed axis's follower drive.
+struct FeedCommand {
+    int direction = +1;          // along the axis: +1 forward (counters up), -1 reverse
+    double speed_in_per_s = 0.0; // >= 0
+};
+
+class TappingUnits {
+public:
+    enum class Phase : std::uint8_t { idle, tool, run_in, run_out, stopping, settle };
+
+    void install(Tracer& tracer, const axes::MachineProfile& profile);
+    bool present() const { return spindle_ != nullptr; }
+    // Faults for PC 130 (stale-ratio, transfer-hang); others are ignored.
+    void inject(const std::vector<Fault>& faults);
+
+    axes::Spindle& spindle() { return *spindle_; }
+    const axes::Spindle& spindle() const { return *spindle_; }
+    const ProgrammableController& pc() const { return *pc_; }
+    const GearRatioMemory& memory() const { return *memory_; }
+    const Bus35& bus() const { return bus_; }
+
+    // Encoder 32's edges, counted by interface 33: one, or (fast-forward) n in one sense, the
+    // last of them `last`.
+    void on_edge(const axes::DetectorEdge& edge);
+    // Takes every event of the spindle due by time t (edges counted), one by one; with a
+    // tracer, each edge at its own time (the tracer is left at t).
+    void catch_up(double t);
+    // Fast-forward: the spindle's events before t in one jump a segment (edges only count).
+    void jump_to(double t);
+
+    // Why the cabinet cannot take this tap card (tap_refused), or nothing.
+    std::optional<std::string> refusal(const cardreader::TapOrder& order,
+                                       const axes::MachineProfile& profile) const;
+    // Read complete on a tap card: the tool call goes on the bus.
+    void begin(const cardreader::TapOrder& order, double t);
+    // One scan of PC 130 and the NC's handshake. Returns true when the tool is ready and the
+    // ratio in 12a (the tap may start); sets timed_out() when a transfer took too long.
+    bool scan(double t);
+    bool timed_out() const { return timed_out_; }
+    // Tool ready: motor 27 forward at S. counter: the feed axis's absolute counter reading.
+    void start(double t, int counter, double real_in);
+    // A sample of interface 33 at time t. Returns true when the tap is done (the feed stands
+    // on its starting count, or the settle gave up).
+    bool sample(double t, int counter, double real_in, bool feed_at_rest);
+
+    // The machine stopped: motor 27 is commanded to rest, the tap is over.
+    void halt();
+
+    Phase phase() const { return phase_; }
+    bool feeding(cardreader::Axis axis) const {
+        return phase_ != Phase::idle && phase_ != Phase::tool && axis == order_.axis;
+    }
+    FeedCommand feed() const { return feed_; }
+    const cardreader::TapOrder& order() const { return order_; }
+
+    // The run's holes (one a tap card that started), the samples if asked for.
+    void keep_samples(bool on) { keep_samples_ = on; }
+    std::vector<HoleRecord>& holes() { return holes_; }
+    const std::vector<HoleRecord>& holes() const { return holes_; }
+    HoleRecord& open_hole(long card, int number, int tool_called);
+
+    nlohmann::json save() const;
+    void load(const nlohmann::json& j);
+
+private:
+    void show();
+    void withdraw_call(double t);
+    void record(double t, double real_in);
+    double travel_per_edge() const; // inches of feed per encoder edge, with the ratio in 12a
+    double run_down_travel(double edges_per_sample) const;
+
+    axes::MachineProfile profile_;
+    double max_feed_in_per_s_ = 0;
+    std::unique_ptr<axes::Spindle> spindle_;
+    std::unique_ptr<ProgrammableController> pc_;
+    std::unique_ptr<GearRatioMemory> memory_;
+    std::unique_ptr<DirectionJudgingDevice> device_13_;
+    std::unique_ptr<PositionRegister> counter_33_;
+    std::unique_ptr<SpeedRegister> speed_33_;
+    Tracer* tracer_ = nullptr;
+    Bus35 bus_;
+    bool keep_samples_ = false;
+    std::vector<HoleRecord> holes_;
+
+    // The tap under way.
+    cardreader::TapOrder order_{};
+    Phase phase_ = Phase::idle;
+    bool timed_out_ = false;
+    bool selected_ = false;
+    int last_counter_33_ = 0; // interface 33's counter at the last sample
+    int start_counter_ = 0;   // the feed axis's absolute counter where the tap started
+    double z_cmd_in_ = 0;     // the depth the tool's turns call for
+    double settle_since_s_ = 0;
+    FeedCommand feed_{};
+
+    SignalId motor_rpm_ = 0;
+    SignalId tool_rpm_ = 0;
+    SignalId head_ = 0;
+    SignalId phase_signal_ = 0;
+    SignalId z_cmd_signal_ = 0;
+    SignalId feed_signal_ = 0;
+};
+
+} // namespace parsons::relaylogic
