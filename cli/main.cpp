@@ -5,6 +5,8 @@
 
 #include "cardreader/deck_error.hpp"
 
+#include "cli/version.hpp" // generated: cmake/git_version.cmake
+
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -34,6 +36,12 @@ int main(int argc, char** argv) {
                  "control (US 2,820,187)"};
     app.require_subcommand(1);
     app.footer("Run 'parsons COMMAND --help' for each command, with examples.");
+    // "parsons 0.1.0 (v0.1.0-12-gabc1234)": the project's version and the source's git
+    // description, then exit 0.
+    app.set_version_flag(
+        "--version",
+        fmt::format("parsons {} ({})", PARSONS_VERSION_NUMBER, PARSONS_GIT_DESCRIPTION),
+        "Print the version and the git description of the source, and exit");
     Command selected;
     add_punch_command(app, selected);
     add_show_command(app, selected);
