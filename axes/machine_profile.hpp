@@ -28,10 +28,10 @@ struct AxisProfile {
     // Travel of the part; a limit switch stops the machine past either end.
     double travel_min_in = -0.5;
     double travel_max_in = 10.5;
-    // The job's movement range (the soft limits of Mitsubishi's control, US 4,706,003 and
-    // seeds/001): a card whose move would end outside it stops the machine before any axis
-    // moves, and a running axis that could no longer brake to rest inside it is switched off
-    // in time. Off unless set (profile key soft_limits_in, or run --limit AXIS=MIN:MAX).
+    // The job's movement range (the soft limits of Mitsubishi's control, EP 0360190): a card whose
+    // move would end outside it stops the machine before any axis moves, and a running axis that
+    // could no longer brake to rest inside it is switched off in time. Off unless set (profile key
+    // soft_limits_in, or run --limit AXIS=MIN:MAX).
     bool soft_limits = false;
     double soft_min_in = 0;
     double soft_max_in = 0;
@@ -58,7 +58,7 @@ struct AxisProfile {
     std::vector<std::pair<double, double>> cam_160_in;
 };
 
-// Condition cards (an addition after EP 0640901, Siemens; seeds/002): how long each action the
+// Condition cards (an addition after EP 0640901, Siemens): how long each action the
 // tripping unit ALE starts takes before it is acknowledged. Figures for a 1950s knee mill with a
 // powered drawbar and a tool magazine, docs/machine-profile.md.
 struct ActionTimes {
@@ -76,7 +76,7 @@ struct Tool {
     double radius_in = 0.25;
 };
 
-// Press synchronisation (an addition after EP 0436887, Mitsubishi; seeds/000): the outside
+// Press synchronisation (an addition after EP 0436887, Mitsubishi): the outside
 // machine, a rotary press the control does not drive (Fig. 1A; axes/press.hpp). Motor 22
 // turns crank 21 at a speed of its own; crank 21 raises and lowers die 20; detector 10 on the
 // crank gives two-phase pulses. The crank's speed is piecewise constant: it changes only at the
@@ -118,7 +118,7 @@ struct SyncDrive {
     double acceleration_in_per_s2 = 0.5; // its rate limit, both ways
 };
 
-// Spindle synchronisation (an addition after EP 0360190, Mitsubishi; seeds/001): spindle motor
+// Spindle synchronisation (an addition after EP 0360190, Mitsubishi): spindle motor
 // 27 with encoder 32 on its shaft, gear unit 30 and the interchangeable spindle heads 31, each
 // holding one tool; programmable controller 130 exchanges the heads; the NC feeds one axis in
 // step with the tool (S x A, tapping). Figures: docs/tapping.md.
@@ -178,7 +178,7 @@ struct SpindleSyncProfile {
     }
 };
 
-// What the counters measure (DESIGN.md 4.3).
+// What the counters measure (docs/design-rules.md rule 3).
 enum class MeasuringChain : std::uint8_t {
     instrument_shaft_74, // the patent: the part's position, through shaft 74 and follower 76
     screw_turns,         // departure from the patent: the turns of the main screw
@@ -206,10 +206,10 @@ struct MachineProfile {
     // fastest impulse rate they follow. Impulses closer together than 1/rate are lost.
     double stepping_switch_step_s = 0.010;
     double max_stepping_rate_per_s = 100.0;
-    // Delay device 258: how long it holds channel 257 open after speed switch 236 steps. It
-    // must outlast an equality at the slowest speed (0.001 in at speed 3, 0.6 in/min: 100 ms;
-    // the first impulse from rest, 0.001 in at 0.2 in/s2, also 100 ms), or one equality steps
-    // the switch twice (DESIGN.md 4.5). It also hides every number the axis passes during the
+    // Delay device 258: how long it holds channel 257 open after speed switch 236 steps. It must
+    // outlast an equality at the slowest speed (0.001 in at speed 3, 0.6 in/min: 100 ms; the first
+    // impulse from rest, 0.001 in at 0.2 in/s2, also 100 ms), or one equality steps the switch
+    // twice (docs/design-rules.md rule 5). It also hides every number the axis passes during the
     // hold: 0.135 in at speed 1 needs slow-downs at least 0.014 in apart.
     double delay_258_s = 0.150;
     // Motor 278 moving stepping shaft 280 one position.
@@ -229,7 +229,7 @@ struct MachineProfile {
     // of the main screw instead is a departure, kept to show what the chain is for.
     MeasuringChain measuring_chain = MeasuringChain::instrument_shaft_74;
 
-    // ---- Readings of the patent and additions to it (DESIGN.md 4, rules 5, 6, 12, 14) ----
+    // ---- Readings of the patent and additions (docs/design-rules.md rules 5, 6, 12, 14) ----
     // The built-in profiles parsons-1952 (the default) and parsons-safe differ only here;
     // docs/machine-profile.md tells each option's story.
     //
@@ -246,7 +246,7 @@ struct MachineProfile {
     // with two punches in one digit column (stop bad_punch) instead of closing two relays of
     // the bank as a 1952 reader would. On in parsons-safe.
     bool refuse_double_punch = false;
-    // Addition after EP 0640901 (Siemens; seeds/002): condition cards that trip an action
+    // Addition after EP 0640901 (Siemens): condition cards that trip an action
     // while an axis moves. Off in parsons-1952 and parsons-safe (a deck with one is refused),
     // on in parsons-extended.
     bool condition_cards = false;
@@ -254,7 +254,7 @@ struct MachineProfile {
     // The tool changer's tools, and the one in the spindle when the run starts.
     std::vector<Tool> tools = {{1, 0.25}, {2, 0.125}};
     int first_tool = 1;
-    // Addition after EP 0436887 (Mitsubishi; seeds/000): a press beside the machine, the sync
+    // Addition after EP 0436887 (Mitsubishi): a press beside the machine, the sync
     // units 10-17 and sync cards. Off in parsons-1952 and parsons-safe (a deck with a sync card
     // is refused), on in parsons-extended.
     bool press_sync = false;
@@ -264,7 +264,7 @@ struct MachineProfile {
     // How long the synchronisation control processor 17 waits for the crank (position sync) or
     // for a pulse (speed sync) before it stops the machine: sync_timeout.
     double sync_timeout_s = 90.0;
-    // Addition after EP 0360190 (Mitsubishi; seeds/001): spindle synchronisation (motor 27
+    // Addition after EP 0360190 (Mitsubishi): spindle synchronisation (motor 27
     // with a speed, encoder 32, gear unit 30, heads 31, PC 130, memory 12a) and tap cards. Off
     // in parsons-1952 and parsons-safe (a deck with a tap card is refused), on in
     // parsons-extended.

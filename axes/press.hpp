@@ -1,8 +1,8 @@
-// The outside machine of EP 0436887 (Mitsubishi; seeds/000), Fig. 1A: a rotary press that
-// the numerical control does not drive. Motor 22 turns crank 21 at a speed of its own; the
-// crank raises and lowers die 20 through a connecting rod (a slider crank); detector 10 on
-// the crank gives a two-phase signal. An addition to the 1952 machine (DESIGN.md 4.14),
-// present only when the profile has press synchronisation (parsons-extended).
+// The outside machine of EP 0436887 (Mitsubishi), Fig. 1A: a rotary press that the numerical
+// control does not drive. Motor 22 turns crank 21 at a speed of its own; the crank raises and
+// lowers die 20 through a connecting rod (a slider crank); detector 10 on the crank gives a
+// two-phase signal. An addition to the 1952 machine (docs/design-rules.md rule 14), present only
+// when the profile has press synchronisation (parsons-extended).
 //
 // How we represent it: the crank's unwrapped angle theta (degrees, 0 = top dead centre of
 // the first revolution, growing as the press runs forward) moves at a speed that is constant

@@ -1,8 +1,8 @@
-// The spindle of EP 0360190 (Mitsubishi; seeds/001), Figs. 1 and 3: spindle motor 27 turning at
-// a speed the NC commands (not only on, off and reverse), encoder 32 coupled directly to the
-// motor, gear unit 30 and the interchangeable spindle heads 31, each holding its tool 16 (a tap
-// of a given pitch, or a cutter). An addition to the 1952 machine (DESIGN.md 4.14), present
-// only when the profile has spindle synchronisation (parsons-extended).
+// The spindle of EP 0360190 (Mitsubishi), Figs. 1 and 3: spindle motor 27 turning at a speed the NC
+// commands (not only on, off and reverse), encoder 32 coupled directly to the motor, gear unit 30
+// and the interchangeable spindle heads 31, each holding its tool 16 (a tap of a given pitch, or a
+// cutter). An addition to the 1952 machine (docs/design-rules.md rule 14), present only when the
+// profile has spindle synchronisation (parsons-extended).
 //
 // How we represent it: the motor's unwrapped angle phi (motor revolutions, 0 where the run
 // starts, growing forward) moves with a speed that changes at a constant rate between

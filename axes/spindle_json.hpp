@@ -1,4 +1,4 @@
-// The profile's spindle synchronisation as JSON (an addition after EP 0360190; seeds/001):
+// The profile's spindle synchronisation as JSON (an addition after EP 0360190, Mitsubishi):
 // the top-level "spindle_sync" flag and the "spindle" object of SpindleSyncProfile's keys
 // (motor 27, encoder 32, the heads 31 with their ratios and tools, PC 130's times, the ratio's
 // way into memory 12a). profile_json.cpp calls these; docs/machine-profile.md lists every key

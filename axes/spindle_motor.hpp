@@ -1,5 +1,5 @@
 // The spindle motor that turns cutter 184 (Fig. 1), as the condition cards' actions drive it (an
-// addition after EP 0640901, Siemens; seeds/002).
+// addition after EP 0640901, Siemens).
 //
 // The 1952 machine only sets the spindle's direction from column 1 of each card (spindle
 // control 165, relaylogic/control_cabinet.cpp) and says nothing of how long the motor takes.

@@ -1,4 +1,4 @@
-// The tool changer: an addition after EP 0640901 (Siemens; seeds/002), whose example action is
+// The tool changer: an addition after EP 0640901 (Siemens), whose example action is
 // a tool change begun before the machine reaches the exact change position (claims 5, 6).
 //
 // The 1952 machine had one cutter, changed by hand between jobs. Here a changer holds the

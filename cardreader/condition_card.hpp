@@ -1,4 +1,4 @@
-// The condition card: an addition after EP 0640901 (Siemens; seeds/002), not in the patent.
+// The condition card: an addition after EP 0640901 (Siemens), not in the patent.
 //
 // The seed's part program puts condition records (its N50; N100-N120) before the motion record
 // they watch (N60; N130): "if the axis passes this position, start this action". parsons punches

@@ -75,10 +75,10 @@ struct SequenceRun {
     int stall_at = 0; // 0: the shaft went home
 };
 
-// Replays stepping shaft 280 (rule 8): at each position the axes punched there that have not
-// stopped run; an axis whose travel is zero stops at once (together with any other such axis:
-// unit 284 counts each), otherwise any running axis may stop first. Each stop is one impulse,
-// one position. Every possible order is followed (at most 5! of them).
+// Replays stepping shaft 280 (docs/design-rules.md rule 8): at each position the axes punched there
+// that have not stopped run; an axis whose travel is zero stops at once (together with any other
+// such axis: unit 284 counts each), otherwise any running axis may stop first. Each stop is one
+// impulse, one position. Every possible order is followed (at most 5! of them).
 void replay(const CardOrders& orders, const std::array<std::optional<Thousandths>, 5>& travel,
             int position, SequenceRun run, std::vector<SequenceRun>& runs) {
     if (position > kSequencePositions) {

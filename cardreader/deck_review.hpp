@@ -3,7 +3,7 @@
 //
 //  - the shared-bank hazard: slow-downs and stop share the absolute storage banks 350-356
 //    (Fig. 12), one bank of ten relays per digit, so the absolute comparer also conducts at
-//    every number whose digits each stand on a closed relay (DESIGN.md 4.2);
+//    every number whose digits each stand on a closed relay (docs/design-rules.md rule 2);
 //  - a check that is not |stop - previous stop| (the increment comparer 122'' disagrees);
 //  - a card number that is not the previous one + 1 (the card-number check: no numeral);
 //  - a start speed that does not match the slow-downs punched (3 - start speed of them);

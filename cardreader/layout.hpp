@@ -2,8 +2,8 @@
 //
 // The reader's brushes are wired to columns by a plugboard; a layout is that plugboard.
 // Figure 8 itself is not legible in the patent text we have, so the default "fig8" layout is
-// the reconstruction of DESIGN.md section 3 (see docs/card-layout.md). Other layouts are other
-// tables.
+// the reconstruction told in docs/card-layout.md (docs/design-rules.md, The card layout).
+// Other layouts are other tables.
 //
 // decode() is pure: a card and a layout in, the orders or the first bad punch out (naming the
 // column and what is wrong). encode() is the keypunch: orders in, the holes out.

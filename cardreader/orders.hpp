@@ -57,7 +57,7 @@ struct AxisOrder {
     bool operator==(const AxisOrder&) const = default;
 };
 
-// ---- Condition cards: an addition after EP 0640901 (Siemens; seeds/002), not in the patent.
+// ---- Condition cards: an addition after EP 0640901 (Siemens), not in the patent.
 // A condition card (column 76 punched in row 1, docs/card-layout.md) carries up to five
 // condition records, each split by converter UMS into a condition (axis, position, sense of
 // passing) and an action, both carrying the same event identifier (claim 3). It stands before
@@ -111,7 +111,7 @@ std::string action_text(ActionKind a, int parameter);
 // What the parameter of an action means and which values it takes, or an error sentence.
 std::optional<std::string> parameter_error(ActionKind a, int parameter);
 
-// ---- Sync cards: an addition after EP 0436887 (Mitsubishi; seeds/000), not in the patent.
+// ---- Sync cards: an addition after EP 0436887 (Mitsubishi), not in the patent.
 // A sync card (column 76 punched in row 2, docs/card-layout.md) carries the seed's
 // synchronisation commands for the motion card that follows it: position synchronisation
 // (its G101 with R: hold the card's motion until the press's crank 21 reaches the angle) and
@@ -143,7 +143,7 @@ struct SyncOrder {
 // "0.00417" (hundred-thousandths of an inch per pulse)
 std::string format_travel_per_pulse(int hundred_thousandths);
 
-// ---- Tap cards: an addition after EP 0360190 (Mitsubishi; seeds/001), not in the patent.
+// ---- Tap cards: an addition after EP 0360190 (Mitsubishi), not in the patent.
 // A tap card (column 76 punched in row 3, docs/card-layout.md) calls for a tool (PC 130 puts
 // its spindle head on, and the head's gear ratio reaches memory 12a) and taps one hole: motor 27
 // runs forward at S, the axis feeds into the work in step with the tool (the ordered pitch per

@@ -1,4 +1,4 @@
-// The sync card: an addition after EP 0436887 (Mitsubishi; seeds/000), not in the patent.
+// The sync card: an addition after EP 0436887 (Mitsubishi), not in the patent.
 //
 // The seed's Fig. 3 program puts its synchronisation commands in the block of the motion they
 // govern: step 3 "G95 G101 R30 F10" (start when crank 21 reaches 30 degrees, travel 10 mm per

@@ -1,4 +1,4 @@
-// The tap card: an addition after EP 0360190 (Mitsubishi; seeds/001), not in the patent.
+// The tap card: an addition after EP 0360190 (Mitsubishi), not in the patent.
 //
 // Claim 1 of the seed: gear ratio data memory 12a holds the ratio of gear means 30, through which
 // spindle motor 27 drives the spindle head 31 that holds tool 16, selected by the tool number the

@@ -1,5 +1,5 @@
 // parsons check DECK: the whole-program check a later control made before running a part
-// program (Mitsubishi's movement range, seeds/001): every card whose move would take an axis
+// program (Mitsubishi's movement range, EP 0360190): every card whose move would take an axis
 // past a soft limit (the profile's, or --limit) or past a limit switch, listed before anything
 // runs; with the careful operator's warnings of `parsons show` (deck_review) beside them.
 //

@@ -31,7 +31,7 @@ void add_demo_command(CLI::App& app, Command& selected);
 void add_bench_command(CLI::App& app, Command& selected);
 void add_check_command(CLI::App& app, Command& selected);
 
-// What `parsons run` is asked to do (the flags of DESIGN.md section 6).
+// What `parsons run` is asked to do (the flags of docs/design-rules.md, Interfaces).
 struct RunRequest {
     std::string input;
     std::string report;

@@ -1,4 +1,4 @@
-// The exit codes of `parsons` (DESIGN.md section 6).
+// The exit codes of `parsons` (docs/design-rules.md, Interfaces).
 #pragma once
 
 #include <fmt/format.h>

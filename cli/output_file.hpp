@@ -1,5 +1,6 @@
 // The one output writer of every command (reports, traces, events, paths, plots, cut and card
-// pictures, saved states, decks). What it does depends on what the name is (DESIGN.md §6):
+// pictures, saved states, decks). What it does depends on what the name is (docs/design-rules.md,
+// Interfaces):
 //
 //   the name is              | writes                                  | on commit()
 //   -------------------------+-----------------------------------------+------------------------

@@ -1,5 +1,5 @@
 // The press on the chart of run --plot: press synchronisation is an addition after EP 0436887
-// (Mitsubishi; seeds/000), present only in a profile with a press (parsons-extended). What the
+// (Mitsubishi), present only in a profile with a press (parsons-extended). What the
 // seed draws in Figs. 2A and 2B — crank 21's angle from top dead centre and die 20's height as
 // the crank turns — and what Figs. 4 and 6 put beside it — the feeder's moves against the
 // crank, the sampling of speed register 11 — become lanes under the five lead-screw panels,

@@ -1,5 +1,5 @@
 // The spindle on the chart of run --plot: spindle synchronisation is an addition after EP 0360190
-// (Mitsubishi; seeds/001), present in a profile with spindle_sync (parsons-extended), and drawn
+// (Mitsubishi), present in a profile with spindle_sync (parsons-extended), and drawn
 // only in a run that read a tap card. What the seed's Figs. 1 and 3 wire together — spindle
 // motor 27 with encoder 32, gear unit 30 and the head 31 holding tool 16, gear ratio data memory
 // 12a, the synchronous operation of the feed (S x A), and the handshake of Fig. 4 between the

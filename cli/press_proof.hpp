@@ -1,8 +1,8 @@
 // The press-feeder proof (`parsons run DECK --press-proof JOB`): an observer that at every
 // event of the run — every detector edge of the press, every impulse of the feeder — checks
 // that the feeder is never inside the die zone (table beyond the zone edge) while die 20 is
-// below its safe height. Press synchronisation is an addition after EP 0436887 (Mitsubishi;
-// seeds/000); docs/press-sync.md tells the figures.
+// below its safe height. Press synchronisation is an addition after EP 0436887
+// (Mitsubishi); docs/press-sync.md tells the figures.
 //
 // How: the press is a machine of its own that the control never drives, so the proof turns a
 // copy of it (axes::Press, the same profile) in step with machine time and reads the die's

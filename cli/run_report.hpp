@@ -1,4 +1,5 @@
-// The report of a run (--report R.json, DESIGN.md section 6) and the one-screen summary.
+// The report of a run (--report R.json, docs/design-rules.md, Interfaces) and the one-screen
+// summary.
 #pragma once
 
 #include "cli/applied_profile.hpp"

@@ -1,8 +1,8 @@
 // The thread proof (`parsons run DECK --thread-proof JOB`): from the tool's true revolutions and
 // the part's true position on the feed axis, sampled through each tap (RunResult.tapping, with
 // ControlCabinet::record_tap_samples), the pitch each hole's thread really has, against the pitch
-// of the tap that cut it. Spindle synchronisation is an addition after EP 0360190 (Mitsubishi;
-// seeds/001); docs/tapping.md tells the figures.
+// of the tap that cut it. Spindle synchronisation is an addition after EP 0360190
+// (Mitsubishi); docs/tapping.md tells the figures.
 //
 // A thread's pitch is the tool's advance into the work per tool revolution. The proof judges it
 // going in, over the full-thread zone: from the plate's surface down to the thread's depth less

@@ -3,7 +3,7 @@
 //
 // Two sources: the NACA 4-digit equations (thickness laid off perpendicular to the camber
 // line; open trailing edge a4 = 0.1015 by default, closed 0.1036 as an option), and coordinate
-// files in the Selig and Lednicer .dat layouts (see ../shared/airfoils/SOURCES.md), fitted
+// files in the Selig and Lednicer .dat layouts (see decks/airfoils/SOURCES.md), fitted
 // with a smooth curve so that the surface normal is defined everywhere.
 //
 // Every source answers the same question: the point and unit tangent of the upper or lower

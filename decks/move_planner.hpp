@@ -11,9 +11,9 @@
 //     (max_stepping_rate_per_s) is never used: the counters would fall behind.
 //   - Only the table has two slow-down fields (layout fig8), so only the table starts on
 //     speed 1; the others start at most on speed 2.
-//   - Never a card with the shared-bank hazard (DESIGN.md 4.2): if the slow-downs would also
-//     compare equal somewhere on the way, they are moved further from the stop, a thousandth
-//     at a time; failing that, the move starts one speed slower.
+//   - Never a card with the shared-bank hazard (docs/design-rules.md rule 2): if the slow-downs
+//     would also compare equal somewhere on the way, they are moved further from the stop, a
+//     thousandth at a time; failing that, the move starts one speed slower.
 //   - Corner slow-down (EP 0636958, Black & Decker): where the path turns sharply at the
 //     station this card goes to, the move is made at the lowest speed.
 #pragma once

@@ -1,4 +1,4 @@
-// The press-feeder job: the workpiece transfer of EP 0436887 (Mitsubishi; seeds/000, Fig. 3
+// The press-feeder job: the workpiece transfer of EP 0436887 (Mitsubishi, Fig. 3
 // and Fig. 4) on the 1952 machine, an addition (press synchronisation, docs/press-sync.md).
 // The feeder's arm is the table (X, toward the press) and the cross slide (Y, along the
 // conveyors); the press stands beside the machine (axes/press.hpp).

@@ -1,5 +1,5 @@
 // The tapping job: a plate of tapped holes on the 1952 machine with the spindle synchronisation
-// of EP 0360190 (Mitsubishi; seeds/001, claim 1), an addition (docs/tapping.md). Two taps of
+// of EP 0360190 (Mitsubishi, claim 1), an addition (docs/tapping.md). Two taps of
 // different pitch sit in two spindle heads 31 with different gear ratios (gear unit 30): the
 // plate shows whether the NC computed the tool's speed with the right ratio (S x A), because a
 // wrong ratio cuts a wrong pitch.

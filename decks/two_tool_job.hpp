@@ -1,4 +1,4 @@
-// The two-tool template job: the job that shows the point of EP 0640901 (Siemens; seeds/002,
+// The two-tool template job: the job that shows the point of EP 0640901 (Siemens,
 // claims 5 and 6), an addition to the 1952 machine, which had one cutter changed by hand.
 //
 // A template (Fig. 4, decks/template_job.hpp) is roughed with the big tool and finished with

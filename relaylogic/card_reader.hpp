@@ -2,13 +2,13 @@
 // into the holding relays of the storage banks.
 //
 // A brush that finds a hole in row d of a digit column sends an impulse that picks relay d of
-// the column's bank (Fig. 13). A 1952 reader has no check of its own on this (DESIGN.md 4.12):
-// a digit column punched twice simply picks two relays, which then let the comparer conduct at
-// more positions than the card meant. That is the faithful reading, in profile parsons-1952.
-// Refusing such a card with a bad_punch stop is an addition of this emulator (profile option
-// refuse_double_punch, on in parsons-safe). Every other bad punch (a stray hole, a blank digit
-// inside a number, a speed or motion column the cabinet cannot act on) still stops the reader:
-// that refusal, too, is an addition, and its message says so.
+// the column's bank (Fig. 13). A 1952 reader has no check of its own on this
+// (docs/design-rules.md rule 12): a digit column punched twice simply picks two relays, which
+// then let the comparer conduct at more positions than the card meant. That is the faithful
+// reading, in profile parsons-1952. Refusing such a card with a bad_punch stop is an addition of
+// this emulator (profile option refuse_double_punch, on in parsons-safe). Every other bad punch
+// (a stray hole, a blank digit inside a number, a speed or motion column the cabinet cannot act
+// on) still stops the reader: that refusal, too, is an addition, and its message says so.
 //
 // Emulation note: with separate registers (an addition) each number has its own register and
 // a double-punched digit is read at its lower row only.

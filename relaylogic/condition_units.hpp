@@ -1,4 +1,4 @@
-// The condition units of EP 0640901 (Siemens; seeds/002) wired into the cabinet: converter UMS
+// The condition units of EP 0640901 (Siemens) wired into the cabinet: converter UMS
 // and internal buffer PFR (relaylogic/internal_buffer.hpp), monitoring unit PRG
 // (relaylogic/monitoring_unit.hpp) and tripping unit ALE (relaylogic/tripping_unit.hpp). An
 // addition, not in the 1952 patent: present only when the profile allows condition cards

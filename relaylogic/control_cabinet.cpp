@@ -314,7 +314,7 @@ void ControlCabinet::report_faults() {
     }
 }
 
-// What a slip did depends on what the counters measure (DESIGN.md 4.3).
+// What a slip did depends on what the counters measure (docs/design-rules.md rule 3).
 std::string ControlCabinet::slip_effect(const Fault& f, const AxisCircuit& c) const {
     const double slipped = std::abs(c.plant.slip_in());
     const long thousandths = std::lround(slipped / axes::kInchesPerImpulse);

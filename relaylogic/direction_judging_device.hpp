@@ -1,4 +1,4 @@
-// Direction judging device 13 of EP 0436887 (Mitsubishi; seeds/000, claim 3): an addition, not
+// Direction judging device 13 of EP 0436887 (Mitsubishi, claim 3): an addition, not
 // in the 1952 patent. Detector 10 on crank 21 gives a two-phase signal, phases A and B in
 // quadrature; device 13 tells from each edge which way the crank turned and sends the pulse to
 // position register 14 as a count up or a count down.

@@ -1,5 +1,5 @@
-// Gear ratio data memory 12a of EP 0360190 (Mitsubishi; seeds/001) and the NC's operation I
-// (Fig. 4, right column). An addition (DESIGN.md 4.14), after Mitsubishi's patent.
+// Gear ratio data memory 12a of EP 0360190 (Mitsubishi) and the NC's operation I
+// (Fig. 4, right column). An addition (docs/design-rules.md rule 14), after Mitsubishi's patent.
 //
 // The NC takes one step a scan, after PC 130's scan in the same instant, so it reads the bus as
 // the PC just left it. Its step (traced as nc10.operation_i):

@@ -1,4 +1,4 @@
-// Gear ratio data memory 12a of EP 0360190 (Mitsubishi; seeds/001), with the NC's side of the
+// Gear ratio data memory 12a of EP 0360190 (Mitsubishi), with the NC's side of the
 // transfer handshake (the seed's operation I, Fig. 4 right column) and its buffer memory in
 // input/output interface 9. An addition, not in the 1952 patent.
 //

@@ -1,4 +1,4 @@
-// Internal buffer PFR of EP 0640901 (Siemens; seeds/002, claim 1): an addition, not in the
+// Internal buffer PFR of EP 0640901 (Siemens, claim 1): an addition, not in the
 // 1952 patent.
 //
 // "The converter (UMS) ... converts the at least one condition record into two further entries

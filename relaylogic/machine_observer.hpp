@@ -27,7 +27,7 @@ struct SignalInfo {
     int width = 1;         // bits: 1 for a relay, 4 for a ten-position stepping switch
 };
 
-// Why the machine stopped itself (DESIGN.md section 6; docs/stop-codes.md).
+// Why the machine stopped itself (docs/design-rules.md, Interfaces; docs/stop-codes.md).
 enum class StopReason : std::uint8_t {
     out_of_order_card,
     check_mismatch,

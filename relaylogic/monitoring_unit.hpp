@@ -1,4 +1,4 @@
-// Monitoring unit PRG of EP 0640901 (Siemens; seeds/002, claim 1): an addition, not in the 1952
+// Monitoring unit PRG of EP 0640901 (Siemens, claim 1): an addition, not in the 1952
 // patent. "The internal buffer (PFR) supplies ... the condition to a monitoring unit (PRG)";
 // "the tripping unit (ALE) obtains a status signal from the monitoring unit (PRG) upon
 // fulfilment of the condition", and "the respective status signal is the respective

@@ -1,4 +1,4 @@
-// Position register 14 of EP 0436887 (Mitsubishi; seeds/000), with setter 15, position input
+// Position register 14 of EP 0436887 (Mitsubishi), with setter 15, position input
 // device 16 and reset switch 16A: an addition, not in the 1952 patent. "A position register 14
 // accumulates positive and negative-direction pulses output by the direction judging device
 // 13, and a setter 15 presets position data in the position register 14"; "the position

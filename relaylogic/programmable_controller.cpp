@@ -1,5 +1,5 @@
-// Programmable controller 130 of EP 0360190 (Mitsubishi; seeds/001), Figs. 3-4 and 5-7: the
-// ladder. An addition (DESIGN.md 4.14), after Mitsubishi's patent, not in the 1952 machine.
+// Programmable controller 130 of EP 0360190 (Mitsubishi), Figs. 3-4 and 5-7: the ladder. An
+// addition (docs/design-rules.md rule 14), after Mitsubishi's patent, not in the 1952 machine.
 //
 // Each scan reads its inputs first (bus 35 as the NC left it, the spindle's head-on switch and
 // its at-rest contact, the exchange timer), then solves eight rungs, then drives bus 35. The

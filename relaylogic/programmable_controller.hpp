@@ -1,4 +1,4 @@
-// Programmable controller 130 of EP 0360190 (Mitsubishi; seeds/001), Fig. 3: the controller
+// Programmable controller 130 of EP 0360190 (Mitsubishi), Fig. 3: the controller
 // that does the machine's sequence control beside the NC, joined to it by parallel bus 35. An
 // addition, not in the 1952 patent: present only when the profile has spindle synchronisation.
 //

@@ -1,4 +1,4 @@
-// Speed register 11 of EP 0436887 (Mitsubishi; seeds/000): an addition, not in the 1952
+// Speed register 11 of EP 0436887 (Mitsubishi): an addition, not in the 1952
 // patent. It "reads the pulse train signal at predetermined intervals and stores the read
 // signal serially as speed data": the speed of crank 21 as detector pulses per sampling
 // interval.

@@ -11,7 +11,7 @@
 // to the stepping relay 256 for a short period after an impulse is received": a timed hold and
 // nothing else. An equality still standing when the hold runs out steps the switch again; that
 // is what 258 is there to prevent, so its time must outlast an equality at the slowest speed
-// (DESIGN.md 4.5; docs/machine-profile.md).
+// (docs/design-rules.md rule 5; docs/machine-profile.md).
 //
 //   state    | 252 impulse | 256 impulse (channel 257 closed) | 258 after a step
 //   off      | -> 1        | (no speed circuit: none reaches) |

@@ -5,7 +5,7 @@
 // the next switch over channel 333), a step back past 0 returns to 9 with a borrow. A real
 // switch takes time to step: an impulse that comes sooner than 1 / (maximum stepping rate)
 // after the last step it took finds the wiper still moving and is lost. That is the silent
-// error DESIGN.md 4.4 asks us to expose: the switch is behind the lead screw.
+// error docs/design-rules.md rule 4 asks us to expose: the switch is behind the lead screw.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -3,13 +3,13 @@
 // A holding relay (coil 368) closes on an impulse from the reader's brushes and holds until
 // the zeroizing circuit's clearing channel 294 momentarily de-energizes the coils.
 //
-// Absolute storage, banks 350 (inches), 352, 354, 356 (thousandths), channel 218: the
-// slow-downs and the stop SHARE the banks, as the patent describes: 8.785 / 8.885 / 8.985
-// close relay 8 of 350, relays 7, 8, 9 of 352, relay 8 of 354 and relay 5 of 356. The
-// absolute comparer 122' conducts whenever every counter switch stands on a closed relay, so
-// numbers that differ in more than one digit also match at spurious positions (DESIGN.md 4.2).
-// The profile option separate_registers gives each number its own register instead (a
-// departure from the patent, off by default).
+// Absolute storage, banks 350 (inches), 352, 354, 356 (thousandths), channel 218: the slow-downs
+// and the stop SHARE the banks, as the patent describes: 8.785 / 8.885 / 8.985 close relay 8 of
+// 350, relays 7, 8, 9 of 352, relay 8 of 354 and relay 5 of 356. The absolute comparer 122'
+// conducts whenever every counter switch stands on a closed relay, so numbers that differ in more
+// than one digit also match at spurious positions (docs/design-rules.md rule 2). The profile option
+// separate_registers gives each number its own register instead (a departure from the patent, off
+// by default).
 //
 // Incremental storage, banks 318 (thousandths), 320, 322, 324 (inches), channel 220: the check.
 #pragma once

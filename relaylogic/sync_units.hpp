@@ -1,4 +1,4 @@
-// The press synchronisation of EP 0436887 (Mitsubishi; seeds/000) wired into the cabinet: the
+// The press synchronisation of EP 0436887 (Mitsubishi) wired into the cabinet: the
 // press beside the machine (axes/press.hpp: crank 21, motor 22, die 20, detector 10), direction
 // judging device 13, position register 14 with setter 15, device 16 and switch 16A, speed
 // register 11 and synchronisation control processor 17 (60-63). An addition, not in the 1952

@@ -1,4 +1,4 @@
-// Synchronisation control processor 17 of EP 0436887 (Mitsubishi; seeds/000), Fig. 4A and
+// Synchronisation control processor 17 of EP 0436887 (Mitsubishi), Fig. 4A and
 // Fig. 5: an addition, not in the 1952 patent. Its parts, each built as relays here:
 //
 //   programmed position reader 60  holds the angle R of a sync card (a bank of holding relays

@@ -1,4 +1,4 @@
-// The spindle synchronisation of EP 0360190 (Mitsubishi; seeds/001) wired into the cabinet:
+// The spindle synchronisation of EP 0360190 (Mitsubishi) wired into the cabinet:
 // spindle motor 27 with encoder 32, gear unit 30 and heads 31 (axes/spindle.hpp), programmable
 // controller 130 and bus 35 (programmable_controller.hpp), gear ratio data memory 12a with the
 // NC's side of the handshake (gear_ratio_memory.hpp), spindle encoder interface 33 (direction

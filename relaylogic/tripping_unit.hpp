@@ -1,4 +1,4 @@
-// Tripping unit ALE of EP 0640901 (Siemens; seeds/002, claims 1 and 2): an addition, not in
+// Tripping unit ALE of EP 0640901 (Siemens, claims 1 and 2): an addition, not in
 // the 1952 patent. "The tripping unit (ALE) obtains a status signal from the monitoring unit
 // (PRG) upon fulfilment of the condition and thereupon initiates the action"; "the
 // performance of each action is acknowledged to the tripping unit (ALE) and when all the

@@ -1,4 +1,4 @@
-// Condition cards, an addition after EP 0640901 (Siemens; seeds/002): the card, its listing,
+// Condition cards, an addition after EP 0640901 (Siemens): the card, its listing,
 // and the seed's units in the cabinet — converter UMS and buffer PFR, monitoring unit PRG,
 // tripping unit ALE — claim by claim, at both paces, with the errors and the actions' effects.
 #include "tests/machine_support.hpp"

@@ -1,4 +1,4 @@
-// The control cabinet running decks: the behaviours of DESIGN.md section 4, end to end.
+// The control cabinet running decks: the behaviour rules of docs/design-rules.md, end to end.
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 

@@ -1,6 +1,6 @@
-// The measuring chain of Fig. 3 (DESIGN.md 4.3; claims 8-10, 23): lead screw 22 and nut 78
-// (lead error, backlash, slip), instrument shaft 74 and cam 160, and what the counters measure
-// with the patent's chain and with screw-turn counting (a departure).
+// The measuring chain of Fig. 3 (docs/design-rules.md rule 3; claims 8-10, 23): lead screw 22 and
+// nut 78 (lead error, backlash, slip), instrument shaft 74 and cam 160, and what the counters
+// measure with the patent's chain and with screw-turn counting (a departure).
 #include "tests/machine_support.hpp"
 
 #include "axes/instrument_shaft.hpp"

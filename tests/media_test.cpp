@@ -1,5 +1,5 @@
-// The media of Fig. 9 and col. 6: a ribbon of cards (no feed gap), five separate cards a step
-// (one per lead screw) and perforated tape. Each feeds the same orders (DESIGN §4 rule 13).
+// The media of Fig. 9 and col. 6: a ribbon of cards (no feed gap), five separate cards a step (one
+// per lead screw) and perforated tape. Each feeds the same orders (docs/design-rules.md rule 13).
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 

@@ -1,4 +1,4 @@
-// Press synchronisation, an addition after EP 0436887 (Mitsubishi; seeds/000): the seed's units
+// Press synchronisation, an addition after EP 0436887 (Mitsubishi): the seed's units
 // in the cabinet — direction judging device 13, position register 14 with setter 15, device 16
 // and switch 16A, speed register 11, synchronisation control processor 17 (60-63) — and the
 // cabinet's position hold, speed following, loop (M99) and sync_timeout, at both paces.
@@ -30,7 +30,7 @@ axes::MachineProfile press_profile() {
     p.press.strokes_per_min = 2.0; // 12 deg/s
     p.press.pulses_per_degree = 4; // 48 pulses/s
     // Each number its own register: the moves below need not dodge the shared banks' spurious
-    // matches (DESIGN.md 4.2), which are not what these tests are about.
+    // matches (docs/design-rules.md rule 2), which are not what these tests are about.
     p.separate_registers = true;
     return p;
 }

@@ -1,4 +1,4 @@
-// PC 130 and gear ratio data memory 12a of EP 0360190 (Mitsubishi; seeds/001), an addition: the
+// PC 130 and gear ratio data memory 12a of EP 0360190 (Mitsubishi), an addition: the
 // PC's ladder (Fig. 4 left, S1-S8), the NC's operation I (Fig. 4 right, S11-S16), the stored
 // ratios of the second embodiment (Figs. 5-7, S31-S33), the faults stale-ratio and
 // transfer-hang, busy() and the state file. The two units are driven scan by scan as the

@@ -1,4 +1,4 @@
-// Stop, save, resume (Mitsubishi's suspend and restart, seeds/001), Ctrl-C, and nothing lost.
+// Stop, save, resume (Mitsubishi's suspend and restart, EP 0360190), Ctrl-C, and nothing lost.
 //
 // A resumed run must finish exactly as an uninterrupted run of the corrected deck: the same
 // report, and from the moment the stopped card was fed, the same trace, event for event.

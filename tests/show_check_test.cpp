@@ -76,7 +76,8 @@ TEST_CASE("Show: warns on a sequence stall the machine then stops on", "[show][c
 TEST_CASE("Show: warns on slow-downs too close to the stop, from the profile's braking",
           "[show][cli][coast]") {
     TempDir dir;
-    // DESIGN 4.7: slow-downs 0.001 and 0.002 before the stop overshoot; 0.200 and 0.100 do not.
+    // docs/design-rules.md rule 7: slow-downs 0.001 and 0.002 before the stop overshoot; 0.200 and
+    // 0.100 do not.
     write_bytes(dir.path("close.csv"), std::string(kHeader) +
                                            "1,0,table,+,1,8.983,8.984,8.985,"
                                            "8.985,1\n" +

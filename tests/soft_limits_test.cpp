@@ -1,4 +1,4 @@
-// Soft limits, the movement range of Mitsubishi's control (seeds/001): the machine stops with
+// Soft limits, the movement range of Mitsubishi's control (EP 0360190): the machine stops with
 // soft_limit BEFORE the part passes a limit, and `parsons check` lists the offending cards.
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"

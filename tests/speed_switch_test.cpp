@@ -1,5 +1,5 @@
 // Speed switch 236, stepping relay 256, delay 258 and lamps 270 / 272 as the patent words them
-// (DESIGN.md 4, rules 5 and 6), and the earlier readings kept as named interpretations.
+// (docs/design-rules.md rules 5 and 6), and the earlier readings kept as named interpretations.
 #include "tests/machine_support.hpp"
 
 #include "axes/profile_json.hpp"

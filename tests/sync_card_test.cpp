@@ -1,4 +1,4 @@
-// Sync cards, an addition after EP 0436887 (Mitsubishi; seeds/000): the card (column 76 row 2),
+// Sync cards, an addition after EP 0436887 (Mitsubishi): the card (column 76 row 2),
 // its listing rows, its picture, the deck review's errors and the CLI's exit codes. What the
 // sync units do with a sync card while the machine runs is relaylogic's and is tested there.
 #include "tests/machine_support.hpp"

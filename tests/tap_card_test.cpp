@@ -1,4 +1,4 @@
-// Tap cards, an addition after EP 0360190 (Mitsubishi; seeds/001): the card (column 76 row 3),
+// Tap cards, an addition after EP 0360190 (Mitsubishi): the card (column 76 row 3),
 // its listing row, its picture, the deck review's refusals and the CLI's exit codes. What motor
 // 27, PC 130 and the feed do with a tap card while the machine runs is relaylogic's and is
 // tested there.

@@ -1,4 +1,4 @@
-// Spindle synchronisation, an addition after EP 0360190 (Mitsubishi; seeds/001): a tap card in
+// Spindle synchronisation, an addition after EP 0360190 (Mitsubishi): a tap card in
 // the cabinet — PC 130's tool call and head exchange, the ratio into memory 12a (transferred or
 // stored), the feed following motor 27 through encoder 32 times the ratio (S x A), the reversal
 // at the depth, the return onto the starting count — at both paces.
