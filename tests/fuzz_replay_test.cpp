@@ -138,3 +138,37 @@ TEST_CASE("Fuzz replay: the machine target's condition-card seeds make decks wit
     CHECK_FALSE(profile.condition_cards);
     CHECK(cards.size() == 4);
 }
+
+TEST_CASE("Fuzz replay: the machine target's tapping seed makes a deck with tap cards under "
+          "spindle synchronisation, and its spindle byte's faults reach the run",
+          "[fuzz][tapping]") {
+    const std::string bytes = parsons::test::read_bytes(
+        parsons::test::source_path("tests/fuzz/corpus/machine/tapping-two-tools"));
+    const parsons::fuzz::Bytes input{reinterpret_cast<const std::uint8_t*>(bytes.data()),
+                                     bytes.size()};
+    parsons::axes::MachineProfile profile = parsons::axes::default_profile();
+    std::vector<parsons::relaylogic::Fault> faults;
+    const auto cards = parsons::fuzz::machine_deck(input, profile, &faults);
+    CHECK(profile.spindle_sync);
+    CHECK(faults.empty());
+    REQUIRE(cards.size() == 4); // motion, tap, motion, tap
+    int taps = 0;
+    for (const auto& card : cards) {
+        const auto decoded = parsons::cardreader::decode(card, parsons::cardreader::fig8_layout());
+        REQUIRE(decoded);
+        if (decoded.orders.kind == parsons::cardreader::CardKind::tap) {
+            ++taps;
+            CHECK(decoded.orders.tap.axis == parsons::cardreader::Axis::vertical);
+            CHECK(decoded.orders.tap.depth == 100);
+        }
+    }
+    CHECK(taps == 2);
+    // The same input with the spindle byte's fault bits: stale-ratio and transfer-hang.
+    std::string faulty = bytes;
+    faulty.at(faulty.size() - 11) = static_cast<char>(0x03 | 0x10 | 0x20);
+    parsons::axes::MachineProfile p2 = parsons::axes::default_profile();
+    std::vector<parsons::relaylogic::Fault> f2;
+    parsons::fuzz::machine_deck(
+        {reinterpret_cast<const std::uint8_t*>(faulty.data()), faulty.size()}, p2, &f2);
+    CHECK(f2.size() == 2);
+}

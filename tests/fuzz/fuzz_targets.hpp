@@ -15,6 +15,7 @@
 
 #include "axes/machine_profile.hpp"
 #include "cardreader/card.hpp"
+#include "relaylogic/faults.hpp"
 
 #include <vector>
 
@@ -55,8 +56,9 @@ void fuzz_airfoil(Bytes input);
 void fuzz_profile(Bytes input);
 void fuzz_machine(Bytes input);
 
-// The deck the machine target makes of an input, and the profile it runs it with (for the
-// tests that its seeds reach what they are for).
-std::vector<cardreader::Card> machine_deck(Bytes input, axes::MachineProfile& profile);
+// The deck the machine target makes of an input, the profile it runs it with and (if asked)
+// the faults of its spindle byte (for the tests that its seeds reach what they are for).
+std::vector<cardreader::Card> machine_deck(Bytes input, axes::MachineProfile& profile,
+                                           std::vector<relaylogic::Fault>* faults = nullptr);
 
 } // namespace parsons::fuzz

@@ -83,9 +83,15 @@ void check_run(const RunResult& run, std::size_t cards) {
     if (run.completed == run.stop.has_value()) {
         throw Finding("machine: a run must end either completed or stopped with a reason");
     }
-    if (run.cards_read < 0 || run.cards_read > static_cast<long>(cards) ||
-        (run.completed && run.cards_read != static_cast<long>(cards))) {
-        throw Finding(fmt::format("machine: {} cards read of a deck of {}{}", run.cards_read, cards,
+    // A loop card (press synchronisation's M99) sends the reader back over cards it read: each
+    // loop-back reads at most the whole deck again.
+    const long deck = static_cast<long>(cards);
+    const long loop_backs = run.press ? run.press->loop_backs : 0;
+    if (loop_backs < 0 || run.cards_read < 0 || run.cards_read > deck * (1 + loop_backs) ||
+        (run.completed && loop_backs == 0 && run.cards_read != deck) ||
+        (run.completed && run.cards_read < deck)) {
+        throw Finding(fmt::format("machine: {} cards read of a deck of {} with {} loop-back{}{}",
+                                  run.cards_read, cards, loop_backs, loop_backs == 1 ? "" : "s",
                                   run.completed ? ", completed" : ""));
     }
     if (!std::isfinite(run.machine_seconds) || run.machine_seconds < 0) {
@@ -115,6 +121,13 @@ std::string summary(const RunResult& r) {
     for (const auto& x : r.actions) {
         text += fmt::format("; event {} tripped {} acknowledged {}", x.event, x.tripped_s,
                             x.acknowledged_s);
+    }
+    if (r.tapping) {
+        for (const auto& h : r.tapping->holes) {
+            text +=
+                fmt::format("; tap card {} tool {} deepest {} end {} at {} s{}", h.card, h.tool,
+                            h.deepest_in, h.end_in, h.end_s, h.completed ? "" : " (not completed)");
+        }
     }
     return text;
 }
@@ -148,6 +161,29 @@ bool same_run(const RunResult& a, const RunResult& b) {
         if (x.event != y.event || x.tripped_s != y.tripped_s ||
             x.acknowledged_s != y.acknowledged_s || x.motion_end_s != y.motion_end_s) {
             return false;
+        }
+    }
+    // Tap cards (an addition): the same holes, cut as deep, reversed and ended at the same
+    // instants, by the same heads with the same ratio in memory 12a.
+    if (a.tapping.has_value() != b.tapping.has_value()) {
+        return false;
+    }
+    if (a.tapping) {
+        const auto& x = *a.tapping;
+        const auto& y = *b.tapping;
+        if (x.holes.size() != y.holes.size() || x.tool_on_spindle != y.tool_on_spindle ||
+            x.ratio_in_memory != y.ratio_in_memory || x.head_exchanges != y.head_exchanges ||
+            x.ratios_received != y.ratios_received) {
+            return false;
+        }
+        for (std::size_t i = 0; i < x.holes.size(); ++i) {
+            const auto& h = x.holes.at(i);
+            const auto& k = y.holes.at(i);
+            if (h.tool != k.tool || h.ratio_used != k.ratio_used || h.deepest_in != k.deepest_in ||
+                h.end_in != k.end_in || h.reverse_s != k.reverse_s || h.end_s != k.end_s ||
+                h.completed != k.completed) {
+                return false;
+            }
         }
     }
     return true;

@@ -51,6 +51,15 @@
 //                first revolution at 100 deg; bit 6 motor 22 stops in the second revolution at
 //                200 deg; bit 7 the crank turns backwards. Two sync cards before one motion
 //                card, or one before nothing, are the cabinet's to refuse.
+//   then         1 byte, spindle synchronisation (an addition after EP 0360190): bit 0 on turns
+//                the profile's spindle on (parsons-extended's motor 27, heads and PC 130);
+//                bits 1-2: 1 + b % 4 tap cards of 4 bytes each: the motion card they follow
+//                (b % cards), the tool (1 + b % 3: tool 3's head holds a cutter) with the feed
+//                axis (b / 3 % 5) and sense (b / 15 % 2), the depth (1 + b * 3 thousandths),
+//                the pitch (400 + b * 40 hundred-thousandths) and motor 27's speed S (60 + b
+//                rev/min: above 240 the cabinet refuses it); bit 3 the ratios stored per tool;
+//                bit 4 fault stale-ratio:1; bit 5 fault transfer-hang:1; bit 6 a lasting
+//                change of motor 27 to 0.8 of its speed at 20 s.
 // Missing bytes read as zero: an empty input is one card on which nothing moves, and every
 // reading the patent's.
 #include "tests/fuzz/fuzz_targets.hpp"
@@ -327,7 +336,70 @@ std::vector<CardOrders> with_sync(Recipe& recipe, std::vector<CardOrders> deck,
     return out;
 }
 
-std::vector<Card> deck_from_recipe(Recipe& recipe, axes::MachineProfile& profile) {
+// The spindle byte and its tap cards, each right after a motion card of a deck that may hold
+// condition and sync cards already; the whole deck is numbered again from its first card's
+// number. The faults it asks for go to *faults.
+std::vector<CardOrders> with_taps(Recipe& recipe, std::vector<CardOrders> deck,
+                                  axes::MachineProfile& profile,
+                                  std::vector<relaylogic::Fault>* faults) {
+    const std::uint8_t bits = recipe.next();
+    if ((bits & 0x01) == 0) {
+        return deck;
+    }
+    profile.spindle_sync = true;
+    if (bits & 0x08) {
+        profile.spindle.ratio_source = axes::RatioSource::stored;
+    }
+    if (bits & 0x40) {
+        profile.spindle.change_at_s = 20.0;
+        profile.spindle.change_factor = 0.8;
+    }
+    if (faults != nullptr && (bits & 0x10)) {
+        faults->push_back(relaylogic::parse_fault("stale-ratio:1"));
+    }
+    if (faults != nullptr && (bits & 0x20)) {
+        faults->push_back(relaylogic::parse_fault("transfer-hang:1"));
+    }
+    std::vector<std::size_t> motion_at;
+    for (std::size_t i = 0; i < deck.size(); ++i) {
+        if (deck.at(i).kind == CardKind::motion) {
+            motion_at.push_back(i);
+        }
+    }
+    std::vector<std::vector<TapOrder>> after(deck.size());
+    const int count = 1 + (bits >> 1) % 4;
+    for (int n = 0; n < count; ++n) {
+        const std::size_t card = motion_at.at(recipe.next() % motion_at.size());
+        const int tool = recipe.next();
+        TapOrder t;
+        t.tool = 1 + tool % 3;
+        t.axis = kAxes.at(static_cast<std::size_t>(tool / 3 % 5));
+        t.motion = tool / 15 % 2 == 0 ? Motion::forward : Motion::reverse;
+        t.depth = static_cast<Thousandths>(1 + recipe.next() * 3);
+        t.pitch = 400 + recipe.next() * 40;
+        t.rpm = 60 + recipe.next();
+        after.at(card).push_back(t);
+    }
+    std::vector<CardOrders> out;
+    for (std::size_t i = 0; i < deck.size(); ++i) {
+        out.push_back(deck.at(i));
+        for (const TapOrder& t : after.at(i)) {
+            CardOrders card;
+            card.kind = CardKind::tap;
+            card.tap = t;
+            out.push_back(card);
+        }
+    }
+    int number = deck.front().number;
+    for (CardOrders& o : out) {
+        o.number = number;
+        number = (number + 1) % 10000;
+    }
+    return out;
+}
+
+std::vector<Card> deck_from_recipe(Recipe& recipe, axes::MachineProfile& profile,
+                                   std::vector<relaylogic::Fault>* faults) {
     const int count = 1 + recipe.next() % kMaxCards;
     recipe.next(); // the profile byte, read by the caller
     const int hi = recipe.next();
@@ -354,8 +426,10 @@ std::vector<Card> deck_from_recipe(Recipe& recipe, axes::MachineProfile& profile
         flips.push_back({card, column, recipe.next()});
     }
     std::vector<Card> cards;
-    for (const CardOrders& orders :
-         with_sync(recipe, with_conditions(recipe, std::move(motion), from, profile), profile)) {
+    for (const CardOrders& orders : with_taps(
+             recipe,
+             with_sync(recipe, with_conditions(recipe, std::move(motion), from, profile), profile),
+             profile, faults)) {
         EncodeResult punched = encode(orders, fig8_layout());
         if (!punched) {
             throw Finding("machine: the keypunch refused orders the layout holds: " +
@@ -374,14 +448,16 @@ std::vector<Card> deck_from_recipe(Recipe& recipe, axes::MachineProfile& profile
 
 } // namespace
 
-std::vector<Card> machine_deck(Bytes input, axes::MachineProfile& profile) {
+std::vector<Card> machine_deck(Bytes input, axes::MachineProfile& profile,
+                               std::vector<relaylogic::Fault>* faults) {
     Recipe recipe(input);
-    return deck_from_recipe(recipe, profile);
+    return deck_from_recipe(recipe, profile, faults);
 }
 
 void fuzz_machine(Bytes input) {
     axes::MachineProfile profile = axes::default_profile();
-    const std::vector<Card> cards = machine_deck(input, profile);
+    std::vector<relaylogic::Fault> faults;
+    const std::vector<Card> cards = machine_deck(input, profile, &faults);
     const std::uint8_t machine = input.size() > 1 ? input[1] : 0;
     profile.separate_registers = (machine & 0x01) != 0;
     profile.count_hundredths_at_speed_1 = (machine & 0x02) != 0;
@@ -401,7 +477,6 @@ void fuzz_machine(Bytes input) {
             a.cam_160_in = {{2.0, 0.0005}, {8.0, 0.0015}};
         }
     }
-    std::vector<relaylogic::Fault> faults;
     if (machine & 0x80) {
         faults.push_back(relaylogic::parse_fault("slip:table:40:30"));
     }
