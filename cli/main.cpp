@@ -1,4 +1,5 @@
 // parsons: the punched-card numerical control of Parsons and Stulen (US 2,820,187), emulated.
+#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/output_file.hpp"
@@ -32,26 +33,13 @@ int main(int argc, char** argv) {
     // A reader that goes away (a closed pipe or FIFO) is a write error with a message and
     // exit 2, not a silent death by SIGPIPE.
     std::signal(SIGPIPE, SIG_IGN);
-    CLI::App app{"parsons: an emulator of the 1952 Parsons-Stulen punched-card milling machine "
-                 "control (US 2,820,187)"};
-    app.require_subcommand(1);
-    app.footer("Run 'parsons COMMAND --help' for each command, with examples.");
-    // "parsons 0.1.0 (v0.1.0-12-gabc1234)": the project's version and the source's git
-    // description, then exit 0.
-    app.set_version_flag(
-        "--version",
-        fmt::format("parsons {} ({})", PARSONS_VERSION_NUMBER, PARSONS_GIT_DESCRIPTION),
-        "Print the version and the git description of the source, and exit");
+    CLI::App app;
     Command selected;
-    add_punch_command(app, selected);
-    add_show_command(app, selected);
-    add_convert_command(app, selected);
-    add_run_command(app, selected);
-    add_check_command(app, selected);
-    add_profile_command(app, selected);
-    add_gen_command(app, selected);
-    add_demo_command(app, selected);
-    add_bench_command(app, selected);
+    // "parsons 0.1.0 (v0.1.0-12-gabc1234)": the project's version and the source's git
+    // description.
+    build_command_line(
+        app, selected,
+        fmt::format("parsons {} ({})", PARSONS_VERSION_NUMBER, PARSONS_GIT_DESCRIPTION));
 
     // Name an unknown command rather than let CLI11 say only that one is required.
     if (argc > 1 && argv[1][0] != '-') {

@@ -4,8 +4,9 @@
 set -euo pipefail
 
 # clang and libclang-rt-14-dev: libFuzzer and clang's sanitizer runtimes, for scripts/fuzz.sh.
+# groff-base and zsh: the tests read the manual pages with groff and parse the zsh completion.
 packages=(g++ cmake make libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev catch2 gtkwave
-          clang libclang-rt-14-dev)
+          clang libclang-rt-14-dev groff-base zsh)
 
 missing=()
 for p in "${packages[@]}"; do

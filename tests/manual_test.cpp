@@ -1,0 +1,209 @@
+// The manual pages and the shell completion (cli/manual.hpp): written from the command line
+// itself, every option of every command is in its page and in both completion scripts, the
+// pages are clean roff, the bash script completes as a user would see it, and the files the
+// build wrote are the ones the command line gives now.
+#include "cli/command_line.hpp"
+#include "cli/manual.hpp"
+#include "tests/test_support.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <map>
+#include <string>
+
+using parsons::test::q;
+using parsons::test::read_bytes;
+using parsons::test::run_shell;
+
+namespace {
+
+struct CommandLine {
+    CLI::App app;
+    parsons::cli::Command selected;
+    explicit CommandLine(const std::string& version = "parsons test") {
+        parsons::cli::build_command_line(app, selected, version);
+    }
+};
+
+std::string roff_name(const std::string& name) {
+    std::string out;
+    for (const char c : name) {
+        out += c == '-' ? std::string("\\-") : std::string(1, c);
+    }
+    return out;
+}
+
+// The one line of a completion script's case for a command path ("/gen/airfoil").
+std::string case_line(const std::string& script, const std::string& slashed) {
+    const std::string key = "        \"" + slashed + "\")";
+    const auto at = script.find(key);
+    if (at == std::string::npos) {
+        return {};
+    }
+    return script.substr(at, script.find('\n', at) - at);
+}
+
+std::string slashed(const std::string& path) {
+    std::string s;
+    std::string word;
+    for (const char c : path + " ") {
+        if (c == ' ') {
+            if (!word.empty()) {
+                s += "/" + word;
+            }
+            word.clear();
+        } else {
+            word += c;
+        }
+    }
+    return s;
+}
+
+} // namespace
+
+TEST_CASE("Manual: every option of every command is in the command's man page and in the bash "
+          "and zsh completion",
+          "[cli][manual]") {
+    CommandLine cl;
+    const auto pages = parsons::cli::man_pages(cl.app, "parsons test");
+    std::map<std::string, std::string> by_name;
+    for (const auto& p : pages) {
+        by_name[p.name] = p.text;
+    }
+    const std::string bash = parsons::cli::bash_completion(cl.app);
+    const std::string zsh = parsons::cli::zsh_completion(cl.app);
+    const auto paths = parsons::cli::command_paths(cl.app);
+    REQUIRE(paths.size() == pages.size());
+    // The commands the program has, and the nested ones, are all there.
+    for (const char* path : {"", "run", "show", "gen", "gen airfoil", "gen tapping", "demo"}) {
+        bool found = false;
+        for (const auto& p : paths) {
+            found = found || p.first == path;
+        }
+        CHECK(found);
+    }
+    int options = 0;
+    for (const auto& [path, app] : paths) {
+        INFO("command: parsons " << path);
+        const std::string name = path.empty() ? "parsons" : "parsons-" + [&] {
+            std::string n = path;
+            for (char& c : n) {
+                c = c == ' ' ? '-' : c;
+            }
+            return n;
+        }();
+        REQUIRE(by_name.count(name) == 1);
+        const std::string& page = by_name[name];
+        const std::string b = case_line(bash, slashed(path));
+        const std::string z = case_line(zsh, slashed(path));
+        REQUIRE_FALSE(b.empty());
+        REQUIRE_FALSE(z.empty());
+        for (const CLI::Option* o :
+             app->get_options([](const CLI::Option* x) { return !x->get_positional(); })) {
+            for (const std::string& n : parsons::cli::option_names(*o)) {
+                INFO("option " << n);
+                ++options;
+                CHECK(page.find("\\fB" + roff_name(n) + "\\fR") != std::string::npos);
+                CHECK(page.find(roff_name(o->get_description().substr(0, 20))) !=
+                      std::string::npos);
+                CHECK((b.find(" " + n + " ") != std::string::npos ||
+                       b.find("\"" + n + " ") != std::string::npos ||
+                       b.find(" " + n + "\"") != std::string::npos ||
+                       b.find("\"" + n + "\"") != std::string::npos));
+                CHECK(z.find("'" + n + ":") != std::string::npos);
+            }
+        }
+        for (const CLI::App* s : app->get_subcommands([](const CLI::App*) { return true; })) {
+            INFO("subcommand " << s->get_name());
+            CHECK(page.find(".B " + roff_name(s->get_name()) + "\n") != std::string::npos);
+            CHECK(z.find("'" + s->get_name() + ":") != std::string::npos);
+        }
+        // The exit codes and examples of its --help, as sections of the page.
+        if (app->get_footer().find("Exit codes:") != std::string::npos) {
+            CHECK(page.find(".SH EXIT STATUS\n") != std::string::npos);
+        }
+        if (app->get_footer().find("Examples:") != std::string::npos) {
+            CHECK(page.find(".SH EXAMPLES\n") != std::string::npos);
+        }
+    }
+    CHECK(options > 100); // every command's, not a few
+    // An option added to a command shows up in all three at once.
+    CommandLine more;
+    auto* run = more.app.get_subcommand("run");
+    std::string extra;
+    run->add_option("--brand-new-option", extra, "An option added for this test");
+    const auto more_pages = parsons::cli::man_pages(more.app, "parsons test");
+    bool in_page = false;
+    for (const auto& p : more_pages) {
+        in_page = in_page || (p.name == "parsons-run" &&
+                              p.text.find("\\-\\-brand\\-new\\-option") != std::string::npos);
+    }
+    CHECK(in_page);
+    CHECK(case_line(parsons::cli::bash_completion(more.app), "/run").find("--brand-new-option") !=
+          std::string::npos);
+    CHECK(case_line(parsons::cli::zsh_completion(more.app), "/run").find("'--brand-new-option:") !=
+          std::string::npos);
+}
+
+TEST_CASE("Manual: the build's man pages and completion scripts are the command line's as it is "
+          "now, and the pages are clean roff",
+          "[cli][manual]") {
+    const std::string dir = std::string(PARSONS_BINARY_DIR);
+    const std::string top = read_bytes(dir + "/man/man1/parsons.1");
+    // The version on the build's pages: ".TH PARSONS 1 "" "parsons 0.1.0 (...)" ..."
+    const auto v0 = top.find("\"\" \"") + 4;
+    std::string version = top.substr(v0, top.find('"', v0) - v0);
+    std::string unescaped;
+    for (std::size_t i = 0; i < version.size(); ++i) {
+        if (version.compare(i, 2, "\\-") == 0) {
+            unescaped += '-';
+            ++i;
+        } else {
+            unescaped += version[i];
+        }
+    }
+    CHECK(unescaped.rfind(std::string("parsons ") + PARSONS_PROJECT_VERSION, 0) == 0);
+    CommandLine cl(unescaped);
+    for (const auto& p : parsons::cli::man_pages(cl.app, unescaped)) {
+        INFO(p.name);
+        CHECK(read_bytes(dir + "/man/man1/" + p.name + ".1") == p.text);
+    }
+    CHECK(read_bytes(dir + "/completion/parsons.bash") == parsons::cli::bash_completion(cl.app));
+    CHECK(read_bytes(dir + "/completion/_parsons") == parsons::cli::zsh_completion(cl.app));
+    // groff reads every page without a warning (-ww: all of them).
+    if (run_shell("command -v groff >/dev/null").exit_code == 0) {
+        const auto r = run_shell("for f in " + q(dir) +
+                                 "/man/man1/*.1; do groff -man -ww -z \"$f\" || exit 1; done 2>&1");
+        INFO(r.output);
+        CHECK(r.exit_code == 0);
+        CHECK(r.output.empty());
+    }
+    // The zsh script parses, where zsh is at hand (scripts/install-deps.sh installs it).
+    if (run_shell("command -v zsh >/dev/null").exit_code == 0) {
+        const auto r = run_shell("zsh -n " + q(dir + "/completion/_parsons") + " 2>&1");
+        INFO(r.output);
+        CHECK(r.exit_code == 0);
+    }
+}
+
+TEST_CASE("Manual: the bash completion offers commands, subcommands and options as typed",
+          "[cli][manual]") {
+    const std::string script = std::string(PARSONS_BINARY_DIR) + "/completion/parsons.bash";
+    auto complete = [&](const std::string& words, int cword) {
+        const auto r = run_shell("bash -c " +
+                                 q("source " + q(script) + "; COMP_WORDS=(" + words +
+                                   "); COMP_CWORD=" + std::to_string(cword) +
+                                   "; _parsons; echo \"[${COMPREPLY[*]}]\"") +
+                                 " 2>&1");
+        INFO(r.output);
+        CHECK(r.exit_code == 0);
+        return r.output;
+    };
+    const std::string commands = complete("parsons ''", 1);
+    CHECK(commands.find(" run ") != std::string::npos);
+    CHECK(commands.find("tapping") == std::string::npos); // gen's, not here
+    CHECK(complete("parsons gen ta", 2) == "[tapping]\n");
+    CHECK(complete("parsons run deck.cbn --thr", 3) == "[--thread-proof --thread-tolerance]\n");
+    CHECK(complete("parsons gen tapping --rat", 3) == "[--ratio-source]\n");
+    CHECK(complete("parsons --ver", 1) == "[--version]\n");
+}
