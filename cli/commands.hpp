@@ -65,6 +65,13 @@ struct GeneratedJob {
     std::size_t cards = 0;
 };
 class ProgressLine;
+// Punches the generated cards into `output` (format from its name or `to`) through the one
+// output writer; a card the keypunch refuses is a DeckError naming `command` and the card.
+// `progress` (may be null): shows the punching.
+cardreader::DeckFingerprint write_cards(const std::vector<cardreader::CardOrders>& cards,
+                                        const std::string& output, const std::string& to,
+                                        ProgressLine* progress,
+                                        const char* command = "gen airfoil");
 // `progress` (may be null): where to show how far the generator is (gen on a terminal).
 GeneratedJob generate_job(const decks::JobDescription& description,
                           const axes::MachineProfile& profile, const std::string& output,

@@ -72,12 +72,9 @@ decks::TemplateOptions options_from(const GenFlags& f) {
 
 } // namespace
 
-namespace {
-
 cardreader::DeckFingerprint write_cards(const std::vector<cardreader::CardOrders>& cards,
                                         const std::string& output, const std::string& to,
-                                        ProgressLine* progress,
-                                        const char* command = "gen airfoil") {
+                                        ProgressLine* progress, const char* command) {
     cardreader::DeckFingerprint fingerprint;
     DeckFlags flags;
     const auto options = deck_options(output, to, flags, "--to");
@@ -100,6 +97,8 @@ cardreader::DeckFingerprint write_cards(const std::vector<cardreader::CardOrders
     deck_file.commit();
     return fingerprint;
 }
+
+namespace {
 
 // A scallop target finer than the finest stations the generator makes is refused, with the
 // smallest scallop the job can have, rather than a deck that misses it.

@@ -4,8 +4,6 @@
 
 #include "axes/profile_json.hpp"
 #include "cardreader/deck_error.hpp"
-#include "cardreader/deck_io.hpp"
-#include "cardreader/layout.hpp"
 #include "cli/deck_files.hpp"
 #include "cli/json_output.hpp"
 #include "cli/output_file.hpp"
@@ -17,26 +15,7 @@
 #include <memory>
 
 namespace parsons::cli {
-namespace {
-
 using cardreader::DeckError;
-
-void write_deck(const std::vector<cardreader::CardOrders>& cards, const std::string& output,
-                const std::string& to) {
-    const auto options = deck_options(output, to, DeckFlags{}, "--to");
-    OutputFile deck_file(output);
-    auto sink = cardreader::open_card_sink(deck_file.stream(), options);
-    for (const auto& c : cards) {
-        auto punched = cardreader::encode(c, cardreader::fig8_layout());
-        if (!punched) {
-            throw DeckError(fmt::format("gen tapping: card {}: {}", c.number, *punched.error));
-        }
-        sink->write(punched.card);
-    }
-    deck_file.commit();
-}
-
-} // namespace
 
 GeneratedTappingJob generate_tapping_job(const decks::TappingOptions& options,
                                          const axes::MachineProfile& base,
@@ -64,7 +43,7 @@ GeneratedTappingJob generate_tapping_job(const decks::TappingOptions& options,
         return g;
     }
     job.profile_file = output == "-" ? "" : output + ".profile.json";
-    write_deck(g.deck.cards, output, to);
+    write_cards(g.deck.cards, output, to, nullptr, "gen tapping");
     if (output != "-") {
         write_file(output + ".job.json", decks::tapping_job_to_json(job));
         write_file(job.profile_file, axes::profile_to_json(g.profile));
