@@ -7,6 +7,7 @@
 // parsons gen tapping: the jobs of the press and spindle synchronisations (cli/press_feeder.hpp,
 // cli/tapping.hpp).
 #include "cli/commands.hpp"
+#include "cli/data_files.hpp"
 #include "cli/deck_files.hpp"
 #include "cli/json_output.hpp"
 #include "cli/output_file.hpp"
@@ -24,10 +25,27 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
 #include <memory>
 
 namespace parsons::cli {
 namespace {
+
+// The source a job is computed from: "naca DIGITS", or "dat FILE" with FILE found as given or
+// among the bundled airfoil files (cli/data_files.hpp). A file that cannot be found is named,
+// with the bundled ones a bare name could have given.
+std::string airfoil_source(const std::string& naca, const std::string& dat) {
+    if (!naca.empty()) {
+        return "naca " + naca;
+    }
+    const std::string file = resolve_airfoil_file(dat);
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) {
+        throw cardreader::DeckError::in_file(dat, "cannot open the airfoil file" +
+                                                      bundled_airfoils_hint());
+    }
+    return "dat " + file;
+}
 
 using cardreader::DeckError;
 
@@ -291,7 +309,7 @@ ExitCode run_gen(const GenFlags& f) {
         throw DeckError("gen airfoil: give exactly one of --naca DIGITS or --dat FILE");
     }
     decks::JobDescription description;
-    description.airfoil = f.naca.empty() ? "dat " + f.dat : "naca " + f.naca;
+    description.airfoil = airfoil_source(f.naca, f.dat);
     description.closed_trailing_edge = f.closed_te;
     description.options = options_from(f);
     if (f.job == "wing") {
@@ -475,9 +493,8 @@ ExitCode run_two_tool(const TwoToolFlags& f) {
                                     "changes tools only between the passes",
                                     o.rough_tool, profile.first_tool));
     }
-    const GeneratedTwoToolJob job =
-        generate_two_tool_job(f.naca.empty() ? "dat " + f.dat : "naca " + f.naca, f.closed_te, o,
-                              profile, f.output, f.to);
+    const GeneratedTwoToolJob job = generate_two_tool_job(airfoil_source(f.naca, f.dat),
+                                                          f.closed_te, o, profile, f.output, f.to);
     if (f.json) {
         print_json_document(two_tool_json(f, job));
     } else {
@@ -492,7 +509,9 @@ void add_two_tool_command(CLI::App& gen, Command& selected) {
         "two-tool", "A template roughed with one tool and finished with another; the tool "
                     "change tripped by a condition card (an addition after EP 0640901)");
     cmd->add_option("--naca", flags->naca, "NACA 4-digit section, e.g. 2412");
-    cmd->add_option("--dat", flags->dat, "Airfoil coordinate file (Selig or Lednicer .dat)");
+    cmd->add_option("--dat", flags->dat,
+                    "Airfoil coordinate file (Selig or Lednicer .dat), or a bundled one by name: "
+                    "clarky, e387, n63412, naca0012, naca2412, naca63412_lednicer");
     cmd->add_flag("--closed-te", flags->closed_te, "NACA: closed trailing edge (a4 = 0.1036)");
     cmd->add_option("--chord", flags->chord_in, "Chord, inches")->capture_default_str();
     cmd->add_option("--stations", flags->stations, "Stations per pass")->capture_default_str();
@@ -544,7 +563,9 @@ void add_gen_command(CLI::App& app, Command& selected) {
     CLI::App* cmd = gen->add_subcommand(
         "airfoil", "A template deck for an airfoil: stations, cutter offset, one card a station");
     cmd->add_option("--naca", flags->naca, "NACA 4-digit section, e.g. 2412");
-    cmd->add_option("--dat", flags->dat, "Airfoil coordinate file (Selig or Lednicer .dat)");
+    cmd->add_option("--dat", flags->dat,
+                    "Airfoil coordinate file (Selig or Lednicer .dat), or a bundled one by name: "
+                    "clarky, e387, n63412, naca0012, naca2412, naca63412_lednicer");
     cmd->add_flag("--closed-te", flags->closed_te, "NACA: closed trailing edge (a4 = 0.1036)");
     cmd->add_option("--chord", flags->chord_in, "Chord (the wing's root chord), inches")
         ->capture_default_str();

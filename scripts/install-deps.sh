@@ -5,7 +5,9 @@ set -euo pipefail
 
 # clang and libclang-rt-14-dev: libFuzzer and clang's sanitizer runtimes, for scripts/fuzz.sh.
 # groff-base and zsh: the tests read the manual pages with groff and parse the zsh completion.
-packages=(g++ cmake make libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev catch2 gtkwave
+# dpkg-dev and file: CPack works out the .deb's Depends with dpkg-shlibdeps.
+packages=(g++ cmake make dpkg-dev file libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev catch2
+          gtkwave
           clang libclang-rt-14-dev groff-base zsh)
 
 missing=()
