@@ -9,6 +9,12 @@ set -euo pipefail
 packages=(g++ cmake make dpkg-dev file libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev catch2
           gtkwave
           clang libclang-rt-14-dev groff-base zsh)
+# Node.js and npm: the tests' independent cross-checks (tests/js: Ajv validates every JSON
+# output against docs/schemas, gcode-toolpath reads the G-code parsons writes). Debian's own
+# unless a node is already on the PATH.
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+    packages+=(nodejs npm)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -16,7 +22,21 @@ for p in "${packages[@]}"; do
         missing+=("$p")
     fi
 done
+
+# The npm packages of tests/js, exactly as its lockfile pins them, when they are missing or
+# older than the lockfile.
+npm_packages() {
+    local js
+    js="$(dirname "$0")/../tests/js"
+    if [ ! -f "$js/node_modules/.package-lock.json" ] ||
+        [ "$js/package-lock.json" -nt "$js/node_modules/.package-lock.json" ]; then
+        echo "parsons: installing the npm packages of tests/js (npm ci)" >&2
+        (cd "$js" && npm ci --ignore-scripts --no-audit --no-fund --loglevel=error)
+    fi
+}
+
 if [ ${#missing[@]} -eq 0 ]; then
+    npm_packages
     exit 0
 fi
 
@@ -33,3 +53,4 @@ fi
 export DEBIAN_FRONTEND=noninteractive
 $sudo apt-get update -qq
 $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+npm_packages
