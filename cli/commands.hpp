@@ -27,6 +27,8 @@ void add_show_command(CLI::App& app, Command& selected);
 void add_run_command(CLI::App& app, Command& selected);
 void add_profile_command(CLI::App& app, Command& selected);
 void add_gen_command(CLI::App& app, Command& selected);
+// gen gcode (cli/gen_gcode.cpp): a subcommand of gen.
+void add_gen_gcode_command(CLI::App& gen, Command& selected);
 void add_demo_command(CLI::App& app, Command& selected);
 void add_bench_command(CLI::App& app, Command& selected);
 void add_check_command(CLI::App& app, Command& selected);
@@ -38,6 +40,7 @@ struct RunRequest {
     std::string trace;
     std::string events;
     std::string path;
+    std::string gcode; // the path as G-code (convert DECK -o path.ngc)
     std::string plot;
     std::string cut;
     std::string job;

@@ -1,10 +1,15 @@
-// parsons convert DECK -o OUT: copy a deck card by card into another format.
+// parsons convert DECK -o OUT: copy a deck card by card into another format; or, to a G-code
+// file (.ngc, .nc, .gcode, or --to gcode), run the deck and write the machine's path as G-code
+// (cli/gcode_path.hpp; docs/gcode.md).
 #include "cli/commands.hpp"
 #include "cli/deck_files.hpp"
 #include "cli/output_file.hpp"
 
+#include "cardreader/deck_error.hpp"
+
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <memory>
 
 namespace parsons::cli {
@@ -14,10 +19,44 @@ struct ConvertFlags {
     std::string input;
     std::string output;
     std::string to;
+    std::string profile;
     DeckFlags deck;
 };
 
+bool wants_gcode(const ConvertFlags& f) {
+    if (!f.to.empty()) {
+        return f.to == "gcode";
+    }
+    const std::string ext = std::filesystem::path(f.output).extension().string();
+    return ext == ".ngc" || ext == ".nc" || ext == ".gcode";
+}
+
+// The deck run on the emulated machine, its path written as G-code.
+ExitCode convert_to_gcode(const ConvertFlags& f) {
+    RunRequest run;
+    run.input = f.input;
+    run.gcode = f.output;
+    run.profile = f.profile;
+    run.deck = f.deck;
+    run.quiet = true;
+    relaylogic::RunResult result;
+    const ExitCode code = run_deck(run, &result);
+    fmt::print(message_stream(),
+               "converted the path of {} card{} ({:.3f} s of machine time{}): {} -> {} "
+               "(G-code)\n",
+               result.cards_read, result.cards_read == 1 ? "" : "s", result.machine_seconds,
+               result.completed ? "" : ", to the machine stop", f.input, f.output);
+    return code;
+}
+
 ExitCode run_convert(const ConvertFlags& f) {
+    if (wants_gcode(f)) {
+        return convert_to_gcode(f);
+    }
+    if (!f.profile.empty()) {
+        throw cardreader::DeckError("convert: --profile is for G-code output, where the deck is "
+                                    "run; a deck copied card by card needs no machine");
+    }
     InputDeck deck(f.input, f.deck);
     const auto out_options = deck_options(f.output, f.to, f.deck, "--to");
     OutputFile out(f.output);
@@ -42,14 +81,27 @@ void add_convert_command(CLI::App& app, Command& selected) {
     cmd->add_option("DECK", flags->input, "The deck to read")->required();
     cmd->add_option("-o,--output", flags->output, "The deck to write; format from the extension")
         ->required();
-    cmd->add_option("--to", flags->to, "Output format: cbn, bin, text, listing, tape or five");
+    cmd->add_option("--to", flags->to,
+                    "Output format: cbn, bin, text, listing, tape or five; or gcode, the machine's "
+                    "path as it runs the deck");
+    cmd->add_option("--profile", flags->profile,
+                    "G-code output: the machine profile to run the deck on (a name or a JSON "
+                    "file)");
     add_input_flags(*cmd, flags->deck);
-    cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was converted"}}) +
-                "Examples:\n"
-                "  parsons convert decks/samples/patent-example.csv -o deck.bin\n"
-                "  parsons convert deck.bin -o deck.csv      (back to a listing)\n"
-                "  parsons convert deck.bin --to text -o cards.dat\n"
-                "  parsons convert cards.dat --format text -o cards.cbn");
+    cmd->footer(
+        exit_codes_help(
+            {{ExitCode::ok, "the deck was converted"},
+             {ExitCode::machine_stop, "G-code output: the machine stopped itself (the path to the "
+                                      "stop is written)"},
+             {ExitCode::interrupted, "G-code output: the run stopped by the operator with Ctrl-C"},
+             {ExitCode::terminated, "G-code output: the run stopped by SIGTERM"}}) +
+        "Examples:\n"
+        "  parsons convert decks/samples/patent-example.csv -o deck.bin\n"
+        "  parsons convert deck.bin -o deck.csv      (back to a listing)\n"
+        "  parsons convert deck.bin --to text -o cards.dat\n"
+        "  parsons convert cards.dat --format text -o cards.cbn\n"
+        "  parsons convert decks/samples/patent-example.csv -o path.ngc   (the path the "
+        "machine cut, as G-code)");
     cmd->callback([&selected, flags] { selected = [flags] { return run_convert(*flags); }; });
 }
 

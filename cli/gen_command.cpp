@@ -614,6 +614,7 @@ void add_gen_command(CLI::App& app, Command& selected) {
     add_two_tool_command(*gen, selected);
     add_press_feeder_command(*gen, selected);
     add_tapping_command(*gen, selected);
+    add_gen_gcode_command(*gen, selected);
 }
 
 } // namespace parsons::cli

@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "cli/cutter_paths.hpp"
 #include "cli/deck_files.hpp"
+#include "cli/gcode_path.hpp"
 #include "cli/output_file.hpp"
 #include "cli/plot_svg.hpp"
 #include "cli/press_proof.hpp"
@@ -49,12 +50,13 @@ using cardreader::DeckError;
 template <typename Writer>
 class TraceFile {
 public:
-    void open(const std::string& path, relaylogic::ObserverFanOut& observers) {
+    template <typename... Args>
+    void open(const std::string& path, relaylogic::ObserverFanOut& observers, Args&&... args) {
         if (path.empty()) {
             return;
         }
         file_ = std::make_unique<OutputFile>(path);
-        writer_ = std::make_unique<Writer>(file_->stream());
+        writer_ = std::make_unique<Writer>(file_->stream(), std::forward<Args>(args)...);
         observers.add(writer_.get());
     }
     void commit() {
@@ -404,10 +406,12 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     TraceFile<VcdWriter> vcd;
     TraceFile<EventsJsonlWriter> events;
     TraceFile<PathCsvWriter> path;
+    TraceFile<GcodePathWriter> gcode;
     try {
         vcd.open(f.trace, observers);
         events.open(f.events, observers);
         path.open(f.path, observers);
+        gcode.open(f.gcode, observers, f.input == "-" ? std::string("standard input") : f.input);
     } catch (const DeckError& e) {
         if (operator_stop.signal() == 0) {
             throw;
@@ -483,6 +487,7 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     vcd.commit();
     events.commit();
     path.commit();
+    gcode.commit();
     if (plot) {
         write_file(f.plot, plot->svg());
     }

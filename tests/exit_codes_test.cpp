@@ -46,7 +46,7 @@ TEST_CASE("Exit codes: every command's --help lists exactly the codes it can ret
                                                            {"demo", {0, 1, 2, 130, 143}},
                                                            {"show", {0, 1, 2}},
                                                            {"punch", {0, 1, 2}},
-                                                           {"convert", {0, 1, 2}},
+                                                           {"convert", {0, 1, 2, 3, 130, 143}},
                                                            {"gen", {0, 1, 2}},
                                                            {"gen airfoil", {0, 1, 2}},
                                                            {"profile", {0, 1, 2}},

@@ -5,7 +5,7 @@
 namespace parsons::fuzz {
 namespace {
 
-constexpr std::array<FuzzTarget, 9> kTargets = {{
+constexpr std::array<FuzzTarget, 10> kTargets = {{
     {"cbn", "column-binary decks (.cbn), as SIMH writes them", fuzz_cbn},
     {"bin", "IBM 1130 binary decks (.bin)", fuzz_bin},
     {"text", "80-column text card images, in 029 and 026 code", fuzz_text},
@@ -14,6 +14,7 @@ constexpr std::array<FuzzTarget, 9> kTargets = {{
     {"five", "five per-axis cards a step (.five), reassembled into one", fuzz_five},
     {"airfoil", "airfoil coordinate files (.dat), Selig and Lednicer", fuzz_airfoil},
     {"profile", "machine profiles (JSON), then a short run with the profile", fuzz_profile},
+    {"gcode", "G-code programs (gen gcode), then the deck made of them", fuzz_gcode},
     {"machine", "a short valid-looking deck, some punches flipped, run on the machine",
      fuzz_machine},
 }};

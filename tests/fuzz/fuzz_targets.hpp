@@ -54,6 +54,7 @@ void fuzz_tape(Bytes input);
 void fuzz_five(Bytes input);
 void fuzz_airfoil(Bytes input);
 void fuzz_profile(Bytes input);
+void fuzz_gcode(Bytes input);
 void fuzz_machine(Bytes input);
 
 // The deck the machine target makes of an input, the profile it runs it with and (if asked)

@@ -1,4 +1,5 @@
-// The other readers as fuzz targets: airfoil coordinate files (.dat) and machine profiles.
+// The other readers as fuzz targets: airfoil coordinate files (.dat), machine profiles and
+// G-code programs.
 //
 // An airfoil the reader accepts must answer every chord station in [0, 1] of both surfaces
 // with a finite point and a unit tangent. A profile the reader accepts must write out and read
@@ -11,6 +12,10 @@
 #include "cardreader/deck_error.hpp"
 #include "cardreader/layout.hpp"
 #include "decks/airfoil.hpp"
+#include "decks/gcode_job.hpp"
+#include "decks/gcode_program.hpp"
+#include "decks/move_planner.hpp"
+#include "decks/template_job.hpp"
 
 #include <fmt/format.h>
 
@@ -118,6 +123,71 @@ void fuzz_profile(Bytes input) {
                       "\nbecame\n" + again);
     }
     run_machine(short_deck(), profile, true);
+}
+
+// A G-code program the reader accepts has finite moves, each starting where the one before
+// ended, arcs of a positive sweep no more than a turn whose end is on the circle; a deck made of
+// it (or a clear refusal) has every card punchable, one station apart from the next, and ends
+// where the program ends, to the thousandth.
+void fuzz_gcode(Bytes input) {
+    decks::GcodeProgram program;
+    try {
+        program = decks::read_gcode(as_string(input), "fuzz.ngc");
+    } catch (const DeckError&) {
+        return;
+    }
+    Eigen::Vector3d at = Eigen::Vector3d::Zero();
+    for (const decks::GcodeMove& m : program.moves) {
+        if (!m.from.allFinite() || !m.to.allFinite() ||
+            (m.from - at).norm() > 1e-9 * (1 + at.norm())) {
+            throw Finding(fmt::format("line {}: a move not starting where the last ended", m.line));
+        }
+        at = m.to;
+        if (m.motion == decks::GcodeMotion::arc_cw || m.motion == decks::GcodeMotion::arc_ccw) {
+            const double s = std::abs(m.sweep_rad);
+            const bool cw = m.motion == decks::GcodeMotion::arc_cw;
+            if (!(s > 0 && s <= 2 * 3.14159265358979323846 + 1e-9) || (cw != (m.sweep_rad < 0))) {
+                throw Finding(fmt::format("line {}: arc sweep {}", m.line, m.sweep_rad));
+            }
+            if ((decks::point_on(m, 1.0) - m.to).norm() > 1e-6 * (1 + m.to.norm())) {
+                throw Finding(fmt::format("line {}: the arc does not end at its end", m.line));
+            }
+        }
+    }
+    decks::GcodeJobOptions o;
+    o.tolerance_in = 0.05; // a few cards a move: the fuzzer's time is for the reader
+    decks::GcodeDeck deck;
+    try {
+        deck = decks::make_gcode_deck(program, o, axes::default_profile());
+    } catch (const decks::JobError&) {
+        return;
+    } catch (const decks::PlanError&) {
+        return;
+    }
+    Eigen::Vector3i from = Eigen::Vector3i::Zero();
+    for (const CardOrders& c : deck.cards) {
+        const auto e = encode(c, fig8_layout());
+        if (!e) {
+            throw Finding(fmt::format("card {} cannot be punched: {}", c.number, *e.error));
+        }
+        const Eigen::Vector3i to(c.axes[0].stop, c.axes[1].stop, c.axes[2].stop);
+        for (int k = 0; k < 3; ++k) {
+            if (c.axes.at(static_cast<std::size_t>(k)).check != std::abs(to[k] - from[k])) {
+                throw Finding(fmt::format("card {}: check is not the move", c.number));
+            }
+        }
+        if (to == from) {
+            throw Finding(fmt::format("card {} moves nothing", c.number));
+        }
+        from = to;
+    }
+    const Eigen::Vector3d end = (program.moves.back().to + deck.work_zero_in) * 1000;
+    for (int k = 0; k < 3; ++k) {
+        if (std::abs(end[k] - from[k]) > 0.5 + 1e-6) {
+            throw Finding(fmt::format("the deck ends at {} on axis {}, the program at {}", from[k],
+                                      k, end[k]));
+        }
+    }
 }
 
 } // namespace parsons::fuzz

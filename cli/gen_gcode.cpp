@@ -1,0 +1,155 @@
+// parsons gen gcode PROGRAM: a G-code program as a deck the 1952 machine runs
+// (decks/gcode_program.hpp reads it, decks/gcode_job.hpp makes the cards; docs/gcode.md).
+#include "cli/commands.hpp"
+#include "cli/deck_files.hpp"
+#include "cli/json_output.hpp"
+#include "cli/output_file.hpp"
+
+#include "cardreader/deck_error.hpp"
+#include "decks/gcode_job.hpp"
+#include "decks/move_planner.hpp"
+#include "decks/template_job.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <memory>
+
+namespace parsons::cli {
+namespace {
+
+using cardreader::DeckError;
+
+struct GcodeFlags {
+    std::string program;
+    std::string output;
+    std::string to;
+    std::string profile;
+    std::vector<double> work_zero;
+    decks::GcodeJobOptions o;
+    bool no_corner_slowdown = false;
+    bool json = false;
+};
+
+double rounded(double v, double scale) {
+    return std::round(v * scale) / scale;
+}
+
+Json gcode_json(const GcodeFlags& f, const decks::GcodeProgram& program,
+                const decks::GcodeDeck& deck) {
+    Json doc = json_document("gen");
+    doc["generator"] = "gcode";
+    doc["program"] = f.program;
+    doc["units"] = program.millimetres ? "millimetres" : "inches";
+    doc["deck"] = f.output;
+    doc["cards"] = deck.cards.size();
+    doc["approach_cards"] = deck.approach_cards;
+    doc["corner_cards"] = deck.corner_cards;
+    doc["lines"] = deck.lines;
+    doc["arcs"] = deck.arcs;
+    doc["tolerance_in"] = f.o.tolerance_in;
+    doc["staircase_in"] = rounded(deck.planned_deviation_in, 1e6);
+    doc["work_zero_in"] = {rounded(deck.work_zero_in.x(), 1e4), rounded(deck.work_zero_in.y(), 1e4),
+                           rounded(deck.work_zero_in.z(), 1e4)};
+    doc["ignored"] = program.ignored;
+    return doc;
+}
+
+void print_gcode(const GcodeFlags& f, const decks::GcodeProgram& program,
+                 const decks::GcodeDeck& deck) {
+    std::FILE* out = message_stream();
+    fmt::print(out,
+               "generated {}: {} ({} line{}, {} move{} in a straight line, {} arc{}), {} "
+               "card{}\n",
+               f.output == "-" ? "standard output" : f.output, f.program, program.lines,
+               program.lines == 1 ? "" : "s", deck.lines, deck.lines == 1 ? "" : "s", deck.arcs,
+               deck.arcs == 1 ? "" : "s", deck.cards.size(), deck.cards.size() == 1 ? "" : "s");
+    fmt::print(out, "  units          {} in the program; the deck in thousandths of an inch\n",
+               program.millimetres ? "millimetres" : "inches");
+    fmt::print(out,
+               "  work zero      table {:.3f} in, cross slide {:.3f} in, vertical {:.3f} in "
+               "(the program's origin on the counters{})\n",
+               deck.work_zero_in.x(), deck.work_zero_in.y(), deck.work_zero_in.z(),
+               f.work_zero.empty() ? "" : ", from --work-zero");
+    fmt::print(out,
+               "  tolerance      {:g} in: arcs in chords, each move a staircase of one axis at a "
+               "time (the farthest corner {:.4f} in off its line)\n",
+               f.o.tolerance_in, deck.planned_deviation_in);
+    fmt::print(out,
+               "  cards          {} ({} to bring the machine to the work zero, {} slowed for "
+               "a corner)\n",
+               deck.cards.size(), deck.approach_cards, deck.corner_cards);
+    for (const std::string& i : program.ignored) {
+        fmt::print(out, "  ignored        {}\n", i);
+    }
+}
+
+ExitCode run_gen_gcode(GcodeFlags f) {
+    refuse_json_beside_standard_output("gen gcode", f.json, "-o", f.output);
+    if (!f.work_zero.empty()) {
+        if (f.work_zero.size() != 3) {
+            throw DeckError(fmt::format("gen gcode: --work-zero: give three numbers, table, cross "
+                                        "slide and vertical in inches (e.g. 1,1,0.5), not {}",
+                                        f.work_zero.size()));
+        }
+        f.o.work_zero_in = Eigen::Vector3d(f.work_zero[0], f.work_zero[1], f.work_zero[2]);
+    }
+    f.o.corner_slowdown = !f.no_corner_slowdown;
+    const auto profile = load_profile(f.profile);
+    const std::string text = read_text_file(f.program);
+    const decks::GcodeProgram program =
+        decks::read_gcode(text, f.program == "-" ? "standard input" : f.program);
+    decks::GcodeDeck deck;
+    try {
+        deck = decks::make_gcode_deck(program, f.o, profile);
+    } catch (const decks::JobError& e) {
+        throw DeckError(fmt::format("gen gcode: {}", e.what()));
+    } catch (const decks::PlanError& e) {
+        throw DeckError(fmt::format("gen gcode: {}", e.what()));
+    }
+    write_cards(deck.cards, f.output, f.to, nullptr, "gen gcode");
+    if (f.json) {
+        print_json_document(gcode_json(f, program, deck));
+    } else {
+        print_gcode(f, program, deck);
+    }
+    return ExitCode::ok;
+}
+
+} // namespace
+
+void add_gen_gcode_command(CLI::App& gen, Command& selected) {
+    auto flags = std::make_shared<GcodeFlags>();
+    CLI::App* cmd = gen.add_subcommand(
+        "gcode", "A G-code program (G0 G1 G2 G3, G20 G21, G90 G91) as a deck: arcs in chords, "
+                 "each move a staircase within the tolerance, speeds by the slow-down rule");
+    cmd->add_option("PROGRAM", flags->program, "The G-code program to read (- for standard input)")
+        ->required();
+    cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")->required();
+    cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing");
+    cmd->add_option("--tolerance", flags->o.tolerance_in,
+                    "How close the path as cut stays to the program's, inches (at least 0.003)")
+        ->capture_default_str();
+    cmd->add_option("--work-zero", flags->work_zero,
+                    "Where the program's origin is on the counters: table,cross,vertical in "
+                    "inches (default: unmoved, or moved to fit the counters' 0 to 9.999)")
+        ->delimiter(',');
+    cmd->add_option("--margin", flags->o.margin_in,
+                    "Default work zero: the program's lowest point this far inside the counters' "
+                    "range, inches")
+        ->capture_default_str();
+    cmd->add_flag("--no-corner-slowdown", flags->no_corner_slowdown,
+                  "Do not slow down where the path turns sharply (EP 0636958)");
+    cmd->add_option("--profile", flags->profile, "Machine profile (a name or a JSON file)");
+    add_json_flag(*cmd, flags->json);
+    cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was written"}}) +
+                "Examples:\n"
+                "  parsons gen gcode decks/samples/bracket.ngc -o bracket.cbn\n"
+                "  parsons run bracket.cbn --path bracket-path.csv\n"
+                "  parsons convert bracket.cbn -o bracket-as-cut.ngc   (the path, back to "
+                "G-code)\n"
+                "  parsons gen gcode decks/samples/bracket.ngc --tolerance 0.01 -o coarse.cbn");
+    cmd->callback([&selected, flags] { selected = [flags] { return run_gen_gcode(*flags); }; });
+}
+
+} // namespace parsons::cli

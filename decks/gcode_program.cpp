@@ -1,0 +1,512 @@
+// Reading a G-code program (decks/gcode_program.hpp; docs/gcode.md).
+#include "decks/gcode_program.hpp"
+
+#include "cardreader/deck_error.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <set>
+
+namespace parsons::decks {
+namespace {
+
+using cardreader::DeckError;
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kMmPerInch = 25.4;
+// An arc whose end lies further than this from the circle through its start is refused
+// (inches): half a thousandth, the machine's own resolution.
+constexpr double kArcMismatchIn = 0.0005;
+
+struct Word {
+    char letter = 0;
+    double value = 0;
+    std::string text; // as written, "G41", "X1.5"
+};
+
+// Modal groups of the G words parsons reads; two words of one group on a line are refused.
+enum class Group { motion, plane, units, distance, arc_distance, feed_mode, other };
+
+struct GInfo {
+    Group group;
+    const char* refusal; // nullptr: read; else why it is refused
+};
+
+std::optional<GInfo> g_code(double g) {
+    static const std::map<int, GInfo> codes = {
+        {0, {Group::motion, nullptr}},
+        {10, {Group::motion, nullptr}},
+        {20, {Group::motion, nullptr}},
+        {30, {Group::motion, nullptr}},
+        {40,
+         {Group::other, "dwell: the 1952 machine reads the next card as soon as every axis "
+                        "has stopped; it cannot wait"}},
+        {170, {Group::plane, nullptr}},
+        {180, {Group::plane, "the XZ plane: parsons reads arcs in the XY plane only (G17)"}},
+        {190, {Group::plane, "the YZ plane: parsons reads arcs in the XY plane only (G17)"}},
+        {200, {Group::units, nullptr}},
+        {210, {Group::units, nullptr}},
+        {280,
+         {Group::other, "return to home: the deck's first card starts from the reference "
+                        "zero; write the moves themselves"}},
+        {300, {Group::other, "return to a second home: write the moves themselves"}},
+        {382, {Group::motion, "probing: the 1952 machine has no probe"}},
+        {400, {Group::other, nullptr}},
+        {410,
+         {Group::other, "cutter radius compensation: the deck generator offsets the cutter "
+                        "itself (gen airfoil --cutter-radius); write the cutter-centre path"}},
+        {420,
+         {Group::other, "cutter radius compensation: the deck generator offsets the cutter "
+                        "itself (gen airfoil --cutter-radius); write the cutter-centre path"}},
+        {430, {Group::other, "tool length offset: a 1952 deck runs one cutter, set by hand"}},
+        {490, {Group::other, nullptr}},
+        {530, {Group::other, "machine coordinates: give the program's own and --work-zero"}},
+        {540, {Group::other, nullptr}},
+        {550, {Group::other, "a second work offset: give --work-zero"}},
+        {560, {Group::other, "a work offset: give --work-zero"}},
+        {570, {Group::other, "a work offset: give --work-zero"}},
+        {580, {Group::other, "a work offset: give --work-zero"}},
+        {590, {Group::other, "a work offset: give --work-zero"}},
+        {610, {Group::other, nullptr}},
+        {640, {Group::other, nullptr}},
+        {800, {Group::motion, nullptr}},
+        {810, {Group::motion, "a drilling cycle: write its moves as G0 and G1 lines"}},
+        {820, {Group::motion, "a drilling cycle: write its moves as G0 and G1 lines"}},
+        {830, {Group::motion, "a drilling cycle: write its moves as G0 and G1 lines"}},
+        {840,
+         {Group::motion, "a tapping cycle: the tap card of parsons-extended does that "
+                         "(gen tapping)"}},
+        {900, {Group::distance, nullptr}},
+        {901,
+         {Group::arc_distance, "absolute arc centres: give I and J from the arc's start "
+                               "(G91.1)"}},
+        {910, {Group::distance, nullptr}},
+        {911, {Group::arc_distance, nullptr}},
+        {920, {Group::other, "setting the origin in the program: give --work-zero"}},
+        {930,
+         {Group::feed_mode, "inverse-time feed: the deck's speeds come from the slow-down "
+                            "rule"}},
+        {940, {Group::feed_mode, nullptr}},
+        {950,
+         {Group::feed_mode, "feed per revolution: the deck's speeds come from the slow-down "
+                            "rule"}},
+    };
+    const double tenths = g * 10;
+    if (std::abs(tenths - std::round(tenths)) > 1e-9) {
+        return std::nullopt;
+    }
+    const auto it = codes.find(static_cast<int>(std::lround(tenths)));
+    if (it == codes.end()) {
+        if (g >= 81 && g <= 89 && g == std::floor(g)) {
+            return GInfo{Group::motion, "a canned cycle: write its moves as G0 and G1 lines"};
+        }
+        return std::nullopt;
+    }
+    return it->second;
+}
+
+class Reader {
+public:
+    Reader(std::string_view text, const std::string& file) : text_(text) { program_.file = file; }
+
+    GcodeProgram read() {
+        std::size_t start = 0;
+        while (start <= text_.size() && !ended_) {
+            const std::size_t nl = text_.find('\n', start);
+            const std::size_t end = nl == std::string_view::npos ? text_.size() : nl;
+            ++line_;
+            std::string_view l = text_.substr(start, end - start);
+            if (!l.empty() && l.back() == '\r') {
+                l.remove_suffix(1);
+            }
+            read_line(l);
+            if (nl == std::string_view::npos) {
+                break;
+            }
+            start = nl + 1;
+        }
+        program_.lines = line_;
+        return std::move(program_);
+    }
+
+private:
+    [[noreturn]] void refuse(const std::string& word, const std::string& why) const {
+        throw DeckError::at_line(program_.file, line_, word.empty() ? why : word + ": " + why);
+    }
+
+    void ignore(const std::string& kind, const std::string& why) {
+        if (ignored_kinds_.insert(kind).second) {
+            program_.ignored.push_back(fmt::format("{} (first on line {}): {}", kind, line_, why));
+        }
+    }
+
+    std::vector<Word> words_of(std::string_view l) const {
+        std::vector<Word> words;
+        std::size_t i = 0;
+        auto skip_blanks = [&] {
+            while (i < l.size() && (l[i] == ' ' || l[i] == '\t')) {
+                ++i;
+            }
+        };
+        skip_blanks();
+        if (i < l.size() && l[i] == '%') {
+            ++i;
+            skip_blanks();
+            if (i < l.size() && l[i] != ';' && l[i] != '(') {
+                refuse("%", "a '%' line marks the start or end of the program and holds nothing "
+                            "else");
+            }
+        }
+        if (i < l.size() && l[i] == '/') {
+            refuse("/", "block delete: every line of the program is punched, or none");
+        }
+        while (true) {
+            skip_blanks();
+            if (i >= l.size() || l[i] == ';') {
+                break;
+            }
+            const char c = l[i];
+            if (c == '(') {
+                const std::size_t close = l.find(')', i);
+                if (close == std::string_view::npos) {
+                    refuse("(", "a comment that is not closed on its line");
+                }
+                i = close + 1;
+                continue;
+            }
+            if (c == '#' || c == '[' || c == 'o' || c == 'O') {
+                refuse(std::string(1, c), "parameters, expressions and subroutines: write the "
+                                          "program out as plain moves");
+            }
+            if (std::isalpha(static_cast<unsigned char>(c)) == 0) {
+                refuse(std::string(1, c), "not a G-code word (a letter and a number)");
+            }
+            Word w;
+            w.letter = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+            ++i;
+            skip_blanks();
+            const std::size_t number_start = i;
+            if (i < l.size() && (l[i] == '+' || l[i] == '-')) {
+                ++i;
+            }
+            int digits = 0;
+            while (i < l.size() && (std::isdigit(static_cast<unsigned char>(l[i])) != 0)) {
+                ++i;
+                ++digits;
+            }
+            if (i < l.size() && l[i] == '.') {
+                ++i;
+                while (i < l.size() && (std::isdigit(static_cast<unsigned char>(l[i])) != 0)) {
+                    ++i;
+                    ++digits;
+                }
+            }
+            std::string number(l.substr(number_start, i - number_start));
+            std::erase(number, ' ');
+            w.text = std::string(1, w.letter) + number;
+            if (digits == 0) {
+                refuse(w.text, "a letter with no number after it");
+            }
+            if (number.size() > 24) {
+                refuse(w.text.substr(0, 12) + "...", "a number too long to be a coordinate");
+            }
+            w.value = std::stod(number);
+            words.push_back(w);
+        }
+        return words;
+    }
+
+    void read_line(std::string_view l) {
+        const std::vector<Word> words = words_of(l);
+        if (words.empty()) {
+            return;
+        }
+        std::map<Group, Word> groups;
+        std::map<char, Word> axis;
+        std::optional<int> spindle;
+        bool end_program = false;
+        bool has_arc_word = false;
+        for (const Word& w : words) {
+            switch (w.letter) {
+            case 'N':
+                break;
+            case 'G': {
+                const auto info = g_code(w.value);
+                if (!info) {
+                    refuse(w.text, "not a G-code parsons reads (docs/gcode.md lists them)");
+                }
+                if (info->refusal != nullptr) {
+                    refuse(w.text, info->refusal);
+                }
+                if (info->group != Group::other) {
+                    if (const auto it = groups.find(info->group); it != groups.end()) {
+                        refuse(w.text, fmt::format("{} and {} on one line: two words of the same "
+                                                   "modal group",
+                                                   it->second.text, w.text));
+                    }
+                    groups[info->group] = w;
+                }
+                break;
+            }
+            case 'M': {
+                const int m = static_cast<int>(std::lround(w.value));
+                if (std::abs(w.value - m) > 1e-9) {
+                    refuse(w.text, "not an M-code parsons reads");
+                }
+                if (m == 2 || m == 30) {
+                    end_program = true;
+                } else if (m == 3 || m == 4 || m == 5) {
+                    if (spindle) {
+                        refuse(w.text, "two spindle words on one line");
+                    }
+                    spindle = m == 3 ? 1 : m == 4 ? 2 : 0;
+                } else if (m == 7 || m == 8 || m == 9) {
+                    ignore("M7/M8/M9", "coolant: the 1952 card has no column for it");
+                } else if (m == 6) {
+                    refuse(w.text, "a tool change: a 1952 deck runs one cutter (condition cards "
+                                   "of parsons-extended change tools: gen two-tool)");
+                } else if (m == 0 || m == 1) {
+                    refuse(w.text, "a program stop: the 1952 machine stops only at the end of "
+                                   "the deck or on a check");
+                } else {
+                    refuse(w.text, "not an M-code parsons reads (docs/gcode.md lists them)");
+                }
+                break;
+            }
+            case 'X':
+            case 'Y':
+            case 'Z':
+            case 'I':
+            case 'J':
+            case 'R':
+                if (axis.count(w.letter) != 0) {
+                    refuse(w.text, fmt::format("{} given twice on one line", w.letter));
+                }
+                if (!std::isfinite(w.value)) {
+                    refuse(w.text, "not a finite number");
+                }
+                axis[w.letter] = w;
+                has_arc_word =
+                    has_arc_word || w.letter == 'I' || w.letter == 'J' || w.letter == 'R';
+                break;
+            case 'F':
+                if (!(w.value > 0)) {
+                    refuse(w.text, "a feed must be positive");
+                }
+                ignore("F", "feeds: the deck's speeds are the speed switches', chosen by the "
+                            "slow-down rule, not the program's");
+                break;
+            case 'S':
+                if (w.value < 0) {
+                    refuse(w.text, "a spindle speed cannot be negative");
+                }
+                ignore("S", "spindle speed: the 1952 spindle runs at the speed set on the machine");
+                break;
+            case 'T':
+                refuse(w.text, "a tool: a 1952 deck runs one cutter (condition cards of "
+                               "parsons-extended change tools: gen two-tool)");
+            case 'K':
+                refuse(w.text, "K: arcs in the XY plane take I and J only");
+            case 'A':
+            case 'B':
+            case 'C':
+                refuse(w.text, "a rotary axis: the fixture's swivel and tilt stand where the "
+                               "deck's own cards set them; the program moves X, Y and Z");
+            default:
+                refuse(w.text, "not a word parsons reads (docs/gcode.md lists them)");
+            }
+        }
+
+        // In the order RS-274 applies them: units, plane, distance, spindle, then the move.
+        if (const auto it = groups.find(Group::units); it != groups.end()) {
+            units_ = it->second.value < 20.5 ? 1.0 : 1.0 / kMmPerInch;
+            units_given_ = true;
+            millimetres_ = it->second.value > 20.5;
+        }
+        if (const auto it = groups.find(Group::distance); it != groups.end()) {
+            incremental_ = it->second.value > 90.5;
+        }
+        if (spindle) {
+            spindle_ = *spindle;
+        }
+        const bool motion_word = groups.count(Group::motion) != 0;
+        if (motion_word) {
+            const double g = groups[Group::motion].value;
+            motion_ = g < 0.5   ? Mode::rapid
+                      : g < 1.5 ? Mode::linear
+                      : g < 2.5 ? Mode::arc_cw
+                      : g < 3.5 ? Mode::arc_ccw
+                                : Mode::none; // G80
+        }
+        const bool has_axis = axis.count('X') + axis.count('Y') + axis.count('Z') != 0;
+        if (has_arc_word && motion_ != Mode::arc_cw && motion_ != Mode::arc_ccw) {
+            const char letter = axis.count('I') ? 'I' : axis.count('J') ? 'J' : 'R';
+            refuse(axis[letter].text, "arc words with no arc: I, J and R go with G2 or G3");
+        }
+        if (!has_axis && !has_arc_word) {
+            if (end_program) {
+                ended_ = true;
+            }
+            return;
+        }
+        const Word& first = axis.begin()->second;
+        if (motion_ == Mode::none) {
+            refuse(first.text, "a move with no motion mode: give G0, G1, G2 or G3 first");
+        }
+        if (!units_given_) {
+            refuse(first.text, "a move before the units are given: put G20 (inches) or G21 "
+                               "(millimetres) before the first move");
+        }
+        if (program_.moves.empty()) {
+            program_.millimetres = millimetres_;
+        }
+        Vector3d to = position_;
+        const char names[3] = {'X', 'Y', 'Z'};
+        for (int k = 0; k < 3; ++k) {
+            if (const auto it = axis.find(names[k]); it != axis.end()) {
+                const double v = it->second.value * units_;
+                to[k] = incremental_ ? position_[k] + v : v;
+            }
+        }
+        GcodeMove move;
+        move.line = line_;
+        move.from = position_;
+        move.to = to;
+        move.spindle = spindle_;
+        if (motion_ == Mode::rapid || motion_ == Mode::linear) {
+            move.motion = motion_ == Mode::rapid ? GcodeMotion::rapid : GcodeMotion::linear;
+        } else {
+            arc(move, axis);
+        }
+        if (move.motion == GcodeMotion::rapid || move.motion == GcodeMotion::linear) {
+            if ((move.to - move.from).norm() == 0) {
+                position_ = to;
+                if (end_program) {
+                    ended_ = true;
+                }
+                return;
+            }
+        }
+        program_.moves.push_back(move);
+        position_ = to;
+        if (end_program) {
+            ended_ = true;
+        }
+    }
+
+    void arc(GcodeMove& move, std::map<char, Word>& axis) {
+        const bool cw = motion_ == Mode::arc_cw;
+        move.motion = cw ? GcodeMotion::arc_cw : GcodeMotion::arc_ccw;
+        const Vector2d a = move.from.head<2>();
+        const Vector2d b = move.to.head<2>();
+        const bool has_r = axis.count('R') != 0;
+        const bool has_ij = axis.count('I') + axis.count('J') != 0;
+        const std::string word = cw ? "G2" : "G3";
+        if (has_r && has_ij) {
+            refuse(axis['R'].text, "an arc takes its centre from I and J or its radius from R, "
+                                   "not both");
+        }
+        if (!has_r && !has_ij) {
+            refuse(word, "an arc with neither I and J nor R");
+        }
+        Vector2d centre;
+        if (has_r) {
+            const double r = axis['R'].value * units_;
+            const Vector2d chord = b - a;
+            const double d = chord.norm();
+            if (d < 1e-9) {
+                refuse(axis['R'].text, "a full circle cannot be given by its radius: give I and J");
+            }
+            if (std::abs(r) < d / 2 - 1e-9) {
+                refuse(axis['R'].text,
+                       fmt::format("the radius {:.4f} in is less than half the distance {:.4f} "
+                                   "in between the arc's ends",
+                                   std::abs(r), d / 2));
+            }
+            const double h = std::sqrt(std::max(0.0, r * r - d * d / 4));
+            const Vector2d left(-chord.y() / d, chord.x() / d);
+            // A positive R is the shorter arc: its centre to the right of the chord going
+            // clockwise, to the left going counter-clockwise; a negative R the other side.
+            const double side = (cw ? -1.0 : 1.0) * (r > 0 ? 1.0 : -1.0);
+            centre = (a + b) / 2 + side * h * left;
+        } else {
+            const double i = axis.count('I') ? axis['I'].value * units_ : 0;
+            const double j = axis.count('J') ? axis['J'].value * units_ : 0;
+            centre = a + Vector2d(i, j);
+        }
+        const double r0 = (a - centre).norm();
+        const double r1 = (b - centre).norm();
+        if (r0 < 1e-6) {
+            refuse(word, "an arc of no radius: I and J are both 0");
+        }
+        if (std::abs(r0 - r1) > kArcMismatchIn) {
+            refuse(word, fmt::format("the arc's end is not on its circle: radius {:.5f} in at "
+                                     "the start, {:.5f} in at the end",
+                                     r0, r1));
+        }
+        const double a0 = std::atan2(a.y() - centre.y(), a.x() - centre.x());
+        const double a1 = std::atan2(b.y() - centre.y(), b.x() - centre.x());
+        double sweep = a1 - a0;
+        if (cw) {
+            while (sweep >= 0) {
+                sweep -= 2 * kPi;
+            }
+            if ((b - a).norm() < 1e-9) {
+                sweep = -2 * kPi;
+            }
+        } else {
+            while (sweep <= 0) {
+                sweep += 2 * kPi;
+            }
+            if ((b - a).norm() < 1e-9) {
+                sweep = 2 * kPi;
+            }
+        }
+        if (sweep <= -2 * kPi - 1e-12 || sweep >= 2 * kPi + 1e-12) {
+            sweep = cw ? -2 * kPi : 2 * kPi;
+        }
+        move.centre = centre;
+        move.sweep_rad = sweep;
+    }
+
+    enum class Mode { none, rapid, linear, arc_cw, arc_ccw };
+
+    std::string_view text_;
+    GcodeProgram program_;
+    std::set<std::string> ignored_kinds_;
+    long line_ = 0;
+    bool ended_ = false;
+    double units_ = 1.0;
+    bool units_given_ = false;
+    bool millimetres_ = false;
+    bool incremental_ = false;
+    int spindle_ = 0;
+    Mode motion_ = Mode::none;
+    Vector3d position_ = Vector3d::Zero();
+};
+
+} // namespace
+
+GcodeProgram read_gcode(std::string_view text, const std::string& file) {
+    return Reader(text, file).read();
+}
+
+Vector3d point_on(const GcodeMove& move, double f) {
+    if (move.motion == GcodeMotion::rapid || move.motion == GcodeMotion::linear) {
+        return move.from + f * (move.to - move.from);
+    }
+    const Vector2d a = move.from.head<2>() - move.centre;
+    const Vector2d b = move.to.head<2>() - move.centre;
+    const double r = a.norm() + f * (b.norm() - a.norm());
+    const double angle = std::atan2(a.y(), a.x()) + f * move.sweep_rad;
+    return {move.centre.x() + r * std::cos(angle), move.centre.y() + r * std::sin(angle),
+            move.from.z() + f * (move.to.z() - move.from.z())};
+}
+
+} // namespace parsons::decks

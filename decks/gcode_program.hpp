@@ -1,0 +1,53 @@
+// Reading a G-code (RS-274) program: the moves it makes, for `parsons gen gcode` to turn into
+// a deck the 1952 machine can run (decks/gcode_job.hpp).
+//
+// What is read (docs/gcode.md): G0 and G1 lines, G2 and G3 arcs in the XY plane (centre by I J,
+// incremental, or radius by R; a Z word makes a helix), G20 and G21 units, G90 and G91
+// distances, X Y Z, line numbers N, comments in parentheses and after ';', '%' lines, and M2 or
+// M30 ending the program. M3, M4 and M5 set the card's spindle column (forward, reverse, off).
+// Words that change nothing the 1952 machine has are read and listed as ignored: F (the deck's
+// speeds come from the slow-down rule, not the program), S, M7 M8 M9, and the modal words that
+// only state the default (G17, G40, G49, G54, G80, G94, G91.1, G61, G64).
+//
+// Everything else is refused with the file, the line and the word: cutter compensation, tool
+// changes, dwells, canned cycles, other planes, rotary axes, parameters and expressions, a
+// move before the units are given, an arc whose end is not on its circle. A refusal is a
+// DeckError (exit 2).
+#pragma once
+
+#include <Eigen/Core>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace parsons::decks {
+
+enum class GcodeMotion { rapid, linear, arc_cw, arc_ccw };
+
+struct GcodeMove {
+    long line = 0; // 1-based line of the program
+    GcodeMotion motion = GcodeMotion::linear;
+    Eigen::Vector3d from; // inches, the program's own frame
+    Eigen::Vector3d to;
+    Eigen::Vector2d centre; // arcs: the centre in XY
+    double sweep_rad = 0;   // arcs: the signed angle swept, + counter-clockwise seen from +Z
+    int spindle = 0;        // 0 off (M5, the start), 1 forward (M3), 2 reverse (M4): column 165
+};
+
+struct GcodeProgram {
+    std::string file;
+    std::vector<GcodeMove> moves;
+    std::vector<std::string> ignored; // "F (line 3): ..." once per kind of word, in order
+    long lines = 0;
+    bool millimetres = false; // the units of the first move (inches or millimetres)
+};
+
+// Throws cardreader::DeckError naming the file, the line and the word.
+GcodeProgram read_gcode(std::string_view text, const std::string& file);
+
+// The point of a move at fraction f (0..1) of it: along the line, or round the arc (a helix
+// rises linearly with the angle).
+Eigen::Vector3d point_on(const GcodeMove& move, double f);
+
+} // namespace parsons::decks
