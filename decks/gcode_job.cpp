@@ -257,10 +257,6 @@ GcodeDeck make_gcode_deck(const GcodeProgram& program, const GcodeJobOptions& o,
             }
         }
     }
-    if (stations.size() < 2 || stations[1].at != thousandths(deck.work_zero_in)) {
-        throw JobError("internal: the work zero is not the first station");
-    }
-
     // The cards.
     for (std::size_t i = 1; i < stations.size(); ++i) {
         const Station& a = stations[i - 1];
@@ -282,18 +278,13 @@ GcodeDeck make_gcode_deck(const GcodeProgram& program, const GcodeJobOptions& o,
         }
         deck.cards.push_back(card(static_cast<int>(deck.cards.size()) + 1, a.at, b.at, order,
                                   corner, b.spindle, profile));
-        if (i == 1) {
-            deck.approach_cards = 1;
-        }
     }
-    if (stations[0].at == stations[1].at) {
-        deck.approach_cards = 0;
-    }
+    const bool at_reference = stations[0].at == stations[1].at;
+    deck.approach_cards = at_reference ? 0 : 1;
     for (std::size_t i = 0; i < stations.size(); ++i) {
-        if (i == 1 && stations[0].at == stations[1].at) {
-            continue;
+        if (i != 1 || !at_reference) {
+            deck.stations.push_back(stations[i].at.cast<double>() / 1000.0);
         }
-        deck.stations.push_back(stations[i].at.cast<double>() / 1000.0);
     }
 
     // The farthest the planned path strays from the design: chords and staircases.

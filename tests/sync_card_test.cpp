@@ -22,7 +22,9 @@
 using namespace parsons;
 using namespace parsons::cardreader;
 using parsons::test::idle_card;
+using parsons::test::listing_error;
 using parsons::test::order;
+using parsons::test::review_all;
 
 namespace {
 
@@ -75,31 +77,6 @@ Card punched(const CardOrders& o) {
 
 ColumnWord digit(int d) {
     return row_bit(digit_row(d));
-}
-
-std::string listing_error(const std::string& rows) {
-    std::istringstream in(std::string(kListingHeader) + "\n" + rows);
-    ListingReader reader(in, "t.csv");
-    try {
-        while (reader.next()) {
-        }
-    } catch (const DeckError& e) {
-        return e.what();
-    }
-    return "no error";
-}
-
-std::vector<ReviewNote> review_all(DeckReviewer& reviewer, const std::vector<CardOrders>& cards) {
-    std::vector<ReviewNote> notes;
-    for (const CardOrders& c : cards) {
-        for (ReviewNote& n : reviewer.review(c)) {
-            notes.push_back(std::move(n));
-        }
-    }
-    for (ReviewNote& n : reviewer.finish()) {
-        notes.push_back(std::move(n));
-    }
-    return notes;
 }
 
 // One motion card's five listing rows: the table and cross from 0.000 to `stop` (check = the

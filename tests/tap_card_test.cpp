@@ -24,7 +24,9 @@
 using namespace parsons;
 using namespace parsons::cardreader;
 using parsons::test::idle_card;
+using parsons::test::listing_error;
 using parsons::test::order;
+using parsons::test::review_all;
 
 namespace {
 
@@ -69,31 +71,6 @@ CardOrders vertical_move(int number, int from, int to) {
     CardOrders c = idle_card(number, {0, 0, from, 0, 0});
     c.axis(Axis::vertical) = order(from, to, 3, {}, {}, 4);
     return c;
-}
-
-std::string listing_error(const std::string& rows) {
-    std::istringstream in(std::string(kListingHeader) + "\n" + rows);
-    ListingReader reader(in, "t.csv");
-    try {
-        while (reader.next()) {
-        }
-    } catch (const DeckError& e) {
-        return e.what();
-    }
-    return "no error";
-}
-
-std::vector<ReviewNote> review_all(DeckReviewer& reviewer, const std::vector<CardOrders>& cards) {
-    std::vector<ReviewNote> notes;
-    for (const CardOrders& c : cards) {
-        for (ReviewNote& n : reviewer.review(c)) {
-            notes.push_back(std::move(n));
-        }
-    }
-    for (ReviewNote& n : reviewer.finish()) {
-        notes.push_back(std::move(n));
-    }
-    return notes;
 }
 
 std::vector<ReviewNote> deck_errors(const std::vector<ReviewNote>& notes) {

@@ -1,6 +1,7 @@
 #include "tests/test_support.hpp"
 
 #include "cardreader/deck_error.hpp"
+#include "cardreader/listing_format.hpp"
 
 #include <fmt/format.h>
 
@@ -11,6 +12,32 @@
 #include <sys/wait.h>
 
 namespace parsons::test {
+
+std::string listing_error(const std::string& rows) {
+    std::istringstream in(std::string(cardreader::kListingHeader) + "\n" + rows);
+    cardreader::ListingReader reader(in, "t.csv");
+    try {
+        while (reader.next()) {
+        }
+    } catch (const cardreader::DeckError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+std::vector<cardreader::ReviewNote> review_all(cardreader::DeckReviewer& reviewer,
+                                               const std::vector<cardreader::CardOrders>& cards) {
+    std::vector<cardreader::ReviewNote> notes;
+    for (const cardreader::CardOrders& c : cards) {
+        for (cardreader::ReviewNote& n : reviewer.review(c)) {
+            notes.push_back(std::move(n));
+        }
+    }
+    for (cardreader::ReviewNote& n : reviewer.finish()) {
+        notes.push_back(std::move(n));
+    }
+    return notes;
+}
 
 std::string q(const std::string& text) {
     return "'" + text + "'";

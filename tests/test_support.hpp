@@ -3,6 +3,7 @@
 #pragma once
 
 #include "cardreader/deck_io.hpp"
+#include "cardreader/deck_review.hpp"
 #include "cardreader/layout.hpp"
 #include "cardreader/orders.hpp"
 
@@ -25,6 +26,14 @@ std::string q(const std::string& text);
 // "no error".
 std::string read_error(const std::string& bytes, cardreader::DeckFormat format,
                        const std::string& file_name);
+
+// The DeckError a listing (the standard header, then `rows`) gives when read through, or
+// "no error".
+std::string listing_error(const std::string& rows);
+
+// Every note a reviewer gives on the cards, then at the deck's end.
+std::vector<cardreader::ReviewNote> review_all(cardreader::DeckReviewer& reviewer,
+                                               const std::vector<cardreader::CardOrders>& cards);
 
 // Runs `parsons ARGS` through the shell; ARGS is pasted verbatim.
 ProcessResult run_parsons(const std::string& args);
