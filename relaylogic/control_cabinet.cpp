@@ -159,11 +159,16 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
         }
         now_ = t;
         tracer_.set_time(t);
+        if (jumping_) {
+            // The axes' quiet impulses first: a tap's reversal of control 214 is reported at the
+            // first impulse of its jump, before this instant, so it must come before anything
+            // reported at this instant (the spindle's edges below).
+            catch_up(t);
+        }
         if (tapping_.present()) {
             spindle_edges(t);
         }
         if (jumping_) {
-            catch_up(t);
             if (press_running()) {
                 // The press's quiet edges before this instant, whatever the instant brings (at
                 // impulse level each was an instant of its own).
