@@ -55,13 +55,13 @@ std::uint64_t splitmix64(std::uint64_t x) {
 }
 
 // u in [-1, 1): the share of the variation revolution rev gets from this seed.
-double variation_u(unsigned seed, long rev) {
+double variation_u(unsigned seed, std::int64_t rev) {
     const std::uint64_t x = splitmix64(splitmix64(seed) ^ static_cast<std::uint64_t>(rev));
     return static_cast<double>(x >> 11U) * 0x1.0p-52 - 1.0;
 }
 
 // Revolution r starts at 360 (r - 1) degrees (exact for any r a run reaches).
-double rev_start(long r) {
+double rev_start(std::int64_t r) {
     return kDegPerRev * static_cast<double>(r - 1);
 }
 
@@ -69,14 +69,14 @@ double rev_start(long r) {
 // the boundaries are made of. theta / 360 is exact at a top dead centre and never falls below
 // it past one (division rounds monotonically); the guard is for an angle just short of a top
 // dead centre whose quotient rounds up to it (none below 200000 revolutions does).
-long revolution_of(double theta) {
-    const long r = static_cast<long>(std::floor(theta / kDegPerRev)) + 1;
+std::int64_t revolution_of(double theta) {
+    const std::int64_t r = static_cast<std::int64_t>(std::floor(theta / kDegPerRev)) + 1;
     return rev_start(r) > theta ? r - 1 : r;
 }
 
 } // namespace
 
-DetectorEdge phases_at(long count) {
+DetectorEdge phases_at(std::int64_t count) {
     // Gray code of count mod 4: (A, B) = (0, 0), (1, 0), (1, 1), (0, 1).
     static constexpr std::array<int, 4> kA = {0, 1, 1, 0};
     static constexpr std::array<int, 4> kB = {0, 0, 1, 1};
@@ -89,7 +89,7 @@ Press::Press(const PressProfile& profile)
     theta_ = profile.start_angle_deg;
     // count = floor(theta x ppd), decided on the same double edge angles m / ppd the pulses
     // use (theta x ppd alone can round across an edge either way).
-    count_ = static_cast<long>(std::floor(theta_ * ppd_));
+    count_ = static_cast<std::int64_t>(std::floor(theta_ * ppd_));
     while (edge_angle(count_ + 1) <= theta_) {
         ++count_;
     }
@@ -114,7 +114,7 @@ double Press::speed_at(double theta) const {
     if (p.stop_cycle > 0 && theta >= stop_theta()) {
         return 0;
     }
-    const long r = revolution_of(theta);
+    const std::int64_t r = revolution_of(theta);
     double w = p.strokes_per_min * kDegPerRev / 60.0;
     w *= std::pow(1.0 + p.drift_per_cycle, static_cast<double>(r - 1));
     w *= 1.0 + p.variation * variation_u(p.seed, r);
@@ -134,8 +134,8 @@ double Press::boundary_from(double theta) const {
             best = b;
         }
     };
-    const long r = revolution_of(theta);
-    for (long k = r - 1; k <= r + 1; ++k) {
+    const std::int64_t r = revolution_of(theta);
+    for (std::int64_t k = r - 1; k <= r + 1; ++k) {
         consider(rev_start(k));
         consider(rev_start(k) + profile_.pressing_from_deg);
         consider(rev_start(k) + profile_.pressing_to_deg);
@@ -176,33 +176,33 @@ void Press::start_segment() {
 
 // ---- Detector 10's edges ----
 
-bool Press::in_segment(long m) const {
+bool Press::in_segment(std::int64_t m) const {
     // The boundary rule: an edge on the segment's end belongs to the segment.
     return sense_ > 0 ? edge_angle(m) <= seg_end_theta_ : edge_angle(m) >= seg_end_theta_;
 }
 
-long Press::edges_left() const {
+std::int64_t Press::edges_left() const {
     if (stopped_) {
         return 0;
     }
     if (sense_ > 0) {
-        auto last = static_cast<long>(std::floor(seg_end_theta_ * ppd_));
+        auto last = static_cast<std::int64_t>(std::floor(seg_end_theta_ * ppd_));
         while (in_segment(last + 1)) {
             ++last;
         }
         while (!in_segment(last)) {
             --last;
         }
-        return std::max(0L, last - count_);
+        return std::max(std::int64_t{0}, last - count_);
     }
-    auto lowest = static_cast<long>(std::ceil(seg_end_theta_ * ppd_));
+    auto lowest = static_cast<std::int64_t>(std::ceil(seg_end_theta_ * ppd_));
     while (in_segment(lowest - 1)) {
         --lowest;
     }
     while (!in_segment(lowest)) {
         ++lowest;
     }
-    return std::max(0L, count_ - lowest + 1);
+    return std::max(std::int64_t{0}, count_ - lowest + 1);
 }
 
 void Press::plan_pulse() {
@@ -211,22 +211,22 @@ void Press::plan_pulse() {
     next_time_ = next_is_pulse_ ? t : seg_end_t_;
 }
 
-double Press::pulse_time(long n) const {
+double Press::pulse_time(std::int64_t n) const {
     if (stopped_ || n < 1) {
         return kNever;
     }
-    const long m = edge_index(n);
+    const std::int64_t m = edge_index(n);
     if (!in_segment(m)) {
         return kNever;
     }
     return t0_ + (edge_angle(m) - theta0_) / w_;
 }
 
-long Press::pulses_by(double t) const {
+std::int64_t Press::pulses_by(double t) const {
     if (!next_is_pulse_ || t < next_time_) {
         return 0;
     }
-    const long left = edges_left();
+    const std::int64_t left = edges_left();
     if (t >= seg_end_t_) {
         return left;
     }
@@ -234,7 +234,7 @@ long Press::pulses_by(double t) const {
     const double theta = theta0_ + w_ * (t - t0_);
     const double guess = sense_ > 0 ? std::floor(theta * ppd_) - static_cast<double>(count_)
                                     : static_cast<double>(count_) - std::ceil(theta * ppd_) + 1;
-    long n = static_cast<long>(std::clamp(guess, 1.0, static_cast<double>(left)));
+    std::int64_t n = static_cast<std::int64_t>(std::clamp(guess, 1.0, static_cast<double>(left)));
     while (n < left && pulse_time(n + 1) <= t) {
         ++n;
     }
@@ -244,7 +244,7 @@ long Press::pulses_by(double t) const {
     return n;
 }
 
-DetectorEdge Press::take_edge(long m, double t) {
+DetectorEdge Press::take_edge(std::int64_t m, double t) {
     t_ = t;
     theta_ = edge_angle(m);
     count_ = sense_ > 0 ? m : m - 1;
@@ -252,7 +252,7 @@ DetectorEdge Press::take_edge(long m, double t) {
     return phases_at(count_);
 }
 
-DetectorEdge Press::skip_pulses(long n) {
+DetectorEdge Press::skip_pulses(std::int64_t n) {
     const double t = pulse_time(n);
     assert(t != kNever && "skip_pulses: fewer than n edges left in this segment");
     if (t == kNever) {
@@ -356,7 +356,7 @@ void Press::load(const nlohmann::json& j) {
     Press p = *this; // this press is changed only if the whole state is good
     p.t_ = exact(member(j, "t"));
     p.theta_ = exact(member(j, "theta_deg"));
-    p.count_ = read<long>(j, "count");
+    p.count_ = read<std::int64_t>(j, "count");
     p.t0_ = exact(member(j, "t0"));
     p.theta0_ = exact(member(j, "theta0_deg"));
     p.w_ = exact(member(j, "w_deg_per_s"));

@@ -31,6 +31,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <utility>
 
@@ -40,11 +41,11 @@ namespace parsons::axes {
 struct DetectorEdge {
     int phase_a = 0;
     int phase_b = 0;
-    long count = 0; // floor(theta x ppd) after the edge (unwrapped, may be negative)
+    std::int64_t count = 0; // floor(theta x ppd) after the edge (unwrapped, may be negative)
 };
 
 // The phases A, B that stand after pulse count c (Gray code of c mod 4).
-DetectorEdge phases_at(long count);
+DetectorEdge phases_at(std::int64_t count);
 
 class Press {
 public:
@@ -61,12 +62,12 @@ public:
     // Fast-forward: the time of the n-th coming edge (n >= 1) within this segment, or kNever
     // if the segment ends first; how many come at or before t; take the next n at once (the
     // n-th is returned, as advance_to() would return it).
-    double pulse_time(long n) const;
-    long pulses_by(double t) const;
-    DetectorEdge skip_pulses(long n);
+    double pulse_time(std::int64_t n) const;
+    std::int64_t pulses_by(double t) const;
+    DetectorEdge skip_pulses(std::int64_t n);
 
     double time_s() const { return t_; }          // machine time the crank stands at
-    long count() const { return count_; }         // detector pulses, unwrapped
+    std::int64_t count() const { return count_; } // detector pulses, unwrapped
     double theta_deg() const;                     // unwrapped crank angle now
     double angle_deg() const;                     // crank 21 now, 0 <= a < 360
     double angle_deg_at(double t) const;          // t within the current segment
@@ -106,19 +107,21 @@ private:
     void start_segment();                     // from (t_, theta_, count_): speed, end, next edge
     void plan_pulse();
     // Edge m stands at m / ppd degrees; the n-th coming edge (n >= 1) is edge_index(n).
-    double edge_angle(long m) const { return static_cast<double>(m) / ppd_; }
-    long edge_index(long n) const { return sense_ > 0 ? count_ + n : count_ - n + 1; }
-    bool in_segment(long m) const;
-    long edges_left() const; // edges still to come before the segment ends
+    double edge_angle(std::int64_t m) const { return static_cast<double>(m) / ppd_; }
+    std::int64_t edge_index(std::int64_t n) const {
+        return sense_ > 0 ? count_ + n : count_ - n + 1;
+    }
+    bool in_segment(std::int64_t m) const;
+    std::int64_t edges_left() const; // edges still to come before the segment ends
     double theta_at(double t) const;
-    DetectorEdge take_edge(long m, double t);
+    DetectorEdge take_edge(std::int64_t m, double t);
 
     PressProfile profile_;
     double ppd_ = 4;
     int sense_ = +1;
     double t_ = 0;
     double theta_ = 0; // unwrapped, degrees
-    long count_ = 0;
+    std::int64_t count_ = 0;
     // The segment: from time t0_ at angle theta0_, speed w_ (deg/s, signed), until seg_end_t_.
     double t0_ = 0;
     double theta0_ = 0;

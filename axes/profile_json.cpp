@@ -252,7 +252,7 @@ std::vector<Tool> tools_from(const json& j) {
             throw ProfileError(fmt::format("{}: expected {{\"number\": N, \"radius_in\": R}}", k));
         }
         const json& n = t.at("number");
-        if (!n.is_number_integer() || n.get<long>() < 1 || n.get<long>() > 99) {
+        if (!n.is_number_integer() || n.get<std::int64_t>() < 1 || n.get<std::int64_t>() > 99) {
             throw ProfileError(fmt::format("{}.number: expected a tool number 1..99", k));
         }
         const int number = n.get<int>();
@@ -282,7 +282,8 @@ bool apply_reading(MachineProfile& p, const std::string& key, const json& value)
     } else if (key == "tools") {
         p.tools = tools_from(value);
     } else if (key == "first_tool") {
-        if (!value.is_number_integer() || value.get<long>() < 1 || value.get<long>() > 99) {
+        if (!value.is_number_integer() || value.get<std::int64_t>() < 1 ||
+            value.get<std::int64_t>() > 99) {
             throw ProfileError("first_tool: expected a tool number 1..99");
         }
         p.first_tool = value.get<int>();
@@ -338,9 +339,9 @@ const std::array<PressNumber, 11> kPressNumbers = {{
     {"change_factor", &PressProfile::change_factor, 0, true, 4, false},
 }};
 // A stop or change this many revolutions on is beyond any run (and 360 x it stays exact).
-constexpr long kMostCycles = 1000000000;
+constexpr std::int64_t kMostCycles = 1000000000;
 // 360 x pulses_per_degree must fit the four decades of position register 14 (<= 9999).
-constexpr long kMostPulsesPerDegree = 27;
+constexpr std::int64_t kMostPulsesPerDegree = 27;
 
 void apply_press_key(PressProfile& p, const std::string& key, const json& value,
                      const std::string& k) {
@@ -355,7 +356,7 @@ void apply_press_key(PressProfile& p, const std::string& key, const json& value,
     } else if (key == "reverse") {
         p.reverse = flag(value, k);
     } else if (key == "seed") {
-        p.seed = static_cast<unsigned>(whole_in(value, k, 0, 4294967295L));
+        p.seed = static_cast<unsigned>(whole_in(value, k, 0, 4294967295LL));
     } else if (key == "change_cycle") {
         p.change_cycle = static_cast<int>(whole_in(value, k, 0, kMostCycles));
     } else if (key == "stop_cycle") {

@@ -33,12 +33,14 @@ double number_in(const json& j, const std::string& key, double least, bool least
     return j.get<double>();
 }
 
-long whole_in(const json& j, const std::string& key, long least, long most) {
-    if (!j.is_number_integer() || j.get<long>() < least || j.get<long>() > most) {
+std::int64_t whole_in(const json& j, const std::string& key, std::int64_t least,
+                      std::int64_t most) {
+    // 64 bits on every target (long is 32 on WebAssembly): a seed runs to 2^32 - 1.
+    if (!j.is_number_integer() || j.get<std::int64_t>() < least || j.get<std::int64_t>() > most) {
         throw ProfileError(fmt::format("{}: must be a whole number from {} to {}, not {}", key,
                                        least, most, j.dump()));
     }
-    return j.get<long>();
+    return j.get<std::int64_t>();
 }
 
 } // namespace parsons::axes::profile_values

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <string>
 
 namespace parsons::axes::profile_values {
@@ -16,6 +17,7 @@ bool flag(const nlohmann::json& j, const std::string& key);
 double number_in(const nlohmann::json& j, const std::string& key, double least, bool least_open,
                  double most, bool most_open);
 // A whole number from least to most.
-long whole_in(const nlohmann::json& j, const std::string& key, long least, long most);
+std::int64_t whole_in(const nlohmann::json& j, const std::string& key, std::int64_t least,
+                      std::int64_t most);
 
 } // namespace parsons::axes::profile_values

@@ -59,7 +59,7 @@ namespace {
 constexpr double kSecondsPerMinute = 60.0;
 // More edges than any run takes (9999 rev/min, 9999 edges a revolution, for 30 years): an
 // unending segment's edge index stays far from overflow.
-constexpr long kMostEdges = 1000000000000000000L;
+constexpr std::int64_t kMostEdges = 1000000000000000000LL;
 
 int sign_of(double x) {
     return x > 0 ? +1 : (x < 0 ? -1 : 0);
@@ -140,41 +140,41 @@ void Spindle::command_rpm(double rpm) {
 
 // ---- Encoder 32's edges ----
 
-bool Spindle::in_segment(long m) const {
+bool Spindle::in_segment(std::int64_t m) const {
     // The boundary rule: an edge on the segment's end belongs to the segment.
     return seg_.sense > 0   ? edge_revs(m) <= seg_.end_revs
            : seg_.sense < 0 ? edge_revs(m) >= seg_.end_revs
                             : false;
 }
 
-long Spindle::edges_left() const {
+std::int64_t Spindle::edges_left() const {
     if (seg_.sense == 0) {
         return 0;
     }
     if (std::isinf(seg_.end_revs)) {
-        return std::numeric_limits<long>::max();
+        return std::numeric_limits<std::int64_t>::max();
     }
     if (seg_.sense > 0) {
-        auto last = static_cast<long>(std::floor(seg_.end_revs * ppr_));
+        auto last = static_cast<std::int64_t>(std::floor(seg_.end_revs * ppr_));
         while (in_segment(last + 1)) {
             ++last;
         }
         while (!in_segment(last)) {
             --last;
         }
-        return std::max(0L, last - count_);
+        return std::max(std::int64_t{0}, last - count_);
     }
-    auto lowest = static_cast<long>(std::ceil(seg_.end_revs * ppr_));
+    auto lowest = static_cast<std::int64_t>(std::ceil(seg_.end_revs * ppr_));
     while (in_segment(lowest - 1)) {
         --lowest;
     }
     while (!in_segment(lowest)) {
         ++lowest;
     }
-    return std::max(0L, count_ - lowest + 1);
+    return std::max(std::int64_t{0}, count_ - lowest + 1);
 }
 
-double Spindle::edge_time(long m) const {
+double Spindle::edge_time(std::int64_t m) const {
     const int s = seg_.sense;
     const double d = std::max(0.0, s * (edge_revs(m) - seg_phi0_)) * kSecondsPerMinute;
     const double w = s * seg_rpm0_;
@@ -190,7 +190,7 @@ double Spindle::edge_time(long m) const {
     return std::clamp(seg_t0_ + tau, seg_t0_, seg_.end_t);
 }
 
-double Spindle::pulse_time(long n) const {
+double Spindle::pulse_time(std::int64_t n) const {
     if (seg_.sense == 0 || n < 1 || n > kMostEdges || n > edges_left()) {
         return kNever;
     }
@@ -203,11 +203,11 @@ void Spindle::plan_pulse() {
     next_time_ = next_is_pulse_ ? t : seg_.end_t;
 }
 
-long Spindle::pulses_by(double t) const {
+std::int64_t Spindle::pulses_by(double t) const {
     if (!next_is_pulse_ || t < next_time_) {
         return 0;
     }
-    const long left = edges_left();
+    const std::int64_t left = edges_left();
     if (t >= seg_.end_t) {
         return left; // every edge of the segment (unending: more than any run takes)
     }
@@ -216,7 +216,7 @@ long Spindle::pulses_by(double t) const {
     const double guess = seg_.sense > 0 ? std::floor(phi * ppr_) - static_cast<double>(count_)
                                         : static_cast<double>(count_) - std::ceil(phi * ppr_) + 1;
     const double most = static_cast<double>(std::min(left, kMostEdges));
-    long n = static_cast<long>(std::clamp(guess, 1.0, most));
+    std::int64_t n = static_cast<std::int64_t>(std::clamp(guess, 1.0, most));
     while (n < left && pulse_time(n + 1) <= t) {
         ++n;
     }
@@ -226,7 +226,7 @@ long Spindle::pulses_by(double t) const {
     return n;
 }
 
-DetectorEdge Spindle::take_edge(long m, double t) {
+DetectorEdge Spindle::take_edge(std::int64_t m, double t) {
     t_ = t;
     phi_ = edge_revs(m);
     count_ = seg_.sense > 0 ? m : m - 1;
@@ -234,7 +234,7 @@ DetectorEdge Spindle::take_edge(long m, double t) {
     return phases_at(count_);
 }
 
-DetectorEdge Spindle::skip_pulses(long n) {
+DetectorEdge Spindle::skip_pulses(std::int64_t n) {
     const double t = pulse_time(n);
     assert(t != kNever && "skip_pulses: fewer than n edges left in this segment");
     if (t == kNever) {
@@ -344,7 +344,7 @@ void Spindle::load(const nlohmann::json& j) {
     Spindle s = *this; // this spindle is changed only if the whole state is good
     s.t_ = exact(member(j, "t"));
     s.phi_ = exact(member(j, "revs"));
-    s.count_ = read<long>(j, "count");
+    s.count_ = read<std::int64_t>(j, "count");
     s.commanded_rpm_ = exact(member(j, "commanded_rpm"));
     s.seg_t0_ = exact(member(j, "t0"));
     s.seg_phi0_ = exact(member(j, "revs0"));

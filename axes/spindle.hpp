@@ -36,6 +36,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <optional>
 
 namespace parsons::axes {
@@ -62,17 +63,17 @@ public:
     // the segment ends first; how many come at or before t (exactly the n with pulse_time(n)
     // <= t; pulses_by(kNever) is all the segment's edges, LONG_MAX for a steady speed that never
     // ends); take the next n at once (the n-th is returned, as advance_to() would return it).
-    double pulse_time(long n) const;
-    long pulses_by(double t) const;
-    DetectorEdge skip_pulses(long n);
+    double pulse_time(std::int64_t n) const;
+    std::int64_t pulses_by(double t) const;
+    DetectorEdge skip_pulses(std::int64_t n);
 
     double time_s() const { return t_; }
-    long count() const { return count_; } // encoder edges, unwrapped (negative backwards)
-    double motor_revs() const;            // phi now
-    double motor_revs_at(double t) const; // t within the current segment
-    double rpm() const;                   // motor 27 now, signed
-    double rpm_at(double t) const;        // t within the current segment
-    bool at_rest() const;                 // standing, and commanded to stand
+    std::int64_t count() const { return count_; } // encoder edges, unwrapped (negative backwards)
+    double motor_revs() const;                    // phi now
+    double motor_revs_at(double t) const;         // t within the current segment
+    double rpm() const;                           // motor 27 now, signed
+    double rpm_at(double t) const;                // t within the current segment
+    bool at_rest() const;                         // standing, and commanded to stand
 
     // Gear unit 30 and head 31. mount() puts the head holding `tool` on (the motor at rest);
     // the tool then turns at that head's ratio. An unknown tool mounts nothing (tool() 0).
@@ -103,20 +104,22 @@ private:
     void plan_pulse();
     // Edge m stands at m / ppr motor revolutions; the n-th coming edge (n >= 1) is
     // edge_index(n).
-    double edge_revs(long m) const { return static_cast<double>(m) / ppr_; }
-    long edge_index(long n) const { return seg_.sense > 0 ? count_ + n : count_ - n + 1; }
-    bool in_segment(long m) const;
-    long edges_left() const; // edges still to come before the segment ends
-    double edge_time(long m) const;
+    double edge_revs(std::int64_t m) const { return static_cast<double>(m) / ppr_; }
+    std::int64_t edge_index(std::int64_t n) const {
+        return seg_.sense > 0 ? count_ + n : count_ - n + 1;
+    }
+    bool in_segment(std::int64_t m) const;
+    std::int64_t edges_left() const; // edges still to come before the segment ends
+    double edge_time(std::int64_t m) const;
     double revs_formula(double t) const; // the segment's quadratic, unclamped
-    DetectorEdge take_edge(long m, double t);
+    DetectorEdge take_edge(std::int64_t m, double t);
 
     SpindleSyncProfile profile_;
     double ppr_ = 24;
     double t_ = 0;
     double phi_ = 0; // motor revolutions now, unwrapped
     double commanded_rpm_ = 0;
-    long count_ = 0;
+    std::int64_t count_ = 0;
     int tool_ = 0;
     double ratio_ = 0;
     double next_time_ = kNever;

@@ -57,8 +57,8 @@ const std::array<SpindleNumber, 10> kSpindleNumbers = {{
     {"transfer_timeout_s", &SpindleSyncProfile::transfer_timeout_s, 0, true, 3600, false},
     {"chamfer_revs", &SpindleSyncProfile::chamfer_revs, 0, false, 20, false},
 }};
-constexpr long kLeastPulsesPerRev = 4;
-constexpr long kMostPulsesPerRev = 9999;
+constexpr std::int64_t kLeastPulsesPerRev = 4;
+constexpr std::int64_t kMostPulsesPerRev = 9999;
 constexpr double kLatestChangeS = 1e9;
 constexpr std::size_t kMostHeads = 20;
 constexpr double kMostRatio = 10;

@@ -17,7 +17,7 @@ public:
     std::optional<Card> next() override {
         std::array<std::uint8_t, kBinCardBytes> bytes{};
         in_.read(reinterpret_cast<char*>(bytes.data()), kBinCardBytes);
-        const auto got = static_cast<long>(in_.gcount());
+        const auto got = static_cast<std::int64_t>(in_.gcount());
         if (in_.bad()) {
             throw DeckError::in_file(file_, "read error");
         }
@@ -25,7 +25,7 @@ public:
             return std::nullopt;
         }
         ++card_;
-        const long base = (card_ - 1) * kBinCardBytes;
+        const std::int64_t base = (card_ - 1) * kBinCardBytes;
         if (got < kBinCardBytes) {
             throw DeckError::at_card_byte(
                 file_, card_, base + got,
@@ -37,7 +37,7 @@ public:
 private:
     std::istream& in_;
     std::string file_;
-    long card_ = 0;
+    std::int64_t card_ = 0;
 };
 
 class BinSink : public CardSink {
@@ -70,13 +70,13 @@ std::array<std::uint8_t, kBinCardBytes> bin_encode(const Card& card) {
 }
 
 Card bin_decode(std::span<const std::uint8_t, kBinCardBytes> bytes, const std::string& file,
-                long card_index, long byte_base) {
+                std::int64_t card_index, std::int64_t byte_base) {
     Card card;
     for (int c = 1; c <= kColumns; ++c) {
         const auto i = static_cast<std::size_t>(2 * (c - 1));
         if ((bytes[i] & 0x0F) != 0) {
             throw DeckError::at_card_byte(
-                file, card_index, byte_base + static_cast<long>(i),
+                file, card_index, byte_base + static_cast<std::int64_t>(i),
                 fmt::format("bits 3..0 of column {}'s first byte are {:#04x}, not zero: not an "
                             "IBM 1130 binary card (column binary? use --format cbn)",
                             c, bytes[i] & 0x0F));

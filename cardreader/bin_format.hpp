@@ -19,7 +19,7 @@ inline constexpr int kBinCardBytes = 160;
 
 std::array<std::uint8_t, kBinCardBytes> bin_encode(const Card& card);
 Card bin_decode(std::span<const std::uint8_t, kBinCardBytes> bytes, const std::string& file,
-                long card_index, long byte_base);
+                std::int64_t card_index, std::int64_t byte_base);
 
 std::unique_ptr<CardSource> make_bin_source(std::istream& in, std::string file);
 std::unique_ptr<CardSink> make_bin_sink(std::ostream& out, std::string file);

@@ -41,7 +41,7 @@ public:
     std::optional<Card> next() override {
         std::array<std::uint8_t, kCbnCardBytes> bytes{};
         in_.read(reinterpret_cast<char*>(bytes.data()), kCbnCardBytes);
-        const auto got = static_cast<long>(in_.gcount());
+        const auto got = static_cast<std::int64_t>(in_.gcount());
         if (in_.bad()) {
             throw DeckError::in_file(file_, "read error");
         }
@@ -49,7 +49,7 @@ public:
             return std::nullopt;
         }
         ++card_;
-        const long base = (card_ - 1) * kCbnCardBytes;
+        const std::int64_t base = (card_ - 1) * kCbnCardBytes;
         if (got < kCbnCardBytes) {
             throw DeckError::at_card_byte(
                 file_, card_, base + got,
@@ -61,7 +61,7 @@ public:
 private:
     std::istream& in_;
     std::string file_;
-    long card_ = 0;
+    std::int64_t card_ = 0;
 };
 
 class CbnSink : public CardSink {
@@ -95,7 +95,7 @@ std::array<std::uint8_t, kCbnCardBytes> cbn_encode(const Card& card) {
 }
 
 Card cbn_decode(std::span<const std::uint8_t, kCbnCardBytes> bytes, const std::string& file,
-                long card_index, long byte_base) {
+                std::int64_t card_index, std::int64_t byte_base) {
     if ((bytes[0] & kCardMark) == 0) {
         throw DeckError::at_card_byte(
             file, card_index, byte_base,
@@ -111,14 +111,14 @@ Card cbn_decode(std::span<const std::uint8_t, kCbnCardBytes> bytes, const std::s
         const int column = static_cast<int>(i / 2) + 1;
         if ((b & kCardMark) != 0) {
             throw DeckError::at_card_byte(
-                file, card_index, byte_base + static_cast<long>(i),
+                file, card_index, byte_base + static_cast<std::int64_t>(i),
                 fmt::format("card-start mark (bit 7) inside the card at column {}: the card is "
                             "short or the file is not column binary",
                             column));
         }
         if (!parity_ok(b)) {
             throw DeckError::at_card_byte(
-                file, card_index, byte_base + static_cast<long>(i),
+                file, card_index, byte_base + static_cast<std::int64_t>(i),
                 fmt::format("parity error in column {} (byte {:#04x} has even parity; column "
                             "binary uses odd parity)",
                             column, bytes[i]));

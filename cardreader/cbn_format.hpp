@@ -24,7 +24,7 @@ std::array<std::uint8_t, kCbnCardBytes> cbn_encode(const Card& card);
 // the error message. Throws DeckError on a missing card mark, a mark inside the card, or a
 // parity error.
 Card cbn_decode(std::span<const std::uint8_t, kCbnCardBytes> bytes, const std::string& file,
-                long card_index, long byte_base);
+                std::int64_t card_index, std::int64_t byte_base);
 
 std::unique_ptr<CardSource> make_cbn_source(std::istream& in, std::string file);
 std::unique_ptr<CardSink> make_cbn_sink(std::ostream& out, std::string file);

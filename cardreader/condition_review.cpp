@@ -27,7 +27,7 @@ bool passes(const ConditionOrder& c, const AxisOrder& o, Thousandths from) {
 } // namespace
 
 std::vector<ConditionFinding>
-ConditionReview::card(long index, const CardOrders& orders,
+ConditionReview::card(std::int64_t index, const CardOrders& orders,
                       const std::array<std::optional<Thousandths>, kAxisCount>& at) {
     std::vector<ConditionFinding> found;
     if (orders.kind == CardKind::sync || orders.kind == CardKind::tap) {

@@ -26,8 +26,8 @@
 namespace parsons::cardreader {
 
 struct ConditionFinding {
-    long card = 0;  // deck position the finding is on
-    int column = 0; // the column to look at on that card
+    std::int64_t card = 0; // deck position the finding is on
+    int column = 0;        // the column to look at on that card
     std::optional<Axis> axis;
     std::string message;
     bool deck_error = true; // false: the deck runs, and the machine stops (condition_not_met)
@@ -46,7 +46,7 @@ public:
     // The next card of the deck (index 1-based) and where each axis stood before it (unknown
     // after an unreadable card).
     std::vector<ConditionFinding>
-    card(long index, const CardOrders& orders,
+    card(std::int64_t index, const CardOrders& orders,
          const std::array<std::optional<Thousandths>, kAxisCount>& at);
     // A card that could not be read: conditions before it are not judged against it.
     void skip() { pending_.clear(); }
@@ -55,7 +55,7 @@ public:
 
 private:
     struct Pending {
-        long card = 0;
+        std::int64_t card = 0;
         int slot = 0;
         ConditionOrder condition;
     };

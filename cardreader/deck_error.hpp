@@ -16,15 +16,15 @@ public:
     // "deck.csv: empty file: no cards"
     static DeckError in_file(const std::string& file, const std::string& what);
     // "deck.csv:12: unknown axis 'table2'"
-    static DeckError at_line(const std::string& file, long line, const std::string& what);
+    static DeckError at_line(const std::string& file, std::int64_t line, const std::string& what);
     // "deck.txt:3:81: line is longer than 80 columns"
-    static DeckError at_line_column(const std::string& file, long line, int column,
+    static DeckError at_line_column(const std::string& file, std::int64_t line, int column,
                                     const std::string& what);
     // "deck.cbn: card 2, byte 161 (offset 0xa0): no card-start mark"
-    static DeckError at_card_byte(const std::string& file, long card, long byte_offset,
-                                  const std::string& what);
+    static DeckError at_card_byte(const std::string& file, std::int64_t card,
+                                  std::int64_t byte_offset, const std::string& what);
     // "deck.cbn: card 2, column 12: double punch (rows 3 and 5) in table stop"
-    static DeckError at_card_column(const std::string& file, long card, int column,
+    static DeckError at_card_column(const std::string& file, std::int64_t card, int column,
                                     const std::string& what);
 };
 

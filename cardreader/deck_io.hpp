@@ -47,11 +47,11 @@ std::optional<std::string> non_deck_kind(std::string_view head);
 class DeckFingerprint {
 public:
     void add(const Card& card);
-    long cards() const { return cards_; }
+    std::int64_t cards() const { return cards_; }
     std::string hex() const;
 
 private:
-    long cards_ = 0;
+    std::int64_t cards_ = 0;
     std::uint64_t hash_ = 0xcbf29ce484222325ULL;
 };
 

@@ -362,7 +362,7 @@ void DeckReviewer::review_sequence(const CardOrders& orders,
         fmt::format("{}position {} of stepping shaft 280 is answered by no running axis (still "
                     "waiting: {}): no impulse comes and the shaft never returns home",
                     after, first.stall_at, axis_list(waiting));
-    if (stalled == static_cast<long>(runs.size())) {
+    if (stalled == static_cast<std::int64_t>(runs.size())) {
         notes.push_back({std::nullopt, "sequence stall: " + what, true});
     } else {
         notes.push_back({std::nullopt, "sequence may stall, depending on which axis stops "

@@ -69,7 +69,7 @@ struct ReviewNote {
     // Condition, sync and tap cards (additions): the card and column the note is about (0: this
     // card, no column), and whether it is a deck error (`run` refuses the deck; show and check
     // exit 2).
-    long card = 0;
+    std::int64_t card = 0;
     int column = 0;
     bool deck_error = false;
 };
@@ -116,7 +116,7 @@ private:
     ConditionReview conditions_;
     SyncReview sync_;
     TapReview tap_;
-    long index_ = 0; // cards reviewed or skipped
+    std::int64_t index_ = 0; // cards reviewed or skipped
     std::optional<int> previous_number_;
     // The coast the previous card's stop leaves on each axis (0 where none is warned of): the
     // counters count it, so this card's check disagrees.

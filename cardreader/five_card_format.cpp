@@ -72,8 +72,8 @@ public:
 
     std::optional<Card> next() override {
         std::array<std::optional<Card>, kAxisCount> step{};
-        std::array<long, kAxisCount> where{};
-        long first_card = physical_ + 1;
+        std::array<std::int64_t, kAxisCount> where{};
+        std::int64_t first_card = physical_ + 1;
         for (int i = 0; i < kAxisCount; ++i) {
             auto card = cbn_->next();
             if (!card) {
@@ -117,7 +117,7 @@ private:
     }
 
     Card assemble(const std::array<std::optional<Card>, kAxisCount>& step,
-                  const std::array<long, kAxisCount>& where) const {
+                  const std::array<std::int64_t, kAxisCount>& where) const {
         Card out;
         const Card& table = *step.front();
         for (int col = 1; col <= kColumns; ++col) {
@@ -164,8 +164,8 @@ private:
     std::unique_ptr<CardSource> cbn_;
     std::string file_;
     Plan plan_;
-    long physical_ = 0;
-    long step_ = 0;
+    std::int64_t physical_ = 0;
+    std::int64_t step_ = 0;
 };
 
 class FiveCardSink : public CardSink {
@@ -188,7 +188,7 @@ private:
     std::unique_ptr<CardSink> cbn_;
     std::string file_;
     const CardLayout& layout_;
-    long step_ = 0;
+    std::int64_t step_ = 0;
 };
 
 } // namespace

@@ -43,6 +43,6 @@ inline bool all_digits(std::string_view s) {
 // Parses a d.ddd inch value (listing_format.cpp), or throws DeckError naming file, line and
 // `field` with the reason.
 Thousandths parse_inches(std::string_view text, std::string_view field, const std::string& file,
-                         long line);
+                         std::int64_t line);
 
 } // namespace parsons::cardreader::detail

@@ -26,7 +26,7 @@ using detail::trim;
 } // namespace
 
 Thousandths detail::parse_inches(std::string_view text, std::string_view field,
-                                 const std::string& file, long line) {
+                                 const std::string& file, std::int64_t line) {
     auto fail = [&](const std::string& why) {
         return DeckError::at_line(file, line, fmt::format("{} '{}': {}", field, text, why));
     };
@@ -64,7 +64,7 @@ struct ListingRow {
     AxisOrder order;
 };
 
-ListingRow parse_row(std::string_view text, const std::string& file, long line) {
+ListingRow parse_row(std::string_view text, const std::string& file, std::int64_t line) {
     auto fields = split_fields(text);
     if (fields.size() != kFieldCount) {
         throw DeckError::at_line(file, line,
@@ -146,7 +146,7 @@ constexpr std::size_t kConditionFieldCount = 8;
 
 // card,if,event,axis,sense,position,action,parameter
 std::pair<int, ConditionOrder> parse_condition_row(std::string_view text, const std::string& file,
-                                                   long line) {
+                                                   std::int64_t line) {
     auto fields = split_fields(text);
     auto fail = [&](const std::string& why) { return DeckError::at_line(file, line, why); };
     if (fields.size() != kConditionFieldCount) {
@@ -283,7 +283,7 @@ private:
     std::ostream& out_;
     std::string file_;
     const CardLayout& layout_;
-    long card_ = 0;
+    std::int64_t card_ = 0;
 };
 
 } // namespace

@@ -44,8 +44,8 @@ inline constexpr std::string_view kListingHeader =
 
 struct ListedCard {
     CardOrders orders;
-    long first_line = 0;
-    std::array<long, kAxisCount> axis_line{}; // the line each axis row came from
+    std::int64_t first_line = 0;
+    std::array<std::int64_t, kAxisCount> axis_line{}; // the line each axis row came from
 };
 
 class ListingReader {
@@ -64,7 +64,7 @@ private:
 
     std::istream& in_;
     std::string file_;
-    long line_ = 0;
+    std::int64_t line_ = 0;
     bool header_seen_ = false;
 };
 

@@ -15,7 +15,7 @@ using detail::split_fields;
 constexpr int kTravelDecimals = 5;
 
 // "0.00417" -> 417 (hundred-thousandths of an inch), or why not.
-int parse_travel(std::string_view text, const std::string& file, long line) {
+int parse_travel(std::string_view text, const std::string& file, std::int64_t line) {
     auto fail = [&](const std::string& why) {
         return DeckError::at_line(file, line, fmt::format("travel per pulse '{}': {}", text, why));
     };
@@ -40,7 +40,7 @@ int parse_travel(std::string_view text, const std::string& file, long line) {
 }
 
 int parse_number(std::string_view text, std::string_view what, int min, int max,
-                 const std::string& file, long line) {
+                 const std::string& file, std::int64_t line) {
     if (!all_digits(text) || text.size() > 4 || std::stoi(std::string(text)) < min ||
         std::stoi(std::string(text)) > max) {
         throw DeckError::at_line(file, line,
@@ -56,7 +56,7 @@ bool is_sync_row(std::string_view text) {
     return fields.size() >= 2 && fields[1] == "sync";
 }
 
-void read_sync_row(std::string_view text, const std::string& file, long line, int& number,
+void read_sync_row(std::string_view text, const std::string& file, std::int64_t line, int& number,
                    SyncOrder& order, SyncRowLines& lines) {
     const auto fields = split_fields(text);
     auto fail = [&](const std::string& why) { return DeckError::at_line(file, line, why); };
@@ -74,7 +74,7 @@ void read_sync_row(std::string_view text, const std::string& file, long line, in
         throw fail(fmt::format("card number '{}' is not 0..9999", fields[0]));
     }
     number = std::stoi(std::string(fields[0]));
-    auto again = [&](std::string_view what, long first) {
+    auto again = [&](std::string_view what, std::int64_t first) {
         return fail(fmt::format("card {} has a second {} (first on line {})", number, what, first));
     };
     if (fields[2] == "position") {
@@ -99,7 +99,7 @@ void read_sync_row(std::string_view text, const std::string& file, long line, in
                                    fields[3]));
         }
         const int travel = parse_travel(fields[4], file, line);
-        long& first = lines.speed.at(axis_index(*axis));
+        std::int64_t& first = lines.speed.at(axis_index(*axis));
         if (first != 0) {
             throw again(fmt::format("speed row for the {} axis", axis_name(*axis)), first);
         }

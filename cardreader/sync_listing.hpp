@@ -21,15 +21,15 @@ bool is_sync_row(std::string_view text);
 
 // Where each order of one sync card came from in the listing (0: not given yet).
 struct SyncRowLines {
-    long position = 0;
-    long loop = 0;
-    std::array<long, kAxisCount> speed{};
+    std::int64_t position = 0;
+    std::int64_t loop = 0;
+    std::array<std::int64_t, kAxisCount> speed{};
 };
 
 // Reads one sync row into `order`, its card number into `number`; throws DeckError naming file
 // and line for a bad row, or an order the card already has (`lines`, updated), or a loop
 // together with synchronisation (a loop card stands alone).
-void read_sync_row(std::string_view text, const std::string& file, long line, int& number,
+void read_sync_row(std::string_view text, const std::string& file, std::int64_t line, int& number,
                    SyncOrder& order, SyncRowLines& lines);
 
 // The listing rows of a sync card, without newlines: its position row, its speed rows in axis

@@ -28,7 +28,7 @@ int PressLimits::max_travel_per_pulse() const {
     return static_cast<int>(std::floor(drive_max_in_per_min / 60.0 / pulses * 1e5 + 1e-9));
 }
 
-std::vector<SyncFinding> SyncReview::card(long index, const CardOrders& orders) {
+std::vector<SyncFinding> SyncReview::card(std::int64_t index, const CardOrders& orders) {
     std::vector<SyncFinding> found;
     if (orders.kind == CardKind::sync) {
         if (!allowed_) {
@@ -51,7 +51,8 @@ std::vector<SyncFinding> SyncReview::card(long index, const CardOrders& orders) 
     return found;
 }
 
-void SyncReview::sync_card(long index, const CardOrders& orders, std::vector<SyncFinding>& found) {
+void SyncReview::sync_card(std::int64_t index, const CardOrders& orders,
+                           std::vector<SyncFinding>& found) {
     const SyncOrder& s = orders.sync;
     const double pulses = limits_.fastest_pulses_per_s();
     for (Axis a : kAxes) {
@@ -89,7 +90,8 @@ void SyncReview::sync_card(long index, const CardOrders& orders, std::vector<Syn
     pending_ = Pending{index, s};
 }
 
-void SyncReview::loop_card(long index, const CardOrders& orders, std::vector<SyncFinding>& found) {
+void SyncReview::loop_card(std::int64_t index, const CardOrders& orders,
+                           std::vector<SyncFinding>& found) {
     if (pending_) {
         found.push_back({pending_->card, extension_column(), std::nullopt,
                          fmt::format("a sync card with no motion card after it: loop card {} "
@@ -108,7 +110,7 @@ void SyncReview::loop_card(long index, const CardOrders& orders, std::vector<Syn
     }
 }
 
-void SyncReview::motion_card(long index, const CardOrders& orders,
+void SyncReview::motion_card(std::int64_t index, const CardOrders& orders,
                              std::vector<SyncFinding>& found) {
     if (!pending_) {
         return;

@@ -39,8 +39,8 @@ struct PressLimits {
 };
 
 struct SyncFinding {
-    long card = 0;  // deck position the finding is on
-    int column = 0; // the column to look at on that card
+    std::int64_t card = 0; // deck position the finding is on
+    int column = 0;        // the column to look at on that card
     std::optional<Axis> axis;
     std::string message;
 };
@@ -52,19 +52,19 @@ public:
                         PressLimits limits = {})
         : allowed_(allowed), profile_(std::move(profile)), limits_(limits) {}
     // The next readable card of the deck (index 1-based).
-    std::vector<SyncFinding> card(long index, const CardOrders& orders);
+    std::vector<SyncFinding> card(std::int64_t index, const CardOrders& orders);
     // A card that could not be read: a sync card before it is not judged against it.
     void skip() { pending_.reset(); }
     // The end of the deck: a sync card with no motion card after it.
     std::vector<SyncFinding> finish();
 
 private:
-    void sync_card(long index, const CardOrders& orders, std::vector<SyncFinding>& found);
-    void loop_card(long index, const CardOrders& orders, std::vector<SyncFinding>& found);
-    void motion_card(long index, const CardOrders& orders, std::vector<SyncFinding>& found);
+    void sync_card(std::int64_t index, const CardOrders& orders, std::vector<SyncFinding>& found);
+    void loop_card(std::int64_t index, const CardOrders& orders, std::vector<SyncFinding>& found);
+    void motion_card(std::int64_t index, const CardOrders& orders, std::vector<SyncFinding>& found);
 
     struct Pending {
-        long card = 0;
+        std::int64_t card = 0;
         SyncOrder order;
     };
     std::optional<Pending> pending_; // a sync card waiting for its motion card

@@ -16,7 +16,7 @@ constexpr std::size_t kTapFieldCount = 8;
 constexpr int kPitchDecimals = 5;
 
 // "0.05000" -> 5000 (hundred-thousandths of an inch per tool revolution), or why not.
-int parse_pitch(std::string_view text, const std::string& file, long line) {
+int parse_pitch(std::string_view text, const std::string& file, std::int64_t line) {
     auto fail = [&](const std::string& why) {
         return DeckError::at_line(file, line, fmt::format("pitch '{}': {}", text, why));
     };
@@ -42,7 +42,7 @@ int parse_pitch(std::string_view text, const std::string& file, long line) {
 }
 
 int parse_count(std::string_view text, std::string_view what, std::size_t digits, int max,
-                const std::string& file, long line) {
+                const std::string& file, std::int64_t line) {
     if (!all_digits(text) || text.size() > digits || std::stoi(std::string(text)) < 1 ||
         std::stoi(std::string(text)) > max) {
         throw DeckError::at_line(file, line, fmt::format("{} '{}' is not 1..{}", what, text, max));
@@ -57,7 +57,8 @@ bool is_tap_row(std::string_view text) {
     return fields.size() >= 2 && fields[1] == "tap";
 }
 
-std::pair<int, TapOrder> read_tap_row(std::string_view text, const std::string& file, long line) {
+std::pair<int, TapOrder> read_tap_row(std::string_view text, const std::string& file,
+                                      std::int64_t line) {
     const auto fields = split_fields(text);
     auto fail = [&](const std::string& why) { return DeckError::at_line(file, line, why); };
     if (fields.size() != kTapFieldCount) {

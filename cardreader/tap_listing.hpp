@@ -22,7 +22,8 @@ bool is_tap_row(std::string_view text);
 
 // Reads one tap row: its card number and its order. Throws DeckError naming file and line for
 // a bad row.
-std::pair<int, TapOrder> read_tap_row(std::string_view text, const std::string& file, long line);
+std::pair<int, TapOrder> read_tap_row(std::string_view text, const std::string& file,
+                                      std::int64_t line);
 
 // The listing row of a tap card, without a newline.
 std::string tap_row(const CardOrders& orders);

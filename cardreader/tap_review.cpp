@@ -58,7 +58,7 @@ int SpindleLimits::min_pitch(int rpm, double ratio) {
     return static_cast<int>(std::min<double>(least, kMaxPitch));
 }
 
-std::vector<TapFinding> TapReview::card(long index, const CardOrders& orders) const {
+std::vector<TapFinding> TapReview::card(std::int64_t index, const CardOrders& orders) const {
     std::vector<TapFinding> found;
     if (orders.kind != CardKind::tap) {
         return found;

@@ -51,8 +51,8 @@ struct SpindleLimits {
 };
 
 struct TapFinding {
-    long card = 0;  // deck position the finding is on
-    int column = 0; // the column to look at on that card
+    std::int64_t card = 0; // deck position the finding is on
+    int column = 0;        // the column to look at on that card
     std::optional<Axis> axis;
     std::string message;
 };
@@ -65,7 +65,7 @@ public:
         : allowed_(allowed), profile_(std::move(profile)), limits_(std::move(limits)) {}
     // The next readable card of the deck (index 1-based): findings on a tap card, none on any
     // other card.
-    std::vector<TapFinding> card(long index, const CardOrders& orders) const;
+    std::vector<TapFinding> card(std::int64_t index, const CardOrders& orders) const;
 
 private:
     bool allowed_;

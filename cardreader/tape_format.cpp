@@ -17,7 +17,7 @@ std::uint8_t data_frame(ColumnWord six) {
 }
 
 // "frame 17, channel 7 (card 1, column 9, rows 12-3)"
-std::string where(long frame, int channel, long card, int data_index) {
+std::string where(std::int64_t frame, int channel, std::int64_t card, int data_index) {
     const int column = data_index / 2 + 1;
     return fmt::format("frame {}, channel {} (card {}, column {}, rows {})", frame, channel, card,
                        column, data_index % 2 == 0 ? "12-3" : "4-9");
@@ -104,8 +104,8 @@ private:
 
     std::istream& in_;
     std::string file_;
-    long frame_ = 0; // frames read so far; the last one read is frame_ (1-based)
-    long card_ = 0;
+    std::int64_t frame_ = 0; // frames read so far; the last one read is frame_ (1-based)
+    std::int64_t card_ = 0;
 };
 
 class TapeSink : public CardSink {

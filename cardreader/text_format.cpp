@@ -201,7 +201,7 @@ private:
     std::streambuf& buf_;
     std::string file_;
     KeypunchCode code_;
-    long line_ = 0;
+    std::int64_t line_ = 0;
     bool ended_ = false;
 };
 
@@ -257,7 +257,7 @@ private:
     std::ostream& out_;
     std::string file_;
     KeypunchCode code_;
-    long card_ = 0;
+    std::int64_t card_ = 0;
 };
 
 } // namespace

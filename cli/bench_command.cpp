@@ -199,8 +199,8 @@ constexpr std::array<Shuttle, 5> kTenInchMoves = {{{0, 9999, 3, 0b00001},
                                                    {500, 500, 3, 0b01000},
                                                    {500, 500, 3, 0b10000}}};
 
-long impulses_of(const relaylogic::RunResult& r) {
-    long n = 0;
+std::int64_t impulses_of(const relaylogic::RunResult& r) {
+    std::int64_t n = 0;
     for (const auto& a : r.axes) {
         n += a.impulses;
     }
@@ -310,11 +310,11 @@ std::string cpu_model() {
 }
 
 // Value-change lines of a VCD file: every trace event is one.
-long vcd_events(const std::string& path) {
+std::int64_t vcd_events(const std::string& path) {
     std::ifstream in(path);
     std::string line;
     bool body = false;
-    long n = 0;
+    std::int64_t n = 0;
     while (std::getline(in, line)) {
         if (!body) {
             body = line.rfind("$enddefinitions", 0) == 0;
@@ -367,7 +367,7 @@ ExitCode run_bench(const BenchOptions& o) {
     RunRequest impulse_level = quiet_run(path("long.cbn"));
     impulse_level.impulse_level = true;
     const Timed il = time_run(impulse_level, o.runs, stages);
-    const long impulses = impulses_of(il.result);
+    const std::int64_t impulses = impulses_of(il.result);
     j["impulse_level"] = {{"cards", o.long_cards},
                           {"impulses", impulses},
                           {"seconds", il.seconds},
@@ -394,9 +394,9 @@ ExitCode run_bench(const BenchOptions& o) {
     RunRequest traced = quiet_run(path("trace.cbn"));
     traced.trace = path("trace.vcd");
     const Timed tr = time_run(traced, o.runs, stages);
-    const long events = vcd_events(traced.trace);
+    const std::int64_t events = vcd_events(traced.trace);
     const double mb = static_cast<double>(fs::file_size(traced.trace)) / 1e6;
-    const long trace_impulses = impulses_of(tr.result);
+    const std::int64_t trace_impulses = impulses_of(tr.result);
     j["vcd"] = {{"cards", o.trace_cards},
                 {"impulses", trace_impulses},
                 {"events", events},

@@ -38,7 +38,7 @@ struct CheckFlags {
 };
 
 // One finding for --json: what the text line says, with its kind and the card it is on.
-Json finding(long card, const Json& number, std::string_view kind, std::optional<Axis> axis,
+Json finding(std::int64_t card, const Json& number, std::string_view kind, std::optional<Axis> axis,
              const std::string& message) {
     return {{"card", card},
             {"number", number},
@@ -54,15 +54,15 @@ ExitCode run_check(const CheckFlags& f) {
     const CardLayout& layout = *deck.options().layout;
     DeckReviewer reviewer = deck_reviewer(profile);
     std::array<double, kAxisCount> at{};
-    long index = 0;
-    long passing = 0;
-    long warnings = 0;
-    long stops = 0; // findings the machine will stop on
-    long bad = 0;
+    std::int64_t index = 0;
+    std::int64_t passing = 0;
+    std::int64_t warnings = 0;
+    std::int64_t stops = 0; // findings the machine will stop on
+    std::int64_t bad = 0;
     const bool text = !f.json;
     Json findings = Json::array();
     std::optional<std::string> first_deck_error;
-    long deck_errors = 0;
+    std::int64_t deck_errors = 0;
     // A condition, sync or tap card's deck error (additions): `run` refuses the deck, so check
     // exits 2.
     auto deck_error = [&](const ReviewNote& n, const Json& number) {

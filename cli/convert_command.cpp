@@ -61,7 +61,7 @@ ExitCode run_convert(const ConvertFlags& f) {
     const auto out_options = deck_options(f.output, f.to, f.deck, "--to");
     OutputFile out(f.output);
     auto sink = cardreader::open_card_sink(out.stream(), out_options);
-    long cards = 0;
+    std::int64_t cards = 0;
     while (auto card = deck.cards().next()) {
         sink->write(*card);
         ++cards;

@@ -318,7 +318,7 @@ std::vector<cardreader::Axis> apply_limits(axes::MachineProfile& profile,
 }
 
 cardreader::DeckFingerprint fingerprint_deck(const std::string& path, const DeckFlags& flags,
-                                             long max_cards) {
+                                             std::int64_t max_cards) {
     InputDeck deck(path, flags);
     cardreader::DeckFingerprint fingerprint;
     while (max_cards < 0 || fingerprint.cards() < max_cards) {

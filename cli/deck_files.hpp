@@ -96,6 +96,6 @@ std::vector<int> tool_numbers(const axes::MachineProfile& profile);
 
 // The fingerprint of the first `max_cards` cards of a deck (all of them when negative).
 cardreader::DeckFingerprint fingerprint_deck(const std::string& path, const DeckFlags& flags,
-                                             long max_cards = -1);
+                                             std::int64_t max_cards = -1);
 
 } // namespace parsons::cli

@@ -119,7 +119,7 @@ ExitCode run_press_demo(const std::string& dir) {
                    p.at("collision").is_null()
                        ? std::string("no collision")
                        : fmt::format("COLLISION in cycle {} at {:.2f} s, crank {:.1f} deg",
-                                     p.at("collision").at("cycle").get<long>(),
+                                     p.at("collision").at("cycle").get<std::int64_t>(),
                                      p.at("collision").at("machine_seconds").get<double>(),
                                      p.at("collision").at("crank_angle_deg").get<double>()));
         if (code != ExitCode::ok && code != ExitCode::machine_stop) {
@@ -183,20 +183,22 @@ ExitCode run_tapping_demo(const std::string& dir) {
         fmt::print("  {} (ratio {}): {} holes, {}, {} head exchange{}, {} ratio{} transferred; "
                    "every hole within tolerance\n",
                    deck, name, r.block.at("holes").size(), worst_of(r.block),
-                   r.block.at("head_exchanges").get<long>(),
-                   r.block.at("head_exchanges").get<long>() == 1 ? "" : "s",
-                   r.block.at("transfers").get<long>(),
-                   r.block.at("transfers").get<long>() == 1 ? "" : "s");
+                   r.block.at("head_exchanges").get<std::int64_t>(),
+                   r.block.at("head_exchanges").get<std::int64_t>() == 1 ? "" : "s",
+                   r.block.at("transfers").get<std::int64_t>(),
+                   r.block.at("transfers").get<std::int64_t>() == 1 ? "" : "s");
     }
     const std::string deck = dir + "/tapping-transferred.csv";
     const TappingRun stale =
         run_tapping(deck, dir + "/tapping-stale-ratio.report.json", {"stale-ratio:1"});
-    if (stale.code != ExitCode::machine_stop || stale.block.at("holes_flagged").get<long>() == 0) {
+    if (stale.code != ExitCode::machine_stop ||
+        stale.block.at("holes_flagged").get<std::int64_t>() == 0) {
         throw std::logic_error("the demo's stale-ratio run did not cut the wrong pitch it should");
     }
     fmt::print("  {} --fault stale-ratio:1 (head exchange 1 sends no ratio): {} of {} holes "
                "flagged\n",
-               deck, stale.block.at("holes_flagged").get<long>(), stale.block.at("holes").size());
+               deck, stale.block.at("holes_flagged").get<std::int64_t>(),
+               stale.block.at("holes").size());
     for (const auto& h : stale.block.at("holes")) {
         if (!h.at("flagged").get<bool>() || !h.at("measured").get<bool>()) {
             continue;

@@ -82,7 +82,7 @@ void GcodePathWriter::on_motion(double seconds, const std::array<double, 5>& rea
     fixture_ = {real_in[3], real_in[4]};
 }
 
-void GcodePathWriter::on_card(double, long index, const cardreader::CardOrders& orders) {
+void GcodePathWriter::on_card(double, std::int64_t index, const cardreader::CardOrders& orders) {
     flush_piece();
     pending_ += fmt::format("(card {}, number {:04}", index, orders.number);
     if (fixture_[0] != 0 || fixture_[1] != 0) {

@@ -36,11 +36,11 @@ public:
     void on_signal(double seconds, relaylogic::SignalId id, std::uint32_t old_value,
                    std::uint32_t new_value) override;
     void on_motion(double seconds, const std::array<double, 5>& real_in) override;
-    void on_card(double seconds, long index, const cardreader::CardOrders& orders) override;
+    void on_card(double seconds, std::int64_t index, const cardreader::CardOrders& orders) override;
     void on_stop(double seconds, const relaylogic::StopInfo& stop) override;
     void on_finish(double seconds) override;
 
-    long lines_written() const { return moves_; }
+    std::int64_t lines_written() const { return moves_; }
 
 private:
     struct Point {
@@ -58,7 +58,7 @@ private:
     std::array<double, 2> fixture_{}; // swivel and tilt screws now
     std::string pending_;             // comments to write before the next move
     std::string stop_;
-    long moves_ = 0;
+    std::int64_t moves_ = 0;
     bool finished_ = false;
 };
 

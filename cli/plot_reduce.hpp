@@ -20,7 +20,7 @@ namespace parsons::cli::plot {
 // point, or the first point of a new bucket (returns true then).
 template <class Bucket, class Point>
 bool add_to_buckets(std::vector<Bucket>& buckets, const Point& p, double bucket_s) {
-    const long slot = static_cast<long>(std::floor(p.t / bucket_s));
+    const std::int64_t slot = static_cast<std::int64_t>(std::floor(p.t / bucket_s));
     if (buckets.empty() || slot != buckets.back().slot) {
         buckets.push_back(Bucket{slot, p, p, p, p});
         return true;
@@ -64,7 +64,7 @@ std::vector<Bucket> widened(const std::vector<Bucket>& buckets, double bucket_s)
     std::vector<Bucket> merged;
     merged.reserve(buckets.size() / 2 + 1);
     for (const Bucket& b : buckets) {
-        const long slot = static_cast<long>(std::floor(b.first.t / bucket_s));
+        const std::int64_t slot = static_cast<std::int64_t>(std::floor(b.first.t / bucket_s));
         if (merged.empty() || merged.back().slot != slot) {
             Bucket m = b;
             m.slot = slot;
@@ -110,7 +110,7 @@ public:
 
 private:
     struct Bucket {
-        long slot = 0;
+        std::int64_t slot = 0;
         Point first, low, high, last;
     };
     std::vector<Bucket> buckets_;

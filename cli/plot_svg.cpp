@@ -111,7 +111,8 @@ void PlotSvgRecorder::on_motion(double seconds, const std::array<double, 5>& rea
     }
 }
 
-void PlotSvgRecorder::on_card(double seconds, long index, const cardreader::CardOrders& orders) {
+void PlotSvgRecorder::on_card(double seconds, std::int64_t index,
+                              const cardreader::CardOrders& orders) {
     cards_.push_back(CardMark{seconds, index, orders.number});
     press_.card(seconds, orders);
     spindle_.card(seconds, orders);

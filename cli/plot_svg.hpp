@@ -51,7 +51,7 @@ public:
     void on_signal(double seconds, relaylogic::SignalId id, std::uint32_t old_value,
                    std::uint32_t new_value) override;
     void on_motion(double seconds, const std::array<double, 5>& real_in) override;
-    void on_card(double seconds, long index, const cardreader::CardOrders& orders) override;
+    void on_card(double seconds, std::int64_t index, const cardreader::CardOrders& orders) override;
     void on_stop(double seconds, const relaylogic::StopInfo& stop) override;
     void on_condition(double seconds, const relaylogic::ConditionEvent& event) override;
     void on_finish(double seconds) override;
@@ -78,7 +78,7 @@ public:
 
 private:
     struct Bucket {
-        long slot = 0;
+        std::int64_t slot = 0;
         Point first, low, high, last;
     };
     struct AxisTrace {
@@ -95,7 +95,7 @@ private:
     };
     struct CardMark {
         double t = 0;
-        long index = 0;
+        std::int64_t index = 0;
         int number = 0;
     };
     enum class Role : std::uint8_t { none, speed_switch, motor, press, spindle };

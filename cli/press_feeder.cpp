@@ -151,7 +151,7 @@ GeneratedPressJob generate_press_job(decks::PressFeederOptions options,
     g.job.options = options;
     g.job.variant = options.speed_only ? "speed-only" : "position+speed";
     g.job.cycle_card = g.deck.cycle_card;
-    g.job.deck_cards = static_cast<long>(g.deck.cards.size());
+    g.job.deck_cards = static_cast<std::int64_t>(g.deck.cards.size());
     if (output.empty()) {
         return g;
     }

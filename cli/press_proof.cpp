@@ -29,7 +29,7 @@ void PressProof::on_motion(double t, const std::array<double, 5>& real) {
     check(t);
 }
 
-void PressProof::on_card(double t, long /*index*/, const cardreader::CardOrders& orders) {
+void PressProof::on_card(double t, std::int64_t /*index*/, const cardreader::CardOrders& orders) {
     advance(t);
     if (orders.kind == cardreader::CardKind::motion && orders.number == cycle_card_) {
         ++cycle_;
@@ -82,7 +82,7 @@ void PressProof::check(double t) {
         last_t_ = t;
         last_theta_ = press_.theta_deg();
     }
-    const long cycle = std::max(cycle_, 1L);
+    const std::int64_t cycle = std::max(cycle_, std::int64_t{1});
     const double c = clearance(h, safe_, edge_, x_);
     if (static_cast<std::size_t>(cycle) > per_cycle_.size()) {
         per_cycle_.resize(static_cast<std::size_t>(cycle), std::numeric_limits<double>::infinity());

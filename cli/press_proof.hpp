@@ -36,8 +36,8 @@ public:
                int cycle_card);
 
     struct Instant {
-        long cycle = 0; // the pass of the loop (1 = the first)
-        double t = 0;   // machine seconds
+        std::int64_t cycle = 0; // the pass of the loop (1 = the first)
+        double t = 0;           // machine seconds
         double crank_deg = 0;
         double feeder_x_in = 0;
         double die_height_in = 0;
@@ -52,10 +52,10 @@ public:
         advance(t);
     }
     void on_motion(double t, const std::array<double, 5>& real) override;
-    void on_card(double t, long index, const cardreader::CardOrders& orders) override;
+    void on_card(double t, std::int64_t index, const cardreader::CardOrders& orders) override;
     void on_finish(double t) override { advance(t); }
 
-    long cycles() const { return cycle_; }
+    std::int64_t cycles() const { return cycle_; }
     const Instant& closest() const { return closest_; }                    // the smallest clearance
     const std::optional<Instant>& collision() const { return collision_; } // the first
     std::optional<double> min_margin_s() const { return min_margin_s_; }
@@ -76,7 +76,7 @@ private:
     double safe_;
     int cycle_card_;
     std::pair<double, double> low_angles_; // the die below safe height between these angles
-    long cycle_ = 0;
+    std::int64_t cycle_ = 0;
     double x_ = 0;
     bool started_ = false;
     bool inside_ = false;

@@ -28,7 +28,7 @@ ExitCode run_punch(const PunchFlags& f) {
     const auto out_options = deck_options(f.output, f.to, f.deck, "--to");
     OutputFile out(f.output);
     auto sink = cardreader::open_card_sink(out.stream(), out_options);
-    long cards = 0;
+    std::int64_t cards = 0;
     while (auto card = listing.cards().next()) {
         sink->write(*card);
         ++cards;

@@ -243,7 +243,7 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
     }
     if (r.tapping) {
         const relaylogic::TappingResult& t = *r.tapping;
-        const long done =
+        const std::int64_t done =
             std::count_if(t.holes.begin(), t.holes.end(),
                           [](const relaylogic::HoleRecord& h) { return h.completed; });
         line(fmt::format(

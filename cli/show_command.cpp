@@ -61,7 +61,7 @@ std::string sequence_text(SequencePattern p) {
 }
 
 // A condition card (an addition after EP 0640901), one line per condition.
-void print_condition_card(long index, const CardOrders& o) {
+void print_condition_card(std::int64_t index, const CardOrders& o) {
     fmt::print("card {} · card number {:04} (columns 77-80) · CONDITION CARD (column 76 row 1; "
                "an addition after EP 0640901, Siemens)\n",
                index, o.number);
@@ -80,7 +80,7 @@ void print_condition_card(long index, const CardOrders& o) {
     }
 }
 
-Json condition_card_json(long index, const CardOrders& o) {
+Json condition_card_json(std::int64_t index, const CardOrders& o) {
     Json conditions = Json::array();
     for (int i = 0; i < o.condition_count; ++i) {
         const ConditionOrder& c = o.conditions.at(static_cast<std::size_t>(i));
@@ -144,7 +144,7 @@ std::vector<std::array<std::string, 3>> sync_card_fields(const CardOrders& o,
     return rows;
 }
 
-void print_sync_card(long index, const CardOrders& o, const CardLayout& layout) {
+void print_sync_card(std::int64_t index, const CardOrders& o, const CardLayout& layout) {
     fmt::print("card {} · card number {:04} (columns 77-80) · SYNC CARD (column 76 row 2; an "
                "addition after EP 0436887, Mitsubishi)\n",
                index, o.number);
@@ -154,7 +154,7 @@ void print_sync_card(long index, const CardOrders& o, const CardLayout& layout) 
     }
 }
 
-Json sync_card_json(long index, const CardOrders& o) {
+Json sync_card_json(std::int64_t index, const CardOrders& o) {
     const SyncOrder& s = o.sync;
     Json speed = Json::object();
     for (Axis a : kAxes) {
@@ -215,7 +215,7 @@ std::vector<std::array<std::string, 3>> tap_card_fields(const CardOrders& o,
     return rows;
 }
 
-void print_tap_card(long index, const CardOrders& o, const CardLayout& layout,
+void print_tap_card(std::int64_t index, const CardOrders& o, const CardLayout& layout,
                     const axes::MachineProfile& profile) {
     fmt::print("card {} · card number {:04} (columns 77-80) · TAP CARD (column 76 row 3; an "
                "addition after EP 0360190, Mitsubishi)\n",
@@ -234,7 +234,7 @@ void print_tap_card(long index, const CardOrders& o, const CardLayout& layout,
     }
 }
 
-Json tap_card_json(long index, const CardOrders& o) {
+Json tap_card_json(std::int64_t index, const CardOrders& o) {
     const TapOrder& t = o.tap;
     return {{"index", index},
             {"number", o.number},
@@ -248,7 +248,7 @@ Json tap_card_json(long index, const CardOrders& o) {
             {"warnings", Json::array()}};
 }
 
-void print_card(long index, const DecodeResult& decoded, const CardLayout& layout,
+void print_card(std::int64_t index, const DecodeResult& decoded, const CardLayout& layout,
                 const axes::MachineProfile& profile) {
     const CardOrders& o = decoded.orders;
     if (o.kind == CardKind::condition && decoded) {
@@ -287,7 +287,7 @@ void print_card(long index, const DecodeResult& decoded, const CardLayout& layou
 
 // The card as print_card shows it, for --json. A slow-down the layout has no field for is
 // null, as a blank one is; slow_down_fields says how many the layout gives the axis.
-Json card_json(long index, const CardOrders& o, const CardLayout& layout) {
+Json card_json(std::int64_t index, const CardOrders& o, const CardLayout& layout) {
     if (o.kind == CardKind::condition) {
         return condition_card_json(index, o);
     }
@@ -345,10 +345,10 @@ ExitCode run_show(const ShowFlags& f) {
     Json cards = Json::array();
 
     DeckReviewer reviewer = deck_reviewer(profile);
-    long index = 0;
-    long notes = 0;
+    std::int64_t index = 0;
+    std::int64_t notes = 0;
     std::optional<std::string> first_deck_error;
-    long deck_errors = 0;
+    std::int64_t deck_errors = 0;
     // A condition, sync or tap card's deck error (additions): printed where it is found, refused
     // at the end.
     auto deck_error = [&](const ReviewNote& n) {
@@ -361,7 +361,7 @@ ExitCode run_show(const ShowFlags& f) {
         }
     };
     std::optional<std::string> first_bad;
-    long bad_cards = 0;
+    std::int64_t bad_cards = 0;
     while (auto card = deck.cards().next()) {
         ++index;
         DecodeResult decoded = decode(*card, layout);

@@ -38,7 +38,7 @@ GeneratedTappingJob generate_tapping_job(const decks::TappingOptions& options,
     job.tolerance_percent = options.tolerance_percent;
     job.chamfer_revs = g.profile.spindle.chamfer_revs;
     job.holes = g.deck.holes;
-    job.deck_cards = static_cast<long>(g.deck.cards.size());
+    job.deck_cards = static_cast<std::int64_t>(g.deck.cards.size());
     if (output.empty()) {
         return g;
     }

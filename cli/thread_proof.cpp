@@ -134,8 +134,8 @@ ThreadMeasure measure_thread(const std::vector<relaylogic::TapSample>& samples,
     return m;
 }
 
-long ThreadProof::flagged() const {
-    return static_cast<long>(
+std::int64_t ThreadProof::flagged() const {
+    return static_cast<std::int64_t>(
         std::count_if(holes.begin(), holes.end(), [](const ProvedHole& h) { return h.flagged; }));
 }
 

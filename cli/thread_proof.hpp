@@ -76,7 +76,7 @@ struct ThreadProof {
     double chamfer_revs = 0;
     std::optional<double> tolerance_override; // --thread-tolerance
     std::vector<ProvedHole> holes;
-    long flagged() const;
+    std::int64_t flagged() const;
 };
 
 // Every hole of the run against the job. tolerance_percent: --thread-tolerance (else each hole's

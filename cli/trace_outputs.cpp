@@ -63,11 +63,20 @@ void OutputBuffer::put_fixed(double v, int decimals) {
     }
     constexpr std::size_t kMax = 64;
     char* p = claim(kMax);
+#if defined(__cpp_lib_to_chars) && __cpp_lib_to_chars >= 201611L
     auto r = std::to_chars(p, p + kMax, v, std::chars_format::fixed, decimals);
     if (r.ec != std::errc{}) {
         r = std::to_chars(p, p + kMax, v, std::chars_format::general, 17);
     }
     commit(r.ptr);
+#else
+    // No floating-point to_chars (the WebAssembly build's libc++): fmt rounds the same, exactly.
+    auto r = fmt::format_to_n(p, kMax, "{:.{}f}", v, decimals);
+    if (r.size > kMax) {
+        r = fmt::format_to_n(p, kMax, "{:.17g}", v);
+    }
+    commit(r.out);
+#endif
 }
 
 void OutputBuffer::flush() {
@@ -291,7 +300,7 @@ void VcdWriter::put_comment(std::string_view text) {
     buf_.put(" $end\n");
 }
 
-void VcdWriter::on_card(double seconds, long index, const cardreader::CardOrders& orders) {
+void VcdWriter::on_card(double seconds, std::int64_t index, const cardreader::CardOrders& orders) {
     if (!header_written_) {
         write_header();
     }
@@ -355,7 +364,8 @@ void EventsJsonlWriter::on_signal(double seconds, SignalId id, std::uint32_t old
     buf_.put("}\n");
 }
 
-void EventsJsonlWriter::on_card(double seconds, long index, const cardreader::CardOrders& orders) {
+void EventsJsonlWriter::on_card(double seconds, std::int64_t index,
+                                const cardreader::CardOrders& orders) {
     buf_.put("{\"t\":");
     buf_.put_fixed(seconds, 6);
     buf_.put(",\"event\":\"card\",\"index\":");

@@ -87,7 +87,7 @@ public:
     void on_start() override;
     void on_signal(double seconds, relaylogic::SignalId id, std::uint32_t old_value,
                    std::uint32_t new_value) override;
-    void on_card(double seconds, long index, const cardreader::CardOrders& orders) override;
+    void on_card(double seconds, std::int64_t index, const cardreader::CardOrders& orders) override;
     void on_stop(double seconds, const relaylogic::StopInfo& stop) override;
     void on_condition(double seconds, const relaylogic::ConditionEvent& event) override;
     void on_finish(double seconds) override;
@@ -139,7 +139,7 @@ public:
     void on_signal_defined(const relaylogic::SignalInfo& info, std::uint32_t initial) override;
     void on_signal(double seconds, relaylogic::SignalId id, std::uint32_t old_value,
                    std::uint32_t new_value) override;
-    void on_card(double seconds, long index, const cardreader::CardOrders& orders) override;
+    void on_card(double seconds, std::int64_t index, const cardreader::CardOrders& orders) override;
     void on_stop(double seconds, const relaylogic::StopInfo& stop) override;
     void on_condition(double seconds, const relaylogic::ConditionEvent& event) override;
     void on_finish(double seconds) override;

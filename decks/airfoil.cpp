@@ -39,8 +39,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
@@ -277,13 +279,13 @@ std::pair<SplineSurface, SplineSurface> cut_at_leading_edge(const std::vector<Kn
 
 struct FilePoint {
     Eigen::Vector2d p;
-    long line;
+    std::int64_t line;
 };
 
 struct ParsedFile {
     std::string name;
-    long name_line = 0;
-    long last_line = 0;
+    std::int64_t name_line = 0;
+    std::int64_t last_line = 0;
     std::vector<FilePoint> points; // every numeric line in file order
 };
 
@@ -327,14 +329,32 @@ Number parse_number(const std::string& token, double& value) {
     if (first != last && *first == '+') {
         ++first;
     }
+#if defined(__cpp_lib_to_chars) && __cpp_lib_to_chars >= 201611L
     const auto [end, ec] = std::from_chars(first, last, value);
     if (end != last || first == last) {
         return Number::not_a_number;
     }
     return ec == std::errc() ? Number::ok : Number::out_of_range;
+#else
+    // A standard library without floating-point from_chars (the WebAssembly build's libc++):
+    // strtod in the C locale parsons never leaves, refusing what from_chars would not read
+    // (hexadecimal, a second sign, blanks).
+    const std::string digits(first, last);
+    if (digits.empty() || digits.front() == '+' ||
+        digits.find_first_of("xX \t\r\n\v\f") != std::string::npos) {
+        return Number::not_a_number;
+    }
+    errno = 0;
+    char* end = nullptr;
+    value = std::strtod(digits.c_str(), &end);
+    if (end != digits.c_str() + digits.size()) {
+        return Number::not_a_number;
+    }
+    return errno == ERANGE ? Number::out_of_range : Number::ok;
+#endif
 }
 
-FilePoint parse_pair(const std::string& path, long line, const std::string& text) {
+FilePoint parse_pair(const std::string& path, std::int64_t line, const std::string& text) {
     std::vector<std::string> tokens;
     for (std::size_t pos = text.find_first_not_of(kBlank); pos != std::string::npos;) {
         const auto end = text.find_first_of(kBlank, pos);
@@ -371,7 +391,7 @@ ParsedFile parse_file(const std::string& path, std::string_view bytes) {
     const auto lines = split_lines(bytes);
     for (std::size_t k = 0; k < lines.size(); ++k) {
         const auto text = trim(lines[k]);
-        const long line = static_cast<long>(k) + 1;
+        const std::int64_t line = static_cast<std::int64_t>(k) + 1;
         if (text.empty()) {
             continue;
         }
@@ -420,8 +440,8 @@ std::vector<FilePoint> selig_loop(const std::string& path, const ParsedFile& fil
                         "coordinate lines follow",
                         upper, lower, upper + lower, follow));
     }
-    std::vector<FilePoint> loop(pts.rend() - 1 - static_cast<long>(upper), pts.rend() - 1);
-    loop.insert(loop.end(), pts.begin() + 1 + static_cast<long>(upper), pts.end());
+    std::vector<FilePoint> loop(pts.rend() - 1 - static_cast<std::int64_t>(upper), pts.rend() - 1);
+    loop.insert(loop.end(), pts.begin() + 1 + static_cast<std::int64_t>(upper), pts.end());
     return loop;
 }
 

@@ -21,7 +21,7 @@ constexpr double kCounterMaxIn = 9.999;
 // lowest speed (inches).
 constexpr double kCornerApproachIn = 0.05;
 // More cards than this is a tolerance too fine for the program, not a deck anyone would punch.
-constexpr long kMaxCards = 50000;
+constexpr std::int64_t kMaxCards = 50000;
 
 const std::array<const char*, 3> kAxisLetters = {"X (table)", "Y (cross slide)",
                                                  "Z (vertical slide)"};
@@ -38,9 +38,10 @@ std::vector<Vector3d> stations_of(const GcodeMove& move, double sagitta) {
     if (sagitta < r) {
         step = std::min(step, 2 * std::acos(1 - sagitta / r));
     }
-    const long n = std::max(1L, static_cast<long>(std::ceil(std::abs(move.sweep_rad) / step)));
+    const std::int64_t n = std::max(
+        std::int64_t{1}, static_cast<std::int64_t>(std::ceil(std::abs(move.sweep_rad) / step)));
     std::vector<Vector3d> out;
-    for (long i = 1; i <= n; ++i) {
+    for (std::int64_t i = 1; i <= n; ++i) {
         out.push_back(i == n ? move.to : point_on(move, static_cast<double>(i) / n));
     }
     return out;
@@ -148,7 +149,7 @@ GcodeDeck make_gcode_deck(const GcodeProgram& program, const GcodeJobOptions& o,
     // The design stations, the program's frame, each with the line it comes from.
     struct Design {
         Vector3d at;
-        long line;
+        std::int64_t line;
         int spindle;
     };
     std::vector<Design> design{{Vector3d::Zero(), 0, program.moves.front().spindle}};
@@ -163,8 +164,8 @@ GcodeDeck make_gcode_deck(const GcodeProgram& program, const GcodeJobOptions& o,
     // The work zero, and the counters' range.
     Vector3d lo = Vector3d::Zero();
     Vector3d hi = Vector3d::Zero();
-    std::array<long, 3> lo_line{};
-    std::array<long, 3> hi_line{};
+    std::array<std::int64_t, 3> lo_line{};
+    std::array<std::int64_t, 3> hi_line{};
     for (const Design& d : design) {
         for (int k = 0; k < 3; ++k) {
             if (d.at[k] < lo[k]) {
@@ -234,9 +235,10 @@ GcodeDeck make_gcode_deck(const GcodeProgram& program, const GcodeJobOptions& o,
         }
         const auto order = axis_order(thousandths(p), thousandths(q));
         const double offset = staircase_offset(p, q, order);
-        const long n = std::max(1L, static_cast<long>(std::ceil(offset / third)));
+        const std::int64_t n =
+            std::max(std::int64_t{1}, static_cast<std::int64_t>(std::ceil(offset / third)));
         std::vector<Vector3d> ats;
-        for (long s = 1; s <= n; ++s) {
+        for (std::int64_t s = 1; s <= n; ++s) {
             ats.push_back(s == n ? q : Vector3d(p + d * (static_cast<double>(s) / n)));
         }
         const Vector3d before = ats.size() == 1 ? p : ats[ats.size() - 2];
@@ -249,7 +251,7 @@ GcodeDeck make_gcode_deck(const GcodeProgram& program, const GcodeJobOptions& o,
                 continue;
             }
             stations.push_back({t, s + 1 == ats.size() && corner_at[i] != 0, design[i].spindle});
-            if (static_cast<long>(stations.size()) > kMaxCards + 1) {
+            if (static_cast<std::int64_t>(stations.size()) > kMaxCards + 1) {
                 throw JobError(
                     fmt::format("{}:{}: more than {} cards at a tolerance of {} in: give a larger "
                                 "--tolerance",

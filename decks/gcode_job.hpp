@@ -53,8 +53,8 @@ struct GcodeDeck {
     std::vector<Eigen::Vector3d> stations;
     int approach_cards = 1;          // cards before the program's first move
     int corner_cards = 0;            // cards slowed for a corner
-    long arcs = 0;                   // G2/G3 moves
-    long lines = 0;                  // G0/G1 moves
+    std::int64_t arcs = 0;           // G2/G3 moves
+    std::int64_t lines = 0;          // G0/G1 moves
     double planned_deviation_in = 0; // the farthest a chord or staircase corner strays
 };
 

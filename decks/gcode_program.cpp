@@ -480,7 +480,7 @@ private:
     std::string_view text_;
     GcodeProgram program_;
     std::set<std::string> ignored_kinds_;
-    long line_ = 0;
+    std::int64_t line_ = 0;
     bool ended_ = false;
     double units_ = 1.0;
     bool units_given_ = false;

@@ -26,7 +26,7 @@ namespace parsons::decks {
 enum class GcodeMotion { rapid, linear, arc_cw, arc_ccw };
 
 struct GcodeMove {
-    long line = 0; // 1-based line of the program
+    std::int64_t line = 0; // 1-based line of the program
     GcodeMotion motion = GcodeMotion::linear;
     Eigen::Vector3d from; // inches, the program's own frame
     Eigen::Vector3d to;
@@ -39,7 +39,7 @@ struct GcodeProgram {
     std::string file;
     std::vector<GcodeMove> moves;
     std::vector<std::string> ignored; // "F (line 3): ..." once per kind of word, in order
-    long lines = 0;
+    std::int64_t lines = 0;
     bool millimetres = false; // the units of the first move (inches or millimetres)
 };
 

@@ -57,7 +57,7 @@ JobDescription job_from_json(const std::string& text) {
         const json j = json::parse(text);
         const std::string kind = j.at("job").get<std::string>();
         if (j.contains("deck")) { // written since the check that a job matches its deck
-            job.deck_cards = j.at("deck").at("cards").get<long>();
+            job.deck_cards = j.at("deck").at("cards").get<std::int64_t>();
             job.deck_fingerprint = j.at("deck").at("fingerprint").get<std::string>();
         }
         job.airfoil = j.at("airfoil").get<std::string>();

@@ -40,7 +40,7 @@ struct JobDescription {
     double allowance_in = 0;
     std::string variant;
     // The deck it was generated with (cardreader::DeckFingerprint); empty in older files.
-    long deck_cards = 0;
+    std::int64_t deck_cards = 0;
     std::string deck_fingerprint;
 };
 

@@ -363,7 +363,7 @@ PressFeederJob press_job_from_json(const std::string& text) {
     o.carry_out_deg = get<double>(j, "carry_out_deg");
     job.cycle_card = get<int>(j, "cycle_card");
     job.profile_file = j.value("profile_file", "");
-    job.deck_cards = j.value("deck_cards", 0L);
+    job.deck_cards = j.value("deck_cards", std::int64_t{0});
     return job;
 }
 

@@ -105,7 +105,7 @@ struct PressFeederJob {
     PressFeederOptions options;
     int cycle_card = 2;
     std::string profile_file; // DECK.profile.json, the profile to run it under
-    long deck_cards = 0;
+    std::int64_t deck_cards = 0;
 };
 
 std::string press_job_to_json(const PressFeederJob& job);

@@ -458,7 +458,7 @@ TappingJob tapping_job_from_json(const std::string& text) {
         job.holes.push_back(hole_from(h, index++));
     }
     job.profile_file = j.value("profile_file", "");
-    job.deck_cards = j.value("deck_cards", 0L);
+    job.deck_cards = j.value("deck_cards", std::int64_t{0});
     return job;
 }
 

@@ -112,7 +112,7 @@ struct TappingJob {
     double chamfer_revs = 0; // the profile's, when the job was generated
     std::vector<TappingHole> holes;
     std::string profile_file; // DECK.profile.json
-    long deck_cards = 0;
+    std::int64_t deck_cards = 0;
 
     // The hole its tap card's number names, if the job has one.
     const TappingHole* hole_on_card(int number) const;

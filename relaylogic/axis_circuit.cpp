@@ -69,11 +69,11 @@ void AxisCircuit::set_powered(bool on) {
 }
 
 void AxisCircuit::trace_contacts() {
-    static constexpr std::array<long, 4> kUnits = {1000, 100, 10, 1}; // 96, 98, 100, 102
-    const long k = plant.commutator_index();
+    static constexpr std::array<std::int64_t, 4> kUnits = {1000, 100, 10, 1}; // 96, 98, 100, 102
+    const std::int64_t k = plant.commutator_index();
     for (std::size_t i = 0; i < 4; ++i) {
-        const long a = axes::floor_div(k, kUnits.at(i));
-        const long b = i == 3 ? a - (contact_set_a - contact_set_b) : a;
+        const std::int64_t a = axes::floor_div(k, kUnits.at(i));
+        const std::int64_t b = i == 3 ? a - (contact_set_a - contact_set_b) : a;
         tracer.set(contacts_.at(2 * i), static_cast<std::uint32_t>(a & 1));
         tracer.set(contacts_.at(2 * i + 1), static_cast<std::uint32_t>(b & 1));
     }

@@ -73,8 +73,8 @@ struct AxisCircuit {
     bool powered = false;                // current through cable 248 to the motor
     bool stopped = false;                // reached its stop on this card
     bool tripped = false;                // balancing circuit 266 tripped at this axis's stop
-    long contact_set_a = 0;              // impulses seen by each contact set of commutator 102
-    long contact_set_b = 0;
+    std::int64_t contact_set_a = 0;      // impulses seen by each contact set of commutator 102
+    std::int64_t contact_set_b = 0;
     cardreader::AxisOrder order;
 
 private:

@@ -34,11 +34,11 @@ std::vector<ActionRecord> actions_from_json(const nlohmann::json& j) {
             action > cardreader::kActionKinds) {
             throw axes::StateError("actions: a value out of range");
         }
-        out.push_back(ActionRecord{e.at(0).get<int>(), e.at(1).get<long>(), e.at(2).get<long>(),
-                                   e.at(3).get<int>(), static_cast<cardreader::Axis>(axis),
-                                   e.at(5).get<cardreader::Thousandths>(),
-                                   static_cast<cardreader::ActionKind>(action), e.at(7).get<int>(),
-                                   exact(e.at(8)), exact(e.at(9)), exact(e.at(10))});
+        out.push_back(ActionRecord{
+            e.at(0).get<int>(), e.at(1).get<std::int64_t>(), e.at(2).get<std::int64_t>(),
+            e.at(3).get<int>(), static_cast<cardreader::Axis>(axis),
+            e.at(5).get<cardreader::Thousandths>(), static_cast<cardreader::ActionKind>(action),
+            e.at(7).get<int>(), exact(e.at(8)), exact(e.at(9)), exact(e.at(10))});
     }
     return out;
 }
@@ -63,12 +63,13 @@ void ConditionUnits::set_waiting(bool waiting) {
     }
 }
 
-std::optional<std::string> ConditionUnits::convert(const cardreader::CardOrders& card, long index) {
+std::optional<std::string> ConditionUnits::convert(const cardreader::CardOrders& card,
+                                                   std::int64_t index) {
     return convert_condition_card(card, index, *buffer_);
 }
 
 std::optional<std::string> ConditionUnits::refuse_unmoved(const cardreader::CardOrders& motion,
-                                                          long index) const {
+                                                          std::int64_t index) const {
     if (!buffer_) {
         return std::nullopt;
     }
@@ -86,7 +87,7 @@ std::optional<std::string> ConditionUnits::refuse_unmoved(const cardreader::Card
     return std::nullopt;
 }
 
-void ConditionUnits::arm(long motion_card) {
+void ConditionUnits::arm(std::int64_t motion_card) {
     for (int k = 0; k < InternalBuffer::kChannels; ++k) {
         BufferPair& p = buffer_->pair(k);
         if (p.state == PairState::stored) {
@@ -134,7 +135,7 @@ void ConditionUnits::zeroize() {
     ale_->zeroize();
 }
 
-ConditionEvent ConditionUnits::event(int k, ConditionEventKind kind, long card,
+ConditionEvent ConditionUnits::event(int k, ConditionEventKind kind, std::int64_t card,
                                      int card_number) const {
     const BufferPair& p = buffer_->pair(k);
     ConditionEvent e;

@@ -30,8 +30,8 @@ namespace parsons::relaylogic {
 // One action a condition card tripped (an addition after EP 0640901), for the report.
 struct ActionRecord {
     int event = 0;
-    long condition_card = 0;
-    long motion_card = 0;
+    std::int64_t condition_card = 0;
+    std::int64_t motion_card = 0;
     int motion_card_number = -1;
     cardreader::Axis axis = cardreader::Axis::table;
     cardreader::Thousandths position = 0;
@@ -62,15 +62,15 @@ public:
     void set_waiting(bool waiting);
 
     // A condition card was sensed (deck position `index`): UMS enters it, or says why not.
-    std::optional<std::string> convert(const cardreader::CardOrders& card, long index);
+    std::optional<std::string> convert(const cardreader::CardOrders& card, std::int64_t index);
     // Conditions stored and waiting for their motion card.
     bool stored() const { return buffer_ && buffer_->any(PairState::stored); }
     // Before a motion card's relays pick: a stored condition on an axis the card does not move
     // (check 0) cannot be met. Returns the message naming cards, event and axis.
     std::optional<std::string> refuse_unmoved(const cardreader::CardOrders& motion,
-                                              long index) const;
+                                              std::int64_t index) const;
     // The motion card's relays pick: every stored condition is armed on PRG.
-    void arm(long motion_card);
+    void arm(std::int64_t motion_card);
     bool watching(cardreader::Axis axis) const { return prg_ && prg_->watching(axis); }
     // The counter of `axis` stepped to `counter`, counting in `direction`: the channels PRG
     // reports (bit k).
@@ -95,7 +95,7 @@ public:
     const TrippingUnit& ale() const { return *ale_; }
     const MonitoringUnit& prg() const { return *prg_; }
     // What an observer is told of channel k.
-    ConditionEvent event(int k, ConditionEventKind kind, long card, int card_number) const;
+    ConditionEvent event(int k, ConditionEventKind kind, std::int64_t card, int card_number) const;
     nlohmann::json save() const;
     void load(const nlohmann::json& j);
 

@@ -101,7 +101,7 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
         resume_tape(deck_taken_);
     } else if (resuming_) {
         // The cards read before the saved one went through the reader already.
-        for (long i = 0; i < cards_read_; ++i) {
+        for (std::int64_t i = 0; i < cards_read_; ++i) {
             if (!deck_->next()) {
                 throw cardreader::DeckError(
                     fmt::format("the deck has {} cards; the saved state resumes after card {}", i,
@@ -322,7 +322,7 @@ void ControlCabinet::report_faults() {
 // What a slip did depends on what the counters measure (docs/design-rules.md rule 3).
 std::string ControlCabinet::slip_effect(const Fault& f, const AxisCircuit& c) const {
     const double slipped = std::abs(c.plant.slip_in());
-    const long thousandths = std::lround(slipped / axes::kInchesPerImpulse);
+    const std::int64_t thousandths = std::lround(slipped / axes::kInchesPerImpulse);
     const std::string what =
         fmt::format("the {} drive slipped for {:.3f} in of screw travel from its impulse {}",
                     axis_name(f.axis), slipped, f.n);
@@ -373,11 +373,11 @@ void ControlCabinet::plan_quiet_stretches() {
                 q.faulty_switch_ahead = true;
             }
         }
-        const long quiet = quiet_impulses(c, q);
+        const std::int64_t quiet = quiet_impulses(c, q);
         if (quiet > 0) {
             quiet_.at(i) = quiet;
             // The impulse that ends the stretch or, if the phase ends first, the phase's end.
-            const double after = quiet == std::numeric_limits<long>::max()
+            const double after = quiet == std::numeric_limits<std::int64_t>::max()
                                      ? axes::kNever
                                      : c.plant.impulse_time(quiet + 1);
             quiet_end_.at(i) = after != axes::kNever ? after : c.plant.phase_end_time();
@@ -390,8 +390,8 @@ void ControlCabinet::plan_quiet_stretches() {
         const axes::Press& press = sync_.press();
         press_quiet_end_ = press.next_event_time();
         if (press.next_event_is_pulse()) {
-            const long in_segment = press.pulses_by(axes::kNever);
-            const long quiet = sync_.quiet_edges(in_segment);
+            const std::int64_t in_segment = press.pulses_by(axes::kNever);
+            const std::int64_t quiet = sync_.quiet_edges(in_segment);
             if (quiet > 0) {
                 press_quiet_ = quiet;
                 // The edge after the stretch, or the stretch's last edge when the segment ends
@@ -410,7 +410,7 @@ void ControlCabinet::catch_up(double t) {
             continue;
         }
         AxisCircuit& c = *circuits_[i];
-        const long n = std::min(quiet_.at(i), c.plant.impulses_by(t));
+        const std::int64_t n = std::min(quiet_.at(i), c.plant.impulses_by(t));
         if (n > 0) {
             if (tapping_.present() && tapping_.feeding(c.axis) &&
                 c.direction != c.plant.moving_direction()) {
@@ -706,9 +706,9 @@ std::optional<cardreader::Card> ControlCabinet::next_card() {
 
 // Resuming a run with press synchronisation: the cards the reader had taken from the deck are
 // taken again, their numbers read, so that a loop card finds its way back.
-void ControlCabinet::resume_tape(long taken) {
+void ControlCabinet::resume_tape(std::int64_t taken) {
     std::vector<cardreader::Card> saved_tape;
-    for (long i = 0; i < taken; ++i) {
+    for (std::int64_t i = 0; i < taken; ++i) {
         std::optional<cardreader::Card> card = deck_->next();
         if (!card) {
             throw cardreader::DeckError(fmt::format(
@@ -795,7 +795,7 @@ void ControlCabinet::loop_card() {
 void ControlCabinet::press_edges(double t) {
     axes::Press& press = sync_.press();
     if (jumping_ && press_quiet_ > 0) {
-        const long n = std::min(press_quiet_, press.pulses_by(t));
+        const std::int64_t n = std::min(press_quiet_, press.pulses_by(t));
         if (n > 0) {
             const double at = press.pulse_time(n);
             const axes::DetectorEdge last = press.skip_pulses(n);
@@ -1554,21 +1554,21 @@ void ControlCabinet::resume_sync(const nlohmann::json& j) {
         throw axes::StateError("the saved machine has no press; this profile has one");
     }
     sync_.load(member(j, "units"));
-    deck_taken_ = read<long>(j, "deck_cards_taken");
+    deck_taken_ = read<std::int64_t>(j, "deck_cards_taken");
     replay_ = read<std::size_t>(j, "replay");
     tape_index_ = read<std::size_t>(j, "tape_index");
     loops_left_.clear();
     for (const auto& l : member(j, "loops_left")) {
         loops_left_[l.at(0).get<std::size_t>()] = l.at(1).get<int>();
     }
-    cycles_ = read<long>(j, "cycles");
-    loop_backs_ = read<long>(j, "loop_backs");
+    cycles_ = read<std::int64_t>(j, "cycles");
+    loop_backs_ = read<std::int64_t>(j, "loop_backs");
     first_loop_back_s_ = exact(member(j, "first_loop_back_s"));
     last_loop_back_s_ = exact(member(j, "last_loop_back_s"));
     shortest_cycle_s_ = exact(member(j, "shortest_cycle_s"));
     longest_cycle_s_ = exact(member(j, "longest_cycle_s"));
     waited_s_ = exact(member(j, "waited_s"));
-    block_ = read<long>(j, "reference_block");
+    block_ = read<std::int64_t>(j, "reference_block");
     if (deck_taken_ < 0 || replay_ > static_cast<std::size_t>(deck_taken_) || block_ < 1) {
         throw axes::StateError("sync: deck_cards_taken, replay and reference_block out of range");
     }
@@ -1580,7 +1580,7 @@ void ControlCabinet::resume(const nlohmann::json& j) {
     using axes::read;
     now_ = exact(member(j, "machine_seconds"));
     seq_ = read<std::uint64_t>(j, "event_sequence");
-    cards_read_ = read<long>(j, "cards_read");
+    cards_read_ = read<std::int64_t>(j, "cards_read");
     const auto& number = member(j, "card_number_check");
     previous_number_ = number.is_null() ? std::nullopt : std::optional(number.get<int>());
     orders_ = cardreader::CardOrders{};
@@ -1595,8 +1595,8 @@ void ControlCabinet::resume(const nlohmann::json& j) {
     tracer_.load(member(j, "signals"));
     timings_.clear();
     for (const auto& t : member(j, "card_times")) {
-        timings_.push_back(
-            CardTiming{t.at(0).get<long>(), t.at(1).get<int>(), exact(t.at(2)), exact(t.at(3))});
+        timings_.push_back(CardTiming{t.at(0).get<std::int64_t>(), t.at(1).get<int>(),
+                                      exact(t.at(2)), exact(t.at(3))});
     }
     conditions_.load(j.contains("conditions") ? j.at("conditions") : nlohmann::json());
     actions_ = actions_from_json(j.contains("actions") ? j.at("actions") : nlohmann::json::array());

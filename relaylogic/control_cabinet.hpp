@@ -41,8 +41,8 @@ struct AxisResult {
     double counter_in = 0;                   // what absolute counter 104-110 reads
     double real_in = 0;                      // where the part really is
     double error_in = 0;                     // real - counter, the counter's wraps counted
-    long impulses = 0;                       // commutator 102 impulses the screw produced
-    long lost_steps = 0;                     // impulses the stepping switches could not follow
+    std::int64_t impulses = 0;               // commutator 102 impulses the screw produced
+    std::int64_t lost_steps = 0;             // impulses the stepping switches could not follow
     std::optional<double> fixture_angle_deg; // swivel and tilt
     std::optional<double> last_stop_in;      // the stop of the last card read, if any
     double slip_in = 0;                      // a slip fault: how far the part lags the screw
@@ -51,7 +51,7 @@ struct AxisResult {
 };
 
 struct CardTiming {
-    long index = 0;
+    std::int64_t index = 0;
     int number = -1;
     double start_s = 0;
     double end_s = 0;
@@ -59,12 +59,12 @@ struct CardTiming {
 
 // Press synchronisation (an addition after EP 0436887): the press and the job's cycles.
 struct PressResult {
-    int revolution = 0;         // the crank's revolution (1 = the first)
-    double crank_angle_deg = 0; // where crank 21 stood at the last detector edge taken
-    int position_register = 0;  // register 14, detector pulses
-    bool press_stopped = false; // motor 22 stopped (the profile's stop)
-    long cycles = 0;            // how many times the job reached its loop card (M99)
-    long loop_backs = 0;        // how many times the reader went back
+    int revolution = 0;          // the crank's revolution (1 = the first)
+    double crank_angle_deg = 0;  // where crank 21 stood at the last detector edge taken
+    int position_register = 0;   // register 14, detector pulses
+    bool press_stopped = false;  // motor 22 stopped (the profile's stop)
+    std::int64_t cycles = 0;     // how many times the job reached its loop card (M99)
+    std::int64_t loop_backs = 0; // how many times the reader went back
     // Time between two loop-backs: the job's cycle (none with fewer than two loop-backs).
     std::optional<double> mean_cycle_s;
     std::optional<double> shortest_cycle_s;
@@ -74,7 +74,7 @@ struct PressResult {
 
 struct RunResult {
     bool completed = false;
-    long cards_read = 0;
+    std::int64_t cards_read = 0;
     double machine_seconds = 0;
     std::optional<StopInfo> stop;
     std::array<AxisResult, cardreader::kAxisCount> axes{};
@@ -146,7 +146,8 @@ private:
         std::uint64_t seq;
         EventKind kind;
         int axis;
-        long card; // the card it belongs to: the zeroizing circuit ends every pending action
+        std::int64_t
+            card; // the card it belongs to: the zeroizing circuit ends every pending action
         bool operator>(const Event& o) const { return t != o.t ? t > o.t : seq > o.seq; }
     };
 
@@ -193,7 +194,7 @@ private:
     bool waiting_on_press() const;
     bool idle() const;
     void schedule_block();
-    void resume_tape(long taken);
+    void resume_tape(std::int64_t taken);
     nlohmann::json capture_sync() const;
     void resume_sync(const nlohmann::json& j);
     void tap_card();
@@ -223,9 +224,9 @@ private:
     std::unique_ptr<FaultyFeed> faulty_feed_;
     double min_interval_s_; // 1 / the stepping switches' fastest rate
     Pace pace_ = Pace::fast_forward;
-    bool jumping_ = false;                                   // fast-forward with no observer
-    std::array<long, cardreader::kAxisCount> quiet_{};       // quiet impulses ahead of each axis
-    std::array<double, cardreader::kAxisCount> quiet_end_{}; // when the stretch's next event is
+    bool jumping_ = false;                                     // fast-forward with no observer
+    std::array<std::int64_t, cardreader::kAxisCount> quiet_{}; // quiet impulses ahead of each axis
+    std::array<double, cardreader::kAxisCount> quiet_end_{};   // when the stretch's next event is
 
     std::priority_queue<Event, std::vector<Event>, std::greater<>> queue_;
     std::uint64_t seq_ = 0;
@@ -245,7 +246,7 @@ private:
     bool reading_complete_ = false;
     bool deck_finished_ = false;
     int last_sequence_position_ = 5;
-    long cards_read_ = 0;
+    std::int64_t cards_read_ = 0;
     bool record_times_ = false;
     bool record_tap_samples_ = false;
     std::vector<CardTiming> timings_;
@@ -264,20 +265,20 @@ private:
     bool sync_card_ = false;
     std::vector<cardreader::Card> tape_;
     std::vector<int> tape_numbers_;
-    std::size_t replay_ = 0;     // the next card comes from tape_[replay_] if within it
-    std::size_t tape_index_ = 0; // the card in the reader
-    long deck_taken_ = 0;        // cards taken from the deck itself
+    std::size_t replay_ = 0;      // the next card comes from tape_[replay_] if within it
+    std::size_t tape_index_ = 0;  // the card in the reader
+    std::int64_t deck_taken_ = 0; // cards taken from the deck itself
     std::map<std::size_t, int> loops_left_;
-    long cycles_ = 0;
-    long loop_backs_ = 0;
+    std::int64_t cycles_ = 0;
+    std::int64_t loop_backs_ = 0;
     double last_loop_back_s_ = 0;
     double first_loop_back_s_ = 0;
     double shortest_cycle_s_ = 0;
     double longest_cycle_s_ = 0;
     double waited_s_ = 0;
-    long block_ = 1;        // the reference block queued next: at block_ x speed_sample_s
-    int blocks_queued_ = 0; // reference blocks in the queue (0 or 1)
-    long press_quiet_ = 0;  // fast-forward: edges that only count, ahead of the press
+    std::int64_t block_ = 1;       // the reference block queued next: at block_ x speed_sample_s
+    int blocks_queued_ = 0;        // reference blocks in the queue (0 or 1)
+    std::int64_t press_quiet_ = 0; // fast-forward: edges that only count, ahead of the press
     double press_quiet_end_ = axes::kNever; // ... and when the press's next event that matters is
 
     // Spindle synchronisation (an addition): the units, the card being a tap card.

@@ -3,8 +3,8 @@
 namespace parsons::relaylogic {
 namespace {
 
-long total_lost(const std::array<SteppingSwitch, 4>& switches) {
-    long n = 0;
+std::int64_t total_lost(const std::array<SteppingSwitch, 4>& switches) {
+    std::int64_t n = 0;
     for (const auto& s : switches) {
         n += s.lost();
     }
@@ -29,14 +29,14 @@ AbsoluteCounter::AbsoluteCounter(Tracer& tracer, const std::string& scope) : tra
 }
 
 void AbsoluteCounter::jump(const Digits& positions, const std::array<double, 4>& last_step_s,
-                           long inch_turns) {
+                           std::int64_t inch_turns) {
     for (std::size_t i = 0; i < 4; ++i) {
         switches_.at(i).jump(positions.at(i), last_step_s.at(i), i == 0 ? inch_turns : 0);
         tracer_.set(signals_.at(i), static_cast<std::uint32_t>(positions.at(i)));
     }
 }
 
-long AbsoluteCounter::lost() const {
+std::int64_t AbsoluteCounter::lost() const {
     return total_lost(switches_);
 }
 
@@ -69,7 +69,7 @@ void IncrementCounter::clear() {
     }
 }
 
-long IncrementCounter::lost() const {
+std::int64_t IncrementCounter::lost() const {
     return total_lost(switches_);
 }
 

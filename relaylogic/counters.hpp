@@ -57,17 +57,19 @@ public:
                 switches_[3].position()};
     }
     int value() const { return digits_value(digits()); }
-    long lost() const;
+    std::int64_t lost() const;
     // Switch i of {104, 106, 108, 110}.
     const SteppingSwitch& stepping_switch(std::size_t i) const { return switches_.at(i); }
     SteppingSwitch& stepping_switch(std::size_t i) { return switches_.at(i); }
     // Fast-forward: every switch stands where a stretch of ready impulses left it, switch 104
     // having passed 9 -> 0 net `inch_turns` times.
     void jump(const Digits& positions, const std::array<double, 4>& last_step_s,
-              long inch_turns = 0);
+              std::int64_t inch_turns = 0);
     // The reading with the inch switch's wrap-arounds counted (thousandths; may pass 9999 or
     // go below 0): what the counter has counted, for the report's position error.
-    long unwrapped_value() const { return value() + 10000L * switches_[0].turns(); }
+    std::int64_t unwrapped_value() const {
+        return value() + std::int64_t{10000} * switches_[0].turns();
+    }
     // The state a saved machine keeps (relaylogic/machine_state.cpp).
     nlohmann::json save() const;
     void load(const nlohmann::json& j);
@@ -103,7 +105,7 @@ public:
                 switches_[0].position()};
     }
     int value() const { return digits_value(digits()); }
-    long lost() const;
+    std::int64_t lost() const;
     // Switch i of {310, 312, 314, 316}.
     const SteppingSwitch& stepping_switch(std::size_t i) const { return switches_.at(i); }
     SteppingSwitch& stepping_switch(std::size_t i) { return switches_.at(i); }

@@ -13,7 +13,8 @@ int ring_index(int a, int b) {
 
 } // namespace
 
-DirectionJudgingDevice::DirectionJudgingDevice(Tracer& tracer, long count, PulseSource source)
+DirectionJudgingDevice::DirectionJudgingDevice(Tracer& tracer, std::int64_t count,
+                                               PulseSource source)
     : tracer_(tracer), a_(axes::phases_at(count).phase_a), b_(axes::phases_at(count).phase_b) {
     if (source == PulseSource::spindle_encoder_32) {
         relay_a_ = tracer.define("spindle", "encoder_32.phase_a",
@@ -41,7 +42,7 @@ DirectionJudgingDevice::DirectionJudgingDevice(Tracer& tracer, long count, Pulse
                                  "13", 1, 1);
 }
 
-void DirectionJudgingDevice::stand_at(long count) {
+void DirectionJudgingDevice::stand_at(std::int64_t count) {
     const axes::DetectorEdge e = axes::phases_at(count);
     a_ = e.phase_a;
     b_ = e.phase_b;
@@ -69,7 +70,7 @@ int DirectionJudgingDevice::judge(const axes::DetectorEdge& edge) {
     return sense;
 }
 
-void DirectionJudgingDevice::jump_to(long count, int sense) {
+void DirectionJudgingDevice::jump_to(std::int64_t count, int sense) {
     stand_at(count);
     sense_ = sense;
     tracer_.set(sense_relay_, sense > 0 ? 1U : 0U);

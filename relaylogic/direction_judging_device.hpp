@@ -25,15 +25,15 @@ enum class PulseSource : std::uint8_t { press_detector_10, spindle_encoder_32 };
 class DirectionJudgingDevice {
 public:
     // The relays stand at the phases of pulse count `count` (the crank where the run starts).
-    DirectionJudgingDevice(Tracer& tracer, long count,
+    DirectionJudgingDevice(Tracer& tracer, std::int64_t count,
                            PulseSource source = PulseSource::press_detector_10);
     // The relays A and B stand at the phases of count c (the run's start, a loaded state).
-    void stand_at(long count);
+    void stand_at(std::int64_t count);
     // An edge of detector 10: +1 count up, -1 count down, 0 no count (both phases changed or
     // neither did).
     int judge(const axes::DetectorEdge& edge);
     // Fast-forward: after edges all in one sense, the relays stand at the last one's phases.
-    void jump_to(long count, int sense);
+    void jump_to(std::int64_t count, int sense);
     int last_sense() const { return sense_; }
     nlohmann::json save() const;
     void load(const nlohmann::json& j);

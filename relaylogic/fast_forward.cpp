@@ -10,28 +10,28 @@ namespace {
 
 using axes::floor_div;
 
-constexpr long kForever = std::numeric_limits<long>::max();
-constexpr std::array<long, 4> kUnits = {1000, 100, 10, 1}; // digits from the inch down
+constexpr std::int64_t kForever = std::numeric_limits<std::int64_t>::max();
+constexpr std::array<std::int64_t, 4> kUnits = {1000, 100, 10, 1}; // digits from the inch down
 // Beyond this many numbers the banks could match, stepping one by one is cheaper.
-constexpr long kMostMatches = 1000;
+constexpr std::int64_t kMostMatches = 1000;
 
-int mod10(long v) {
+int mod10(std::int64_t v) {
     return static_cast<int>(((v % 10) + 10) % 10);
 }
 
-long mod10000(long v) {
+std::int64_t mod10000(std::int64_t v) {
     return ((v % 10000) + 10000) % 10000;
 }
 
 // Impulses until the counter first reads a number: 1 .. 10000 (0 means a full turn).
-long impulses_until(long distance) {
-    const long j = mod10000(distance);
+std::int64_t impulses_until(std::int64_t distance) {
+    const std::int64_t j = mod10000(distance);
     return j == 0 ? 10000 : j;
 }
 
 // How many relays of a bank a mask closes (at most ten bits: no library call for a popcount).
-long relays_in(unsigned mask) {
-    long n = 0;
+std::int64_t relays_in(unsigned mask) {
+    std::int64_t n = 0;
     for (; mask != 0; mask &= mask - 1) {
         ++n;
     }
@@ -49,20 +49,21 @@ void each_relay(unsigned mask, F&& f) {
 // The least distance(w) over every 4-digit number w whose digit i is in allowed[i] (bit x =
 // digit x), or nothing if there are more than kMostMatches such numbers.
 template <typename Distance>
-std::optional<long> least_over_matches(const std::array<unsigned, 4>& allowed, Distance distance) {
-    long count = 1;
+std::optional<std::int64_t> least_over_matches(const std::array<unsigned, 4>& allowed,
+                                               Distance distance) {
+    std::int64_t count = 1;
     for (unsigned mask : allowed) {
         count *= relays_in(mask);
     }
     if (count > kMostMatches) {
         return std::nullopt;
     }
-    long best = kForever;
+    std::int64_t best = kForever;
     each_relay(allowed[0], [&](int a) {
         each_relay(allowed[1], [&](int b) {
             each_relay(allowed[2], [&](int c) {
                 each_relay(allowed[3], [&](int d) {
-                    best = std::min(best, distance(((a * 10L + b) * 10 + c) * 10 + d));
+                    best = std::min(best, distance(((a * std::int64_t{10} + b) * 10 + c) * 10 + d));
                 });
             });
         });
@@ -73,9 +74,9 @@ std::optional<long> least_over_matches(const std::array<unsigned, 4>& allowed, D
 // Absolute comparer 122': the first coming impulse after which it conducts, or kForever.
 // Returns nullopt when the banks hold too many numbers to search. With `prg`, the same for
 // the monitoring unit's channels on this axis instead (each holds one position).
-std::optional<long> first_absolute_equality(const AxisCircuit& c,
-                                            const MonitoringUnit* prg = nullptr) {
-    const long k0 = c.plant.commutator_index();
+std::optional<std::int64_t> first_absolute_equality(const AxisCircuit& c,
+                                                    const MonitoringUnit* prg = nullptr) {
+    const std::int64_t k0 = c.plant.commutator_index();
     const int d = c.plant.moving_direction();
     const int sigma = c.direction * d;
     std::array<int, 4> offset{};
@@ -85,24 +86,24 @@ std::optional<long> first_absolute_equality(const AxisCircuit& c,
     }
     // The screw digit x of unit i that puts switch i on counter digit v: v = o + sigma x.
     auto screw_digit = [&](std::size_t i, int v) { return mod10(sigma * (v - offset.at(i))); };
-    auto distance = [&](long w) { return impulses_until(d * (w - k0)); };
+    auto distance = [&](std::int64_t w) { return impulses_until(d * (w - k0)); };
     // The first impulse after which the counter reads `number` (a reading, not a bank).
     auto until_reading = [&](int number) {
         const Digits v = value_digits(number);
-        long w = 0;
+        std::int64_t w = 0;
         for (std::size_t i = 0; i < 4; ++i) {
             w = w * 10 + screw_digit(i, v.at(i));
         }
         return distance(w);
     };
     if (prg != nullptr) {
-        long first = kForever;
+        std::int64_t first = kForever;
         prg->each_watched(c.axis, c.direction,
                           [&](int position) { first = std::min(first, until_reading(position)); });
         return first;
     }
     if (c.absolute_storage.separate_registers()) {
-        long first = kForever;
+        std::int64_t first = kForever;
         for (int number : c.absolute_storage.numbers()) {
             first = std::min(first, until_reading(number));
         }
@@ -117,13 +118,13 @@ std::optional<long> first_absolute_equality(const AxisCircuit& c,
 }
 
 // Incremental comparer 122'': the first coming impulse after which it conducts.
-std::optional<long> first_incremental_equality(const AxisCircuit& c) {
+std::optional<std::int64_t> first_incremental_equality(const AxisCircuit& c) {
     std::array<unsigned, 4> allowed{};
     for (std::size_t i = 0; i < 4; ++i) {
         allowed.at(i) = c.incremental_storage.bank(static_cast<int>(i)).closed_mask();
     }
-    const long v = c.increment_counter.value();
-    return least_over_matches(allowed, [v](long w) { return impulses_until(w - v); });
+    const std::int64_t v = c.increment_counter.value();
+    return least_over_matches(allowed, [v](std::int64_t w) { return impulses_until(w - v); });
 }
 
 } // namespace
@@ -134,7 +135,7 @@ bool soft_limit_trips(const axes::AxisProfile& p, int d, double x, double v) {
                  : x - axes::kInchesPerImpulse - coast < p.soft_min_in;
 }
 
-long quiet_impulses(const AxisCircuit& c, const QuietConditions& q) {
+std::int64_t quiet_impulses(const AxisCircuit& c, const QuietConditions& q) {
     const axes::LeadScrewAxis& plant = c.plant;
     if (!plant.next_event_is_impulse() || q.counting_hundredths || q.faulty_switch_ahead) {
         return 0;
@@ -157,7 +158,7 @@ long quiet_impulses(const AxisCircuit& c, const QuietConditions& q) {
     if (plant.next_event_time() - last_step < ready) {
         return 0;
     }
-    long first_event = kForever;
+    std::int64_t first_event = kForever;
     if (q.next_fault_impulse > c.contact_set_a) {
         first_event = q.next_fault_impulse - c.contact_set_a;
     }
@@ -174,7 +175,7 @@ long quiet_impulses(const AxisCircuit& c, const QuietConditions& q) {
             // which trips no later than the real watch (the impulses after go one by one).
             const int d = plant.moving_direction();
             const double v = plant.phase_acceleration() == 0 ? plant.phase_start_speed() : u_max;
-            const long trips = plant.first_impulse_where(
+            const std::int64_t trips = plant.first_impulse_where(
                 [&](double x) { return soft_limit_trips(plant.profile(), d, x, v); });
             if (trips > 0) {
                 first_event = std::min(first_event, trips);
@@ -193,20 +194,21 @@ long quiet_impulses(const AxisCircuit& c, const QuietConditions& q) {
     return first_event == kForever ? kForever : first_event - 1;
 }
 
-void jump_quiet_impulses(AxisCircuit& c, long n) {
+void jump_quiet_impulses(AxisCircuit& c, std::int64_t n) {
     axes::LeadScrewAxis& plant = c.plant;
-    const long k0 = plant.commutator_index();
+    const std::int64_t k0 = plant.commutator_index();
     const int d = plant.moving_direction();
-    const long kn = k0 + d * n;
+    const std::int64_t kn = k0 + d * n;
     // Absolute counter: switch i stepped once for every crossing of a multiple of its unit
     // (the crossing's upper reading), in the sense reversing control 214 set.
     Digits absolute{};
     std::array<double, 4> absolute_last{};
-    long inch_turns = 0; // switch 104's net passes 9 -> 0, as one-by-one stepping counts them
+    std::int64_t inch_turns =
+        0; // switch 104's net passes 9 -> 0, as one-by-one stepping counts them
     for (std::size_t i = 0; i < 4; ++i) {
-        const long m = kUnits.at(i);
+        const std::int64_t m = kUnits.at(i);
         const SteppingSwitch& sw = c.absolute_counter.stepping_switch(i);
-        const long steps = d * (floor_div(kn, m) - floor_div(k0, m));
+        const std::int64_t steps = d * (floor_div(kn, m) - floor_div(k0, m));
         absolute.at(i) = mod10(sw.position() + c.direction * steps);
         if (i == 0) {
             inch_turns = floor_div(sw.position() + c.direction * steps, 10);
@@ -214,17 +216,17 @@ void jump_quiet_impulses(AxisCircuit& c, long n) {
         absolute_last.at(i) = sw.last_step_s();
         if (steps > 0) {
             // The last impulse of the stretch whose upper reading is a multiple of m.
-            const long j =
+            const std::int64_t j =
                 d > 0 ? floor_div(kn, m) * m - k0 : k0 - (-floor_div(-(kn + 1), m)) * m + 1;
             absolute_last.at(i) = plant.impulse_time(j);
         }
     }
     // Increment counter: a decimal counter of the impulses, 310 first.
-    const long v = c.increment_counter.value();
+    const std::int64_t v = c.increment_counter.value();
     const Digits increment = value_digits(static_cast<int>((v + n) % 10000));
     std::array<double, 4> increment_last{};
     for (std::size_t i = 0; i < 4; ++i) {
-        const long m = kUnits.at(3 - i);
+        const std::int64_t m = kUnits.at(3 - i);
         increment_last.at(i) = c.increment_counter.stepping_switch(i).last_step_s();
         if ((v + n) / m > v / m) {
             increment_last.at(i) = plant.impulse_time((v + n) / m * m - v);

@@ -25,12 +25,12 @@
 namespace parsons::relaylogic {
 
 struct QuietConditions {
-    double min_interval_s = 0;         // 1 / the stepping switches' fastest rate
-    bool machine_stopped = false;      // master switch open: nothing but counting happens
-    long next_fault_impulse = 0;       // contact-set-A count of the next fault on this axis, or 0
-    bool counting_hundredths = false;  // the profile's hundredths-only counting is in force
-    bool watching_soft_limits = false; // the axis is powered and has a movement range
-    bool faulty_switch_ahead = false;  // a skip fault waits on one of the axis's switches
+    double min_interval_s = 0;           // 1 / the stepping switches' fastest rate
+    bool machine_stopped = false;        // master switch open: nothing but counting happens
+    std::int64_t next_fault_impulse = 0; // contact-set-A count of the next fault on this axis, or 0
+    bool counting_hundredths = false;    // the profile's hundredths-only counting is in force
+    bool watching_soft_limits = false;   // the axis is powered and has a movement range
+    bool faulty_switch_ahead = false;    // a skip fault waits on one of the axis's switches
     // Monitoring unit PRG (condition cards, an addition): its armed positions end a stretch
     // at the impulse that steps the counter onto one of them. Null when there is none.
     const MonitoringUnit* prg = nullptr;
@@ -43,9 +43,9 @@ bool soft_limit_trips(const axes::AxisProfile& p, int d, double x, double v);
 
 // How many of the axis's coming impulses are quiet (0 when the next one is not, or when the
 // axis is not moving toward an impulse).
-long quiet_impulses(const AxisCircuit& c, const QuietConditions& q);
+std::int64_t quiet_impulses(const AxisCircuit& c, const QuietConditions& q);
 
 // Takes the next n quiet impulses at once (n <= quiet_impulses()).
-void jump_quiet_impulses(AxisCircuit& c, long n);
+void jump_quiet_impulses(AxisCircuit& c, std::int64_t n);
 
 } // namespace parsons::relaylogic

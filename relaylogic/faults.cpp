@@ -20,10 +20,11 @@ std::vector<std::string> split(const std::string& s) {
     }
 }
 
-long count_from_1(const std::string& spec, const std::string& text, const char* what) {
-    if (text.empty() || text.size() > 12 ||
+std::int64_t count_from_1(const std::string& spec, const std::string& text, const char* what) {
+    if (text.empty() || text.size() > 9 ||
         text.find_first_not_of("0123456789") != std::string::npos || std::stol(text) < 1) {
-        throw FaultSpecError(fmt::format("--fault '{}': {} must be a count from 1", spec, what));
+        throw FaultSpecError(
+            fmt::format("--fault '{}': {} must be a count from 1 to 999999999", spec, what));
     }
     return std::stol(text);
 }
@@ -45,7 +46,7 @@ constexpr const char* kForms =
 
 } // namespace
 
-Fault drop_impulse(cardreader::Axis axis, long impulse) {
+Fault drop_impulse(cardreader::Axis axis, std::int64_t impulse) {
     Fault f;
     f.kind = FaultKind::drop_impulse;
     f.axis = axis;
@@ -161,7 +162,7 @@ std::optional<cardreader::Card> FaultyFeed::next() {
         again_.reset();
         return card;
     }
-    const long position = pulled_ + 1;
+    const std::int64_t position = pulled_ + 1;
     auto card = pull();
     if (!card) {
         return card;

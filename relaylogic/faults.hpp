@@ -51,10 +51,10 @@ enum class FaultKind : std::uint8_t {
 struct Fault {
     FaultKind kind = FaultKind::drop_impulse;
     cardreader::Axis axis = cardreader::Axis::table;
-    long n = 1;      // the impulse, the step or the card (deck position), from 1
-    int numeral = 0; // the bank or the stepping switch
-    int digit = 0;   // the relay of the bank
-    long count = 0;  // slip: thousandths of screw travel the part does not follow
+    std::int64_t n = 1;     // the impulse, the step or the card (deck position), from 1
+    int numeral = 0;        // the bank or the stepping switch
+    int digit = 0;          // the relay of the bank
+    std::int64_t count = 0; // slip: thousandths of screw travel the part does not follow
     std::string spec;
 };
 
@@ -65,7 +65,7 @@ public:
 
 // Throws FaultSpecError with a message that names the spec and what is wrong with it.
 Fault parse_fault(const std::string& spec);
-Fault drop_impulse(cardreader::Axis axis, long impulse);
+Fault drop_impulse(cardreader::Axis axis, std::int64_t impulse);
 
 // What a fault did in the run, for the report.
 struct FaultEffect {
@@ -87,7 +87,7 @@ private:
     cardreader::CardSource& deck_;
     std::vector<Fault> faults_;
     std::vector<FaultEffect*> effects_;
-    long pulled_ = 0; // cards taken from the deck
+    std::int64_t pulled_ = 0; // cards taken from the deck
     std::optional<cardreader::Card> again_;
 };
 

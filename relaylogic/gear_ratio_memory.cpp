@@ -167,7 +167,7 @@ void GearRatioMemory::load(const nlohmann::json& j) {
         buffer_ = axes::exact(buffer);
     }
     request_since_s_ = axes::exact(axes::member(j, "request_since_s"));
-    received_ = axes::read<long>(j, "received");
+    received_ = axes::read<std::int64_t>(j, "received");
     step_ = step;
 }
 

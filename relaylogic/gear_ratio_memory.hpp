@@ -39,7 +39,7 @@ public:
     // A transfer request is standing and the NC has not stored its data yet; since when.
     bool transfer_under_way() const { return request_since_s_ >= 0; }
     double request_since_s() const { return request_since_s_; }
-    long received() const { return received_; } // ratios stored by S16
+    std::int64_t received() const { return received_; } // ratios stored by S16
 
     nlohmann::json save() const;
     void load(const nlohmann::json& j);
@@ -52,7 +52,7 @@ private:
     double ratio_ = 0;
     std::optional<double> buffer_; // interface 9's buffer memory (S14)
     double request_since_s_ = -1;
-    long received_ = 0;
+    std::int64_t received_ = 0;
     int step_ = 0; // the seed's step the NC stands at (11..16; 0 idle)
     SignalId ratio_signal_;
     SignalId buffer_signal_;

@@ -108,9 +108,9 @@ void InternalBuffer::load(const nlohmann::json& j) {
         p.action.event = p.condition.event;
         p.action.action = static_cast<cardreader::ActionKind>(action);
         p.action.parameter = read<int>(e, "parameter");
-        p.card = read<long>(e, "card");
+        p.card = read<std::int64_t>(e, "card");
         p.card_number = read<int>(e, "card_number");
-        p.motion_card = read<long>(e, "motion_card");
+        p.motion_card = read<std::int64_t>(e, "motion_card");
         p.tripped_s = exact(axes::member(e, "tripped_s"));
         p.acknowledged_s = exact(axes::member(e, "acknowledged_s"));
         pair(k) = p;
@@ -118,8 +118,8 @@ void InternalBuffer::load(const nlohmann::json& j) {
     }
 }
 
-std::optional<std::string> convert_condition_card(const cardreader::CardOrders& card, long index,
-                                                  InternalBuffer& buffer) {
+std::optional<std::string> convert_condition_card(const cardreader::CardOrders& card,
+                                                  std::int64_t index, InternalBuffer& buffer) {
     for (int i = 0; i < card.condition_count; ++i) {
         const cardreader::ConditionOrder& c = card.conditions.at(static_cast<std::size_t>(i));
         const int column = 1 + i * cardreader::kConditionSlotColumns;

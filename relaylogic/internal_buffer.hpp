@@ -45,10 +45,10 @@ struct BufferPair {
     ConditionEntry condition;
     ActionEntry action;
     PairState state = PairState::empty;
-    long card = 0;         // deck position of the condition card it came from
-    int card_number = -1;  // and its number
-    long motion_card = 0;  // the motion card it watches (once armed)
-    double tripped_s = -1; // when PRG reported it
+    std::int64_t card = 0;        // deck position of the condition card it came from
+    int card_number = -1;         // and its number
+    std::int64_t motion_card = 0; // the motion card it watches (once armed)
+    double tripped_s = -1;        // when PRG reported it
     double acknowledged_s = -1;
 };
 
@@ -83,7 +83,7 @@ private:
 // entry and an action entry of the buffer. Returns an error sentence (naming the condition's
 // column) when the buffer cannot take them: an identifier already stored for this motion card,
 // or no free pair.
-std::optional<std::string> convert_condition_card(const cardreader::CardOrders& card, long index,
-                                                  InternalBuffer& buffer);
+std::optional<std::string> convert_condition_card(const cardreader::CardOrders& card,
+                                                  std::int64_t index, InternalBuffer& buffer);
 
 } // namespace parsons::relaylogic

@@ -48,7 +48,7 @@ std::string_view stop_reason_name(StopReason r);
 
 struct StopInfo {
     StopReason reason = StopReason::check_mismatch;
-    long card = 0;                        // position in the deck, 1-based
+    std::int64_t card = 0;                // position in the deck, 1-based
     int card_number = -1;                 // the number punched on it, if it could be read
     std::optional<cardreader::Axis> axis; // the axis that stopped the machine, if one did
     std::string message;                  // one sentence an operator understands
@@ -65,9 +65,9 @@ std::string_view condition_event_name(ConditionEventKind k); // "condition_met",
 struct ConditionEvent {
     ConditionEventKind kind = ConditionEventKind::met;
     int event = 0;
-    long card = 0;        // the motion card being machined (deck position)
-    int card_number = -1; // its number
-    long condition_card = 0;
+    std::int64_t card = 0; // the motion card being machined (deck position)
+    int card_number = -1;  // its number
+    std::int64_t condition_card = 0;
     cardreader::Axis axis = cardreader::Axis::table;
     cardreader::Thousandths position = 0;
     cardreader::PassingSense sense = cardreader::PassingSense::either;
@@ -89,7 +89,8 @@ public:
     // axis comes to rest); inches.
     virtual void on_motion(double /*seconds*/, const std::array<double, 5>& /*real_in*/) {}
     // A card was read and decoded (deck position 1-based).
-    virtual void on_card(double /*seconds*/, long /*index*/, const cardreader::CardOrders&) {}
+    virtual void on_card(double /*seconds*/, std::int64_t /*index*/,
+                         const cardreader::CardOrders&) {}
     // The machine stopped itself.
     virtual void on_stop(double /*seconds*/, const StopInfo& /*stop*/) {}
     // A condition was met, its action initiated or acknowledged (condition cards, an addition).
@@ -149,7 +150,7 @@ public:
             o->on_motion(t, real);
         }
     }
-    void on_card(double t, long index, const cardreader::CardOrders& orders) override {
+    void on_card(double t, std::int64_t index, const cardreader::CardOrders& orders) override {
         for (auto* o : observers_) {
             o->on_card(t, index, orders);
         }

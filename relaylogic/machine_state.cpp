@@ -62,10 +62,10 @@ json SteppingSwitch::save() const {
 void SteppingSwitch::load(const json& j) {
     position_ = digit(j, "position");
     last_step_s_ = exact(member(j, "last_step_s"));
-    lost_ = read<long>(j, "lost");
-    steps_ = read<long>(j, "steps");
-    skip_at_ = read<long>(j, "skip_at");
-    turns_ = j.contains("turns") ? read<long>(j, "turns") : 0; // states saved before it: 0
+    lost_ = read<std::int64_t>(j, "lost");
+    steps_ = read<std::int64_t>(j, "steps");
+    skip_at_ = read<std::int64_t>(j, "skip_at");
+    turns_ = j.contains("turns") ? read<std::int64_t>(j, "turns") : 0; // states saved before it: 0
 }
 
 json AbsoluteCounter::save() const {
@@ -99,7 +99,7 @@ void HoldingRelayBank::load(const json& j) {
     closed_ = mask("closed");
     stuck_ = mask("stuck");
     dead_ = mask("dead");
-    refused_ = read<long>(j, "refused");
+    refused_ = read<std::int64_t>(j, "refused");
 }
 
 json AbsoluteStorage::save() const {
@@ -202,8 +202,8 @@ void AxisCircuit::load(const json& j) {
     incremental_conducting = read<bool>(j, "incremental_conducting");
     powered = read<bool>(j, "powered");
     stopped = read<bool>(j, "stopped");
-    contact_set_a = read<long>(j, "contact_set_a");
-    contact_set_b = read<long>(j, "contact_set_b");
+    contact_set_a = read<std::int64_t>(j, "contact_set_a");
+    contact_set_b = read<std::int64_t>(j, "contact_set_b");
     const json& o = member(j, "order");
     order.motion = read<std::string>(o, "motion") == "-" ? cardreader::Motion::reverse
                                                          : cardreader::Motion::forward;

@@ -73,12 +73,12 @@ void PositionRegister::count(int sense) {
     show();
 }
 
-void PositionRegister::count_many(long n, int sense) {
+void PositionRegister::count_many(std::int64_t n, int sense) {
     if (n <= 0 || sense == 0) {
         return;
     }
-    const long d = device_16_;
-    const long from = value_;
+    const std::int64_t d = device_16_;
+    const std::int64_t from = value_;
     if (sense > 0) {
         presets_ += (from + n) / d;
         value_ = static_cast<int>((from + n) % d);
@@ -107,7 +107,7 @@ void PositionRegister::load(const nlohmann::json& j) {
         throw axes::StateError("position_register_14: value outside 0 .. device 16");
     }
     value_ = v;
-    presets_ = axes::read<long>(j, "presets");
+    presets_ = axes::read<std::int64_t>(j, "presets");
 }
 
 } // namespace parsons::relaylogic

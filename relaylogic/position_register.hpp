@@ -45,12 +45,12 @@ public:
     // Switch 16A: the register homes.
     void clear() { preset(0); }
     // Fast-forward: n counts in one sense at once (what n single counts leave).
-    void count_many(long n, int sense);
+    void count_many(std::int64_t n, int sense);
     int value() const { return value_; }
     int device_16() const { return device_16_; }
     Digits digits() const { return value_digits(value_); }
     // Each time setter 15 operated (the crank passing top dead centre), for the report.
-    long presets() const { return presets_; }
+    std::int64_t presets() const { return presets_; }
     nlohmann::json save() const;
     void load(const nlohmann::json& j);
 
@@ -60,7 +60,7 @@ private:
     Tracer& tracer_;
     int device_16_;
     int value_ = 0;
-    long presets_ = 0;
+    std::int64_t presets_ = 0;
     std::array<SignalId, 4> switches_{};
     SignalId setter_15_ = 0;
     SignalId value_signal_ = 0;

@@ -258,8 +258,8 @@ void ProgrammableController::load(const nlohmann::json& j) {
     relay_ = r;
     answered_tool_ = tool;
     exchange_done_s_ = done;
-    exchanges_ = axes::read<long>(j, "exchanges");
-    transfers_ = axes::read<long>(j, "transfers");
+    exchanges_ = axes::read<std::int64_t>(j, "exchanges");
+    transfers_ = axes::read<std::int64_t>(j, "transfers");
     register_132_ = axes::exact(axes::member(j, "register_132"));
 }
 

@@ -60,8 +60,8 @@ public:
     ProgrammableController(Tracer& tracer, const axes::SpindleSyncProfile& profile);
 
     // Faults (stale-ratio:N, transfer-hang:N): N counts head exchanges / transfers from 1.
-    void stale_ratio_at(long exchange) { stale_ratio_at_ = exchange; }
-    void transfer_hang_at(long transfer) { transfer_hang_at_ = transfer; }
+    void stale_ratio_at(std::int64_t exchange) { stale_ratio_at_ = exchange; }
+    void transfer_hang_at(std::int64_t transfer) { transfer_hang_at_ = transfer; }
 
     // One scan of the ladder at machine time t. Reads the NC's signals on the bus, sets its own;
     // mounts the new head on the spindle when an exchange completes (the motor must stand).
@@ -73,8 +73,10 @@ public:
     // stands with nothing pending, and for a call of a tool memory 132 has no head for.
     bool busy(const Bus35& bus) const;
 
-    long exchanges() const { return exchanges_; } // head exchanges done
-    long transfers() const { return transfers_; } // transfers begun (S6), a hung one included
+    std::int64_t exchanges() const { return exchanges_; } // head exchanges done
+    std::int64_t transfers() const {
+        return transfers_;
+    } // transfers begun (S6), a hung one included
     bool exchanging() const { return exchange_done_s_ >= 0; }
 
     nlohmann::json save() const;
@@ -100,10 +102,10 @@ private:
 
     Tracer& tracer_;
     axes::SpindleSyncProfile profile_;
-    long stale_ratio_at_ = 0;
-    long transfer_hang_at_ = 0;
-    long exchanges_ = 0;
-    long transfers_ = 0;
+    std::int64_t stale_ratio_at_ = 0;
+    std::int64_t transfer_hang_at_ = 0;
+    std::int64_t exchanges_ = 0;
+    std::int64_t transfers_ = 0;
     double exchange_done_s_ = -1; // when the exchange under way completes; -1 = none
     std::array<bool, kRelays> relay_{};
     int answered_tool_ = 0;   // the tool CR1 latched (the head an exchange fetches)

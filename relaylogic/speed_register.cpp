@@ -28,7 +28,7 @@ SpeedRegister::SpeedRegister(Tracer& tracer, PulseSource source) : tracer_(trace
                                    "11", 14);
 }
 
-void SpeedRegister::count_many(long n) {
+void SpeedRegister::count_many(std::int64_t n) {
     // Four decades; the profile keeps an interval's pulses under 10000 (a wrap would be the
     // counter's own, as on any stepping-switch counter).
     count_ = static_cast<int>((count_ + n) % 10000);

@@ -25,7 +25,7 @@ public:
     // edges per sample (the speed S of motor 27, EP 0360190).
     explicit SpeedRegister(Tracer& tracer, PulseSource source = PulseSource::press_detector_10);
     void pulse() { count_many(1); }
-    void count_many(long n);
+    void count_many(std::int64_t n);
     // The sampling instant: the count moves into the holding bank; the counter homes.
     void sample();
     int stored() const { return stored_; }  // pulses in the last whole interval

@@ -22,11 +22,11 @@ public:
     };
 
     int position() const { return position_; }
-    long lost() const { return lost_; }
+    std::int64_t lost() const { return lost_; }
     // Net whole turns of the wiper: +1 each time it passes 9 -> 0, -1 each 0 -> 9. Not a part
     // of the 1952 switch: the emulator keeps it so that a report can tell a counter that
     // wrapped round from one that is 10 inches out (counters 104-110 read 0 .. 9.999 only).
-    long turns() const { return turns_; }
+    std::int64_t turns() const { return turns_; }
 
     Step step(int direction, double t, double min_interval_s) {
         if (t - last_step_s_ < min_interval_s) {
@@ -42,7 +42,7 @@ public:
     }
 
     // Fault: on its nth step (from 1) the wiper moves two positions.
-    void skip_on_step(long n) { skip_at_ = n; }
+    void skip_on_step(std::int64_t n) { skip_at_ = n; }
     bool skip_pending() const { return skip_at_ > steps_; }
     bool skipped() const { return skip_at_ > 0 && skip_at_ <= steps_; }
 
@@ -53,7 +53,7 @@ public:
     // Fast-forward: after a stretch of impulses that all found the switch ready, it stands on
     // `position`, and took its last step at time `last_step_s`.
     double last_step_s() const { return last_step_s_; }
-    void jump(int position, double last_step_s, long turns = 0) {
+    void jump(int position, double last_step_s, std::int64_t turns = 0) {
         position_ = position;
         last_step_s_ = last_step_s;
         turns_ += turns;
@@ -79,11 +79,11 @@ private:
     }
 
     int position_ = 0;
-    long steps_ = 0;   // steps taken (counted only for a skip fault's sake)
-    long skip_at_ = 0; // 0: no fault
+    std::int64_t steps_ = 0;   // steps taken (counted only for a skip fault's sake)
+    std::int64_t skip_at_ = 0; // 0: no fault
     double last_step_s_ = -std::numeric_limits<double>::infinity();
-    long lost_ = 0;
-    long turns_ = 0; // net wraps (see turns())
+    std::int64_t lost_ = 0;
+    std::int64_t turns_ = 0; // net wraps (see turns())
 };
 
 } // namespace parsons::relaylogic

@@ -33,7 +33,7 @@ public:
     // Faults: relay `digit` stuck closed (it never releases) or dead (it never picks).
     void stick(int digit);
     void kill(int digit);
-    long refused_picks() const { return refused_; } // picks a dead relay did not follow
+    std::int64_t refused_picks() const { return refused_; } // picks a dead relay did not follow
     // The state a saved machine keeps (relaylogic/machine_state.cpp).
     nlohmann::json save() const;
     void load(const nlohmann::json& j);
@@ -47,7 +47,7 @@ private:
     std::uint16_t closed_ = 0;
     std::uint16_t stuck_ = 0;
     std::uint16_t dead_ = 0;
-    long refused_ = 0;
+    std::int64_t refused_ = 0;
     std::array<SignalId, 10> signals_{};
 };
 

@@ -27,7 +27,7 @@ void SyncUnits::install(Tracer& tracer, const axes::MachineProfile& profile) {
     device_13_ = std::make_unique<DirectionJudgingDevice>(tracer, press_->count());
     // Lined up with top dead centre before the run (switch 16A at the top, then the crank
     // turned to its start): the register reads the crank's angle.
-    const long d16 = 360L * profile.press.pulses_per_degree;
+    const std::int64_t d16 = std::int64_t{360} * profile.press.pulses_per_degree;
     register_14_ = std::make_unique<PositionRegister>(
         tracer, static_cast<int>(d16), static_cast<int>(((press_->count() % d16) + d16) % d16));
     register_11_ = std::make_unique<SpeedRegister>(tracer);
@@ -56,7 +56,7 @@ bool SyncUnits::on_edge(const axes::DetectorEdge& edge, double t) {
     return scp_->detector_61(register_14_->value());
 }
 
-void SyncUnits::on_edges(long n, const axes::DetectorEdge& last, double t) {
+void SyncUnits::on_edges(std::int64_t n, const axes::DetectorEdge& last, double t) {
     if (n <= 0) {
         return;
     }
@@ -70,17 +70,17 @@ void SyncUnits::on_edges(long n, const axes::DetectorEdge& last, double t) {
     }
 }
 
-long SyncUnits::quiet_edges(long limit) const {
+std::int64_t SyncUnits::quiet_edges(std::int64_t limit) const {
     if (!scp_->holding()) {
         return limit;
     }
     // The edge that brings register 14 onto R makes 61 conduct: every edge before it is quiet.
-    const long d = register_14_->device_16();
-    const long v = register_14_->value();
-    const long target = scp_->target_pulses();
-    const long ahead =
+    const std::int64_t d = register_14_->device_16();
+    const std::int64_t v = register_14_->value();
+    const std::int64_t target = scp_->target_pulses();
+    const std::int64_t ahead =
         press_->speed_deg_per_s() < 0 ? ((v - target) % d + d) % d : ((target - v) % d + d) % d;
-    const long to_target = ahead == 0 ? d : ahead;
+    const std::int64_t to_target = ahead == 0 ? d : ahead;
     return std::min(limit, to_target - 1);
 }
 

@@ -52,10 +52,10 @@ public:
         return register_11_->stored();
     }
     // Fast-forward: n edges in the press's sense, the last of them `last`, at time t.
-    void on_edges(long n, const axes::DetectorEdge& last, double t);
+    void on_edges(std::int64_t n, const axes::DetectorEdge& last, double t);
     // Fast-forward: how many coming edges are only counts (the one that makes 61 conduct is
     // not), at most `limit`.
-    long quiet_edges(long limit) const;
+    std::int64_t quiet_edges(std::int64_t limit) const;
     // The machine time of the last detector edge (the start, before any).
     double last_edge_s() const { return last_edge_s_; }
     // Crank angle and die height as trace signals (at each edge, with an observer).

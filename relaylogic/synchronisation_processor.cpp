@@ -42,7 +42,8 @@ SynchronisationProcessor::SynchronisationProcessor(Tracer& tracer, int pulses_pe
     }
 }
 
-void SynchronisationProcessor::take(const cardreader::SyncOrder& order, long card, int number) {
+void SynchronisationProcessor::take(const cardreader::SyncOrder& order, std::int64_t card,
+                                    int number) {
     pending_ = order;
     pending_card_ = card;
     pending_number_ = number;
@@ -187,7 +188,7 @@ void SynchronisationProcessor::load(const nlohmann::json& j) {
             o.travel_per_pulse.at(i) = read_optional(f.at(i));
         }
         pending_ = o;
-        pending_card_ = axes::read<long>(p, "card");
+        pending_card_ = axes::read<std::int64_t>(p, "card");
         pending_number_ = axes::read<int>(p, "number");
     }
     target_ = read_optional(axes::member(j, "target"));

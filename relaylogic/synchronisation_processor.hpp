@@ -38,9 +38,9 @@ public:
 
     // ---- the sync card and the motion card it stands before ----
     // A sync card's orders, waiting for the next motion card (card: its deck position).
-    void take(const cardreader::SyncOrder& order, long card, int number);
+    void take(const cardreader::SyncOrder& order, std::int64_t card, int number);
     bool pending() const { return pending_.has_value(); }
-    long pending_card() const { return pending_card_; }
+    std::int64_t pending_card() const { return pending_card_; }
     int pending_number() const { return pending_number_; }
     const cardreader::SyncOrder& pending_order() const { return *pending_; }
     // The motion card's relays pick: the pending orders go into 60 and 62.
@@ -82,7 +82,7 @@ private:
     int ppd_;
     double block_s_;
     std::optional<cardreader::SyncOrder> pending_;
-    long pending_card_ = 0;
+    std::int64_t pending_card_ = 0;
     int pending_number_ = 0;
     std::optional<int> target_; // 60: R in pulses
     bool holding_ = false;

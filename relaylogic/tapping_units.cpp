@@ -115,9 +115,9 @@ void TappingUnits::withdraw_call(double t) {
 
 void TappingUnits::jump_to(double t) {
     while (true) {
-        const long n = spindle_->pulses_by(t);
+        const std::int64_t n = spindle_->pulses_by(t);
         if (n > 0) {
-            const long before = spindle_->count();
+            const std::int64_t before = spindle_->count();
             const axes::DetectorEdge last = spindle_->skip_pulses(n);
             const int way = last.count >= before ? +1 : -1;
             device_13_->jump_to(last.count, way);
@@ -202,7 +202,7 @@ bool TappingUnits::scan(double t) {
     return true;
 }
 
-HoleRecord& TappingUnits::open_hole(long card, int number, int tool_called) {
+HoleRecord& TappingUnits::open_hole(std::int64_t card, int number, int tool_called) {
     HoleRecord h;
     h.card = card;
     h.number = number;

@@ -63,9 +63,9 @@ struct TapSample {
 };
 
 struct HoleRecord {
-    long card = 0;       // position in the deck (1-based)
-    int number = 0;      // the card number
-    int tool_called = 0; // the tool the card called for
+    std::int64_t card = 0; // position in the deck (1-based)
+    int number = 0;        // the card number
+    int tool_called = 0;   // the tool the card called for
     int tool = 0; // the head on the spindle while it tapped (what really cut; 0: never began)
     std::optional<double> tap_pitch_in; // that head's tap (none: the head holds a cutter)
     double head_ratio = 0;              // that head's real ratio A
@@ -88,9 +88,9 @@ struct HoleRecord {
 struct TappingResult {
     int tool_on_spindle = 0;
     double ratio_in_memory = 0; // 12a when the run ended
-    long head_exchanges = 0;
-    long transfers = 0;       // ratios PC 130 sent (S6)
-    long ratios_received = 0; // ratios the NC stored (S16)
+    std::int64_t head_exchanges = 0;
+    std::int64_t transfers = 0;       // ratios PC 130 sent (S6)
+    std::int64_t ratios_received = 0; // ratios the NC stored (S16)
     std::vector<HoleRecord> holes;
 };
 
@@ -153,7 +153,7 @@ public:
     void keep_samples(bool on) { keep_samples_ = on; }
     std::vector<HoleRecord>& holes() { return holes_; }
     const std::vector<HoleRecord>& holes() const { return holes_; }
-    HoleRecord& open_hole(long card, int number, int tool_called);
+    HoleRecord& open_hole(std::int64_t card, int number, int tool_called);
 
     nlohmann::json save() const;
     void load(const nlohmann::json& j);

@@ -181,3 +181,19 @@ TEST_CASE("Faults: a bad spec is a usage error naming it, faults combine", "[fau
     CHECK(report["faults"].size() == 2);
     CHECK(report["axes"]["cross"]["screw_slip"].get<double>() == Approx(-0.003));
 }
+
+TEST_CASE("Faults: a count runs from 1 to 999999999, on every build (long is 32 bits on "
+          "WebAssembly)",
+          "[faults][cli]") {
+    const std::string sample = q(source_path("decks/samples/patent-example.csv"));
+    // Past the deck's impulses: accepted, and the run completes untouched.
+    auto r = run_parsons("run " + sample + " -q --fault drop-impulse:table:999999999");
+    CHECK(r.exit_code == 0);
+    for (const char* spec : {"drop-impulse:table:1000000000", "drop-impulse:table:0",
+                             "feed-twice:99999999999"}) {
+        INFO(spec);
+        r = run_parsons("run " + sample + " -q --fault " + spec);
+        CHECK(r.exit_code == 2);
+        CHECK(r.output.find("must be a count from 1 to 999999999") != std::string::npos);
+    }
+}
