@@ -39,19 +39,19 @@ void LeadScrewAxis::measure_by(MeasuringChain chain) {
     }
     nut_.reset_at(s_);
     set_limit_range();
-    last_h_ = std::clamp(1L, h_lo_, std::max(h_lo_, h_hi_));
+    last_h_ = std::clamp(std::int64_t{1}, h_lo_, std::max(h_lo_, h_hi_));
     start_phase(0);
 }
 
 void LeadScrewAxis::set_limit_range() {
     // The crossings inside the travel limits, found by bisection (the part's position is
     // monotonic in the screw's): h = 2m + 1.
-    auto real = [this](long m) { return real_at_crossing(2 * m + 1); };
-    constexpr long kFar = 1L << 40;
-    long lo = -kFar; // smallest m inside the lower limit
-    long hi = kFar;
+    auto real = [this](std::int64_t m) { return real_at_crossing(2 * m + 1); };
+    constexpr std::int64_t kFar = std::int64_t{1} << 40;
+    std::int64_t lo = -kFar; // smallest m inside the lower limit
+    std::int64_t hi = kFar;
     while (lo < hi) {
-        const long mid = floor_div(lo + hi, 2);
+        const std::int64_t mid = floor_div(lo + hi, 2);
         if (real(mid) >= profile_.travel_min_in) {
             hi = mid;
         } else {
@@ -62,7 +62,7 @@ void LeadScrewAxis::set_limit_range() {
     lo = -kFar; // largest m inside the upper limit
     hi = kFar;
     while (lo < hi) {
-        const long mid = floor_div(lo + hi + 1, 2);
+        const std::int64_t mid = floor_div(lo + hi + 1, 2);
         if (real(mid) <= profile_.travel_max_in) {
             lo = mid;
         } else {
@@ -184,11 +184,11 @@ void LeadScrewAxis::advance_slowly(double t) {
     }
 }
 
-double LeadScrewAxis::impulse_time(long n) const {
+double LeadScrewAxis::impulse_time(std::int64_t n) const {
     return boundary_time(k_ + d_ * (n - 1));
 }
 
-long LeadScrewAxis::impulses_by(double t) const {
+std::int64_t LeadScrewAxis::impulses_by(double t) const {
     if (!next_is_impulse_ || next_time_ > t) {
         return 0;
     }
@@ -196,7 +196,7 @@ long LeadScrewAxis::impulses_by(double t) const {
     const double reading = reading_at_screw(position_at(std::min(t, phase_end_)));
     const double first = crossing_in(2 * k_ + d_);
     const double estimate = std::floor((reading - first) * d_ / kInchesPerImpulse) + 1;
-    long n = estimate >= 1 && estimate < 1e15 ? static_cast<long>(estimate) : 1;
+    std::int64_t n = estimate >= 1 && estimate < 1e15 ? static_cast<std::int64_t>(estimate) : 1;
     while (n > 1 && impulse_time(n) > t) {
         --n;
     }
@@ -206,7 +206,7 @@ long LeadScrewAxis::impulses_by(double t) const {
     return n;
 }
 
-void LeadScrewAxis::skip_impulses(long n) {
+void LeadScrewAxis::skip_impulses(std::int64_t n) {
     t_ = impulse_time(n);
     k_ += d_ * (n - 1); // the last one is taken as any impulse is
     impulses_ += n - 1;
@@ -214,8 +214,8 @@ void LeadScrewAxis::skip_impulses(long n) {
     take_impulse();
 }
 
-long LeadScrewAxis::impulses_to_limit() const {
-    const long h1 = 2 * k_ + d_;
+std::int64_t LeadScrewAxis::impulses_to_limit() const {
+    const std::int64_t h1 = 2 * k_ + d_;
     if (h1 < h_lo_ || h1 > h_hi_) {
         return 1;
     }
@@ -255,8 +255,8 @@ double LeadScrewAxis::real_in_at(double t) const {
     return nut_.part_at_screw(position_at(std::min(t, next_time_)));
 }
 
-double LeadScrewAxis::fixture_angle_deg(bool sine_plate) const {
-    const double ratio = (real_in() - profile_.level_in) / profile_.pivot_to_screw_in;
+double fixture_angle_deg(const AxisProfile& profile, double real_in, bool sine_plate) {
+    const double ratio = (real_in - profile.level_in) / profile.pivot_to_screw_in;
     const double radians = sine_plate ? std::asin(std::clamp(ratio, -1.0, 1.0)) : std::atan(ratio);
     return radians * 180.0 / kPi;
 }
@@ -300,16 +300,16 @@ void LeadScrewAxis::load(const nlohmann::json& j) {
     time_per_index_ = exact(member(j, "time_per_index"));
     t_ = exact(member(j, "t"));
     s_ = exact(member(j, "screw_in"));
-    k_ = read<long>(j, "k");
-    last_h_ = read<long>(j, "last_h");
+    k_ = read<std::int64_t>(j, "k");
+    last_h_ = read<std::int64_t>(j, "last_h");
     target_dir_ = read<int>(j, "target_dir") >= 0 ? +1 : -1;
     target_speed_ = read<int>(j, "target_speed");
     target_u_ = exact(member(j, "target_u"));
     follow_accel_ = j.contains("follow_accel") ? exact(j.at("follow_accel")) : 0.0;
     next_time_ = exact(member(j, "next_time"));
     next_is_impulse_ = read<bool>(j, "next_is_impulse");
-    impulses_ = read<long>(j, "impulses");
-    slip_from_ = read<long>(j, "slip_from");
+    impulses_ = read<std::int64_t>(j, "impulses");
+    slip_from_ = read<std::int64_t>(j, "slip_from");
     slip_len_in_ = exact(member(j, "slip_length"));
     last_crossing_s_ = exact(member(j, "last_crossing_s"));
     has_crossing_ = read<bool>(j, "has_crossing");

@@ -66,8 +66,8 @@ struct Impulse {
 };
 
 // floor(a / b) for b > 0, also for negative a.
-inline long floor_div(long a, long b) {
-    const long q = a / b;
+inline std::int64_t floor_div(std::int64_t a, std::int64_t b) {
+    const std::int64_t q = a / b;
     return (a % b != 0 && a < 0) ? q - 1 : q;
 }
 
@@ -89,9 +89,14 @@ inline double time_to_cover(double D, double u, double a) {
 
 // The half-thousandth crossing h (odd) as a screw position: exactly the double that
 // (k + d / 2) * 0.001 gives for the crossing from k in direction d.
-inline double crossing_in(long h) {
+inline double crossing_in(std::int64_t h) {
     return static_cast<double>(h) * (kInchesPerImpulse / 2);
 }
+
+// The sine-plate geometry of swivel and tilt: the fixture angle a screw at `real_in` makes,
+// degrees, from its level position (tilt: sin = (screw - level) / arm, the sine plate; swivel:
+// tan = (screw - level) / arm). The report's angle and the exhibit page's (cli/run_timeline).
+double fixture_angle_deg(const AxisProfile& profile, double real_in, bool sine_plate);
 
 class LeadScrewAxis {
 public:
@@ -132,11 +137,11 @@ public:
 
     // Fast-forward: the time of the n-th impulse from now (n >= 1) in the current phase of
     // motion, or kNever if the phase ends (or the axis stops) first.
-    double impulse_time(long n) const;
+    double impulse_time(std::int64_t n) const;
     // How many of the coming impulses of this phase come at or before time t.
-    long impulses_by(double t) const;
+    std::int64_t impulses_by(double t) const;
     // Takes the next n impulses of this phase at once (n >= 1, impulse_time(n) finite).
-    void skip_impulses(long n);
+    void skip_impulses(std::int64_t n);
 
     double screw_in() const { return s_; }
     double real_in() const; // the part: where nut 78 really stands
@@ -155,40 +160,42 @@ public:
     // screw's speed.
     double least_screw_per_impulse() const { return least_screw_per_impulse_; }
     bool at_rest() const { return speed_in_per_s() == 0 && target_u_ == 0; }
-    long impulses() const { return impulses_; }
-    long commutator_index() const { return k_; } // thousandths the commutator has passed
+    std::int64_t impulses() const { return impulses_; }
+    std::int64_t commutator_index() const { return k_; } // thousandths the commutator has passed
 
     // Travel limits, decided on the half-thousandth crossings (the part's position through the
     // screw-error table is monotonic, so the crossings inside the limits form one range).
     // Did the last impulse's crossing put the part beyond a limit?
     bool beyond_limits() const { return last_h_ < h_lo_ || last_h_ > h_hi_; }
     // The first of the coming impulses (1-based) whose crossing lies beyond a limit.
-    long impulses_to_limit() const;
+    std::int64_t impulses_to_limit() const;
     const AxisProfile& profile() const { return profile_; }
     // The part's position at the crossing of the j-th coming impulse (j >= 1).
-    double real_at_impulse(long j) const { return real_at_crossing(2 * (k_ + d_ * (j - 1)) + d_); }
+    double real_at_impulse(std::int64_t j) const {
+        return real_at_crossing(2 * (k_ + d_ * (j - 1)) + d_);
+    }
 
     // Fault: from its nth impulse (from 1) the drive slips for `count` thousandths of screw
     // travel: the screw turns, the part stands (axes/lead_screw_nut.hpp).
-    void slip_from(long n, long count) {
+    void slip_from(std::int64_t n, std::int64_t count) {
         slip_from_ = n;
         slip_len_in_ = static_cast<double>(count) * kInchesPerImpulse;
     }
     bool slipping_ahead() const { return slip_len_in_ > 0 && slip_from_ > impulses_; }
-    long impulses_to_slip() const { return slipping_ahead() ? slip_from_ - impulses_ : 0; }
+    std::int64_t impulses_to_slip() const { return slipping_ahead() ? slip_from_ - impulses_ : 0; }
     double slip_in() const { return nut_.slip_in(); } // how far the part lags the screw
     // The first coming impulse (1-based) whose crossing puts the part where trips(x) holds,
     // for a trips that, once true, stays true further along the motion; 0 if none ever does.
     template <typename Trips>
-    long first_impulse_where(Trips trips) const {
-        constexpr long kFar = 1L << 40;
+    std::int64_t first_impulse_where(Trips trips) const {
+        constexpr std::int64_t kFar = std::int64_t{1} << 40;
         if (!trips(real_at_impulse(kFar))) {
             return 0;
         }
-        long lo = 1;
-        long hi = kFar;
+        std::int64_t lo = 1;
+        std::int64_t hi = kFar;
         while (lo < hi) {
-            const long mid = lo + (hi - lo) / 2;
+            const std::int64_t mid = lo + (hi - lo) / 2;
             if (trips(real_at_impulse(mid))) {
                 hi = mid;
             } else {
@@ -205,7 +212,9 @@ public:
     // Sine-plate geometry for swivel and tilt: the fixture angle this screw position makes,
     // degrees, from its level position (tilt: sin = (screw - level) / arm, the sine plate;
     // swivel: tan = (screw - level) / arm).
-    double fixture_angle_deg(bool sine_plate) const;
+    double fixture_angle_deg(bool sine_plate) const {
+        return axes::fixture_angle_deg(profile_, real_in(), sine_plate);
+    }
 
 private:
     [[gnu::always_inline]] Impulse take_impulse() {
@@ -224,7 +233,7 @@ private:
         // Commutators 100, 98, 96 close when the crossing also crosses a 0.01, 0.1 or 1 in
         // boundary: the crossing lies between readings upper - 1 and upper, and it passes such
         // a boundary exactly when upper is a whole number of hundredths, tenths or inches.
-        const long upper = d_ > 0 ? k_ : k_ + 1;
+        const std::int64_t upper = d_ > 0 ? k_ : k_ + 1;
         impulse.hundredths = upper % 10 == 0; // also for upper < 0
         impulse.tenths = impulse.hundredths && upper % 100 == 0;
         impulse.inches = impulse.tenths && upper % 1000 == 0;
@@ -238,7 +247,7 @@ private:
     void plan_constants();      // the constant-speed crossing times of this phase
     // The screw position at which the commutators' crossing h comes, in this stretch of nut
     // 78, and where the part then is.
-    [[gnu::always_inline]] double crossing_screw(long h) const {
+    [[gnu::always_inline]] double crossing_screw(std::int64_t h) const {
         if (chain_ == MeasuringChain::screw_turns) {
             return crossing_in(h);
         }
@@ -247,7 +256,7 @@ private:
         }
         return nut_.screw_at(nut_.sigma_at_part(shaft_.part_at_reading(crossing_in(h))));
     }
-    double real_at_crossing(long h) const {
+    double real_at_crossing(std::int64_t h) const {
         return chain_ == MeasuringChain::screw_turns ? nut_.part_at_screw(crossing_in(h))
                                                      : shaft_.part_at_reading(crossing_in(h));
     }
@@ -263,7 +272,7 @@ private:
         next_is_impulse_ = t != kNever;
         next_time_ = next_is_impulse_ ? t : phase_end_;
     }
-    [[gnu::always_inline]] double boundary_time(long k_from) const {
+    [[gnu::always_inline]] double boundary_time(std::int64_t k_from) const {
         if (a_ == 0 && linear_) {
             // At constant speed the crossing times are linear in the index: t0 + (boundary -
             // s0) / u, with the constants worked out once a phase. Never before the phase.
@@ -301,8 +310,8 @@ private:
     // The state now.
     double t_ = 0;
     double s_ = 0;
-    long k_ = 0;      // commutator index: round(s / 0.001)
-    long last_h_ = 0; // the last crossing, in half-thousandths (odd)
+    std::int64_t k_ = 0;      // commutator index: round(s / 0.001)
+    std::int64_t last_h_ = 0; // the last crossing, in half-thousandths (odd)
     int target_dir_ = +1;
     int target_speed_ = 0;
     double target_u_ = 0;
@@ -310,10 +319,10 @@ private:
     bool next_is_impulse_ = false;
     static constexpr int kFollowing = 4; // target_speed_ under the follower drive
     double follow_accel_ = 0;            // its rate limit
-    long impulses_ = 0;
-    long h_lo_ = 0; // crossings inside the travel limits: h_lo_ <= h <= h_hi_ (odd)
-    long h_hi_ = 0;
-    long slip_from_ = 0;         // the slip fault: from this impulse,
+    std::int64_t impulses_ = 0;
+    std::int64_t h_lo_ = 0; // crossings inside the travel limits: h_lo_ <= h <= h_hi_ (odd)
+    std::int64_t h_hi_ = 0;
+    std::int64_t slip_from_ = 0; // the slip fault: from this impulse,
     double slip_len_in_ = 0;     // this much screw travel (0 once begun)
     double last_crossing_s_ = 0; // the screw position of the last crossing taken
     bool has_crossing_ = false;

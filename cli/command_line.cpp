@@ -1,8 +1,33 @@
 #include "cli/command_line.hpp"
 
+#include "cli/exit_codes.hpp"
+#include "cli/output_file.hpp"
+
+#include "cardreader/deck_error.hpp"
+
+#include <fmt/format.h>
+
+#include <csignal>
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <system_error>
+
 namespace parsons::cli {
 
-void build_command_line(CLI::App& app, Command& selected, const std::string& version) {
+namespace {
+
+// The message for an error, and exit 2: standard output that cannot be written is a
+// failed output like any other.
+int write_error(const std::string& message) {
+    fmt::print(stderr, "parsons: error: {}\n", message);
+    return to_int(parsons::cli::ExitCode::bad_input);
+}
+
+} // namespace
+
+void build_command_line(CLI::App& app, Command& selected, const std::string& version,
+                        RunTimeline* timeline) {
     app.description("parsons: an emulator of the 1952 Parsons-Stulen punched-card milling "
                     "machine control (US 2,820,187)");
     app.require_subcommand(1);
@@ -12,12 +37,82 @@ void build_command_line(CLI::App& app, Command& selected, const std::string& ver
     add_punch_command(app, selected);
     add_show_command(app, selected);
     add_convert_command(app, selected);
-    add_run_command(app, selected);
+    add_run_command(app, selected, timeline);
     add_check_command(app, selected);
     add_profile_command(app, selected);
     add_gen_command(app, selected);
     add_demo_command(app, selected);
     add_bench_command(app, selected);
+}
+
+int command_line_main(int argc, char** argv, const std::string& version, RunTimeline* timeline) {
+    // A reader that goes away (a closed pipe or FIFO) is a write error with a message and
+    // exit 2, not a silent death by SIGPIPE.
+    std::signal(SIGPIPE, SIG_IGN);
+    CLI::App app;
+    Command selected;
+    build_command_line(app, selected, version, timeline);
+
+    // Name an unknown command rather than let CLI11 say only that one is required.
+    if (argc > 1 && argv[1][0] != '-') {
+        const std::string word = argv[1];
+        bool known = false;
+        std::string names;
+        for (const CLI::App* sub : app.get_subcommands({})) {
+            known = known || sub->get_name() == word;
+            names += (names.empty() ? "" : ", ") + sub->get_name();
+        }
+        if (!known) {
+            fmt::print(stderr,
+                       "parsons: error: unknown command '{}' (one of: {}; see parsons "
+                       "--help)\n",
+                       word, names);
+            return to_int(ExitCode::bad_input);
+        }
+    }
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() != 0) {
+            // CLI11's own message, worded as ours: prefix, the command to ask, exit 2.
+            std::string command = "parsons";
+            for (const CLI::App* sub = &app; sub != nullptr;) {
+                const auto chosen = sub->get_subcommands();
+                sub = chosen.empty() ? nullptr : chosen.front();
+                if (sub != nullptr) {
+                    command += " " + sub->get_name();
+                }
+            }
+            fmt::print(stderr, "parsons: error: {} (see '{} --help')\n", e.what(), command);
+            return to_int(ExitCode::bad_input);
+        }
+        app.exit(e); // --help: the help text, exit 0
+        try {
+            finish_standard_output();
+        } catch (const cardreader::DeckError& error) {
+            return write_error(error.what());
+        }
+        return 0;
+    }
+    try {
+        const ExitCode code = selected();
+        finish_standard_output();
+        return to_int(code);
+    } catch (const cardreader::DeckError& e) {
+        std::fflush(stdout);
+        return write_error(e.what());
+    } catch (const std::system_error& e) {
+        // fmt reports a failed write to standard output this way.
+        if (std::ferror(stdout) != 0) {
+            return write_error("standard output: cannot write: " + e.code().message());
+        }
+        fmt::print(stderr, "parsons: internal error: {} (please report this)\n", e.what());
+        return to_int(ExitCode::internal);
+    } catch (const std::exception& e) {
+        std::fflush(stdout);
+        fmt::print(stderr, "parsons: internal error: {} (please report this)\n", e.what());
+        return to_int(ExitCode::internal);
+    }
 }
 
 } // namespace parsons::cli

@@ -11,7 +11,15 @@
 
 namespace parsons::cli {
 
-// Registers every command on `app`; `version` is what --version prints.
-void build_command_line(CLI::App& app, Command& selected, const std::string& version);
+// Registers every command on `app`; `version` is what --version prints. `timeline` (may be
+// null): where every run is also recorded (the WebAssembly page's hook, web/parsons_web.cpp).
+void build_command_line(CLI::App& app, Command& selected, const std::string& version,
+                        RunTimeline* timeline = nullptr);
+
+// What `parsons ARGS...` does: parse, run the chosen command, and turn every error into its
+// message on standard error and its exit code (exit_codes.hpp). main() is this; so is each
+// command the WebAssembly page gives (web/parsons_web.cpp), so both word errors the same.
+int command_line_main(int argc, char** argv, const std::string& version,
+                      RunTimeline* timeline = nullptr);
 
 } // namespace parsons::cli

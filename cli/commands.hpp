@@ -19,12 +19,14 @@
 
 namespace parsons::cli {
 
+class RunTimeline;
 using Command = std::function<ExitCode()>;
 
 void add_punch_command(CLI::App& app, Command& selected);
 void add_convert_command(CLI::App& app, Command& selected);
 void add_show_command(CLI::App& app, Command& selected);
-void add_run_command(CLI::App& app, Command& selected);
+// `timeline` (may be null): recorded on every run the command line starts (the page's hook).
+void add_run_command(CLI::App& app, Command& selected, RunTimeline* timeline = nullptr);
 void add_profile_command(CLI::App& app, Command& selected);
 void add_gen_command(CLI::App& app, Command& selected);
 // gen gcode (cli/gen_gcode.cpp): a subcommand of gen.
@@ -41,6 +43,7 @@ struct RunRequest {
     std::string events;
     std::string path;
     std::string gcode; // the path as G-code (convert DECK -o path.ngc)
+    std::string html;  // the run as one self-contained replay page (cli/replay_page.hpp)
     std::string plot;
     std::string cut;
     std::string job;
@@ -56,6 +59,9 @@ struct RunRequest {
     bool quiet = false;
     bool impulse_level = false;
     DeckFlags deck;
+    // Not a flag: where an embedder (the WebAssembly page, web/parsons_web.cpp) wants the run
+    // recorded for its viewer; null from the command line.
+    RunTimeline* timeline = nullptr;
 };
 // The result of the run goes to *result too, if given (the benchmark counts its impulses).
 ExitCode run_deck(const RunRequest& request, relaylogic::RunResult* result = nullptr);

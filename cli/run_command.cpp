@@ -12,7 +12,9 @@
 #include "cli/plot_svg.hpp"
 #include "cli/press_proof.hpp"
 #include "cli/progress_line.hpp"
+#include "cli/replay_page.hpp"
 #include "cli/run_report.hpp"
+#include "cli/run_timeline.hpp"
 #include "cli/thread_proof.hpp"
 #include "cli/trace_outputs.hpp"
 #include "cli/two_tool.hpp"
@@ -97,12 +99,34 @@ decks::JobDescription read_job(const std::string& file, const std::string& deck_
     return job;
 }
 
+// The replay's design (--html, the page): for an airfoil template job (its job file beside the
+// deck, or --job), the section the cut grows against in the table and cross-slide frame.
+void add_design(RunTimeline& timeline, const RunRequest& f) {
+    const std::string file = f.job.empty() ? f.input + ".job.json" : f.job;
+    if (f.job.empty() && (f.input == "-" || !std::filesystem::is_regular_file(file))) {
+        return;
+    }
+    const decks::JobDescription job = read_job(file, f.input, f.deck);
+    if (job.kind != decks::JobKind::template_2d || !job.passes.empty()) {
+        return; // a wing or two-tool job: the replay shows the path alone
+    }
+    const auto airfoil = decks::open_airfoil(job);
+    const auto samples = decks::design_samples(*airfoil, job.options, job.work_zero_in, 400);
+    nlohmann::json points = nlohmann::json::array();
+    for (const Eigen::Vector2d& p : samples.points) {
+        points.push_back({p.x(), p.y()});
+    }
+    timeline.set_design({{"airfoil", job.airfoil},
+                         {"cutter_radius_in", job.options.cutter_radius_in},
+                         {"points", std::move(points)}});
+}
+
 // A progress line on stderr, only when stderr is a terminal: how far through the deck file.
 class ProgressBar : public relaylogic::MachineObserver {
 public:
     ProgressBar(InputDeck& deck, bool wanted) : deck_(deck), line_(wanted) {}
     bool shown() const { return line_.shown(); }
-    void on_card(double t, long index, const cardreader::CardOrders& /*orders*/) override {
+    void on_card(double t, std::int64_t index, const cardreader::CardOrders& /*orders*/) override {
         line_.show(deck_.fraction_read(), fmt::format("card {}  machine time {:.1f} s", index, t));
     }
     bool follows_impulses() const override { return false; }
@@ -181,7 +205,7 @@ nlohmann::json state_json(const relaylogic::RunResult& r, const nlohmann::json& 
                                                           {"real_in", x.real_in}};
     }
     const auto& s = *r.stop;
-    const long resume_card = axes::read<long>(resume_point, "cards_read") + 1;
+    const std::int64_t resume_card = axes::read<std::int64_t>(resume_point, "cards_read") + 1;
     // The cards the stopped run had machined, so that a resume can tell when they changed.
     nlohmann::json machined = nullptr;
     if (f.input != "-") {
@@ -283,7 +307,7 @@ static void say_what_resumes(const nlohmann::json& state, const AppliedProfile& 
     }
     const nlohmann::json machined = state.value("cards_machined", nlohmann::json());
     if (machined.is_object() && f.input != "-") {
-        const long cards = machined.value("cards", 0L);
+        const std::int64_t cards = machined.value("cards", std::int64_t{0});
         const std::string was = machined.value("fingerprint", std::string());
         const auto now = fingerprint_deck(f.input, f.deck, cards);
         if (now.cards() == cards && now.hex() != was) {
@@ -464,6 +488,18 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
         }
         cabinet.record_tap_samples(true);
     }
+    // The replay page's recording (--html), or the embedder's.
+    std::unique_ptr<RunTimeline> html_timeline;
+    RunTimeline* timeline = f.timeline;
+    if (timeline == nullptr && !f.html.empty()) {
+        html_timeline = std::make_unique<RunTimeline>();
+        timeline = html_timeline.get();
+    }
+    if (timeline != nullptr) {
+        timeline->set_machine(profile);
+        observers.add(timeline);
+        add_design(*timeline, f);
+    }
     ProgressBar progress(deck, !f.quiet);
     if (progress.shown()) {
         observers.add(&progress);
@@ -556,6 +592,9 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     if (!f.report.empty()) {
         write_file(f.report, report.dump(2) + "\n");
     }
+    if (!f.html.empty()) {
+        write_file(f.html, replay_page(*timeline, report, f.input));
+    }
     if (!f.save_state.empty()) {
         if (result.stop) {
             write_file(f.save_state,
@@ -605,8 +644,9 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     return ExitCode::ok;
 }
 
-void add_run_command(CLI::App& app, Command& selected) {
+void add_run_command(CLI::App& app, Command& selected, RunTimeline* timeline) {
     auto flags = std::make_shared<RunRequest>();
+    flags->timeline = timeline;
     CLI::App* cmd = app.add_subcommand(
         "run", "Run a deck through the emulated control cabinet and five lead-screw axes");
     cmd->add_option("DECK", flags->input, "The deck to run")->required();
@@ -615,6 +655,10 @@ void add_run_command(CLI::App& app, Command& selected) {
                     "Write every relay, switch and lamp as a VCD trace "
                     "(GTKWave)");
     cmd->add_option("--events", flags->events, "Write one JSON object per signal change");
+    cmd->add_option("--html", flags->html,
+                    "Write the run as one self-contained HTML page that replays it: the cabinet's "
+                    "relays, counters and lamps and the cutter's path, on machine time (opens "
+                    "from disk, no server)");
     cmd->add_option("--path", flags->path, "Write machine time and the five real positions, CSV");
     cmd->add_option("--plot", flags->plot, "Draw positions and speed positions against time, SVG");
     cmd->add_option("--cut", flags->cut,

@@ -6,12 +6,16 @@ set -euo pipefail
 # clang and libclang-rt-14-dev: libFuzzer and clang's sanitizer runtimes, for scripts/fuzz.sh.
 # groff-base and zsh: the tests read the manual pages with groff and parse the zsh completion.
 # dpkg-dev and file: CPack works out the .deb's Depends with dpkg-shlibdeps.
+# emscripten and node-acorn (its JavaScript optimizer's parser): the exhibit page, the emulator
+# compiled to WebAssembly (cmake --preset wasm, docs/web.md). chromium: the page's tests in a
+# real browser, headless (puppeteer-core drives it; nothing downloads a browser).
 packages=(g++ cmake make dpkg-dev file libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev catch2
           gtkwave
-          clang libclang-rt-14-dev groff-base zsh)
+          clang libclang-rt-14-dev groff-base zsh
+          emscripten node-acorn chromium)
 # Node.js and npm: the tests' independent cross-checks (tests/js: Ajv validates every JSON
-# output against docs/schemas, gcode-toolpath reads the G-code parsons writes). Debian's own
-# unless a node is already on the PATH.
+# output against docs/schemas, gcode-toolpath reads the G-code parsons writes) and the browser
+# tests (puppeteer-core). Debian's own unless a node is already on the PATH.
 if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
     packages+=(nodejs npm)
 fi

@@ -1,0 +1,83 @@
+// The run as the exhibit page plays it back (web/, docs/web.md): every signal the cabinet
+// defines, every change of one, the five real positions at every impulse, the cards, the
+// stop and the finish, in machine time. The WebAssembly page records a run with it and hands
+// the arrays to the viewer as they are; `parsons run --html FILE` embeds them in one
+// self-contained page. The viewer only applies the recorded changes: nothing is computed
+// twice.
+#pragma once
+
+#include "axes/machine_profile.hpp"
+#include "relaylogic/machine_observer.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace parsons::cli {
+
+class RunTimeline : public relaylogic::MachineObserver {
+public:
+    static constexpr std::size_t kMotionRecord = 8;
+
+    // A deck with more changes than this is recorded up to the limit (the header says so); the
+    // report of the run stays whole. 8 million changes are 128 MB of arrays.
+    explicit RunTimeline(std::size_t max_changes = 8'000'000) : max_changes_(max_changes) {}
+
+    // The machine the run is on: its swivel and tilt screws' geometry turns each motion record's
+    // two fixture screws into the fixture's angles (axes::fixture_angle_deg).
+    void set_machine(const axes::MachineProfile& profile) { profile_ = profile; }
+
+    void on_signal_defined(const relaylogic::SignalInfo& info, std::uint32_t initial) override;
+    void on_signal(double t, relaylogic::SignalId id, std::uint32_t old_value,
+                   std::uint32_t new_value) override;
+    void on_motion(double t, const std::array<double, 5>& real_in) override;
+    void on_card(double t, std::int64_t index, const cardreader::CardOrders& orders) override;
+    void on_stop(double t, const relaylogic::StopInfo& stop) override;
+    void on_condition(double t, const relaylogic::ConditionEvent& event) override;
+    void on_finish(double t) override;
+
+    // For an airfoil template job: the design the cut grows against (docs/web.md).
+    void set_design(nlohmann::json design) { design_ = std::move(design); }
+
+    // Everything but the arrays: signals, cards, stop, finish, counts (docs/web.md).
+    nlohmann::json header() const;
+
+    // The arrays, one entry a change: machine time (s), signal id, new value.
+    const std::vector<double>& change_times() const { return change_t_; }
+    const std::vector<std::uint32_t>& change_ids() const { return change_id_; }
+    const std::vector<std::uint32_t>& change_values() const { return change_v_; }
+    // Eight numbers a motion record: machine time, then table, cross, vertical, swivel, tilt
+    // (inches), then the swivel's and the tilt's fixture angle (degrees).
+    const std::vector<double>& motion() const { return motion_; }
+
+    // Header and arrays in one JSON document, the arrays as base64 of their little-endian
+    // bytes (what `run --html` embeds).
+    std::string embedded_json() const;
+
+private:
+    bool full() const { return change_t_.size() >= max_changes_; }
+
+    std::size_t max_changes_;
+    axes::MachineProfile profile_;
+    bool truncated_ = false;
+    nlohmann::json signals_ = nlohmann::json::array();
+    nlohmann::json cards_ = nlohmann::json::array();
+    nlohmann::json conditions_ = nlohmann::json::array();
+    nlohmann::json stop_;
+    nlohmann::json design_;
+    double finish_ = -1;
+    std::vector<double> change_t_;
+    std::vector<std::uint32_t> change_id_;
+    std::vector<std::uint32_t> change_v_;
+    std::vector<double> motion_;
+};
+
+// The bytes of `data` as base64 (RFC 4648, with padding).
+std::string base64(const unsigned char* data, std::size_t size);
+
+} // namespace parsons::cli

@@ -1,0 +1,215 @@
+#!/usr/bin/env node
+// The exhibit page in a real browser (docs/web.md): Debian's chromium, headless, driven by
+// puppeteer-core (tests/js's lockfile; it downloads no browser), the page served from
+// localhost by a static server of this script's own.
+//
+//   node tests/js/browser_test.js SITE_DIR PARSONS_EXE WORK_DIR
+//
+// SITE_DIR is build-wasm/site (cmake --preset wasm), PARSONS_EXE the native program the page
+// is held against, WORK_DIR where the native runs, the --html file, the downloads and the
+// screenshots go (kept as artefacts). It asserts:
+//   - the sample deck and the demo deck, run "to the end" in the page: machine time, stop
+//     reason, every axis's counter reading and real position equal the native report's;
+//   - single card stops on the next card; the cabinet's parts carry their numeral and say
+//     what they do; a bad card shows the message the CLI prints for it, word for word;
+//   - the generator writes a bundled airfoil's deck into the keypunch, card for card the
+//     native `gen airfoil`'s; the downloads are the deck, report and trace the CLI writes;
+//   - `parsons run --html` opens from disk (file://, no server, no WebAssembly) and replays
+//     to the same end;
+//   - no console error, page error or failed request anywhere.
+// It prints the first-view time and the wasm size. Exit 0 when all holds, 1 otherwise.
+'use strict';
+
+const childProcess = require('child_process');
+const fs = require('fs');
+const path = require('path');
+const { startServer, launchChromium, watchPage, nativeReport, pageResult } = require('./web_support');
+
+const [site, parsonsExe, workDir] = process.argv.slice(2).map((a) => path.resolve(a));
+if (process.argv.length !== 5) {
+  console.error('usage: browser_test.js SITE_DIR PARSONS_EXE WORK_DIR');
+  process.exit(2);
+}
+const SOURCE = path.resolve(__dirname, '..', '..');
+fs.rmSync(workDir, { recursive: true, force: true });
+fs.mkdirSync(workDir, { recursive: true });
+
+let failures = 0;
+function check(ok, what, detail = '') {
+  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}${detail ? ': ' + detail : ''}`);
+  if (!ok) failures++;
+}
+function parsons(args, opts = {}) {
+  return childProcess.spawnSync(parsonsExe, args, { encoding: 'utf8', ...opts });
+}
+
+// The page's end of a run against the native report of the same deck.
+function compareRun(name, page, report) {
+  // The report gives machine time to the microsecond.
+  check(Math.abs(page.seconds - report.machine_seconds) <= 5e-7, `${name}: machine time`,
+        `page ${page.seconds}, CLI ${report.machine_seconds}`);
+  const reason = report.stop ? report.stop.reason : 'completed';
+  check(page.reason === reason, `${name}: stop reason`, `page ${page.reason}, CLI ${reason}`);
+  for (const [axis, a] of Object.entries(report.axes)) {
+    // The counters read 0.000 .. 9.999 (four decimal stepping switches).
+    const thousandths = ((Math.round(a.position * 1000) % 10000) + 10000) % 10000;
+    const counters = `${Math.floor(thousandths / 1000)}.${String(thousandths % 1000).padStart(3, '0')}`;
+    check(page.axes[axis].counters === counters, `${name}: ${axis} counters`,
+          `page ${page.axes[axis].counters}, CLI position ${a.position}`);
+    check(page.axes[axis].real === a.real_position.toFixed(5), `${name}: ${axis} real position`,
+          `page ${page.axes[axis].real}, CLI ${a.real_position}`);
+  }
+}
+
+(async () => {
+  const server = await startServer(site);
+  const browser = await launchChromium(path.join(workDir, 'profile'));
+  const problems = [];
+  try {
+    const page = await browser.newPage();
+    await page.setViewport({ width: 1400, height: 1000 });
+    watchPage(page, problems);
+    const cdp = await page.createCDPSession();
+    await cdp.send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: workDir });
+
+    // ---- first view
+    await page.goto(`${server.url}/index.html`);
+    await page.waitForSelector('#machine-status[data-state="ready"]', { timeout: 30000 });
+    const readyMs = await page.evaluate(() => window.parsonsReadyAt);
+    const wasmBytes = fs.statSync(path.join(site, 'parsons_web.wasm')).size;
+    console.log(`first view interactive ${readyMs.toFixed(0)} ms after navigation; ` +
+                `parsons_web.wasm ${(wasmBytes / 1048576).toFixed(2)} MiB`);
+    check(readyMs > 0, 'the page says when it became interactive');
+
+    // ---- the sample deck, as the page loads it, to the end
+    const listing = await page.$eval('#listing', (e) => e.value);
+    const sampleFile = path.join(SOURCE, 'decks', 'samples', 'patent-example.csv');
+    check(listing === fs.readFileSync(sampleFile, 'utf8'), 'the keypunch holds the sample deck');
+    const cards = await page.$$eval('#cards img', (imgs) => imgs.length);
+    check(cards === 4, 'the sample deck is drawn card by card', `${cards} cards`);
+    await page.click('#to-end');
+    await page.waitForSelector('#run-state[data-finished="true"]');
+    const sample = await pageResult(page);
+    compareRun('sample deck', sample, nativeReport(parsonsExe, sampleFile, workDir, 'sample'));
+    await page.screenshot({ path: path.join(workDir, 'sample-deck.png'), fullPage: true });
+
+    // ---- the cabinet explains itself
+    const hover = await page.$eval('#panel [data-scope="table"] [data-name="speed_switch_236"]',
+                                   (e) => e.getAttribute('title'));
+    check(/236/.test(hover) && /steps once per impulse/.test(hover), 'speed switch 236 says what it does', hover);
+    const dials = await page.$$eval('#panel [data-scope="table"] .dial', (d) => d.map((x) => x.dataset.name));
+    check(dials.includes('absolute_counter_110') && dials.includes('increment_counter_316'),
+          'the table\'s counters are dials', dials.join(' '));
+    // Lamps 270 and 272 light at every stop of the axis: the recorded run lights each of the
+    // table's at least once a card.
+    const lamps = await page.evaluate(() => {
+      const v = window.parsonsViewer;
+      const on = {};
+      v.h.signals.forEach((s, id) => { if (s && s.scope === 'table' && /^lamp_27[02]$/.test(s.name)) on[id] = [s.name, 0]; });
+      for (let i = 0; i < v.a.change_id.length; i++) if (on[v.a.change_id[i]] && v.a.change_v[i] === 1) on[v.a.change_id[i]][1]++;
+      return Object.values(on);
+    });
+    check(lamps.length === 2 && lamps.every(([, n]) => n >= 4), 'lamps 270 and 272 of the table light at its stops',
+          JSON.stringify(lamps));
+
+    // ---- single card, at 100x: the first press stops as card 1 is read, the second at card 2
+    await page.click('#restart');
+    await page.click('.speeds [data-speed="100"]');
+    for (const expected of ['1 (number 0001)', '2 (number 0002)']) {
+      await page.click('#single-card');
+      await page.waitForFunction((e) => document.getElementById('card-now').textContent === e &&
+                                 document.getElementById('run-state').textContent === 'paused',
+                                 { timeout: 60000 }, expected);
+    }
+    check(true, 'single card stops on the next card');
+    await page.screenshot({ path: path.join(workDir, 'single-card.png'), fullPage: true });
+
+    // ---- a bad card: the CLI's own words
+    const bad = listing.replace('1,0,table,+,1,8.785', '1,0,table,+,7,8.785');
+    check(bad !== listing, 'the bad card differs from the sample');
+    await page.$eval('#listing', (e, v) => { e.value = v; e.dispatchEvent(new Event('input')); }, bad);
+    await page.waitForSelector('#deck-error:not([hidden])');
+    const pageError = await page.$eval('#deck-error', (e) => e.textContent);
+    const badFile = path.join(workDir, 'deck.csv');
+    fs.writeFileSync(badFile, bad);
+    const cliError = parsons(['show', badFile]).stderr.trim();
+    check(pageError === cliError.split(badFile).join('/work/deck.csv'), 'a bad card is worded as the CLI words it',
+          `page "${pageError}", CLI "${cliError}"`);
+    await page.screenshot({ path: path.join(workDir, 'bad-card.png') });
+
+    // ---- the demo deck: as `parsons demo` generates it, to the end
+    await page.click('#load-demo');
+    await page.waitForFunction(() => document.getElementById('deck-error').hidden &&
+                               document.querySelectorAll('#cards img').length > 50);
+    await page.click('#to-end');
+    await page.waitForSelector('#run-state[data-finished="true"]');
+    const demo = await pageResult(page);
+    const demoDir = path.join(workDir, 'demo');
+    const d = parsons(['demo', '--out', demoDir]);
+    check(d.status === 0, 'parsons demo runs', d.status === 0 ? '' : d.stderr);
+    const demoReport = JSON.parse(fs.readFileSync(path.join(demoDir, 'report.json'), 'utf8'));
+    compareRun('demo deck', demo, demoReport);
+    const design = await page.evaluate(() => window.parsonsViewer.h.design && window.parsonsViewer.h.design.airfoil);
+    check(design === 'naca 2412', 'the demo run draws the cut against the NACA 2412 design', String(design));
+    await page.screenshot({ path: path.join(workDir, 'demo-deck.png'), fullPage: true });
+
+    // ---- the downloads are what the CLI writes
+    const downloaded = async (button, file) => {
+      fs.rmSync(path.join(workDir, file), { force: true });
+      await page.click(button);
+      for (let i = 0; i < 100 && !fs.existsSync(path.join(workDir, file)); i++) await new Promise((r) => setTimeout(r, 100));
+      return fs.existsSync(path.join(workDir, file)) ? fs.readFileSync(path.join(workDir, file)) : null;
+    };
+    const deck = await downloaded('#dl-deck', 'deck.cbn');
+    const nativeDeck = fs.readFileSync(path.join(demoDir, 'naca2412.cbn'));
+    check(deck !== null && deck.equals(nativeDeck), 'the deck download is the deck parsons demo punches');
+    const report = await downloaded('#dl-report', 'report.json');
+    const same = (r) => r.machine_seconds === demoReport.machine_seconds && r.status === demoReport.status &&
+      JSON.stringify(r.axes) === JSON.stringify(demoReport.axes) && JSON.stringify(r.cards) === JSON.stringify(demoReport.cards);
+    check(report !== null && same(JSON.parse(report)), 'the report download is the CLI\'s report of the deck');
+    const trace = await downloaded('#dl-trace', 'trace.vcd');
+    const nativeTrace = path.join(workDir, 'demo-trace.vcd');
+    parsons(['run', path.join(demoDir, 'naca2412.cbn'), '-q', '--trace', nativeTrace]);
+    const body = (t) => t.toString().replace(/\$date[\s\S]*?\$end/, '').replace(/\$version[\s\S]*?\$end/, '');
+    check(trace !== null && body(trace) === body(fs.readFileSync(nativeTrace)), 'the trace download is the CLI\'s trace');
+
+    // ---- the generator: a bundled coordinate file into the keypunch
+    await page.select('#gen-source', 'clarky');
+    await page.$eval('#gen-scallop', (e) => { e.value = '0.003'; });
+    await page.click('#gen-go');
+    await page.waitForFunction(() => /clarky/i.test(document.getElementById('gen-output').textContent));
+    const genCards = await page.$$eval('#cards img', (imgs) => imgs.length);
+    const nativeGen = path.join(workDir, 'clarky.cbn');
+    const g = parsons(['gen', 'airfoil', '--dat', 'clarky', '--chord', '6', '--cutter-radius', '0.25',
+                       '--scallop', '0.003', '-o', nativeGen, '--json']);
+    const nativeCards = JSON.parse(g.stdout).cards;
+    check(genCards === Math.min(nativeCards, 200), 'the generator fills the keypunch with the native deck',
+          `page ${genCards} cards drawn, CLI ${nativeCards} cards`);
+    await page.screenshot({ path: path.join(workDir, 'generator.png'), fullPage: true });
+    await page.close();
+
+    // ---- run --html: from disk, no server
+    const htmlFile = path.join(workDir, 'sample-replay.html');
+    const h = parsons(['run', sampleFile, '-q', '--html', htmlFile]);
+    check(h.status === 0 && fs.existsSync(htmlFile), 'parsons run --html writes the page', h.stderr);
+    const replay = await browser.newPage();
+    await replay.setViewport({ width: 1400, height: 1000 });
+    watchPage(replay, problems);
+    await replay.goto(`file://${htmlFile}`);
+    await replay.click('#to-end');
+    await replay.waitForSelector('#run-state[data-finished="true"]');
+    compareRun('run --html replay', await pageResult(replay), nativeReport(parsonsExe, sampleFile, workDir, 'replay'));
+    await replay.screenshot({ path: path.join(workDir, 'replay.png'), fullPage: true });
+    const noScripts = await replay.evaluate(() => [...document.scripts].every((s) => !s.src));
+    check(noScripts, 'the --html page loads nothing from outside itself');
+  } catch (e) {
+    check(false, 'the browser test ran through', e.stack || String(e));
+  } finally {
+    await browser.close();
+    server.close();
+  }
+  check(problems.length === 0, 'no console error, page error or failed request', problems.join('\n'));
+  console.log(`screenshots in ${workDir}: ${fs.readdirSync(workDir).filter((f) => f.endsWith('.png')).join(' ')}`);
+  console.log(failures === 0 ? 'all browser checks passed' : `${failures} browser check(s) failed`);
+  process.exit(failures === 0 ? 0 : 1);
+})();

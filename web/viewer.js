@@ -1,0 +1,579 @@
+// The viewer of the exhibit page (web/index.html) and of `parsons run --html`: it plays a run
+// that the C++ emulator recorded (cli/run_timeline.hpp) on machine time. It computes nothing
+// of the machine: it applies the recorded signal changes in order and draws them, the relays
+// as lamps, the stepping switches as dials, and the recorded positions as the cutter's path.
+"use strict";
+
+const ParsonsViewer = (() => {
+  const SVG = "http://www.w3.org/2000/svg";
+
+  // What each part does, by its patent numeral (docs/patent-map.md), for the hover.
+  const LEGEND = {
+    "104": "Absolute counter, inches digit: a ten-position stepping switch stepped by the inch impulses of commutator 96. With 106, 108 and 110 it reads where the part is, through the instrument shaft.",
+    "106": "Absolute counter, tenths digit: stepped by commutator 98; carries into 104.",
+    "108": "Absolute counter, hundredths digit: stepped by commutator 100; carries into 106.",
+    "110": "Absolute counter, thousandths digit: stepped once for every 0.001 inch impulse of commutator 102.",
+    "310": "Increment counter (112), inches digit: counts the impulses of this move toward the slow-down point.",
+    "312": "Increment counter (112), tenths digit.",
+    "314": "Increment counter (112), hundredths digit.",
+    "316": "Increment counter (112), thousandths digit: one step per impulse.",
+    "350": "Absolute storage, inches digit: ten holding relays; the brushes close the relay of the digit punched for the stop position, and it holds for the whole move.",
+    "352": "Absolute storage, tenths digit of the stop position.",
+    "354": "Absolute storage, hundredths digit of the stop position.",
+    "356": "Absolute storage, thousandths digit of the stop position.",
+    "318": "Incremental storage, inches digit: the holding relays of the slow-down increment read from the card.",
+    "320": "Incremental storage, tenths digit of the slow-down increment.",
+    "322": "Incremental storage, hundredths digit of the slow-down increment.",
+    "324": "Incremental storage, thousandths digit of the slow-down increment.",
+    "122a": "Absolute comparer (122′): conducts when the absolute counters equal the stored stop position.",
+    "122b": "Incremental comparer (122″): conducts when the increment counter equals the stored increment: time to slow down.",
+    "236": "Speed switch: the card sets the start speed; it steps once per impulse of stepping relay 256 toward off (0), each step a slower motor speed.",
+    "238": "The speed switch's off contact: closed when 236 stands on off and the axis is stopped.",
+    "256": "Stepping relay: each impulse from a comparer steps speed switch 236 one position.",
+    "257": "The channel from the comparers to stepping relay 256.",
+    "258": "Delay device: a timed hold in channel 260 so the speed switch does not step twice on one comparer closing.",
+    "270": "Lamp: the absolute comparer conducting while 236 stands on off. Lit at every stop; the operator checks it against 272.",
+    "272": "Lamp: the incremental comparer conducting while 236 stands on off. Lit at every stop.",
+    "268": "Indicator: lights when the check at a stop finds the position wrong (the balancing circuit unbalanced) and the machine stops.",
+    "204": "Master switch: the cabinet's power to the motors. The electromagnet opens it when a check fails: the machine stops.",
+    "265": "Electromagnet: opens master switch 204 when balancing circuit 266 is unbalanced.",
+    "266": "Balancing circuit: compares the counters with the check field of the card at every stop (1 = unbalanced).",
+    "280": "Stepping shaft: steps through the card's sequence pattern, starting the axes whose pattern marks its position.",
+    "278": "The stepping shaft's motor.",
+    "274": "The impulse channel to stepping shaft 280's motor.",
+    "276": "The circuit to motor 278.",
+    "284": "Unit counting simultaneous impulses: the shaft steps only when every axis of this step has stopped.",
+    "288": "Single-impulse device: one added impulse per step of the shaft.",
+    "290": "Zeroizing contact: at the end of a card, clears the storages for the next.",
+    "292": "Zeroizing circuit.",
+    "294": "Channel clearing the absolute storage.",
+    "298": "Channel clearing the incremental storage and counter.",
+    "300": "Channel opening the sequence contacts.",
+    "302": "Channel resetting device 288.",
+    "304": "Channel indexing the card reader to the next card.",
+    "134": "Card reader: its brushes sense the holes of one card and pick the storage relays; then the card is checked and the axes start in their sequence.",
+    "165": "Spindle control (column 1 of the card): 0 off, 1 forward, 2 reverse.",
+    "214": "Reversing control: the direction the motor drives the lead screw (the card's motion sign).",
+    "224": "Sequence switch: its contacts 226–234 say in which step of shaft 280 this axis moves.",
+    "226": "Sequence contact: this axis moves in step 1 of the stepping shaft.",
+    "228": "Sequence contact: step 2.",
+    "230": "Sequence contact: step 3.",
+    "232": "Sequence contact: step 4.",
+    "234": "Sequence contact: step 5.",
+    "96": "Commutator 96 (inches): two contact sets, each changes over at every impulse it sends; a missed impulse shows as the two disagreeing.",
+    "98": "Commutator 98 (tenths).",
+    "100": "Commutator 100 (hundredths).",
+    "102": "Commutator 102 (thousandths): an impulse every 0.001 inch of the instrument shaft.",
+    "38": "Motor of the table lead screw.",
+    "50": "Motor of the cross-slide screw.",
+    "46": "Motor of the vertical screws.",
+    "44": "Motor of the fixture's transverse screw (swivel).",
+    "40": "Motor of the sine-plate screws (tilt).",
+  };
+
+  function b64(text, Type) {
+    const bin = atob(text);
+    const bytes = new Uint8Array(bin.length);
+    for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+    return new Type(bytes.buffer);
+  }
+
+  function el(tag, attrs, parent) {
+    const e = document.createElement(tag);
+    for (const [k, v] of Object.entries(attrs || {})) {
+      if (k === "text") e.textContent = v;
+      else e.setAttribute(k, v);
+    }
+    if (parent) parent.appendChild(e);
+    return e;
+  }
+
+  function svg(tag, attrs, parent) {
+    const e = document.createElementNS(SVG, tag);
+    for (const [k, v] of Object.entries(attrs || {})) e.setAttribute(k, v);
+    if (parent) parent.appendChild(e);
+    return e;
+  }
+
+  // The numeral of a signal's own part ("122a" of "absolute_comparer_122a").
+  function numeralOf(sig) {
+    const m = /_(\d+[ab]?)(?:\.|$)/.exec(sig.name.split(".").pop()) || /_(\d+[ab]?)$/.exec(sig.name.split(".")[0]);
+    return m ? m[1] : sig.numeral;
+  }
+
+  function hover(sig, numeral) {
+    const does = LEGEND[numeral] || LEGEND[sig.numeral] || "";
+    return `${sig.component}${sig.numeral ? " (" + sig.numeral + ")" : ""}` + (does ? `: ${does}` : "");
+  }
+
+  class Viewer {
+    constructor(doc) {
+      this.doc = doc;
+      this.speed = 1;
+      this.playing = false;
+      this.loaded = false;
+      this.beforePlay = null; // live mode: runs the deck when it changed
+      this.onFinished = null;
+      const $ = (id) => doc.getElementById(id);
+      this.$ = $;
+      $("play").addEventListener("click", () => this.play());
+      $("pause").addEventListener("click", () => this.pause());
+      $("single-card").addEventListener("click", () => this.singleCard());
+      $("restart").addEventListener("click", () => { if (this.ready()) { this.pause(); this.reset(); } });
+      for (const b of doc.querySelectorAll(".speeds button")) {
+        b.addEventListener("click", () => this.chooseSpeed(b.dataset.speed));
+      }
+      this.enable(false);
+    }
+
+    enable(on) {
+      for (const id of ["play", "pause", "single-card", "restart"]) this.$(id).disabled = !on;
+    }
+
+    ready() {
+      if (this.beforePlay && !this.beforePlay()) return false;
+      return this.loaded;
+    }
+
+    // header: cli/run_timeline.hpp's header(); arrays: its four arrays as typed arrays.
+    load(header, arrays, report) {
+      this.pause();
+      this.h = header;
+      this.a = arrays;
+      this.report = report;
+      this.finish = header.finish >= 0 ? header.finish
+        : Math.max(arrays.change_t.length ? arrays.change_t[arrays.change_t.length - 1] : 0,
+                   arrays.motion.length ? arrays.motion[arrays.motion.length - 8] : 0);
+      this.buildPanel();
+      this.buildPositions();
+      this.prepareMachine();
+      this.loaded = true;
+      this.enable(true);
+      this.reset();
+    }
+
+    reset() {
+      const sigs = this.h.signals;
+      this.values = new Uint32Array(sigs.length);
+      sigs.forEach((s, i) => { if (s) this.values[i] = s.initial; });
+      this.t = 0;
+      this.ci = 0;
+      this.mi = 0;
+      this.cardIndex = -1;
+      this.drawnMotion = 0;
+      this.finished = false;
+      this.clearMachine();
+      this.renderAll();
+    }
+
+    chooseSpeed(speed) {
+      for (const b of this.doc.querySelectorAll(".speeds button")) {
+        b.setAttribute("aria-pressed", String(b.dataset.speed === speed));
+      }
+      if (speed === "end") {
+        this.toEnd();
+        return;
+      }
+      this.speed = Number(speed);
+    }
+
+    play(stopAt) {
+      if (!this.ready()) return;
+      if (this.finished) this.reset();
+      this.stopAt = stopAt === undefined ? this.finish : stopAt;
+      if (this.playing) return;
+      this.playing = true;
+      this.$("run-state").textContent = "running";
+      let last = performance.now();
+      const frame = (now) => {
+        if (!this.playing) return;
+        const dt = Math.min(0.25, (now - last) / 1000);
+        last = now;
+        const target = Math.min(this.stopAt, this.t + dt * this.speed);
+        this.advanceTo(target);
+        if (target >= this.stopAt) {
+          this.playing = false;
+          this.renderState();
+          return;
+        }
+        requestAnimationFrame(frame);
+      };
+      requestAnimationFrame(frame);
+    }
+
+    pause() {
+      this.playing = false;
+      if (this.loaded) this.renderState();
+    }
+
+    // To the next card the reader senses (or the end).
+    singleCard() {
+      if (!this.ready()) return;
+      if (this.finished) this.reset();
+      const next = this.h.cards.find((c) => c.t > this.t + 1e-9);
+      this.play(next ? next.t : this.finish);
+    }
+
+    toEnd() {
+      if (!this.ready()) return;
+      this.playing = false;
+      this.advanceTo(this.finish);
+    }
+
+    // Applies every recorded change up to machine time t, then draws.
+    advanceTo(t) {
+      const { change_t, change_id, change_v, motion } = this.a;
+      const dirty = this.dirty || (this.dirty = new Set());
+      const values = this.values;
+      let ci = this.ci;
+      const n = change_t.length;
+      if (n - ci > 5000) {
+        // A long jump: apply, then redraw every part once.
+        while (ci < n && change_t[ci] <= t) { values[change_id[ci]] = change_v[ci]; ci++; }
+        this.allDirty = true;
+      } else {
+        while (ci < n && change_t[ci] <= t) {
+          values[change_id[ci]] = change_v[ci];
+          dirty.add(change_id[ci]);
+          ci++;
+        }
+      }
+      this.ci = ci;
+      let mi = this.mi;
+      const records = motion.length / 8;
+      while (mi < records && motion[mi * 8] <= t) mi++;
+      this.mi = mi;
+      const cards = this.h.cards;
+      while (this.cardIndex + 1 < cards.length && cards[this.cardIndex + 1].t <= t) this.cardIndex++;
+      this.t = t;
+      this.finished = t >= this.finish;
+      this.render();
+    }
+
+    // ---- the cabinet
+
+    buildPanel() {
+      const panel = this.$("panel");
+      panel.textContent = "";
+      this.updaters = new Array(this.h.signals.length);
+      const scopes = new Map();
+      this.h.signals.forEach((s, id) => {
+        if (!s) return;
+        if (!scopes.has(s.scope)) scopes.set(s.scope, []);
+        scopes.get(s.scope).push({ ...s, id });
+      });
+      const order = ["cabinet", ...this.h.axes];
+      const scopeNames = [...order.filter((s) => scopes.has(s)), ...[...scopes.keys()].filter((s) => !order.includes(s))];
+      for (const scope of scopeNames) {
+        const col = el("div", { class: "scope", "data-scope": scope }, panel);
+        el("h3", { text: scope === "cabinet" ? "shared" : scope }, col);
+        const banks = new Map();
+        const dials = [];
+        const singles = [];
+        for (const s of scopes.get(scope)) {
+          const relay = /^(.*)\.relay_(\d+)$/.exec(s.name);
+          if (relay) {
+            if (!banks.has(relay[1])) banks.set(relay[1], []);
+            banks.get(relay[1]).push({ ...s, digit: Number(relay[2]) });
+          } else if (/counter_\d+$/.test(s.name) && s.width >= 4) {
+            dials.push(s);
+          } else {
+            singles.push(s);
+          }
+        }
+        if (dials.length) this.buildDials(col, dials);
+        if (banks.size) this.buildBanks(col, banks);
+        if (singles.length) this.buildSingles(col, singles);
+      }
+      const explain = el("p", { class: "explain", id: "explain", text: "Hover over a part of the cabinet." }, panel);
+      panel.addEventListener("mouseover", (e) => {
+        const t = e.target.closest("[title]");
+        if (t) explain.textContent = t.getAttribute("title");
+      });
+    }
+
+    buildBanks(col, banks) {
+      const box = el("div", { class: "banks" }, col);
+      for (const [name, relays] of banks) {
+        const first = relays[0];
+        const numeral = numeralOf({ name, numeral: first.numeral });
+        const row = el("div", { class: "bank", title: hover(first, numeral), "data-bank": name }, box);
+        el("span", { class: "label", text: numeral }, row);
+        relays.sort((a, b) => a.digit - b.digit);
+        for (const r of relays) {
+          const lamp = el("span", { class: "relay", "data-signal": r.id, text: String(r.digit) }, row);
+          this.updaters[r.id] = (v) => lamp.classList.toggle("on", v !== 0);
+        }
+      }
+    }
+
+    buildDials(col, dials) {
+      const box = el("div", { class: "dials" }, col);
+      for (const d of dials) {
+        const numeral = numeralOf(d);
+        const wrap = el("div", { class: "dial", title: hover(d, numeral), "data-signal": d.id, "data-name": d.name }, box);
+        const s = svg("svg", { viewBox: "-22 -22 44 44", width: 44, height: 44 }, wrap);
+        svg("circle", { r: 20, class: "face" }, s);
+        for (let k = 0; k < 10; k++) {
+          const a = (k / 10) * 2 * Math.PI;
+          const tx = svg("text", { x: (15 * Math.sin(a)).toFixed(2), y: (-15 * Math.cos(a) + 2.5).toFixed(2), class: "tick" }, s);
+          tx.textContent = String(k);
+        }
+        const hand = svg("line", { x1: 0, y1: 0, x2: 0, y2: -10, class: "hand" }, s);
+        el("span", { class: "label", text: numeral }, wrap);
+        this.updaters[d.id] = (v) => {
+          hand.setAttribute("transform", `rotate(${v * 36})`);
+          wrap.dataset.value = String(v);
+        };
+      }
+    }
+
+    buildSingles(col, singles) {
+      const box = el("div", { class: "singles" }, col);
+      for (const s of singles) {
+        const numeral = numeralOf(s);
+        const lamp = el("span", { class: "lamp" + (/lamp|indicator/.test(s.name) ? " signal-lamp" : ""), title: hover(s, numeral), "data-signal": s.id, "data-name": s.name }, box);
+        const label = s.name.replace(/_/g, " ");
+        if (s.width > 1) {
+          el("span", { class: "label", text: label + " " }, lamp);
+          const v = el("b", {}, lamp);
+          this.updaters[s.id] = (x) => { v.textContent = String(x); lamp.classList.toggle("on", x !== 0); };
+        } else {
+          lamp.textContent = label;
+          this.updaters[s.id] = (x) => lamp.classList.toggle("on", x !== 0);
+        }
+      }
+    }
+
+    // ---- positions: the counters as the operator reads them, the recorded real positions
+
+    buildPositions() {
+      const table = this.$("positions");
+      while (table.rows.length > 1) table.deleteRow(1);
+      this.posCells = {};
+      this.h.axes.forEach((axis) => {
+        const tr = table.insertRow();
+        tr.dataset.axis = axis;
+        el("th", { text: axis }, tr);
+        this.posCells[axis] = {
+          counters: el("td", { class: "counters" }, tr),
+          real: el("td", { class: "real" }, tr),
+          angle: el("td", { class: "angle" }, tr),
+        };
+      });
+      // The absolute counter dials of each axis, inches to thousandths (104, 106, 108, 110).
+      this.counterIds = {};
+      this.h.signals.forEach((s, id) => {
+        const m = s && /^absolute_counter_(104|106|108|110)$/.exec(s.name);
+        if (m) (this.counterIds[s.scope] || (this.counterIds[s.scope] = {}))[m[1]] = id;
+      });
+    }
+
+    counterReading(axis) {
+      const ids = this.counterIds[axis];
+      if (!ids) return "";
+      const v = (n) => this.values[ids[n]];
+      return `${v(104)}.${v(106)}${v(108)}${v(110)}`;
+    }
+
+    // ---- the machine from above
+
+    prepareMachine() {
+      const m = this.a.motion;
+      let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+      const grow = (x, y) => { x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y); };
+      for (let i = 0; i < m.length; i += 8) grow(m[i + 1], m[i + 2]);
+      const design = this.h.design && this.h.design.points ? this.h.design.points : [];
+      for (const p of design) grow(p[0], p[1]);
+      if (!isFinite(x0)) { x0 = 0; x1 = 1; y0 = 0; y1 = 1; }
+      const r = this.h.design ? this.h.design.cutter_radius_in || 0 : 0;
+      const pad = Math.max(0.1, r * 1.5, 0.05 * Math.max(x1 - x0, y1 - y0));
+      const canvas = this.$("from-above");
+      const w = canvas.width, hgt = canvas.height;
+      const scale = Math.min((w - 20) / (x1 - x0 + 2 * pad), (hgt - 20) / (y1 - y0 + 2 * pad));
+      const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+      this.toPx = (x, y) => [w / 2 + (x - cx) * scale, hgt / 2 - (y - cy) * scale];
+      this.scale = scale;
+      this.layers = [0, 1].map(() => {
+        const c = document.createElement("canvas");
+        c.width = w; c.height = hgt;
+        return c;
+      });
+      this.buildGauges();
+    }
+
+    clearMachine() {
+      for (const c of this.layers) c.getContext("2d").clearRect(0, 0, c.width, c.height);
+      this.drawnMotion = 0;
+    }
+
+    buildGauges() {
+      const box = this.$("side-gauges");
+      box.textContent = "";
+      const s = svg("svg", { viewBox: "0 0 300 90", width: 300, height: 90 }, box);
+      // The vertical slide: a bar whose cutter head moves up and down.
+      const vert = svg("g", { transform: "translate(10,5)" }, s);
+      svg("rect", { x: 0, y: 0, width: 24, height: 80, class: "gauge-bg" }, vert);
+      this.vertHead = svg("rect", { x: 2, y: 36, width: 20, height: 8, class: "gauge-head" }, vert);
+      const tv = svg("text", { x: 30, y: 45, class: "gauge-text" }, vert);
+      tv.textContent = "vertical";
+      this.vertText = svg("text", { x: 30, y: 60, class: "gauge-text", "data-gauge": "vertical" }, vert);
+      const plate = (x, name) => {
+        const g = svg("g", { transform: `translate(${x},45)` }, s);
+        svg("line", { x1: -40, y1: 0, x2: 40, y2: 0, class: "gauge-level" }, g);
+        const bar = svg("line", { x1: -40, y1: 0, x2: 40, y2: 0, class: "gauge-plate" }, g);
+        const t = svg("text", { x: -40, y: 38, class: "gauge-text" }, g);
+        t.textContent = name;
+        const v = svg("text", { x: -40, y: -28, class: "gauge-text", "data-gauge": name }, g);
+        return { bar, v };
+      };
+      this.swivelGauge = plate(150, "swivel");
+      this.tiltGauge = plate(250, "tilt (sine plate)");
+      this.motionRange = { vmin: Infinity, vmax: -Infinity };
+      const m = this.a.motion;
+      for (let i = 0; i < m.length; i += 8) {
+        this.motionRange.vmin = Math.min(this.motionRange.vmin, m[i + 3]);
+        this.motionRange.vmax = Math.max(this.motionRange.vmax, m[i + 3]);
+      }
+    }
+
+    drawMachine() {
+      const m = this.a.motion;
+      const [band, centre] = this.layers.map((c) => c.getContext("2d"));
+      const r = this.h.design ? this.h.design.cutter_radius_in || 0 : 0;
+      const from = Math.max(0, this.drawnMotion - 1);
+      if (this.mi > from + 1) {
+        if (r > 0) {
+          band.strokeStyle = "#b9d3e6";
+          band.lineWidth = 2 * r * this.scale;
+          band.lineCap = band.lineJoin = "round";
+          band.beginPath();
+          for (let k = from; k < this.mi; k++) {
+            const [x, y] = this.toPx(m[k * 8 + 1], m[k * 8 + 2]);
+            if (k === from) band.moveTo(x, y); else band.lineTo(x, y);
+          }
+          band.stroke();
+        }
+        centre.strokeStyle = "#0b3d66";
+        centre.lineWidth = 1.2;
+        centre.beginPath();
+        for (let k = from; k < this.mi; k++) {
+          const [x, y] = this.toPx(m[k * 8 + 1], m[k * 8 + 2]);
+          if (k === from) centre.moveTo(x, y); else centre.lineTo(x, y);
+        }
+        centre.stroke();
+        this.drawnMotion = this.mi;
+      }
+      const canvas = this.$("from-above");
+      const g = canvas.getContext("2d");
+      g.fillStyle = "#f6f3ea";
+      g.fillRect(0, 0, canvas.width, canvas.height);
+      g.drawImage(this.layers[0], 0, 0);
+      const design = this.h.design && this.h.design.points ? this.h.design.points : [];
+      if (design.length) {
+        g.strokeStyle = "#c0392b";
+        g.lineWidth = 1.5;
+        g.beginPath();
+        design.forEach((p, i) => { const [x, y] = this.toPx(p[0], p[1]); if (i) g.lineTo(x, y); else g.moveTo(x, y); });
+        g.stroke();
+      }
+      g.drawImage(this.layers[1], 0, 0);
+      if (this.mi > 0) {
+        const k = (this.mi - 1) * 8;
+        const [x, y] = this.toPx(m[k + 1], m[k + 2]);
+        g.strokeStyle = "#e67e22";
+        g.lineWidth = 2;
+        g.beginPath();
+        g.arc(x, y, Math.max(3, r * this.scale), 0, 2 * Math.PI);
+        g.stroke();
+        // The gauges: vertical slide, swivel and tilt angles, as recorded.
+        const { vmin, vmax } = this.motionRange;
+        const span = vmax - vmin > 1e-9 ? vmax - vmin : 1;
+        this.vertHead.setAttribute("y", (70 - ((m[k + 3] - vmin) / span) * 68).toFixed(1));
+        this.vertText.textContent = `${m[k + 3].toFixed(3)} in`;
+        const tilt = (gauge, deg) => {
+          gauge.bar.setAttribute("transform", `rotate(${-deg})`);
+          gauge.v.textContent = `${deg.toFixed(2)}°`;
+        };
+        tilt(this.swivelGauge, m[k + 6]);
+        tilt(this.tiltGauge, m[k + 7]);
+      }
+      g.fillStyle = "#555";
+      g.font = "12px sans-serif";
+      g.fillText(design.length ? `design: ${this.h.design.airfoil} (red); cut so far (blue band); cutter centre (dark)` : "cutter-centre path: table → right, cross slide → up", 8, canvas.height - 8);
+    }
+
+    // ---- drawing
+
+    renderAll() {
+      this.updaters.forEach((u, id) => { if (u) u(this.values[id]); });
+      this.dirty = new Set();
+      this.allDirty = false;
+      this.renderState();
+    }
+
+    render() {
+      if (this.allDirty) {
+        this.renderAll();
+        return;
+      }
+      for (const id of this.dirty) { const u = this.updaters[id]; if (u) u(this.values[id]); }
+      this.dirty.clear();
+      this.renderState();
+    }
+
+    renderState() {
+      const $ = this.$;
+      const mt = $("machine-time");
+      mt.textContent = `${this.t.toFixed(3)} s of ${this.finish.toFixed(3)} s`;
+      mt.dataset.seconds = String(this.t);
+      const card = this.cardIndex >= 0 ? this.h.cards[this.cardIndex] : null;
+      $("card-now").textContent = card ? `${card.index} (number ${String(card.number).padStart(4, "0")})` : "–";
+      const state = $("run-state");
+      const stop = this.h.stop;
+      const stopMsg = $("stop-message");
+      if (this.finished) {
+        state.textContent = stop ? `machine stop: ${stop.reason}` : "completed";
+        state.dataset.reason = stop ? stop.reason : "completed";
+        state.dataset.finished = "true";
+        stopMsg.hidden = !stop;
+        if (stop) stopMsg.textContent = `parsons: machine stop: ${stop.reason}: ${stop.message}` + (stop.lamps && stop.lamps.length ? ` (lamps: ${stop.lamps.join(", ")})` : "");
+        if (this.h.truncated) stopMsg.hidden = false, stopMsg.textContent += " The deck is longer than the page records: the playback ends early; the report is whole.";
+        if (this.onFinished) this.onFinished();
+      } else {
+        state.textContent = this.playing ? "running" : this.t > 0 ? "paused" : "ready";
+        state.dataset.reason = "";
+        state.dataset.finished = "false";
+        stopMsg.hidden = true;
+      }
+      const m = this.a.motion;
+      const k = (this.mi - 1) * 8;
+      this.h.axes.forEach((axis, i) => {
+        const c = this.posCells[axis];
+        c.counters.textContent = this.counterReading(axis);
+        c.real.textContent = this.mi > 0 ? m[k + 1 + i].toFixed(5) : "";
+        c.angle.textContent = this.mi > 0 && axis === "swivel" ? `${m[k + 6].toFixed(3)}°`
+          : this.mi > 0 && axis === "tilt" ? `${m[k + 7].toFixed(3)}°` : "";
+      });
+      this.drawMachine();
+    }
+  }
+
+  // `parsons run --html`: the run embedded in the page.
+  function replayFromPage(doc) {
+    const timeline = JSON.parse(doc.getElementById("parsons-timeline").textContent);
+    const run = JSON.parse(doc.getElementById("parsons-run").textContent);
+    const arrays = {
+      change_t: b64(timeline.arrays.change_t, Float64Array),
+      change_id: b64(timeline.arrays.change_id, Uint32Array),
+      change_v: b64(timeline.arrays.change_v, Uint32Array),
+      motion: b64(timeline.arrays.motion, Float64Array),
+    };
+    const viewer = new Viewer(doc);
+    viewer.load(timeline, arrays, run.report);
+    window.parsonsViewer = viewer;
+    return viewer;
+  }
+
+  return { Viewer, replayFromPage, LEGEND };
+})();
