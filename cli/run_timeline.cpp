@@ -3,6 +3,9 @@
 #include "axes/lead_screw_axis.hpp"
 #include "cardreader/orders.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <bit>
 #include <cstring>
 
@@ -46,10 +49,35 @@ std::string base64(const unsigned char* data, std::size_t size) {
     return out;
 }
 
+RunTimeline::RunTimeline(std::size_t max_changes) : max_changes_(max_changes) {
+    // A short deck's record without a reallocation (the demo deck's is 66 000 changes).
+    const std::size_t expected = std::min<std::size_t>(max_changes, 1 << 17);
+    change_t_.reserve(expected);
+    change_id_.reserve(expected);
+    change_v_.reserve(expected);
+    motion_.reserve(expected / 4 * kMotionRecord);
+}
+
 void RunTimeline::on_signal_defined(const relaylogic::SignalInfo& info, std::uint32_t initial) {
+    signals_text_.clear();
+    const auto mix = [this](std::string_view text) {
+        for (const char c : text) {
+            signals_hash_ = (signals_hash_ ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
+        }
+        signals_hash_ = (signals_hash_ ^ 0xffU) * 0x100000001b3ULL; // a separator
+    };
+    mix(std::to_string(info.id));
+    mix(info.scope);
+    mix(info.name);
+    mix(info.component);
+    mix(info.numeral);
+    mix(std::to_string(info.width));
+    mix(std::to_string(initial));
     if (signals_.size() <= info.id) {
         signals_.get_ref<nlohmann::json::array_t&>().resize(info.id + 1);
+        last_values_.resize(info.id + 1);
     }
+    last_values_[info.id] = initial;
     signals_[info.id] = {{"scope", info.scope},         {"name", info.name},
                          {"component", info.component}, {"numeral", info.numeral},
                          {"width", info.width},         {"initial", initial}};
@@ -64,6 +92,7 @@ void RunTimeline::on_signal(double t, relaylogic::SignalId id, std::uint32_t /*o
     change_t_.push_back(t);
     change_id_.push_back(id);
     change_v_.push_back(new_value);
+    last_values_.at(id) = new_value;
 }
 
 void RunTimeline::on_motion(double t, const std::array<double, 5>& real_in) {
@@ -134,29 +163,47 @@ void RunTimeline::on_finish(double t) {
 }
 
 nlohmann::json RunTimeline::header() const {
+    return nlohmann::json::parse(header_text());
+}
+
+std::string RunTimeline::signals_text() const {
+    if (signals_text_.empty()) {
+        signals_text_ = signals_.dump();
+    }
+    return signals_text_;
+}
+
+std::string RunTimeline::header_text(bool with_signals) const {
     nlohmann::json axes = nlohmann::json::array();
     for (std::size_t i = 0; i < cardreader::kAxisCount; ++i) {
         axes.push_back(cardreader::axis_name(static_cast<cardreader::Axis>(i)));
     }
-    return {{"axes", std::move(axes)},
-            {"signals", signals_},
-            {"cards", cards_},
-            {"conditions", conditions_},
-            {"stop", stop_},
-            {"design", design_},
-            {"finish", finish_},
-            {"changes", change_t_.size()},
-            {"motion_records", motion_.size() / kMotionRecord},
-            {"truncated", truncated_}};
+    const nlohmann::json rest = {{"axes", std::move(axes)},
+                                 {"signals_signature", fmt::format("{:016x}", signals_hash_)},
+                                 {"cards", cards_},
+                                 {"conditions", conditions_},
+                                 {"stop", stop_},
+                                 {"design", design_},
+                                 {"finish", finish_},
+                                 {"final_values", last_values_},
+                                 {"changes", change_t_.size()},
+                                 {"motion_records", motion_.size() / kMotionRecord},
+                                 {"truncated", truncated_}};
+    std::string text = rest.dump();
+    if (with_signals) { // {"signals":[...], then the rest's keys
+        text.replace(0, 1, "{\"signals\":" + signals_text() + ",");
+    }
+    return text;
 }
 
 std::string RunTimeline::embedded_json() const {
-    nlohmann::json doc = header();
-    doc["arrays"] = {{"change_t", base64_of(change_t_)},
-                     {"change_id", base64_of(change_id_)},
-                     {"change_v", base64_of(change_v_)},
-                     {"motion", base64_of(motion_)}};
-    return doc.dump();
+    const nlohmann::json arrays = {{"change_t", base64_of(change_t_)},
+                                   {"change_id", base64_of(change_id_)},
+                                   {"change_v", base64_of(change_v_)},
+                                   {"motion", base64_of(motion_)}};
+    std::string text = header_text();
+    text.replace(text.size() - 1, 1, ",\"arrays\":" + arrays.dump() + "}");
+    return text;
 }
 
 } // namespace parsons::cli

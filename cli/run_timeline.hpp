@@ -26,7 +26,7 @@ public:
 
     // A deck with more changes than this is recorded up to the limit (the header says so); the
     // report of the run stays whole. 8 million changes are 128 MB of arrays.
-    explicit RunTimeline(std::size_t max_changes = 8'000'000) : max_changes_(max_changes) {}
+    explicit RunTimeline(std::size_t max_changes = 8'000'000);
 
     // The machine the run is on: its swivel and tilt screws' geometry turns each motion record's
     // two fixture screws into the fixture's angles (axes::fixture_angle_deg).
@@ -44,8 +44,14 @@ public:
     // For an airfoil template job: the design the cut grows against (docs/web.md).
     void set_design(nlohmann::json design) { design_ = std::move(design); }
 
-    // Everything but the arrays: signals, cards, stop, finish, counts (docs/web.md).
+    // Everything but the arrays: signals, cards, stop, finish, counts, and every signal's value
+    // after the last change recorded ("final_values": where "to the end" lands at once).
     nlohmann::json header() const;
+    // The same as JSON text. Without the signals (the same for every run on one machine
+    // profile) it is quick to write; "signals_signature" tells a reader whether the signals it
+    // has are these (signals_text()).
+    std::string header_text(bool with_signals = true) const;
+    std::string signals_text() const;
 
     // The arrays, one entry a change: machine time (s), signal id, new value.
     const std::vector<double>& change_times() const { return change_t_; }
@@ -66,6 +72,8 @@ private:
     axes::MachineProfile profile_;
     bool truncated_ = false;
     nlohmann::json signals_ = nlohmann::json::array();
+    mutable std::string signals_text_;                   // signals_ as text, once asked for
+    std::uint64_t signals_hash_ = 0xcbf29ce484222325ULL; // FNV-1a over every definition
     nlohmann::json cards_ = nlohmann::json::array();
     nlohmann::json conditions_ = nlohmann::json::array();
     nlohmann::json stop_;
@@ -75,6 +83,7 @@ private:
     std::vector<std::uint32_t> change_id_;
     std::vector<std::uint32_t> change_v_;
     std::vector<double> motion_;
+    std::vector<std::uint32_t> last_values_; // every signal after the last change recorded
 };
 
 // The bytes of `data` as base64 (RFC 4648, with padding).

@@ -111,6 +111,7 @@ TEST_CASE("Timeline: replaying the record from the initial values ends where the
         CHECK(dials == Approx(result.axes[cr::axis_index(axis)].counter_in).margin(1e-9));
     }
     CHECK(value_of(timeline, v, "table", "absolute_counter_110") == 5); // 0.205
+    CHECK(h["final_values"] == nlohmann::json(v)); // "to the end" lands where the record ends
     CHECK(value_of(timeline, v, "swivel", "absolute_counter_106") == 5);
 
     // The last motion record: the five real positions and the fixture's two angles.
@@ -160,6 +161,7 @@ TEST_CASE("Timeline: past its limit it records no more changes and says so", "[t
     CHECK(timeline.change_ids().size() == 50);
     const nlohmann::json h = timeline.header();
     CHECK(h["truncated"] == true);
+    CHECK(h["final_values"] == nlohmann::json(replayed(timeline))); // the record's end
     CHECK(h["cards"].size() == 2); // cards, stop and finish stay whole
 }
 

@@ -26,9 +26,19 @@
   function parsons(args, record = false) {
     out = [];
     err = [];
-    const code = M.call(JSON.stringify(args), record);
+    let code;
+    try {
+      code = M.call(JSON.stringify(args), record);
+    } catch (e) {
+      // The module itself failed (out of memory, say): say so, as the program would, exit 1.
+      err.push(`parsons: internal error: ${e} (please report this)`);
+      code = 1;
+    }
     return { code, out: out.join("\n"), err: err.join("\n") };
   }
+  // For the console and the tests: parsonsCall(["show", "/work/deck.csv"]).
+  window.parsonsCall = parsons;
+  window.parsonsModule = M;
   const FS = M.FS;
   const readText = (path) => FS.readFile(path, { encoding: "utf8" });
   const exists = (path) => FS.analyzePath(path).exists;
@@ -43,6 +53,7 @@
   const LISTING = "/work/deck.csv";
   const DECK = "/work/deck.cbn";
   const REPORT = "/work/report.json";
+  const MOST_DRAWN_ROWS = 5000; // about 1000 cards
   const listing = $("listing");
   const deckError = $("deck-error");
   let punched = false;   // /work/deck.cbn holds the listing's cards
@@ -63,9 +74,12 @@
     ran = false;
     setDownloads();
     clearFolder("/work/cards");
-    const shown = parsons(["show", LISTING, "--svg", "/work/cards"]);
+    // A long deck is shown but not drawn: a picture a card would fill the page's memory.
+    const rows = listing.value.split("\n").filter((l) => l.trim() && !l.trimStart().startsWith("#")).length;
+    const draw = rows <= MOST_DRAWN_ROWS;
+    const shown = parsons(["show", LISTING, ...(draw ? ["--svg", "/work/cards"] : [])]);
     $("deck-show").textContent = shown.out;
-    drawCards();
+    drawCards(draw);
     if (shown.code !== 0) {
       showError(shown.err);
       return false;
@@ -83,10 +97,15 @@
     return true;
   }
 
-  function drawCards() {
+  function drawCards(draw) {
     const box = $("cards");
     for (const img of box.querySelectorAll("img")) URL.revokeObjectURL(img.src);
     box.textContent = "";
+    if (!draw) {
+      box.textContent = `A deck this long is not drawn here (more than ${MOST_DRAWN_ROWS} rows); ` +
+        "parsons show --svg draws every card.";
+      return;
+    }
     const files = FS.readdir("/work/cards").filter((f) => f.endsWith(".svg")).sort();
     for (const f of files.slice(0, 200)) {
       const fig = document.createElement("figure");
@@ -230,15 +249,23 @@
   // ---- the run: parsons runs the punched deck and records it; the viewer plays the record
 
   window.parsonsTiming = {};
+  const signalsCache = { signature: null, signals: null };
   function runDeck() {
     if (!punched && !punchListing()) return false;
     const t0 = performance.now();
     const r = parsons(["run", DECK, "-q", "--report", REPORT, ...(job ? ["--job", job] : [])], true);
+    const t1 = performance.now();
     if (r.code !== 0 && r.code !== 3) {
       showError(r.err);
       return false;
     }
     const header = JSON.parse(M.timelineHeader());
+    // The signals are the same for every run on one profile: asked for only when they change.
+    if (header.signals_signature !== signalsCache.signature) {
+      signalsCache.signature = header.signals_signature;
+      signalsCache.signals = JSON.parse(M.timelineSignals());
+    }
+    header.signals = signalsCache.signals;
     const arrays = {
       change_t: M.changeTimes().slice(),
       change_id: M.changeIds().slice(),
@@ -246,8 +273,9 @@
       motion: M.motion().slice(),
     };
     const report = JSON.parse(readText(REPORT));
-    window.parsonsTiming.runMs = performance.now() - t0;
     viewer.load(header, arrays, report);
+    window.parsonsTiming.runMs = t1 - t0;
+    window.parsonsTiming.loadMs = performance.now() - t1;
     ran = true;
     setDownloads();
     return true;
@@ -297,6 +325,9 @@
 
   for (const id of ["load-sample", "load-demo", "load-file", "gen-go"]) $(id).disabled = false;
   $("load-sample").click();
+  // The sample deck is run at once, so that the cabinet stands ready at its first card and the
+  // browser has compiled the machine's hot code fully before a visitor's first press.
+  runDeck();
   viewer.enable(true);
   status.dataset.state = "ready";
   status.textContent = "The machine is ready: the patent's example deck is in the keypunch. Press Play.";

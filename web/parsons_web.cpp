@@ -44,8 +44,13 @@ int call(const std::string& args_json, bool record) {
     return code;
 }
 
+// The run's header without its signals, and the signals alone: the page asks for them only
+// when the header's signals_signature is new to it (a new machine profile).
 std::string timeline_header() {
-    return g_timeline ? g_timeline->header().dump() : "null";
+    return g_timeline ? g_timeline->header_text(false) : "null";
+}
+std::string timeline_signals() {
+    return g_timeline ? g_timeline->signals_text() : "null";
 }
 
 template <typename T>
@@ -71,6 +76,7 @@ emscripten::val motion() {
 EMSCRIPTEN_BINDINGS(parsons_web) {
     emscripten::function("call", &call);
     emscripten::function("timelineHeader", &timeline_header);
+    emscripten::function("timelineSignals", &timeline_signals);
     emscripten::function("changeTimes", &change_times);
     emscripten::function("changeIds", &change_ids);
     emscripten::function("changeValues", &change_values);

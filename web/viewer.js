@@ -131,8 +131,11 @@ const ParsonsViewer = (() => {
     }
 
     ready() {
-      if (this.beforePlay && !this.beforePlay()) return false;
-      return this.loaded;
+      // A deck run now is loaded without a first drawing: the caller moves on and draws.
+      this.quietLoad = true;
+      const ok = !this.beforePlay || this.beforePlay();
+      this.quietLoad = false;
+      return ok && this.loaded;
     }
 
     // header: cli/run_timeline.hpp's header(); arrays: its four arrays as typed arrays.
@@ -149,10 +152,10 @@ const ParsonsViewer = (() => {
       this.prepareMachine();
       this.loaded = true;
       this.enable(true);
-      this.reset();
+      this.reset(!this.quietLoad);
     }
 
-    reset() {
+    reset(draw = true) {
       const sigs = this.h.signals;
       this.values = new Uint32Array(sigs.length);
       sigs.forEach((s, i) => { if (s) this.values[i] = s.initial; });
@@ -163,7 +166,8 @@ const ParsonsViewer = (() => {
       this.drawnMotion = 0;
       this.finished = false;
       this.clearMachine();
-      this.renderAll();
+      if (draw) this.renderAll();
+      else this.allDirty = true;
     }
 
     chooseSpeed(speed) {
@@ -214,9 +218,15 @@ const ParsonsViewer = (() => {
       this.play(next ? next.t : this.finish);
     }
 
+    // The end at once: the record's final values (cli/run_timeline.hpp), not every change.
     toEnd() {
       if (!this.ready()) return;
       this.playing = false;
+      if (this.h.final_values && this.h.final_values.length === this.values.length) {
+        this.values.set(this.h.final_values);
+        this.ci = this.a.change_t.length;
+        this.allDirty = true;
+      }
       this.advanceTo(this.finish);
     }
 
@@ -253,6 +263,11 @@ const ParsonsViewer = (() => {
     // ---- the cabinet
 
     buildPanel() {
+      // The same machine profile defines the same signals: the panel built for the last run
+      // serves again.
+      const key = this.h.signals.map((s) => (s ? `${s.scope}.${s.name}` : "")).join(",");
+      if (key === this.panelKey) return;
+      this.panelKey = key;
       const panel = this.$("panel");
       panel.textContent = "";
       this.updaters = new Array(this.h.signals.length);
@@ -285,11 +300,14 @@ const ParsonsViewer = (() => {
         if (banks.size) this.buildBanks(col, banks);
         if (singles.length) this.buildSingles(col, singles);
       }
-      const explain = el("p", { class: "explain", id: "explain", text: "Hover over a part of the cabinet." }, panel);
-      panel.addEventListener("mouseover", (e) => {
-        const t = e.target.closest("[title]");
-        if (t) explain.textContent = t.getAttribute("title");
-      });
+      el("p", { class: "explain", id: "explain", text: "Hover over a part of the cabinet." }, panel);
+      if (!this.hoverBound) {
+        this.hoverBound = true;
+        panel.addEventListener("mouseover", (e) => {
+          const t = e.target.closest("[title]");
+          if (t) this.$("explain").textContent = t.getAttribute("title");
+        });
+      }
     }
 
     buildBanks(col, banks) {
@@ -349,6 +367,12 @@ const ParsonsViewer = (() => {
 
     buildPositions() {
       const table = this.$("positions");
+      if (this.posKey !== this.h.axes.join(",") || this.panelKey !== this.posPanelKey) {
+        this.posKey = this.h.axes.join(",");
+        this.posPanelKey = this.panelKey;
+      } else {
+        return; // the same axes and signals: the rows and the counter ids stand
+      }
       while (table.rows.length > 1) table.deleteRow(1);
       this.posCells = {};
       this.h.axes.forEach((axis) => {
@@ -394,11 +418,13 @@ const ParsonsViewer = (() => {
       const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
       this.toPx = (x, y) => [w / 2 + (x - cx) * scale, hgt / 2 - (y - cy) * scale];
       this.scale = scale;
-      this.layers = [0, 1].map(() => {
-        const c = document.createElement("canvas");
-        c.width = w; c.height = hgt;
-        return c;
-      });
+      if (!this.layers || this.layers[0].width !== w || this.layers[0].height !== hgt) {
+        this.layers = [0, 1].map(() => {
+          const c = document.createElement("canvas");
+          c.width = w; c.height = hgt;
+          return c;
+        });
+      }
       this.buildGauges();
     }
 
@@ -443,25 +469,34 @@ const ParsonsViewer = (() => {
       const r = this.h.design ? this.h.design.cutter_radius_in || 0 : 0;
       const from = Math.max(0, this.drawnMotion - 1);
       if (this.mi > from + 1) {
+        // The recorded points from the last drawn on, leaving out those within a third of a
+        // pixel of the one before (a picture cannot show them; the last always stays).
+        const pts = [];
+        let [lx, ly] = this.toPx(m[from * 8 + 1], m[from * 8 + 2]);
+        pts.push(lx, ly);
+        for (let k = from + 1; k < this.mi; k++) {
+          const [x, y] = this.toPx(m[k * 8 + 1], m[k * 8 + 2]);
+          if (Math.abs(x - lx) + Math.abs(y - ly) >= 0.33 || k === this.mi - 1) {
+            pts.push(x, y);
+            lx = x;
+            ly = y;
+          }
+        }
+        const stroke = (g) => {
+          g.beginPath();
+          g.moveTo(pts[0], pts[1]);
+          for (let i = 2; i < pts.length; i += 2) g.lineTo(pts[i], pts[i + 1]);
+          g.stroke();
+        };
         if (r > 0) {
           band.strokeStyle = "#b9d3e6";
           band.lineWidth = 2 * r * this.scale;
           band.lineCap = band.lineJoin = "round";
-          band.beginPath();
-          for (let k = from; k < this.mi; k++) {
-            const [x, y] = this.toPx(m[k * 8 + 1], m[k * 8 + 2]);
-            if (k === from) band.moveTo(x, y); else band.lineTo(x, y);
-          }
-          band.stroke();
+          stroke(band);
         }
         centre.strokeStyle = "#0b3d66";
         centre.lineWidth = 1.2;
-        centre.beginPath();
-        for (let k = from; k < this.mi; k++) {
-          const [x, y] = this.toPx(m[k * 8 + 1], m[k * 8 + 2]);
-          if (k === from) centre.moveTo(x, y); else centre.lineTo(x, y);
-        }
-        centre.stroke();
+        stroke(centre);
         this.drawnMotion = this.mi;
       }
       const canvas = this.$("from-above");

@@ -137,6 +137,21 @@ function compareRun(name, page, report) {
           `page "${pageError}", CLI "${cliError}"`);
     await page.screenshot({ path: path.join(workDir, 'bad-card.png') });
 
+    // ---- a bad card in a loaded deck file: card and column, in the CLI's words
+    const goodCbn = path.join(workDir, 'good.cbn');
+    parsons(['punch', sampleFile, '-o', goodCbn]);
+    const bytes = fs.readFileSync(goodCbn);
+    bytes[181] = 0xbf; // card 2, column 11: a card-start mark inside the card
+    const badCbn = path.join(workDir, 'bad.cbn');
+    fs.writeFileSync(badCbn, bytes);
+    const input = await page.$('#load-file');
+    await input.uploadFile(badCbn);
+    await page.waitForFunction(() => /card 2/.test(document.getElementById('deck-error').textContent));
+    const loadError = await page.$eval('#deck-error', (e) => e.textContent);
+    const cliLoad = parsons(['convert', badCbn, '-o', path.join(workDir, 'bad.csv')]).stderr.trim();
+    check(loadError === cliLoad.split(badCbn).join('/work/load/bad.cbn') && /column 11/.test(loadError),
+          'a bad card in a loaded file is worded as the CLI words it', `page "${loadError}", CLI "${cliLoad}"`);
+
     // ---- the demo deck: as `parsons demo` generates it, to the end
     await page.click('#load-demo');
     await page.waitForFunction(() => document.getElementById('deck-error').hidden &&
