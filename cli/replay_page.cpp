@@ -2,6 +2,8 @@
 
 #include "cli/web_assets.hpp" // generated: cmake/embed_web.cmake
 
+#include "cardreader/card_svg.hpp"
+
 #include <stdexcept>
 #include <string_view>
 
@@ -43,29 +45,6 @@ void fill(std::string& page, std::string_view slot, std::string_view text) {
     page.replace(at, slot.size(), text);
 }
 
-std::string html_escape(std::string_view text) {
-    std::string out;
-    for (const char c : text) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        default:
-            out += c;
-        }
-    }
-    return out;
-}
-
 } // namespace
 
 std::string replay_page(const RunTimeline& timeline, const nlohmann::json& report,
@@ -73,14 +52,15 @@ std::string replay_page(const RunTimeline& timeline, const nlohmann::json& repor
     std::string page(web_assets::replay_html);
     // The slots are filled last to first in the template, so no filled text is searched.
     nlohmann::json run = {{"deck", deck_name}, {"report", report}};
-    fill(page, "<!--run-json-->", script_safe(run.dump()));
+    fill(page, "<!--run-json-->",
+         script_safe(run.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)));
     fill(page, "<!--timeline-json-->", script_safe(timeline.embedded_json()));
     fill(page, "/*viewer-js*/", web_assets::viewer_js);
     fill(page, "<!--viewer-->",
          between(web_assets::index_html, "<!--viewer:begin-->", "<!--viewer:end-->"));
     fill(page, "/*exhibit-css*/", web_assets::exhibit_css);
     // The deck's name, in the title and the heading.
-    const std::string title = html_escape(deck_name);
+    const std::string title = cardreader::xml_escape(deck_name);
     for (std::size_t at = page.find("<!--title-->"); at != std::string::npos;
          at = page.find("<!--title-->", at + title.size())) {
         page.replace(at, std::string_view("<!--title-->").size(), title);

@@ -590,7 +590,9 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
         cut_summary += thread_summary(*thread_proof);
     }
     if (!f.report.empty()) {
-        write_file(f.report, report.dump(2) + "\n");
+        // A deck name that is not UTF-8 is written with U+FFFD for its bad bytes, not refused.
+        write_file(f.report,
+                   report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     }
     if (!f.html.empty()) {
         write_file(f.html, replay_page(*timeline, report, f.input));
@@ -598,7 +600,8 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     if (!f.save_state.empty()) {
         if (result.stop) {
             write_file(f.save_state,
-                       state_json(result, cabinet.resume_point(), applied, fault_specs, f).dump(1) +
+                       state_json(result, cabinet.resume_point(), applied, fault_specs, f)
+                               .dump(1, ' ', false, nlohmann::json::error_handler_t::replace) +
                            "\n");
         } else if (!f.quiet) {
             fmt::print(message_stream(),

@@ -233,6 +233,16 @@ TEST_CASE("Run --html: the page of a completed run, of a stop, and of a generate
     page = read_bytes(dir.path("a.html"));
     CHECK(page.find("\"design\":{\"airfoil\":\"naca 2412\"") != std::string::npos);
 
+    // A deck whose name is not UTF-8: the report and the page carry U+FFFD for the bad byte
+    // (it was an internal error, exit 1).
+    const std::string odd = dir.str("odd\xff.csv");
+    parsons::test::write_bytes(odd, read_bytes(sample));
+    r = run_parsons("run " + q(odd) + " -q --report " + q(dir.str("odd.json")) + " --html " +
+                    q(dir.str("odd.html")));
+    CHECK(r.exit_code == 0);
+    CHECK(read_bytes(dir.path("odd.json")).find("odd\xef\xbf\xbd.csv") != std::string::npos);
+    CHECK(read_bytes(dir.path("odd.html")).find("odd\xef\xbf\xbd.csv") != std::string::npos);
+
     // A folder that is not there: exit 2 naming the file, and no page.
     r = run_parsons("run " + q(sample) + " -q --html " + q(dir.str("no/such/run.html")));
     CHECK(r.exit_code == 2);

@@ -48,6 +48,7 @@
   }
   FS.mkdir("/work");
   FS.mkdir("/work/load");
+  FS.mkdir("/work/load/in");
   FS.mkdir("/work/gen");
 
   const LISTING = "/work/deck.csv";
@@ -196,7 +197,7 @@
     const file = e.target.files[0];
     if (!file) return;
     const name = file.name.replace(/[^A-Za-z0-9._-]/g, "_") || "deck";
-    const path = `/work/load/${name}`;
+    const path = `/work/load/in/${name}`; // its own folder: never the converted listing's name
     FS.writeFile(path, new Uint8Array(await file.arrayBuffer()));
     job = null;
     // Any deck format in; the keypunch holds its listing (parsons convert reads it).

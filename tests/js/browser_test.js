@@ -69,8 +69,19 @@ function compareRun(name, page, report) {
     const page = await browser.newPage();
     await page.setViewport({ width: 1400, height: 1000 });
     watchPage(page, problems);
-    const cdp = await page.createCDPSession();
-    await cdp.send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: workDir });
+    // Downloads go to WORK_DIR/downloads under their GUIDs; each is read once chromium says it
+    // is complete (Browser.downloadProgress), never while it is being written.
+    const downloads = path.join(workDir, 'downloads');
+    fs.mkdirSync(downloads, { recursive: true });
+    const cdp = await browser.target().createCDPSession();
+    await cdp.send('Browser.setDownloadBehavior',
+                   { behavior: 'allowAndName', downloadPath: downloads, eventsEnabled: true });
+    const finished = new Map(); // guid -> suggested file name, once complete
+    const started = new Map();
+    cdp.on('Browser.downloadWillBegin', (e) => started.set(e.guid, e.suggestedFilename));
+    cdp.on('Browser.downloadProgress', (e) => {
+      if (e.state === 'completed') finished.set(e.guid, started.get(e.guid));
+    });
 
     // ---- first view
     await page.goto(`${server.url}/index.html`);
@@ -124,6 +135,38 @@ function compareRun(name, page, report) {
     check(true, 'single card stops on the next card');
     await page.screenshot({ path: path.join(workDir, 'single-card.png'), fullPage: true });
 
+    // ---- play at 100x for 0.8 s of the wall clock, then pause: about 80 s of machine time
+    const seconds = () => page.$eval('#machine-time', (e) => Number(e.dataset.seconds));
+    await page.click('#restart');
+    await page.click('#play');
+    await new Promise((r) => setTimeout(r, 800));
+    await page.click('#pause');
+    const played = await seconds();
+    await new Promise((r) => setTimeout(r, 400));
+    const state = await page.$eval('#run-state', (e) => e.textContent);
+    check(played > 20 && played < 200 && (await seconds()) === played && state === 'paused',
+          'play runs machine time at 100x and pause holds it', `${played} s of machine time, ${state}`);
+
+    // ---- field by field: a cell changed is punched at once
+    await page.click('#tab-fields');
+    const cells = await page.$$eval('#fields input', (inputs) => inputs.map((i) => [i.getAttribute('aria-label'), i.value]));
+    const stopCell = cells.findIndex(([label, v]) => / stop$/.test(label) && v === '8.985');
+    check(stopCell >= 0, 'the fields show card 1\'s table stop', JSON.stringify(cells.slice(0, 12)));
+    const edit = async (index, value) => {
+      await page.$$eval('#fields input', (inputs, i, v) => {
+        inputs[i].value = v;
+        inputs[i].dispatchEvent(new Event('change'));
+      }, index, value);
+    };
+    await edit(stopCell, '8.995');
+    await edit(stopCell + 1, '8.995'); // its check: the move from 0
+    const edited = await page.$eval('#listing', (e) => e.value);
+    const shown = await page.$eval('#deck-show', (e) => e.textContent);
+    check(edited.includes('1,0,table,+,1,8.785,8.885,8.995,8.995,12') && /8\.995/.test(shown) &&
+          (await page.$eval('#deck-error', (e) => e.hidden)),
+          'a field changed is in the listing and punched', shown.split('\n').slice(0, 6).join(' | '));
+    await page.click('#tab-listing');
+
     // ---- a bad card: the CLI's own words
     const bad = listing.replace('1,0,table,+,1,8.785', '1,0,table,+,7,8.785');
     check(bad !== listing, 'the bad card differs from the sample');
@@ -149,7 +192,7 @@ function compareRun(name, page, report) {
     await page.waitForFunction(() => /card 2/.test(document.getElementById('deck-error').textContent));
     const loadError = await page.$eval('#deck-error', (e) => e.textContent);
     const cliLoad = parsons(['convert', badCbn, '-o', path.join(workDir, 'bad.csv')]).stderr.trim();
-    check(loadError === cliLoad.split(badCbn).join('/work/load/bad.cbn') && /column 11/.test(loadError),
+    check(loadError === cliLoad.split(badCbn).join('/work/load/in/bad.cbn') && /column 11/.test(loadError),
           'a bad card in a loaded file is worded as the CLI words it', `page "${loadError}", CLI "${cliLoad}"`);
 
     // ---- the demo deck: as `parsons demo` generates it, to the end
@@ -170,14 +213,18 @@ function compareRun(name, page, report) {
 
     // ---- the downloads are what the CLI writes
     const downloaded = async (button, file) => {
-      fs.rmSync(path.join(workDir, file), { force: true });
+      finished.clear();
       await page.click(button);
-      for (let i = 0; i < 100 && !fs.existsSync(path.join(workDir, file)); i++) await new Promise((r) => setTimeout(r, 100));
-      return fs.existsSync(path.join(workDir, file)) ? fs.readFileSync(path.join(workDir, file)) : null;
+      for (let i = 0; i < 200 && finished.size === 0; i++) await new Promise((r) => setTimeout(r, 50));
+      const [guid, name] = [...finished.entries()][0] || [];
+      if (!guid || name !== file) return null;
+      fs.copyFileSync(path.join(downloads, guid), path.join(workDir, file));
+      return fs.readFileSync(path.join(workDir, file));
     };
     const deck = await downloaded('#dl-deck', 'deck.cbn');
     const nativeDeck = fs.readFileSync(path.join(demoDir, 'naca2412.cbn'));
-    check(deck !== null && deck.equals(nativeDeck), 'the deck download is the deck parsons demo punches');
+    check(deck !== null && deck.equals(nativeDeck), 'the deck download is the deck parsons demo punches',
+          deck === null ? 'nothing downloaded' : `${deck.length} bytes against ${nativeDeck.length}`);
     const report = await downloaded('#dl-report', 'report.json');
     const same = (r) => r.machine_seconds === demoReport.machine_seconds && r.status === demoReport.status &&
       JSON.stringify(r.axes) === JSON.stringify(demoReport.axes) && JSON.stringify(r.cards) === JSON.stringify(demoReport.cards);
