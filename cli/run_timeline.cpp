@@ -92,7 +92,7 @@ void RunTimeline::on_signal(double t, relaylogic::SignalId id, std::uint32_t /*o
     change_t_.push_back(t);
     change_id_.push_back(id);
     change_v_.push_back(new_value);
-    last_values_.at(id) = new_value;
+    last_values_[id] = new_value; // defined before any change
 }
 
 void RunTimeline::on_motion(double t, const std::array<double, 5>& real_in) {
@@ -102,10 +102,19 @@ void RunTimeline::on_motion(double t, const std::array<double, 5>& real_in) {
     }
     motion_.push_back(t);
     motion_.insert(motion_.end(), real_in.begin(), real_in.end());
+    // The angles again only when their screw has moved: most impulses are the other axes'.
     const auto swivel = cardreader::axis_index(cardreader::Axis::swivel);
     const auto tilt = cardreader::axis_index(cardreader::Axis::tilt);
-    motion_.push_back(axes::fixture_angle_deg(profile_.axes[swivel], real_in[swivel], false));
-    motion_.push_back(axes::fixture_angle_deg(profile_.axes[tilt], real_in[tilt], true));
+    if (!angles_known_ || real_in[swivel] != angle_screws_[0]) {
+        angles_[0] = axes::fixture_angle_deg(profile_.axes[swivel], real_in[swivel], false);
+        angle_screws_[0] = real_in[swivel];
+    }
+    if (!angles_known_ || real_in[tilt] != angle_screws_[1]) {
+        angles_[1] = axes::fixture_angle_deg(profile_.axes[tilt], real_in[tilt], true);
+        angle_screws_[1] = real_in[tilt];
+    }
+    angles_known_ = true;
+    motion_.insert(motion_.end(), angles_.begin(), angles_.end());
 }
 
 void RunTimeline::on_card(double t, std::int64_t index, const cardreader::CardOrders& orders) {

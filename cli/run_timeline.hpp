@@ -84,6 +84,10 @@ private:
     std::vector<std::uint32_t> change_v_;
     std::vector<double> motion_;
     std::vector<std::uint32_t> last_values_; // every signal after the last change recorded
+    // The fixture's two angles for the last swivel and tilt screw positions (on_motion).
+    bool angles_known_ = false;
+    std::array<double, 2> angle_screws_{};
+    std::array<double, 2> angles_{};
 };
 
 // The bytes of `data` as base64 (RFC 4648, with padding).

@@ -189,8 +189,8 @@ TEST_CASE("Faults: a count runs from 1 to 999999999, on every build (long is 32 
     // Past the deck's impulses: accepted, and the run completes untouched.
     auto r = run_parsons("run " + sample + " -q --fault drop-impulse:table:999999999");
     CHECK(r.exit_code == 0);
-    for (const char* spec : {"drop-impulse:table:1000000000", "drop-impulse:table:0",
-                             "feed-twice:99999999999"}) {
+    for (const char* spec :
+         {"drop-impulse:table:1000000000", "drop-impulse:table:0", "feed-twice:99999999999"}) {
         INFO(spec);
         r = run_parsons("run " + sample + " -q --fault " + spec);
         CHECK(r.exit_code == 2);

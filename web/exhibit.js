@@ -38,7 +38,6 @@
   }
   // For the console and the tests: parsonsCall(["show", "/work/deck.csv"]).
   window.parsonsCall = parsons;
-  window.parsonsModule = M;
   const FS = M.FS;
   const readText = (path) => FS.readFile(path, { encoding: "utf8" });
   const exists = (path) => FS.analyzePath(path).exists;

@@ -25,8 +25,8 @@ const ParsonsViewer = (() => {
     "320": "Incremental storage, tenths digit of the slow-down increment.",
     "322": "Incremental storage, hundredths digit of the slow-down increment.",
     "324": "Incremental storage, thousandths digit of the slow-down increment.",
-    "122a": "Absolute comparer (122′): conducts when the absolute counters equal the stored stop position.",
-    "122b": "Incremental comparer (122″): conducts when the increment counter equals the stored increment: time to slow down.",
+    "122'": "Absolute comparer (122′): conducts when the absolute counters equal the stored stop position.",
+    "122''": "Incremental comparer (122″): conducts when the increment counter equals the stored increment: time to slow down.",
     "236": "Speed switch: the card sets the start speed; it steps once per impulse of stepping relay 256 toward off (0), each step a slower motor speed.",
     "238": "The speed switch's off contact: closed when 236 stands on off and the axis is stopped.",
     "256": "Stepping relay: each impulse from a comparer steps speed switch 236 one position.",
@@ -95,14 +95,9 @@ const ParsonsViewer = (() => {
     return e;
   }
 
-  // The numeral of a signal's own part ("122a" of "absolute_comparer_122a").
-  function numeralOf(sig) {
-    const m = /_(\d+[ab]?)(?:\.|$)/.exec(sig.name.split(".").pop()) || /_(\d+[ab]?)$/.exec(sig.name.split(".")[0]);
-    return m ? m[1] : sig.numeral;
-  }
-
-  function hover(sig, numeral) {
-    const does = LEGEND[numeral] || LEGEND[sig.numeral] || "";
+  // The part's name and numeral (as the C++ defines the signal) and what it does.
+  function hover(sig) {
+    const does = LEGEND[sig.numeral] || "";
     return `${sig.component}${sig.numeral ? " (" + sig.numeral + ")" : ""}` + (does ? `: ${does}` : "");
   }
 
@@ -314,8 +309,8 @@ const ParsonsViewer = (() => {
       const box = el("div", { class: "banks" }, col);
       for (const [name, relays] of banks) {
         const first = relays[0];
-        const numeral = numeralOf({ name, numeral: first.numeral });
-        const row = el("div", { class: "bank", title: hover(first, numeral), "data-bank": name }, box);
+        const numeral = first.numeral;
+        const row = el("div", { class: "bank", title: hover(first), "data-bank": name }, box);
         el("span", { class: "label", text: numeral }, row);
         relays.sort((a, b) => a.digit - b.digit);
         for (const r of relays) {
@@ -328,8 +323,8 @@ const ParsonsViewer = (() => {
     buildDials(col, dials) {
       const box = el("div", { class: "dials" }, col);
       for (const d of dials) {
-        const numeral = numeralOf(d);
-        const wrap = el("div", { class: "dial", title: hover(d, numeral), "data-signal": d.id, "data-name": d.name }, box);
+        const numeral = d.numeral;
+        const wrap = el("div", { class: "dial", title: hover(d), "data-signal": d.id, "data-name": d.name }, box);
         const s = svg("svg", { viewBox: "-22 -22 44 44", width: 44, height: 44 }, wrap);
         svg("circle", { r: 20, class: "face" }, s);
         for (let k = 0; k < 10; k++) {
@@ -349,8 +344,7 @@ const ParsonsViewer = (() => {
     buildSingles(col, singles) {
       const box = el("div", { class: "singles" }, col);
       for (const s of singles) {
-        const numeral = numeralOf(s);
-        const lamp = el("span", { class: "lamp" + (/lamp|indicator/.test(s.name) ? " signal-lamp" : ""), title: hover(s, numeral), "data-signal": s.id, "data-name": s.name }, box);
+        const lamp = el("span", { class: "lamp" + (/lamp|indicator/.test(s.name) ? " signal-lamp" : ""), title: hover(s), "data-signal": s.id, "data-name": s.name }, box);
         const label = s.name.replace(/_/g, " ");
         if (s.width > 1) {
           el("span", { class: "label", text: label + " " }, lamp);
