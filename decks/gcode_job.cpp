@@ -1,6 +1,7 @@
 // A G-code program as a deck (decks/gcode_job.hpp; docs/gcode.md).
 #include "decks/gcode_job.hpp"
 
+#include "decks/deck_limits.hpp"
 #include "decks/move_planner.hpp"
 #include "decks/template_job.hpp"
 
@@ -20,8 +21,6 @@ constexpr double kCounterMaxIn = 9.999;
 // A move that arrives at a sharp turn runs fast to this far before it, and the rest at the
 // lowest speed (inches).
 constexpr double kCornerApproachIn = 0.05;
-// More cards than this is a tolerance too fine for the program, not a deck anyone would punch.
-constexpr std::int64_t kMaxCards = 50000;
 
 const std::array<const char*, 3> kAxisLetters = {"X (table)", "Y (cross slide)",
                                                  "Z (vertical slide)"};
@@ -251,11 +250,16 @@ GcodeDeck make_gcode_deck(const GcodeProgram& program, const GcodeJobOptions& o,
                 continue;
             }
             stations.push_back({t, s + 1 == ats.size() && corner_at[i] != 0, design[i].spindle});
-            if (static_cast<std::int64_t>(stations.size()) > kMaxCards + 1) {
-                throw JobError(
-                    fmt::format("{}:{}: more than {} cards at a tolerance of {} in: give a larger "
-                                "--tolerance",
-                                program.file, design[i].line, kMaxCards, o.tolerance_in));
+            // A card from each station to the next; none to the work zero when it is the
+            // reference zero. Refused at the first card past the limit, before the rest.
+            const bool at_reference = stations[0].at == stations[1].at;
+            const auto cards = static_cast<std::int64_t>(stations.size()) - (at_reference ? 2 : 1);
+            if (cards > kMaxDeckCards) {
+                throw JobError(fmt::format(
+                    "{}:{}: more than {} cards at a tolerance of {} in, the most a deck can "
+                    "number (card numbers are four digits, columns 77-80): give a larger "
+                    "--tolerance, or cut the program in two",
+                    program.file, design[i].line, count_text(kMaxDeckCards), o.tolerance_in));
             }
         }
     }

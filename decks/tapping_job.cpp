@@ -1,7 +1,9 @@
 // The tapping job (decks/tapping_job.hpp says what each card does).
 #include "decks/tapping_job.hpp"
 
+#include "decks/deck_limits.hpp"
 #include "decks/move_planner.hpp"
+#include "decks/number_text.hpp"
 #include "decks/template_job.hpp"
 
 #include <fmt/format.h>
@@ -21,9 +23,19 @@ using cardreader::CardOrders;
 constexpr double kMaxPosition_in = 9.999; // the counters' range
 constexpr int kLeastWholeRevs = 2;        // a full-thread zone the proof can judge
 constexpr int kMaxRpmOnCard = 9999;       // S: four digits on the tap card
+constexpr int kMostRows = 9;
+constexpr int kMostHolesPerRow = 9;
+// Two cards a hole (a motion card, a tap card): the largest plate is far inside a deck.
+static_assert(2 * kMostRows * kMostHolesPerRow <= kMaxDeckCards, "every plate fits a deck");
 
 int th(double in) {
     return static_cast<int>(std::lround(in * 1000.0));
+}
+
+// Whether th(in) lies in the counters' 0 .. 9999 (false for NaN and infinities).
+bool in_counters(double in) {
+    const double thousandths = in * 1000.0;
+    return thousandths > -0.5 && thousandths < 9999.5;
 }
 
 [[noreturn]] void refuse(const std::string& what) {
@@ -59,14 +71,13 @@ public:
         for (int r = 0; r < o_.rows; ++r) {
             for (int k = 0; k < o_.holes_per_row; ++k) {
                 const int i = r % 2 == 0 ? k : o_.holes_per_row - 1 - k;
-                places.emplace_back(th(o_.first_x_in + i * o_.spacing_x_in),
-                                    th(o_.first_y_in + r * o_.spacing_y_in));
+                const double x_in = o_.first_x_in + i * o_.spacing_x_in;
+                const double y_in = o_.first_y_in + r * o_.spacing_y_in;
+                check_position("the holes' table positions (--first-x, --spacing-x)", x_in);
+                check_position("the holes' cross positions (--first-y, --spacing-y)", y_in);
+                places.emplace_back(th(x_in), th(y_in));
                 rows.push_back(r);
             }
-        }
-        for (const auto& [x, y] : places) {
-            check_position("the holes' table positions (--first-x, --spacing-x)", x);
-            check_position("the holes' cross positions (--first-y, --spacing-y)", y);
         }
         const int start = th(o_.surface_in + o_.clearance_in);
         for (std::size_t h = 0; h < places.size(); ++h) {
@@ -79,20 +90,22 @@ public:
 private:
     int next_number() const { return static_cast<int>(deck_.cards.size()) + 1; }
 
-    static void check_position(const std::string& what, int thousandths) {
-        if (thousandths < 0 || thousandths > th(kMaxPosition_in)) {
-            refuse(fmt::format("{}: {:.3f} in is outside the counters' range, 0.000 to {:.3f} in",
-                               what, thousandths / 1000.0, kMaxPosition_in));
+    // Checked in inches, before th(): a position far outside would not fit an int.
+    static void check_position(const std::string& what, double in) {
+        if (!in_counters(in)) {
+            refuse(fmt::format("{}: {} in is outside the counters' range, 0.000 to {:.3f} in", what,
+                               fixed(in), kMaxPosition_in));
         }
     }
 
     void check_options() const {
         const TappingOptions& o = o_;
-        if (o.rows < 1 || o.rows > 9) {
-            refuse(fmt::format("--rows {}: give 1 to 9", o.rows));
+        if (o.rows < 1 || o.rows > kMostRows) {
+            refuse(fmt::format("--rows {}: give 1 to {}", o.rows, kMostRows));
         }
-        if (o.holes_per_row < 1 || o.holes_per_row > 9) {
-            refuse(fmt::format("--holes-per-row {}: give 1 to 9", o.holes_per_row));
+        if (o.holes_per_row < 1 || o.holes_per_row > kMostHolesPerRow) {
+            refuse(
+                fmt::format("--holes-per-row {}: give 1 to {}", o.holes_per_row, kMostHolesPerRow));
         }
         for (const auto& [name, v] : {std::pair{"--first-x", o.first_x_in},
                                       {"--first-y", o.first_y_in},
@@ -105,8 +118,16 @@ private:
         }
         for (const auto& [name, v] :
              {std::pair{"--spacing-x", o.spacing_x_in}, {"--spacing-y", o.spacing_y_in}}) {
-            if (!(th(v) >= 1)) {
+            if (!(v * 1000.0 >= 0.5)) { // th(v) >= 1, and no overflow for a huge one
                 refuse(fmt::format("{} {}: give the holes' spacing, at least 0.001 in", name, v));
+            }
+        }
+        for (const auto& [name, v] :
+             {std::pair{"--clearance", o.clearance_in}, {"--thread-depth", o.thread_depth_in}}) {
+            if (std::isfinite(v) && !in_counters(v)) {
+                refuse(fmt::format("{} {}: more than the counters' range, 0.000 to {:.3f} in, can "
+                                   "hold",
+                                   name, v, kMaxPosition_in));
             }
         }
         if (!(th(o.clearance_in) >= 1)) {

@@ -1,5 +1,6 @@
 #include "decks/template_job.hpp"
 
+#include "decks/deck_limits.hpp"
 #include "decks/move_planner.hpp"
 #include "decks/number_text.hpp"
 
@@ -7,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace parsons::decks {
@@ -14,6 +16,9 @@ namespace {
 
 using Eigen::Vector2d;
 constexpr double kPi = 3.14159265358979323846;
+// The approach (make_template_deck) takes three cards from the reference zero to the first
+// station, or four when it goes over the top of the job.
+constexpr std::int64_t kLeastApproachCards = 3;
 
 // The stations run along a track: one surface LE -> TE, or both surfaces as one loop, the
 // upper from TE to LE and on round the leading edge along the lower back to the TE.
@@ -155,10 +160,27 @@ Deviation span_deviation(const Airfoil& airfoil, const TemplateOptions& o, const
     return d;
 }
 
-std::vector<double> stations_by_count(const TemplateOptions& o, const Track& track) {
+// The stations --stations asks for along the track (both surfaces: the leading edge once).
+std::int64_t stations_asked(const TemplateOptions& o) {
+    const std::int64_t n = o.stations;
+    return o.surface == Surface::both ? 2 * n - 1 : n;
+}
+
+// Refuses, before a station is computed, a count that cannot make a deck: fewer than two, or
+// more than a deck can number with the fewest approach cards.
+void check_station_count(const TemplateOptions& o) {
     if (o.stations < 2) {
         throw JobError(fmt::format("--stations {}: need at least 2", o.stations));
     }
+    const std::int64_t stations = stations_asked(o);
+    refuse_past_deck_limit(
+        kLeastApproachCards + stations - 1, fmt::format("--stations {}", o.stations), true,
+        fmt::format("{} to approach the first of {} stations{}, then one to each of the others",
+                    kLeastApproachCards, count_text(stations),
+                    o.surface == Surface::both ? " round both surfaces" : ""));
+}
+
+std::vector<double> stations_by_count(const TemplateOptions& o, const Track& track) {
     std::vector<double> per_surface;
     for (int k = 0; k < o.stations; ++k) {
         const double f = static_cast<double>(k) / (o.stations - 1);
@@ -208,6 +230,15 @@ std::vector<double> stations_by_scallop(const Airfoil& airfoil, const TemplateOp
             w = track.end();
         }
         ws.push_back(w);
+        // Refused as soon as the stations (at least one more to come) outnumber what a deck
+        // can hold, before the rest of the path is computed.
+        const auto stations = static_cast<std::int64_t>(ws.size());
+        if (w < track.end() && kLeastApproachCards + stations > kMaxDeckCards) {
+            refuse_past_deck_limit(
+                kLeastApproachCards + stations, fmt::format("--scallop {}", o.scallop_in), true,
+                fmt::format("{} stations so far to hold it, and {:.0f} % of the path still to go",
+                            count_text(stations), 100 * (track.end() - w) / track.end()));
+        }
         a = station_at(airfoil, o, track, w);
     }
     return ws;
@@ -265,7 +296,7 @@ void check_cutter_fits(const Airfoil& airfoil, const TemplateOptions& o, const T
         const double whole = std::floor(std::min(f, track.end() - 1e-12));
         pts.push_back(station_at(airfoil, o, track, whole + (1 - std::cos(kPi * (f - whole))) / 2));
     }
-    double tightest = 1e9;
+    double tightest = std::numeric_limits<double>::infinity(); // no hollow: any cutter fits
     Vector2d where = Vector2d::Zero();
     for (std::size_t i = kGap; i + kGap < pts.size(); ++i) {
         const Vector2d& p0 = pts[i - kGap].work;
@@ -295,6 +326,53 @@ void check_cutter_fits(const Airfoil& airfoil, const TemplateOptions& o, const T
     }
 }
 
+// Where a point of the work stands on the counters, thousandths (table, cross).
+std::pair<int, int> machine_at(const Vector2d& p, const Vector2d& work_zero_in) {
+    const Vector2d m = p + work_zero_in;
+    return {thousandths(m.x()), thousandths(m.y())};
+}
+
+// Where one card takes the table and the cross slide, and which of them goes first.
+struct Target {
+    int x = 0;
+    int y = 0;
+    bool table_first = false;
+};
+
+// The approach from the reference zero (below and left of the whole job, whose cutter centres
+// lie within lo .. hi) to the first station. The last stretch comes in along the first
+// station's own normal, from a point A a little way out on the cutter's side, by a staircase
+// whose corner is on the cutter's side (so the cutter never passes nearer the surface than R:
+// a cambered nose tilts its normal away from the horizontal, and a plain vertical drop would
+// graze it). A is reached from the reference zero from the left when A lies left of the whole
+// job, otherwise over the top (the cutter works above the surface) or from underneath (it
+// works below). Three cards, or four over the top (kLeastApproachCards).
+std::vector<Target> approach_targets(const TemplateDeck& deck, const TemplateOptions& o,
+                                     const Vector2d& lo, const Vector2d& hi) {
+    const Station& first = deck.stations.front();
+    const Vector2d out = first.centre + (o.margin_in / 2) * first.toward_cutter;
+    const auto [ax, ay] = machine_at(out, deck.work_zero_in);
+    double side = 0;
+    for (const Station& s : deck.stations) {
+        side += s.toward_cutter.y();
+    }
+    std::vector<Target> to;
+    if (out.x() < lo.x()) { // A left of the job
+        to = {{0, ay, false}, {ax, ay, true}};
+    } else if (o.surface == Surface::both || side >= 0) {
+        const int top = thousandths(hi.y() + deck.work_zero_in.y() + o.margin_in / 2);
+        to = {{0, top, false}, {ax, top, true}, {ax, ay, false}};
+    } else {
+        to = {{ax, 0, true}, {ax, ay, false}};
+    }
+    Station approach = first;
+    approach.centre = out;
+    const Vector2d last_corner = corner_between(approach, first);
+    const auto [fx, fy] = machine_at(first.centre, deck.work_zero_in);
+    to.push_back({fx, fy, last_corner.y() == approach.centre.y()});
+    return to;
+}
+
 } // namespace
 
 TemplateDeck make_template_deck(const Airfoil& airfoil, const TemplateOptions& o,
@@ -303,8 +381,11 @@ TemplateDeck make_template_deck(const Airfoil& airfoil, const TemplateOptions& o
         throw JobError("a female template is the edge of a plate: cut one surface at a time "
                        "(--surface upper or lower)");
     }
-    if (!(o.chord_in > 0) || !(o.cutter_radius_in > 0)) {
-        throw JobError("chord and cutter radius must be positive");
+    refuse_unless_shape("--chord", o.chord_in, "chord");
+    refuse_unless_cutter("--cutter-radius", o.cutter_radius_in);
+    refuse_unless_finite("--scallop", o.scallop_in);
+    if (!(o.scallop_in > 0)) {
+        check_station_count(o);
     }
     const Track track = make_track(airfoil, o.surface);
     check_cutter_fits(airfoil, o, track);
@@ -338,44 +419,24 @@ TemplateDeck make_template_deck(const Airfoil& airfoil, const TemplateOptions& o
                                    "shorter chord",
                                    fixed(extent.x()), fixed(extent.y()), room, o.margin_in));
     }
-    auto machine = [&](const Vector2d& p) {
-        const Vector2d m = p + deck.work_zero_in;
-        return std::pair{thousandths(m.x()), thousandths(m.y())};
-    };
+    auto machine = [&](const Vector2d& p) { return machine_at(p, deck.work_zero_in); };
+
+    const std::vector<Target> approach = approach_targets(deck, o, lo, hi);
+    // Every card counted before one is made: the approach, and one from each station to the
+    // next.
+    const auto approach_cards = static_cast<std::int64_t>(approach.size());
+    const auto spans = static_cast<std::int64_t>(deck.stations.size()) - 1;
+    refuse_past_deck_limit(approach_cards + spans,
+                           o.scallop_in > 0 ? fmt::format("--scallop {}", o.scallop_in)
+                                            : fmt::format("--stations {}", o.stations),
+                           false,
+                           fmt::format("{} to approach, {} from station to station", approach_cards,
+                                       count_text(spans)));
 
     CardMaker maker{profile, deck.cards};
-    // Approach from the reference zero (below and left of the whole job). The last stretch
-    // comes in along the first station's own normal, from a point A a little way out on the
-    // cutter's side, by a staircase whose corner is on the cutter's side (so the cutter never
-    // passes nearer the surface than R: a cambered nose tilts its normal away from the
-    // horizontal, and a plain vertical drop would graze it). A is reached from the reference
-    // zero from the left when A lies left of the whole job, otherwise over the top (the cutter
-    // works above the surface) or from underneath (it works below).
-    const Station& first = deck.stations.front();
-    const auto [fx, fy] = machine(first.centre);
-    const Vector2d out = first.centre + (o.margin_in / 2) * first.toward_cutter;
-    const auto [ax, ay] = machine(out);
-    double side = 0;
-    for (const Station& s : deck.stations) {
-        side += s.toward_cutter.y();
+    for (const Target& t : approach) {
+        maker.move(t.x, t.y, t.table_first, false);
     }
-    const bool left_of_job = out.x() < lo.x();
-    if (left_of_job) {
-        maker.move(0, ay, false, false);
-        maker.move(ax, ay, true, false);
-    } else if (o.surface == Surface::both || side >= 0) {
-        const int top = thousandths(hi.y() + deck.work_zero_in.y() + o.margin_in / 2);
-        maker.move(0, top, false, false);
-        maker.move(ax, top, true, false);
-        maker.move(ax, ay, false, false);
-    } else {
-        maker.move(ax, 0, true, false);
-        maker.move(ax, ay, false, false);
-    }
-    Station approach = first;
-    approach.centre = out;
-    const Vector2d last_corner = corner_between(approach, first);
-    maker.move(fx, fy, last_corner.y() == approach.centre.y(), false);
     const double limit = o.corner_limit_deg * kPi / 180;
     for (std::size_t i = 1; i < deck.stations.size(); ++i) {
         const Station& a = deck.stations[i - 1];

@@ -68,7 +68,9 @@ public:
 };
 
 // Throws JobError when the options cannot make a deck (part too big for the counters,
-// female on both surfaces, ...) and PlanError when the profile cannot stop exactly.
+// female on both surfaces, more cards than a deck can number, a chord or cutter under the
+// least the machine can cut: decks/deck_limits.hpp, ...) and PlanError when the profile cannot
+// stop exactly. A count of stations past the deck's limit is refused before any is computed.
 TemplateDeck make_template_deck(const Airfoil& airfoil, const TemplateOptions& options,
                                 const axes::MachineProfile& profile);
 

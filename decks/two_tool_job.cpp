@@ -1,5 +1,6 @@
 #include "decks/two_tool_job.hpp"
 
+#include "decks/deck_limits.hpp"
 #include "decks/move_planner.hpp"
 
 #include <fmt/format.h>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 
 namespace parsons::decks {
 namespace {
@@ -112,6 +114,39 @@ struct Punch {
     }
 };
 
+// How many cards the moves make from (x, y), where they leave the machine: a move that goes
+// nowhere makes none (Punch::move).
+std::int64_t count_cards(const std::vector<Move>& moves, int& x, int& y) {
+    std::int64_t cards = 0;
+    for (const Move& m : moves) {
+        if (m.x != x || m.y != y) {
+            ++cards;
+            x = m.x;
+            y = m.y;
+        }
+    }
+    return cards;
+}
+
+// Refuses, before a card is punched, passes that together make more cards than a deck can
+// number: pass 1, the lift, the condition card and the return move, pass 2.
+void check_card_count(const TwoToolOptions& o, const std::vector<Move>& pass1,
+                      const std::vector<Move>& pass2, int clearance) {
+    int x = 0;
+    int y = 0;
+    const std::int64_t first = count_cards(pass1, x, y);
+    const std::vector<Move> lift_and_return = {{x, clearance, true, false},
+                                               {0, clearance, false, false}};
+    const std::int64_t change = count_cards(lift_and_return, x, y) + 1; // and the condition card
+    const std::int64_t second = count_cards(pass2, x, y);
+    refuse_past_deck_limit(first + change + second,
+                           o.pass.scallop_in > 0 ? fmt::format("--scallop {}", o.pass.scallop_in)
+                                                 : fmt::format("--stations {}", o.pass.stations),
+                           false,
+                           fmt::format("pass 1 {}, the tool change {}, pass 2 {}",
+                                       count_text(first), change, count_text(second)));
+}
+
 double speed_in_per_s(const axes::AxisProfile& axis, int position) {
     return axis.speed_in_per_min.at(static_cast<std::size_t>(position - 1)) / 60.0;
 }
@@ -185,6 +220,14 @@ TwoToolDeck make_two_tool_deck(const Airfoil& airfoil, const TwoToolOptions& o,
                                        profile.name, tool));
         }
     }
+    for (const auto& [tool, radius] : {std::pair{o.rough_tool, r1}, std::pair{o.finish_tool, r2}}) {
+        if (!(*radius >= kLeastCutterRadiusIn)) {
+            throw JobError(fmt::format("the machine profile '{}' gives tool {} a radius of {} in: "
+                                       "a cutter radius under {:.3f} in is less than one impulse, "
+                                       "the smallest move the machine makes",
+                                       profile.name, tool, *radius, kLeastCutterRadiusIn));
+        }
+    }
     if (!(o.allowance_in >= 0) || o.allowance_in > 0.1) {
         throw JobError(fmt::format("allowance {} in: give 0 .. 0.1 in", o.allowance_in));
     }
@@ -227,9 +270,13 @@ TwoToolDeck make_two_tool_deck(const Airfoil& airfoil, const TwoToolOptions& o,
                                    hi.x(), job.clearance / 1000.0));
     }
 
+    const std::vector<Move> pass1_moves = moves_of(job.passes[0].deck, job.work_zero_in, profile);
+    const std::vector<Move> pass2_moves = moves_of(job.passes[1].deck, job.work_zero_in, profile);
+    check_card_count(o, pass1_moves, pass2_moves, job.clearance);
+
     Punch punch{profile, job.cards};
     job.passes[0].first_card = 0;
-    for (const Move& m : moves_of(job.passes[0].deck, job.work_zero_in, profile)) {
+    for (const Move& m : pass1_moves) {
         punch.move(m);
     }
     job.passes[0].card_count = job.cards.size();
@@ -268,7 +315,7 @@ TwoToolDeck make_two_tool_deck(const Airfoil& airfoil, const TwoToolOptions& o,
     c.parameter = o.finish_tool;
 
     job.passes[1].first_card = job.cards.size();
-    for (const Move& m : moves_of(job.passes[1].deck, job.work_zero_in, profile)) {
+    for (const Move& m : pass2_moves) {
         punch.move(m);
     }
     job.passes[1].card_count = job.cards.size() - job.passes[1].first_card;

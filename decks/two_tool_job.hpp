@@ -101,7 +101,8 @@ struct TwoToolDeck {
 };
 
 // Throws JobError when the options cannot make the job (a tool the profile lacks, a surface
-// other than the male upper one, a part too big) and PlanError as make_template_deck does.
+// other than the male upper one, a part too big, more cards than a deck can number:
+// decks/deck_limits.hpp) and PlanError as make_template_deck does.
 TwoToolDeck make_two_tool_deck(const Airfoil& airfoil, const TwoToolOptions& options,
                                const axes::MachineProfile& profile);
 

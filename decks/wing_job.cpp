@@ -2,6 +2,7 @@
 
 #include "decks/cut_proof.hpp"
 #include "decks/cut_svg.hpp"
+#include "decks/deck_limits.hpp"
 #include "decks/move_planner.hpp"
 #include "decks/number_text.hpp"
 
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <tuple>
 
@@ -19,6 +21,11 @@ namespace {
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 constexpr double kPi = 3.14159265358979323846;
+// Two cards a station (wing_job.hpp); by scallop, at most this many stations.
+constexpr std::int64_t kCardsPerStation = 2;
+constexpr int kMostScallopStations = 400;
+static_assert(kCardsPerStation * kMostScallopStations <= kMaxDeckCards,
+              "a wing by scallop always fits a deck");
 
 struct Section {
     double chord;
@@ -134,28 +141,55 @@ std::vector<WingStation> make_stations(const Airfoil& a, const WingOptions& o, i
     return out;
 }
 
+// Refuses, before anything is computed, sizes the machine cannot cut: a root or tip chord or
+// a span under a hundred impulses, a cutter radius under one, anything not a finite number, a
+// sweep of 60 degrees or more.
+void check_sizes(const WingOptions& o) {
+    refuse_unless_shape("--chord", o.root_chord_in, "chord");
+    refuse_unless_shape("--span", o.span_in, "span");
+    refuse_unless_cutter("--cutter-radius", o.cutter_radius_in);
+    refuse_unless_finite("--taper", o.taper);
+    refuse_unless_finite("--sweep", o.sweep_deg);
+    refuse_unless_finite("--scallop", o.scallop_in);
+    const double tip_in = o.root_chord_in * o.taper;
+    if (!(tip_in >= kLeastShapeIn)) {
+        throw JobError(fmt::format(
+            "--taper {}: the tip chord would be {:.4g} in ({:.3f} in x {}); a chord under "
+            "{:.3f} in is no shape to the machine, which moves in impulses of {:.3f} in: give a "
+            "taper of at least {:.4f}",
+            o.taper, tip_in, o.root_chord_in, o.taper, kLeastShapeIn, kImpulseIn,
+            std::ceil(kLeastShapeIn / o.root_chord_in * 1e4) / 1e4));
+    }
+    if (std::abs(o.sweep_deg) >= 60) {
+        throw JobError(fmt::format("--sweep {}: the sweep must be under 60 degrees", o.sweep_deg));
+    }
+}
+
+// Refuses, before a station is computed, a count that cannot make a deck.
+void check_station_count(const WingOptions& o) {
+    if (o.stations < 2) {
+        throw JobError(fmt::format("--stations {}: need at least 2", o.stations));
+    }
+    refuse_past_deck_limit(kCardsPerStation * o.stations, fmt::format("--stations {}", o.stations),
+                           false, fmt::format("{} a station", kCardsPerStation));
+}
+
 } // namespace
 
 WingDeck make_wing_deck(const Airfoil& airfoil, const WingOptions& o,
                         const axes::MachineProfile& profile) {
-    if (!(o.root_chord_in > 0) || !(o.span_in > 0) || !(o.taper > 0) || !(o.cutter_radius_in > 0) ||
-        std::abs(o.sweep_deg) >= 60) {
-        throw JobError("wing: chord, span, taper and cutter radius must be positive and the "
-                       "sweep under 60 degrees");
-    }
+    check_sizes(o);
     WingDeck deck;
     if (o.scallop_in > 0) {
         int n = 6;
-        for (; n <= 400; n = n * 5 / 4 + 1) {
+        for (; n <= kMostScallopStations; n = n * 5 / 4 + 1) {
             deck.stations = make_stations(airfoil, o, n);
             if (planned(airfoil, o, deck.stations).first <= o.scallop_in) {
                 break;
             }
         }
     } else {
-        if (o.stations < 2) {
-            throw JobError(fmt::format("--stations {}: need at least 2", o.stations));
-        }
+        check_station_count(o);
         deck.stations = make_stations(airfoil, o, o.stations);
     }
     std::tie(deck.planned_leftover_in, deck.planned_gouge_in) = planned(airfoil, o, deck.stations);

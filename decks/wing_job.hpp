@@ -61,6 +61,9 @@ struct WingDeck {
     double planned_gouge_in = 0;
 };
 
+// Throws JobError when the options cannot make a deck: sizes under the least the machine can
+// cut or more cards than a deck can number (decks/deck_limits.hpp; refused before any station
+// is computed), a job too big for the counters, a fixture screw past its travel.
 WingDeck make_wing_deck(const Airfoil& airfoil, const WingOptions& options,
                         const axes::MachineProfile& profile);
 

@@ -336,7 +336,7 @@ TEST_CASE("G-code deck: refusals: the counters' range, the tolerance, too many c
         circles += "G3 X4.5 Y0.5 I0 J4\n"; // 8,166 cards a turn at 0.003 in
     }
     CHECK_THROWS_WITH(decks::make_gcode_deck(read(circles), tight, profile),
-                      Contains("p.ngc:8: more than 50000 cards at a tolerance of 0.003 in"));
+                      Contains("p.ngc:3: more than 9,999 cards at a tolerance of 0.003 in"));
     CHECK_THROWS_WITH(decks::make_gcode_deck(read("G20\n"), {}, profile), Contains("no moves"));
 }
 

@@ -153,3 +153,65 @@ TEST_CASE("Gen: a huge number is said in engineering form, not hundreds of digit
     CHECK(r.output.find("the cutter path spans 1.000e300 x 79.200e297 in") != std::string::npos);
     CHECK(r.output.size() < 300);
 }
+
+TEST_CASE("Gen: sizes past what a deck or the machine can hold are refused before any work, "
+          "naming the option and the limit, and no deck is written",
+          "[gen][cli][bad-input][limits]") {
+    TempDir dir;
+    const std::string out = " -o " + q(dir.str("x.cbn"));
+    const std::string cards_limit = "more than the 9,999 a deck can number (card numbers are four "
+                                    "digits, columns 77-80)";
+    struct Case {
+        const char* options;
+        std::string says;
+    };
+    for (const Case& c : {
+             // 10,000,002 cards: once 5.5 GB of memory and a 1.6 GB deck.
+             Case{"--stations 10000000", "--stations 10000000: the deck would need at least "
+                                         "10,000,002 cards (3 to approach the first of "
+                                         "10,000,000 stations, then one to each of the others), " +
+                                             cards_limit},
+             // Once minutes of computing.
+             Case{"--job wing --stations 100000",
+                  "--stations 100000: the deck would need 200,000 cards (2 a station), " +
+                      cards_limit},
+             Case{"--chord 1e-300", "--chord 1e-300: a chord under 0.100 in is no shape to the "
+                                    "machine, which moves in impulses of 0.001 in: give at least "
+                                    "0.100 in"},
+             Case{"--cutter-radius 1e-300", "--cutter-radius 1e-300: a cutter radius under 0.001 "
+                                            "in is less than one impulse"},
+             Case{"--job wing --span 1e-300", "--span 1e-300: a span under 0.100 in"},
+         }) {
+        INFO(c.options);
+        auto r = run_parsons(std::string("gen airfoil --naca 2412 ") + c.options + out);
+        CHECK(r.exit_code == 2);
+        CHECK_THAT(r.output, Catch::Matchers::Contains("parsons: error: gen airfoil: " + c.says));
+        CHECK_FALSE(std::filesystem::exists(dir.path("x.cbn")));
+        CHECK_FALSE(std::filesystem::exists(dir.path("x.cbn.job.json")));
+    }
+}
+
+TEST_CASE("Gen gcode: a program of exactly 9,999 cards is punched, one move more is refused at "
+          "its line and no deck is written",
+          "[gen][cli][gcode][limits]") {
+    TempDir dir;
+    // Short moves along X, back and forth: one card each (one axis, no corner approach under
+    // 0.1 in), from the reference zero, which is the work zero.
+    std::string program = "G20 G90\n";
+    for (int i = 0; i < 9999; ++i) {
+        program += i % 2 == 0 ? "G1 X0.05\n" : "G1 X0.1\n";
+    }
+    write_bytes(dir.path("most.ngc"), program);
+    write_bytes(dir.path("over.ngc"), program + "G1 X0.1\n");
+    auto most = run_parsons("gen gcode " + q(dir.str("most.ngc")) + " -o " + q(dir.str("m.cbn")));
+    CHECK(most.exit_code == 0);
+    CHECK_THAT(most.output, Catch::Matchers::Contains("9999 moves in a straight line, 0 arcs), "
+                                                      "9999 cards"));
+    auto over = run_parsons("gen gcode " + q(dir.str("over.ngc")) + " -o " + q(dir.str("o.cbn")));
+    CHECK(over.exit_code == 2);
+    CHECK_THAT(over.output,
+               Catch::Matchers::Contains("over.ngc:10001: more than 9,999 cards at a tolerance of "
+                                         "0.005 in, the most a deck can number (card numbers are "
+                                         "four digits, columns 77-80)"));
+    CHECK_FALSE(std::filesystem::exists(dir.path("o.cbn")));
+}

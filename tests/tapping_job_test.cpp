@@ -443,3 +443,36 @@ TEST_CASE("Tapping job: docs/report.md names every key of the tapping block",
         CHECK(doc.find("`" + key + "`") != std::string::npos);
     }
 }
+
+TEST_CASE("Tapping job: a spacing, clearance or thread depth far past the counters' range is "
+          "refused as too big, with the size it would need, not as too small",
+          "[tapping_job][limits]") {
+    using Catch::Matchers::Contains;
+    const auto profile = axes::extended_profile();
+    decks::TappingOptions o;
+    o.spacing_x_in = 5e9; // the second hole at 5e9 in: no int holds its thousandths
+    CHECK_THROWS_WITH(decks::make_tapping_deck(o, profile),
+                      Contains("the holes' table positions (--first-x, --spacing-x): 5.000e9 in "
+                               "is outside the counters' range, 0.000 to 9.999 in"));
+    o.spacing_x_in = 4.437; // the third hole at 9.999 in, the counters' last thousandth
+    CHECK(decks::make_tapping_deck(o, profile).holes.at(2).x_in == Approx(9.999));
+    o.spacing_x_in = 4.4375; // at 10.000 in
+    CHECK_THROWS_WITH(decks::make_tapping_deck(o, profile),
+                      Contains("(--first-x, --spacing-x): 10.000 in is outside"));
+    o = {};
+    o.spacing_y_in = 1e300;
+    CHECK_THROWS_WITH(decks::make_tapping_deck(o, profile),
+                      Contains("(--first-y, --spacing-y): 1.000e300 in is outside"));
+    o = {};
+    o.clearance_in = 1e300;
+    CHECK_THROWS_WITH(decks::make_tapping_deck(o, profile),
+                      Contains("--clearance 1e+300: more than the counters' range, 0.000 to 9.999 "
+                               "in, can hold"));
+    o = {};
+    o.thread_depth_in = 10;
+    CHECK_THROWS_WITH(decks::make_tapping_deck(o, profile),
+                      Contains("--thread-depth 10: more than the counters' range"));
+    o.thread_depth_in = 9.999; // within the range: refused for the hole's bottom, as before
+    CHECK_THROWS_WITH(decks::make_tapping_deck(o, profile),
+                      Contains("the hole's bottom would lie below the vertical's zero"));
+}

@@ -7,11 +7,14 @@
 
 #include "cardreader/deck_review.hpp"
 #include "decks/cut_proof.hpp"
+#include "decks/deck_limits.hpp"
 #include "decks/move_planner.hpp"
 #include "decks/number_text.hpp"
 #include "decks/template_job.hpp"
 
 #include <catch2/catch.hpp>
+
+#include <limits>
 
 using namespace parsons;
 using namespace parsons::decks;
@@ -267,4 +270,107 @@ TEST_CASE("Messages: the machine's figures in fixed decimals, huge ones in engin
     CHECK(fixed(1.0e300) == "1.000e300");
     CHECK(fixed(999.9996e6) == "1.000e9"); // not "1000.000e6"
     CHECK(fixed(12345678.0, 1) == "12.3e6");
+}
+
+TEST_CASE("Template: a deck holds at most 9,999 cards: the most --stations makes exactly 9,999, "
+          "one station more is refused before any is computed",
+          "[template][decks][limits]") {
+    using Catch::Matchers::Contains;
+    const auto airfoil = naca4("2412");
+    const auto profile = axes::default_profile();
+    TemplateOptions o; // the upper surface: 3 cards to approach, then one a station after the first
+    o.stations = 9997;
+    const TemplateDeck deck = make_template_deck(*airfoil, o, profile);
+    CHECK(deck.cards.size() == 9999);
+    CHECK(deck.cards.back().number == 9999);
+    o.stations = 9998;
+    REQUIRE_THROWS_WITH(make_template_deck(*airfoil, o, profile),
+                        Contains("--stations 9998: the deck would need at least 10,000 cards (3 "
+                                 "to approach the first of 9,998 stations") &&
+                            Contains("more than the 9,999 a deck can number (card numbers are "
+                                     "four digits, columns 77-80)"));
+    // Refused from the options alone: ten million stations are never computed.
+    o.stations = 10000000;
+    CHECK_THROWS_WITH(make_template_deck(*airfoil, o, profile),
+                      Contains("--stations 10000000: the deck would need at least 10,000,002 "
+                               "cards"));
+    o.stations = std::numeric_limits<int>::max();
+    CHECK_THROWS_WITH(make_template_deck(*airfoil, o, profile),
+                      Contains("the deck would need at least 2,147,483,649 cards"));
+}
+
+TEST_CASE("Template: both surfaces approach over the top, four cards: 4,998 stations a surface "
+          "make 9,998 cards, 4,999 would make 10,000 and are refused before a card is made",
+          "[template][decks][limits]") {
+    using Catch::Matchers::Contains;
+    const auto airfoil = naca4("2412");
+    const auto profile = axes::default_profile();
+    TemplateOptions o;
+    o.surface = Surface::both;
+    o.stations = 4998; // 9,995 stations round both surfaces (the leading edge once)
+    const TemplateDeck deck = make_template_deck(*airfoil, o, profile);
+    CHECK(deck.stations.size() == 9995);
+    CHECK(deck.cards.size() == 9998);
+    o.stations = 4999;
+    CHECK_THROWS_WITH(make_template_deck(*airfoil, o, profile),
+                      Contains("--stations 4999: the deck would need 10,000 cards (4 to approach, "
+                               "9,996 from station to station), more than the 9,999 a deck can "
+                               "number"));
+}
+
+TEST_CASE("Template: a scallop that would need more cards than a deck holds is refused while the "
+          "stations are being chosen",
+          "[template][decks][limits]") {
+    TemplateOptions o;
+    o.surface = Surface::both;
+    o.scallop_in = 1e-7; // every step the finest, 0.0001 of the path: 20,001 stations
+    CHECK_THROWS_WITH(make_template_deck(*naca4("2412"), o, axes::default_profile()),
+                      Catch::Matchers::Contains("--scallop 1e-07: the deck would need at least "
+                                                "10,000 cards (9,997 stations so far to hold "
+                                                "it, and 50 % of the path still to go)"));
+}
+
+TEST_CASE("Template: a chord under 0.1 in or a cutter radius under 0.001 in is no shape to the "
+          "machine and is refused, as is a size that is not a number, and the least of each is cut",
+          "[template][decks][limits]") {
+    using Catch::Matchers::Contains;
+    const auto airfoil = naca4("2412");
+    const auto profile = axes::default_profile();
+    auto make = [&](double chord_in, double radius_in) {
+        TemplateOptions o;
+        o.chord_in = chord_in;
+        o.cutter_radius_in = radius_in;
+        o.stations = 20;
+        return make_template_deck(*airfoil, o, profile);
+    };
+    CHECK(make(decks::kLeastShapeIn, 0.25).cards.size() == 22);
+    CHECK(make(0.1, 0.25).cards.size() == 22); // as typed
+    CHECK_THROWS_WITH(make(0.0999, 0.25),
+                      Contains("--chord 0.0999: a chord under 0.100 in is no shape to the "
+                               "machine, which moves in impulses of 0.001 in: give at least "
+                               "0.100 in"));
+    CHECK_THROWS_WITH(make(1e-300, 0.25), Contains("--chord 1e-300: a chord under 0.100 in"));
+    CHECK_THROWS_WITH(make(-6, 0.25), Contains("--chord -6: a chord under 0.100 in"));
+    CHECK(make(6, 0.001).cards.size() == 22);
+    CHECK_THROWS_WITH(make(6, 0.0009),
+                      Contains("--cutter-radius 0.0009: a cutter radius under 0.001 in is less "
+                               "than one impulse"));
+    CHECK_THROWS_WITH(make(6, 1e-300), Contains("--cutter-radius 1e-300: a cutter radius under"));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    CHECK_THROWS_WITH(make(nan, 0.25), Contains("--chord nan: give a finite number"));
+    CHECK_THROWS_WITH(make(inf, 0.25), Contains("--chord inf: give a finite number"));
+    CHECK_THROWS_WITH(make(6, inf), Contains("--cutter-radius inf: give a finite number"));
+    CHECK_THROWS_WITH(make(6, nan), Contains("--cutter-radius nan: give a finite number"));
+    // Too big for the counters stays the counters' refusal.
+    CHECK_THROWS_WITH(make(1e300, 0.25), Contains("the cutter path spans 1.000e300 x"));
+}
+
+TEST_CASE("Deck limits: counts are written as a person reads them", "[decks][limits]") {
+    CHECK(decks::count_text(0) == "0");
+    CHECK(decks::count_text(999) == "999");
+    CHECK(decks::count_text(9999) == "9,999");
+    CHECK(decks::count_text(10000003) == "10,000,003");
+    CHECK(decks::count_text(-1234) == "-1,234");
+    CHECK(decks::kMaxDeckCards == 9999);
 }

@@ -316,3 +316,45 @@ TEST_CASE("Two-tool job: refused for a tool the profile lacks, one tool for both
     o.pass.surface = Surface::upper;
     CHECK_NOTHROW(make_two_tool_deck(*airfoil, o, profile));
 }
+
+TEST_CASE("Two-tool job: the two passes and the tool change together make at most 9,999 cards: "
+          "9,999 are punched, 10,000 are refused before a card is punched",
+          "[two-tool][decks][limits]") {
+    using Catch::Matchers::Contains;
+    const auto profile = axes::extended_profile();
+    const auto airfoil = naca4("2412");
+    TwoToolOptions o;
+    // The passes leave out the moves that go nowhere (neighbouring stations on the same
+    // thousandth), so the count is the deck's own: these two were found by trying.
+    o.pass.stations = 5717;
+    o.allowance_in = 0.011;
+    REQUIRE_THROWS_WITH(make_two_tool_deck(*airfoil, o, profile),
+                        Contains("--stations 5717: the deck would need 10,000 cards (pass 1 ") &&
+                            Contains(", the tool change 3, pass 2 ") &&
+                            Contains("more than the 9,999 a deck can number"));
+    o.pass.stations = 5693;
+    o.allowance_in = 0.010;
+    const TwoToolDeck deck = make_two_tool_deck(*airfoil, o, profile);
+    CHECK(deck.cards.size() == 9999);
+    CHECK(deck.cards.back().number == 9999);
+    // Each pass is a template deck: ten million stations are refused before the first.
+    o.pass.stations = 10000000;
+    CHECK_THROWS_WITH(make_two_tool_deck(*airfoil, o, profile),
+                      Contains("--stations 10000000: the deck would need at least 10,000,002 "
+                               "cards"));
+}
+
+TEST_CASE("Two-tool job: a tool of the profile with a radius under one impulse is refused",
+          "[two-tool][decks][limits]") {
+    auto profile = axes::extended_profile();
+    for (axes::Tool& t : profile.tools) {
+        if (t.number == 2) {
+            t.radius_in = 1e-300;
+        }
+    }
+    TwoToolOptions o;
+    o.pass.stations = 10;
+    CHECK_THROWS_WITH(make_two_tool_deck(*naca4("2412"), o, profile),
+                      Catch::Matchers::Contains("gives tool 2 a radius of 1e-300 in: a cutter "
+                                                "radius under 0.001 in is less than one impulse"));
+}

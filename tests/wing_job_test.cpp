@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <limits>
 #include <tuple>
 
 using namespace parsons;
@@ -99,4 +100,84 @@ TEST_CASE("Wing: the fixture angles follow the sine-plate geometry", "[wing][dec
         // The cut is the table's traverse, last in the sequence of the second card.
         CHECK(deck.cards.at(2 * i + 1).axis(cardreader::Axis::table).sequence == 0b10000);
     }
+}
+
+TEST_CASE("Wing: two cards a station, so 4,999 stations make 9,998 cards and 5,000 are refused "
+          "before a station is computed",
+          "[wing][decks][limits]") {
+    using Catch::Matchers::Contains;
+    const auto airfoil = naca4("2412");
+    const auto profile = axes::default_profile();
+    WingOptions o;
+    o.scallop_in = 0;
+    o.stations = 5000;
+    REQUIRE_THROWS_WITH(make_wing_deck(*airfoil, o, profile),
+                        Contains("--stations 5000: the deck would need 10,000 cards (2 a "
+                                 "station), more than the 9,999 a deck can number (card numbers "
+                                 "are four digits, columns 77-80)"));
+    o.stations = 100000;
+    CHECK_THROWS_WITH(make_wing_deck(*airfoil, o, profile),
+                      Contains("--stations 100000: the deck would need 200,000 cards"));
+#ifndef PARSONS_SANITIZE // some seconds of move planning; tens of times that under the sanitizers
+    o.stations = 4999;
+    CHECK(make_wing_deck(*airfoil, o, profile).cards.size() == 9998);
+#endif
+}
+
+TEST_CASE("Wing: a root or tip chord or a span under 0.1 in, a cutter radius under 0.001 in, or a "
+          "size that is not a number is refused, and the least of each is cut",
+          "[wing][decks][limits]") {
+    using Catch::Matchers::Contains;
+    const auto airfoil = naca4("2412");
+    const auto profile = axes::default_profile();
+    // A straight, untapered wing, so the fixture stays level whatever the span.
+    WingOptions straight;
+    straight.root_chord_in = 4;
+    straight.taper = 1;
+    straight.sweep_deg = 0;
+    straight.stations = 10;
+    auto make = [&](auto&& change) {
+        WingOptions o = straight;
+        change(o);
+        return make_wing_deck(*airfoil, o, profile);
+    };
+    CHECK(make([](WingOptions& o) { o.span_in = 0.1; }).cards.size() == 20);
+    CHECK_THROWS_WITH(make([](WingOptions& o) { o.span_in = 0.0999; }),
+                      Contains("--span 0.0999: a span under 0.100 in is no shape to the machine, "
+                               "which moves in impulses of 0.001 in: give at least 0.100 in"));
+    CHECK_THROWS_WITH(make([](WingOptions& o) { o.span_in = 1e-300; }),
+                      Contains("--span 1e-300: a span under 0.100 in"));
+    CHECK(make([](WingOptions& o) { o.root_chord_in = 0.1; }).cards.size() == 20);
+    CHECK_THROWS_WITH(make([](WingOptions& o) { o.root_chord_in = 1e-300; }),
+                      Contains("--chord 1e-300: a chord under 0.100 in"));
+    // The tip chord is the root chord times the taper: 0.2 x 0.5 is the least.
+    CHECK(make([](WingOptions& o) {
+              o.root_chord_in = 0.2;
+              o.taper = 0.5;
+          }).cards.size() == 20);
+    CHECK_THROWS_WITH(make([](WingOptions& o) {
+                          o.root_chord_in = 0.2;
+                          o.taper = 0.499;
+                      }),
+                      Contains("--taper 0.499: the tip chord would be 0.0998 in (0.200 in x "
+                               "0.499); a chord under 0.100 in is no shape to the machine") &&
+                          Contains("give a taper of at least 0.5000"));
+    CHECK_THROWS_WITH(make([](WingOptions& o) { o.taper = 1e-300; }),
+                      Contains("--taper 1e-300: the tip chord would be 4e-300 in"));
+    CHECK(make([](WingOptions& o) { o.cutter_radius_in = 0.001; }).cards.size() == 20);
+    CHECK_THROWS_WITH(make([](WingOptions& o) { o.cutter_radius_in = 1e-300; }),
+                      Contains("--cutter-radius 1e-300: a cutter radius under 0.001 in"));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    CHECK_THROWS_WITH(make([&](WingOptions& o) { o.sweep_deg = nan; }),
+                      Contains("--sweep nan: give a finite number"));
+    CHECK_THROWS_WITH(make([&](WingOptions& o) { o.span_in = inf; }),
+                      Contains("--span inf: give a finite number"));
+    CHECK_THROWS_WITH(make([&](WingOptions& o) { o.taper = inf; }),
+                      Contains("--taper inf: give a finite number"));
+    CHECK_THROWS_WITH(make([&](WingOptions& o) { o.root_chord_in = nan; }),
+                      Contains("--chord nan: give a finite number"));
+    // Too big for the counters stays the counters' refusal.
+    CHECK_THROWS_WITH(make([](WingOptions& o) { o.span_in = 20; }),
+                      Contains("wing: the job spans") && Contains("use a smaller wing"));
 }
