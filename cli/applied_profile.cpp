@@ -62,12 +62,19 @@ json profile_differences(const axes::MachineProfile& applied, const axes::Machin
     return out;
 }
 
+std::string AppliedProfile::file_read(const std::string& name) {
+    // A built-in profile by name (parsons-1952, parsons-safe), unless a file of that name exists.
+    if (name.empty() || (axes::builtin_profile(name) && !std::filesystem::exists(name))) {
+        return "";
+    }
+    return name;
+}
+
 AppliedProfile AppliedProfile::load(const std::string& file) {
     AppliedProfile a;
-    // A built-in profile by name (parsons-1952, parsons-safe), unless a file of that name exists.
     auto builtin =
         file.empty() ? std::optional(axes::default_profile()) : axes::builtin_profile(file);
-    if (builtin && (file.empty() || !std::filesystem::exists(file))) {
+    if (file_read(file).empty()) {
         a.profile_ = *builtin;
         a.named_ = a.profile_;
     } else {

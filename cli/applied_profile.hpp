@@ -19,6 +19,8 @@ public:
     // The profile `file` names (empty: the default; a built-in name; or a JSON file, applied
     // over the built-in profile its "name" names, else over the default). Throws DeckError.
     static AppliedProfile load(const std::string& file);
+    // The file load(name) reads: "" for the default and for a built-in profile by name.
+    static std::string file_read(const std::string& name);
     // The profile a saved state carries (state_file names it in messages). Throws StateError
     // or ProfileError on a state that does not hold one.
     static AppliedProfile from_state(const nlohmann::json& saved, const std::string& state_file);
@@ -28,6 +30,8 @@ public:
     void apply_limits(const std::vector<std::string>& limits);
     axes::MachineProfile& profile() { return profile_; }
     const axes::MachineProfile& profile() const { return profile_; }
+    // The profile file applied, or "" for a built-in profile.
+    const std::string& file() const { return file_; }
 
     // For the report and the saved state: name, file, the named profile compared with, every
     // value that differs from it (key, value, named value) and, per axis, the soft limits and

@@ -336,15 +336,8 @@ ExitCode run_bench(const BenchOptions& o) {
         std::ofstream(o.child_report) << own_peak_mb() << "\n";
         return code;
     }
-    const fs::path dir = fs::temp_directory_path() / fmt::format("parsons-bench-{}", getpid());
-    fs::create_directories(dir);
-    struct Cleanup {
-        fs::path d;
-        ~Cleanup() {
-            std::error_code ec;
-            fs::remove_all(d, ec);
-        }
-    } cleanup{dir};
+    const ScratchFolder scratch("parsons-bench"); // made new, so removing it harms nothing else
+    const fs::path dir = scratch.path();
     auto path = [&dir](const std::string& name) { return (dir / name).string(); };
     nlohmann::json j;
     j["machine"] = {{"cpu", cpu_model()},

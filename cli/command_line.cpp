@@ -10,6 +10,7 @@
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <string>
 #include <system_error>
 
@@ -20,8 +21,35 @@ namespace {
 // The message for an error, and exit 2: standard output that cannot be written is a
 // failed output like any other.
 int write_error(const std::string& message) {
-    fmt::print(stderr, "parsons: error: {}\n", message);
-    return to_int(parsons::cli::ExitCode::bad_input);
+    if (!say(stderr, fmt::format("parsons: error: {}\n", message)) && reader_gone(stderr)) {
+        return to_int(ExitCode::broken_pipe); // as cat's own error to a closed pipe ends it
+    }
+    return to_int(ExitCode::bad_input);
+}
+
+// A reader went away: the command ends at once, quietly (no message to a stream that is gone;
+// a named FIFO or socket is told of on standard error, which still has its reader).
+int broken_pipe(const std::string& output) {
+    if (output != "standard output" && output != "standard error") {
+        say(stderr,
+            fmt::format("parsons: {}: the reader went away (broken pipe); stopped\n", output));
+    }
+    return to_int(ExitCode::broken_pipe);
+}
+
+// The stream a failed fmt::print wrote to, when its reader went away.
+std::optional<std::string> gone_stream(const std::system_error& e) {
+    const bool epipe = e.code() == std::errc::broken_pipe;
+    if (std::ferror(stdout) != 0 && (epipe || reader_gone(stdout))) {
+        return "standard output";
+    }
+    if (std::ferror(stderr) != 0 && (epipe || reader_gone(stderr))) {
+        return "standard error";
+    }
+    if (epipe) {
+        return "standard output";
+    }
+    return std::nullopt;
 }
 
 } // namespace
@@ -46,9 +74,11 @@ void build_command_line(CLI::App& app, Command& selected, const std::string& ver
 }
 
 int command_line_main(int argc, char** argv, const std::string& version, RunTimeline* timeline) {
-    // A reader that goes away (a closed pipe or FIFO) is a write error with a message and
-    // exit 2, not a silent death by SIGPIPE.
+    // A reader that goes away (a closed pipe or FIFO) is seen as EPIPE where it happens, so the
+    // command ends quietly with every temporary file removed (exit 141), not by SIGPIPE midway.
     std::signal(SIGPIPE, SIG_IGN);
+    remove_temporaries_on_signals();
+    reset_standard_output();
     CLI::App app;
     Command selected;
     build_command_line(app, selected, version, timeline);
@@ -63,11 +93,8 @@ int command_line_main(int argc, char** argv, const std::string& version, RunTime
             names += (names.empty() ? "" : ", ") + sub->get_name();
         }
         if (!known) {
-            fmt::print(stderr,
-                       "parsons: error: unknown command '{}' (one of: {}; see parsons "
-                       "--help)\n",
-                       word, names);
-            return to_int(ExitCode::bad_input);
+            return write_error(
+                fmt::format("unknown command '{}' (one of: {}; see parsons --help)", word, names));
         }
     }
     try {
@@ -83,12 +110,13 @@ int command_line_main(int argc, char** argv, const std::string& version, RunTime
                     command += " " + sub->get_name();
                 }
             }
-            fmt::print(stderr, "parsons: error: {} (see '{} --help')\n", e.what(), command);
-            return to_int(ExitCode::bad_input);
+            return write_error(fmt::format("{} (see '{} --help')", e.what(), command));
         }
         app.exit(e); // --help: the help text, exit 0
         try {
             finish_standard_output();
+        } catch (const BrokenPipe& gone) {
+            return broken_pipe(gone.output());
         } catch (const cardreader::DeckError& error) {
             return write_error(error.what());
         }
@@ -98,19 +126,27 @@ int command_line_main(int argc, char** argv, const std::string& version, RunTime
         const ExitCode code = selected();
         finish_standard_output();
         return to_int(code);
+    } catch (const BrokenPipe& e) {
+        return broken_pipe(e.output());
     } catch (const cardreader::DeckError& e) {
         std::fflush(stdout);
+        if (std::ferror(stdout) != 0 && reader_gone(stdout)) {
+            return broken_pipe("standard output");
+        }
         return write_error(e.what());
     } catch (const std::system_error& e) {
-        // fmt reports a failed write to standard output this way.
+        // fmt reports a failed write to standard output or error this way.
+        if (const auto gone = gone_stream(e)) {
+            return broken_pipe(*gone);
+        }
         if (std::ferror(stdout) != 0) {
             return write_error("standard output: cannot write: " + e.code().message());
         }
-        fmt::print(stderr, "parsons: internal error: {} (please report this)\n", e.what());
+        say(stderr, fmt::format("parsons: internal error: {} (please report this)\n", e.what()));
         return to_int(ExitCode::internal);
     } catch (const std::exception& e) {
         std::fflush(stdout);
-        fmt::print(stderr, "parsons: internal error: {} (please report this)\n", e.what());
+        say(stderr, fmt::format("parsons: internal error: {} (please report this)\n", e.what()));
         return to_int(ExitCode::internal);
     }
 }

@@ -5,6 +5,7 @@
 
 #include "cli/deck_files.hpp"
 #include "cli/exit_codes.hpp"
+#include "cli/file_plan.hpp"
 
 #include "axes/machine_profile.hpp"
 #include "decks/job_file.hpp"
@@ -66,13 +67,31 @@ struct RunRequest {
 // The result of the run goes to *result too, if given (the benchmark counts its impulses).
 ExitCode run_deck(const RunRequest& request, relaylogic::RunResult* result = nullptr);
 
-// A deck generated and written: DECK, DECK.job.json and (if named) the centres CSV.
+// A deck generated and written: DECK, its job description (DECK.job.json, or --job-out) and (if
+// named) the centres CSV.
 struct GeneratedJob {
     decks::JobDescription description;
     decks::TemplateDeck deck; // the template job
     decks::WingDeck wing;     // the wing job
     std::size_t cards = 0;
+    std::string job_file; // where the job description went; "" for nowhere
 };
+
+// The files a generator reads and writes, to compare before it writes anything
+// (cli/file_plan.hpp): --profile's file, the deck (-o), its job description (job_file_for) and,
+// for a press or tapping job, the profile beside that. The caller adds what else it reads or
+// writes, then checks.
+FilePlan generator_plan(const std::string& profile, const std::string& output,
+                        const std::string& job_out, bool writes_profile);
+
+// --job-out FILE, for every generator: where the job description goes (by default beside the
+// deck, DECK.job.json, when the deck is a file; a deck to standard output or a device has none).
+void add_job_out_option(CLI::App& cmd, std::string& job_out);
+
+// What a generator's summary says it wrote: "d.cbn, d.cbn.job.json and c.csv"; for a deck with
+// no job description, why and how to have one.
+std::string files_written(const std::string& deck, const std::string& job_file,
+                          const std::string& also = {}, const std::string& and_also = {});
 class ProgressLine;
 // Punches the generated cards into `output` (format from its name or `to`) through the one
 // output writer; a card the keypunch refuses is a DeckError naming `command` and the card.
@@ -82,9 +101,10 @@ cardreader::DeckFingerprint write_cards(const std::vector<cardreader::CardOrders
                                         ProgressLine* progress,
                                         const char* command = "gen airfoil");
 // `progress` (may be null): where to show how far the generator is (gen on a terminal).
+// `job_out`: --job-out (job_file_for).
 GeneratedJob generate_job(const decks::JobDescription& description,
                           const axes::MachineProfile& profile, const std::string& output,
                           const std::string& to, const std::string& centres,
-                          ProgressLine* progress = nullptr);
+                          ProgressLine* progress = nullptr, const std::string& job_out = {});
 
 } // namespace parsons::cli

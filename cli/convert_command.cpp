@@ -1,6 +1,7 @@
 // parsons convert DECK -o OUT: copy a deck card by card into another format; or, to a G-code
 // file (.ngc, .nc, .gcode, or --to gcode), run the deck and write the machine's path as G-code
 // (cli/gcode_path.hpp; docs/gcode.md).
+#include "cli/applied_profile.hpp"
 #include "cli/commands.hpp"
 #include "cli/deck_files.hpp"
 #include "cli/output_file.hpp"
@@ -57,6 +58,10 @@ ExitCode run_convert(const ConvertFlags& f) {
         throw cardreader::DeckError("convert: --profile is for G-code output, where the deck is "
                                     "run; a deck copied card by card needs no machine");
     }
+    FilePlan plan;
+    plan.read("DECK", f.input);
+    plan.write("-o", f.output);
+    plan.check();
     InputDeck deck(f.input, f.deck);
     const auto out_options = deck_options(f.output, f.to, f.deck, "--to");
     OutputFile out(f.output);

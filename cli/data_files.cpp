@@ -78,4 +78,9 @@ std::string bundled_airfoils_hint() {
     return fmt::format(" (bundled, by name: {})", fmt::join(names, ", "));
 }
 
+std::string airfoil_file_read(const std::string& airfoil_source) {
+    const std::string dat = "dat ";
+    return airfoil_source.rfind(dat, 0) == 0 ? airfoil_source.substr(dat.size()) : std::string();
+}
+
 } // namespace parsons::cli

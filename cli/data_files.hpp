@@ -22,6 +22,9 @@ std::vector<std::string> bundled_airfoils();
 // (opening it then fails with the file named).
 std::string resolve_airfoil_file(const std::string& name);
 
+// The coordinate file an airfoil source names ("dat PATH": PATH), or "" ("naca 2412").
+std::string airfoil_file_read(const std::string& airfoil_source);
+
 // " (bundled: clarky.dat, e387.dat, ...)" for a message about an airfoil file that could not
 // be opened, or "" when nothing is bundled.
 std::string bundled_airfoils_hint();

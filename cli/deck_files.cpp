@@ -2,6 +2,7 @@
 
 #include "cardreader/layout.hpp"
 #include "cli/applied_profile.hpp"
+#include "cli/output_file.hpp"
 
 #include "axes/profile_json.hpp"
 #include "cardreader/deck_error.hpp"
@@ -57,6 +58,8 @@ cardreader::DeckOptions deck_options(const std::string& path, const std::string&
         options.format = *f;
     } else if (auto f = cardreader::format_for_path(path); f && path != "-") {
         options.format = *f;
+    } else if (output && null_device(path)) {
+        options.format = cardreader::DeckFormat::cbn; // nothing reads it: any format discards
     } else if (output) {
         throw DeckError::in_file(
             path == "-" ? "standard output" : path,

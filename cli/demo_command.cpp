@@ -270,6 +270,22 @@ ExitCode run_demo(const std::string& dir) {
     return code;
 }
 
+// --out /dev/null (any character device): the demo reads back what it writes (its job files and
+// reports), so it writes into a scratch folder of its own and removes it at the end.
+ExitCode run_demo_into(const std::string& out) {
+    FilePlan plan; // it reads nothing of the user's: "-" is the one folder refused
+    plan.write_folder("--out", out, [](const std::string&) { return false; });
+    plan.check();
+    if (!character_device(out)) {
+        return run_demo(out);
+    }
+    const ScratchFolder scratch("parsons-demo");
+    const ExitCode code = run_demo(scratch.path());
+    fmt::print("(--out {}: the demo wrote into the scratch folder {} and removed it)\n", out,
+               scratch.path());
+    return code;
+}
+
 } // namespace
 
 void add_demo_command(CLI::App& app, Command& selected) {
@@ -283,7 +299,7 @@ void add_demo_command(CLI::App& app, Command& selected) {
                                  {ExitCode::interrupted, "stopped by the operator with Ctrl-C"},
                                  {ExitCode::terminated, "stopped by SIGTERM"}}) +
                 "Example:\n  parsons demo            (then open out/demo/cut.svg and plot.svg)");
-    cmd->callback([&selected, dir] { selected = [dir] { return run_demo(*dir); }; });
+    cmd->callback([&selected, dir] { selected = [dir] { return run_demo_into(*dir); }; });
 }
 
 } // namespace parsons::cli

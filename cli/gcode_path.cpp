@@ -109,10 +109,13 @@ void GcodePathWriter::on_finish(double seconds) {
     pending_.clear();
     if (stop_.empty()) {
         fmt::print(out_, "(completed at {:.3f} s of machine time)\n", seconds);
+        out_ << "M2\n";
     } else {
-        out_ << stop_;
+        // Cut short: said so, and no M2, so that no controller takes it for a whole program.
+        out_ << stop_
+             << "(INCOMPLETE: the path ends at the machine stop above; the deck was not run "
+                "through, so this program has no M2)\n";
     }
-    out_ << "M2\n";
     out_.flush();
 }
 

@@ -7,7 +7,9 @@
 // within kGcodePathToleranceIn of every position the machine passed through
 // (Douglas-Peucker). Each line's F is the speed the machine moved along it, inches a minute:
 // what the speed switches set, with the run-up and coast. Each card's lines follow a comment
-// naming the card; the stop or the end is a comment before M2.
+// naming the card; the end is a comment before M2. A run cut short (a machine stop, the
+// operator's Ctrl-C) ends with the stop and an INCOMPLETE comment instead, and no M2: the
+// program must not look whole to a controller.
 #pragma once
 
 #include "relaylogic/machine_observer.hpp"

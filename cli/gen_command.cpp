@@ -6,6 +6,7 @@
 // addition after EP 0640901, run under --profile parsons-extended). parsons gen press-feeder and
 // parsons gen tapping: the jobs of the press and spindle synchronisations (cli/press_feeder.hpp,
 // cli/tapping.hpp).
+#include "cli/applied_profile.hpp"
 #include "cli/commands.hpp"
 #include "cli/data_files.hpp"
 #include "cli/deck_files.hpp"
@@ -69,6 +70,7 @@ struct GenFlags {
     std::string output;
     std::string to;
     std::string centres;
+    std::string job_out;
     std::string profile;
     bool json = false;
 };
@@ -89,6 +91,45 @@ decks::TemplateOptions options_from(const GenFlags& f) {
 }
 
 } // namespace
+
+FilePlan generator_plan(const std::string& profile, const std::string& output,
+                        const std::string& job_out, bool writes_profile) {
+    FilePlan plan;
+    plan.read("--profile", AppliedProfile::file_read(profile));
+    plan.write("-o", output);
+    const std::string job_file = job_file_for(output, job_out);
+    plan.write(job_option(job_out), job_file);
+    if (writes_profile) {
+        plan.write("the profile beside the job description", profile_file_for(job_file));
+    }
+    return plan;
+}
+
+void add_job_out_option(CLI::App& cmd, std::string& job_out) {
+    cmd.add_option("--job-out", job_out,
+                   "Write the job description (for run --cut and the proofs) to this file "
+                   "instead of beside the deck (DECK.job.json); a deck to standard output or a "
+                   "device has none unless this is given");
+}
+
+std::string files_written(const std::string& deck, const std::string& job_file,
+                          const std::string& also, const std::string& and_also) {
+    std::vector<std::string> names{deck == "-" ? std::string("standard output") : deck};
+    for (const std::string* name : {&job_file, &also, &and_also}) {
+        if (!name->empty()) {
+            names.push_back(*name);
+        }
+    }
+    std::string text = names.front();
+    for (std::size_t i = 1; i < names.size(); ++i) {
+        text += (i + 1 == names.size() ? " and " : ", ") + names[i];
+    }
+    if (job_file.empty()) {
+        text += " (no job description beside a deck that is not a file: give --job-out FILE "
+                "for one)";
+    }
+    return text;
+}
 
 cardreader::DeckFingerprint write_cards(const std::vector<cardreader::CardOrders>& cards,
                                         const std::string& output, const std::string& to,
@@ -133,9 +174,9 @@ void refuse_unreachable_scallop(double target_in, double planned_in, const char*
 
 GeneratedJob generate_job(const decks::JobDescription& description,
                           const axes::MachineProfile& profile, const std::string& output,
-                          const std::string& to, const std::string& centres,
-                          ProgressLine* progress) {
-    GeneratedJob job{description, {}, {}, 0};
+                          const std::string& to, const std::string& centres, ProgressLine* progress,
+                          const std::string& job_out) {
+    GeneratedJob job{description, {}, {}, 0, job_file_for(output, job_out)};
     if (progress != nullptr) {
         progress->show(0, fmt::format("{}: computing the stations", description.airfoil), true);
     }
@@ -177,8 +218,8 @@ GeneratedJob generate_job(const decks::JobDescription& description,
     }
     job.description.deck_cards = fingerprint.cards();
     job.description.deck_fingerprint = fingerprint.hex();
-    if (output != "-") { // a deck on standard output has no file to stand beside
-        write_file(output + ".job.json", decks::job_to_json(job.description));
+    if (!job.job_file.empty()) { // a deck on standard output or a device has none beside it
+        write_file(job.job_file, decks::job_to_json(job.description));
     }
     if (!centres.empty()) {
         write_file(centres, csv);
@@ -189,7 +230,8 @@ GeneratedJob generate_job(const decks::JobDescription& description,
 GeneratedTwoToolJob generate_two_tool_job(const std::string& airfoil_source, bool closed_te,
                                           const decks::TwoToolOptions& options,
                                           const axes::MachineProfile& profile,
-                                          const std::string& output, const std::string& to) {
+                                          const std::string& output, const std::string& to,
+                                          const std::string& job_out) {
     if (!profile.condition_cards) {
         throw DeckError(fmt::format("gen two-tool: the machine profile '{}' takes no condition "
                                     "cards (an addition after EP 0640901): give --profile "
@@ -197,6 +239,7 @@ GeneratedTwoToolJob generate_two_tool_job(const std::string& airfoil_source, boo
                                     profile.name));
     }
     GeneratedTwoToolJob job;
+    job.job_file = job_file_for(output, job_out);
     decks::JobDescription& d = job.description;
     d.airfoil = airfoil_source;
     d.closed_trailing_edge = closed_te;
@@ -220,8 +263,8 @@ GeneratedTwoToolJob generate_two_tool_job(const std::string& airfoil_source, boo
     d.work_zero_in = job.deck.work_zero_in;
     d.deck_cards = fingerprint.cards();
     d.deck_fingerprint = fingerprint.hex();
-    if (output != "-") {
-        write_file(output + ".job.json", decks::job_to_json(d));
+    if (!job.job_file.empty()) {
+        write_file(job.job_file, decks::job_to_json(d));
     }
     return job;
 }
@@ -237,8 +280,8 @@ Json summary_json(const GenFlags& f, const GeneratedJob& job) {
     doc["deck"] = f.output;
     doc["format"] = std::string(
         cardreader::format_name(deck_options(f.output, f.to, DeckFlags{}, "--to").format));
-    doc["job_file"] = f.output + ".job.json";
-    doc["centres"] = f.centres.empty() ? Json(nullptr) : Json(f.centres);
+    doc["job_file"] = file_or_null(job.job_file);
+    doc["centres"] = file_or_null(f.centres);
     doc["airfoil"] = description.airfoil;
     doc["chord_in"] = f.chord_in;
     doc["cutter_radius_in"] = f.radius_in;
@@ -298,10 +341,7 @@ void print_summary(const GenFlags& f, const GeneratedJob& job) {
                    "  work zero        table {:.3f} in, cross slide {:.3f} in (the leading edge)\n",
                    d.work_zero_in.x(), d.work_zero_in.y());
     }
-    fmt::print(out, "  wrote            {}{}{}\n", f.output == "-" ? "standard output" : f.output,
-               f.output == "-" ? " (no job description: give run --job for --cut)"
-                               : " and " + f.output + ".job.json",
-               f.centres.empty() ? "" : " and " + f.centres);
+    fmt::print(out, "  wrote            {}\n", files_written(f.output, job.job_file, f.centres));
 }
 
 ExitCode run_gen(const GenFlags& f) {
@@ -335,10 +375,15 @@ ExitCode run_gen(const GenFlags& f) {
     }
     refuse_json_beside_standard_output("gen airfoil", f.json, "-o", f.output);
     refuse_json_beside_standard_output("gen airfoil", f.json, "--centres", f.centres);
+    refuse_json_beside_standard_output("gen airfoil", f.json, "--job-out", f.job_out);
+    FilePlan plan = generator_plan(f.profile, f.output, f.job_out, false);
+    plan.read("--dat", airfoil_file_read(description.airfoil));
+    plan.write("--centres", f.centres);
+    plan.check();
     const auto profile = load_profile(f.profile);
     ProgressLine progress; // on a terminal only
     const GeneratedJob job =
-        generate_job(description, profile, f.output, f.to, f.centres, &progress);
+        generate_job(description, profile, f.output, f.to, f.centres, &progress, f.job_out);
     progress.clear();
     if (f.json) {
         print_json_document(summary_json(f, job));
@@ -368,6 +413,7 @@ struct TwoToolFlags {
     bool no_corner_slowdown = false;
     std::string output;
     std::string to;
+    std::string job_out;
     std::string profile = "parsons-extended";
     bool json = false;
 };
@@ -384,7 +430,7 @@ Json two_tool_json(const TwoToolFlags& f, const GeneratedTwoToolJob& job) {
     doc["deck"] = f.output;
     doc["format"] = std::string(
         cardreader::format_name(deck_options(f.output, f.to, DeckFlags{}, "--to").format));
-    doc["job_file"] = f.output + ".job.json";
+    doc["job_file"] = file_or_null(job.job_file);
     doc["airfoil"] = job.description.airfoil;
     doc["chord_in"] = f.chord_in;
     doc["variant"] = job.description.variant;
@@ -451,9 +497,7 @@ void print_two_tool(const TwoToolFlags& f, const GeneratedTwoToolJob& job,
     fmt::print(out,
                "  work zero        table {:.3f} in, cross slide {:.3f} in (the leading edge)\n",
                d.work_zero_in.x(), d.work_zero_in.y());
-    fmt::print(out, "  wrote            {}{}\n", f.output == "-" ? "standard output" : f.output,
-               f.output == "-" ? " (no job description: give run --job for --cut)"
-                               : " and " + f.output + ".job.json");
+    fmt::print(out, "  wrote            {}\n", files_written(f.output, job.job_file));
 }
 
 int other_tool(const axes::MachineProfile& profile, int rough) {
@@ -475,6 +519,11 @@ ExitCode run_two_tool(const TwoToolFlags& f) {
                                     f.scallop_in));
     }
     refuse_json_beside_standard_output("gen two-tool", f.json, "-o", f.output);
+    refuse_json_beside_standard_output("gen two-tool", f.json, "--job-out", f.job_out);
+    const std::string airfoil = airfoil_source(f.naca, f.dat);
+    FilePlan plan = generator_plan(f.profile, f.output, f.job_out, false);
+    plan.read("--dat", airfoil_file_read(airfoil));
+    plan.check();
     const auto profile = load_profile(f.profile);
     decks::TwoToolOptions o;
     o.pass.chord_in = f.chord_in;
@@ -493,8 +542,8 @@ ExitCode run_two_tool(const TwoToolFlags& f) {
                                     "changes tools only between the passes",
                                     o.rough_tool, profile.first_tool));
     }
-    const GeneratedTwoToolJob job = generate_two_tool_job(airfoil_source(f.naca, f.dat),
-                                                          f.closed_te, o, profile, f.output, f.to);
+    const GeneratedTwoToolJob job =
+        generate_two_tool_job(airfoil, f.closed_te, o, profile, f.output, f.to, f.job_out);
     if (f.json) {
         print_json_document(two_tool_json(f, job));
     } else {
@@ -537,6 +586,7 @@ void add_two_tool_command(CLI::App& gen, Command& selected) {
                   "Do not slow down at sharp turns of the path");
     cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")->required();
     cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing");
+    add_job_out_option(*cmd, flags->job_out);
     cmd->add_option("--profile", flags->profile,
                     "Machine profile (its tools and tool-change time); one that takes condition "
                     "cards")
@@ -595,6 +645,7 @@ void add_gen_command(CLI::App& app, Command& selected) {
     cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing");
     cmd->add_option("--centres", flags->centres,
                     "Write x,y,cx,cy per station (work point and cutter centre, inches)");
+    add_job_out_option(*cmd, flags->job_out);
     cmd->add_option("--profile", flags->profile, "Machine profile JSON");
     add_json_flag(*cmd, flags->json);
     cmd->footer(

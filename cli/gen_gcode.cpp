@@ -1,5 +1,6 @@
 // parsons gen gcode PROGRAM: a G-code program as a deck the 1952 machine runs
 // (decks/gcode_program.hpp reads it, decks/gcode_job.hpp makes the cards; docs/gcode.md).
+#include "cli/applied_profile.hpp"
 #include "cli/commands.hpp"
 #include "cli/deck_files.hpp"
 #include "cli/json_output.hpp"
@@ -95,6 +96,11 @@ ExitCode run_gen_gcode(GcodeFlags f) {
         f.o.work_zero_in = Eigen::Vector3d(f.work_zero[0], f.work_zero[1], f.work_zero[2]);
     }
     f.o.corner_slowdown = !f.no_corner_slowdown;
+    FilePlan plan;
+    plan.read("PROGRAM", f.program);
+    plan.read("--profile", AppliedProfile::file_read(f.profile));
+    plan.write("-o", f.output);
+    plan.check();
     const auto profile = load_profile(f.profile);
     const std::string text = read_text_file(f.program);
     const decks::GcodeProgram program =

@@ -25,6 +25,10 @@ double rounded_inches(double inches) {
     return r == 0 ? 0.0 : r; // no -0.0
 }
 
+Json file_or_null(const std::string& name) {
+    return name.empty() ? Json(nullptr) : Json(name);
+}
+
 Json inches_json(std::optional<cardreader::Thousandths> value) {
     if (!value) {
         return nullptr;

@@ -4,13 +4,18 @@
 
 #include <fmt/format.h>
 
+#include <array>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <poll.h>
+#include <pthread.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <sys/un.h>
 #include <unistd.h>
 
@@ -27,25 +32,6 @@ bool g_standard_output_taken = false;
 
 std::string reason(int error) {
     return std::strerror(error);
-}
-
-// The file a chain of symbolic links finally names (which may not exist yet); `path` itself
-// when it is no link.
-std::string final_target(const std::string& path) {
-    fs::path p(path);
-    for (int i = 0; i < kMostLinks; ++i) {
-        struct stat st {};
-        if (lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) {
-            return p.string();
-        }
-        std::error_code ec;
-        const fs::path next = fs::read_symlink(p, ec);
-        if (ec) {
-            throw DeckError::in_file(path, "cannot read the symbolic link: " + ec.message());
-        }
-        p = next.is_absolute() ? next : p.parent_path() / next;
-    }
-    throw DeckError::in_file(path, reason(ELOOP));
 }
 
 // A Unix socket someone listens on, connected for writing.
@@ -68,7 +54,54 @@ int connect_socket(const std::string& path, const std::string& name) {
     return fd;
 }
 
+// The signals that end a command, whose handler removes the temporary files.
+constexpr std::array<int, 4> kStopSignals = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+
 const volatile std::sig_atomic_t* g_give_up = nullptr;
+volatile std::sig_atomic_t* g_broken_pipe_flag = nullptr;
+
+// The temporary files open now, where a signal handler can find them: fixed slots of
+// pointers, read and cleared atomically (async-signal-safe), each a copy owned by its
+// OutputFile. A process with more outputs open at once than slots leaves the rest unregistered
+// (removed by their OutputFile as usual, but not on a signal).
+constexpr int kTemporarySlots = 64;
+std::atomic<const char*> g_temporaries[kTemporarySlots];
+
+int register_temporary(const char* path) {
+    for (int i = 0; i < kTemporarySlots; ++i) {
+        const char* empty = nullptr;
+        if (g_temporaries[i].compare_exchange_strong(empty, path)) {
+            return i;
+        }
+    }
+    return -1;
+}
+
+void unregister_temporary(int slot) {
+    if (slot >= 0) {
+        g_temporaries[slot].store(nullptr);
+    }
+}
+
+extern "C" void remove_temporaries_and_end(int signal) {
+    for (auto& slot : g_temporaries) {
+        if (const char* path = slot.load()) {
+            ::unlink(path); // ours alone (created with O_EXCL)
+        }
+    }
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+}
+
+// The descriptor of a pipe or FIFO whose reading end is closed: poll says POLLERR at once.
+bool pipe_closed(int fd) {
+    struct stat st {};
+    if (fd < 0 || fstat(fd, &st) != 0 || !S_ISFIFO(st.st_mode)) {
+        return false;
+    }
+    pollfd p{fd, 0, 0};
+    return ::poll(&p, 1, 0) == 1 && (p.revents & POLLERR) != 0;
+}
 
 // An EINTR to try again after: not once the operator has stopped the run.
 bool try_again(int error) {
@@ -77,8 +110,42 @@ bool try_again(int error) {
 
 } // namespace
 
+std::string final_target(const std::string& path) {
+    fs::path p(path);
+    for (int i = 0; i < kMostLinks; ++i) {
+        struct stat st {};
+        if (lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) {
+            return p.string();
+        }
+        std::error_code ec;
+        const fs::path next = fs::read_symlink(p, ec);
+        if (ec) {
+            throw DeckError::in_file(path, "cannot read the symbolic link: " + ec.message());
+        }
+        p = next.is_absolute() ? next : p.parent_path() / next;
+    }
+    throw DeckError::in_file(path, reason(ELOOP));
+}
+
 void give_up_on_signal(const volatile std::sig_atomic_t* flag) {
     g_give_up = flag;
+}
+
+void stop_on_broken_pipe(volatile std::sig_atomic_t* flag) {
+    g_broken_pipe_flag = flag;
+}
+
+void remove_temporaries_on_signals() {
+    struct sigaction action {};
+    action.sa_handler = remove_temporaries_and_end;
+    sigemptyset(&action.sa_mask);
+    for (int signal : kStopSignals) {
+        struct sigaction before {};
+        sigaction(signal, nullptr, &before);
+        if (before.sa_handler != SIG_IGN) { // ignored (nohup, a background job): left so
+            sigaction(signal, &action, nullptr);
+        }
+    }
 }
 
 DescriptorBuffer::DescriptorBuffer() : buffer_(new char[kBufferBytes]) {
@@ -91,6 +158,9 @@ bool DescriptorBuffer::write_out(const char* data, std::size_t size) {
         if (n < 0) {
             if (!try_again(errno)) {
                 error_ = errno;
+                if (error_ == EPIPE && g_broken_pipe_flag != nullptr) {
+                    *g_broken_pipe_flag = SIGPIPE; // a run stops: nobody reads on
+                }
             }
             continue;
         }
@@ -197,7 +267,22 @@ void OutputFile::open_temporary(const std::string& target) {
                         attempt == 0 ? std::string() : "-" + std::to_string(attempt));
         temp_path_ = (dir / name).string();
         // O_EXCL: the temporary file is certainly ours, so removing it can harm nothing else.
+        // The stop signals wait while it is made and registered, so that a handler never finds
+        // it made and not registered.
+        sigset_t stops;
+        sigset_t before;
+        sigemptyset(&stops);
+        for (int signal : kStopSignals) {
+            sigaddset(&stops, signal);
+        }
+        pthread_sigmask(SIG_BLOCK, &stops, &before);
         fd_ = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        const int error = errno;
+        if (fd_ >= 0) {
+            temp_slot_ = register_temporary(temp_path_.c_str());
+        }
+        pthread_sigmask(SIG_SETMASK, &before, nullptr);
+        errno = error;
         if (fd_ < 0 && (errno != EEXIST || attempt >= 100)) {
             const int error = errno;
             temp_path_.clear();
@@ -218,6 +303,7 @@ OutputFile::~OutputFile() {
     if (!committed_ && kind_ == Kind::replaced_file && !temp_path_.empty()) {
         ::unlink(temp_path_.c_str()); // ours alone (created with O_EXCL)
     }
+    unregister_temporary(temp_slot_);
 }
 
 void OutputFile::commit() {
@@ -226,6 +312,9 @@ void OutputFile::commit() {
     const std::string name = kind_ == Kind::standard_output ? "standard output" : path_;
     if (!written || !out_) {
         const int error = buffer_.error() != 0 ? buffer_.error() : EIO;
+        if (error == EPIPE) {
+            throw BrokenPipe(name);
+        }
         throw DeckError::in_file(name, "cannot write: " + reason(error));
     }
     if (kind_ == Kind::standard_output) {
@@ -241,9 +330,24 @@ void OutputFile::commit() {
         throw DeckError::in_file(name, "cannot put the file in place: " + reason(errno));
     }
     committed_ = true;
+    unregister_temporary(temp_slot_); // renamed: nothing of ours left to remove
+    temp_slot_ = -1;
+}
+
+bool character_device(const std::string& path) {
+    struct stat st {};
+    return path != "-" && stat(path.c_str(), &st) == 0 && S_ISCHR(st.st_mode);
+}
+
+bool null_device(const std::string& path) {
+    struct stat st {};
+    return character_device(path) && stat(path.c_str(), &st) == 0 && st.st_rdev == makedev(1, 3);
 }
 
 void make_folder(const std::string& dir) {
+    if (character_device(dir)) {
+        return;
+    }
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec || !fs::is_directory(dir)) {
@@ -252,10 +356,36 @@ void make_folder(const std::string& dir) {
     }
 }
 
+ScratchFolder::ScratchFolder(const std::string& prefix) {
+    std::error_code ec;
+    fs::path base = fs::temp_directory_path(ec);
+    if (ec) {
+        base = "/tmp";
+    }
+    std::string name = (base / (prefix + "-XXXXXX")).string();
+    if (::mkdtemp(name.data()) == nullptr) {
+        throw DeckError::in_file(base.string(), "cannot make a scratch folder: " + reason(errno));
+    }
+    path_ = name;
+}
+
+ScratchFolder::~ScratchFolder() {
+    std::error_code ec;
+    fs::remove_all(path_, ec); // made by mkdtemp above: ours, and all in it
+}
+
+std::string file_in_folder(const std::string& dir, const std::string& name) {
+    return character_device(dir) ? dir : (fs::path(dir) / name).string();
+}
+
 void write_file(const std::string& path, const std::string& contents) {
     OutputFile file(path);
     file.stream() << contents;
     file.commit();
+}
+
+void reset_standard_output() {
+    g_standard_output_taken = false;
 }
 
 bool standard_output_taken() {
@@ -269,9 +399,22 @@ std::FILE* message_stream() {
 void finish_standard_output() {
     errno = 0;
     if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0) {
+        if (reader_gone(stdout)) {
+            throw BrokenPipe("standard output");
+        }
         const int error = errno != 0 ? errno : EIO;
         throw DeckError::in_file("standard output", "cannot write: " + reason(error));
     }
+}
+
+bool reader_gone(std::FILE* stream) {
+    return errno == EPIPE || pipe_closed(fileno(stream));
+}
+
+bool say(std::FILE* stream, const std::string& text) {
+    // A stream that is gone takes nothing, and says nothing.
+    const bool put = std::fputs(text.c_str(), stream) >= 0;
+    return std::fflush(stream) == 0 && put && std::ferror(stream) == 0;
 }
 
 } // namespace parsons::cli

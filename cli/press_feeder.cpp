@@ -136,7 +136,7 @@ relaylogic::RunResult run_cards(const std::vector<cardreader::CardOrders>& cards
 
 GeneratedPressJob generate_press_job(decks::PressFeederOptions options,
                                      const axes::MachineProfile& base, const std::string& output,
-                                     const std::string& to) {
+                                     const std::string& to, const std::string& job_out) {
     GeneratedPressJob g;
     try {
         decks::make_press_feeder_deck(options, base); // the geometry first: its errors first
@@ -155,7 +155,8 @@ GeneratedPressJob generate_press_job(decks::PressFeederOptions options,
     if (output.empty()) {
         return g;
     }
-    g.job.profile_file = output == "-" ? "" : output + ".profile.json";
+    g.job_file = job_file_for(output, job_out);
+    g.job.profile_file = profile_file_for(g.job_file);
     const auto deck_opts = deck_options(output, to, DeckFlags{}, "--to");
     OutputFile deck_file(output);
     auto sink = cardreader::open_card_sink(deck_file.stream(), deck_opts);
@@ -163,8 +164,10 @@ GeneratedPressJob generate_press_job(decks::PressFeederOptions options,
         sink->write(card);
     }
     deck_file.commit();
-    if (output != "-") {
-        write_file(output + ".job.json", decks::press_job_to_json(g.job));
+    if (!g.job_file.empty()) {
+        write_file(g.job_file, decks::press_job_to_json(g.job));
+    }
+    if (!g.job.profile_file.empty()) {
         write_file(g.job.profile_file, axes::profile_to_json(g.profile));
     }
     return g;
@@ -176,6 +179,7 @@ struct PressFeederFlags {
     decks::PressFeederOptions o;
     std::string output;
     std::string to;
+    std::string job_out;
     std::string profile = "parsons-extended";
     bool json = false;
 };
@@ -186,8 +190,8 @@ Json press_json(const PressFeederFlags& f, const GeneratedPressJob& g) {
     doc["job"] = "press-feeder";
     doc["variant"] = g.job.variant;
     doc["deck"] = f.output;
-    doc["job_file"] = f.output + ".job.json";
-    doc["profile_file"] = g.job.profile_file;
+    doc["job_file"] = file_or_null(g.job_file);
+    doc["profile_file"] = file_or_null(g.job.profile_file);
     doc["cards"] = g.deck.cards.size();
     doc["cycles"] = g.job.options.cycles;
     doc["strokes_per_min"] = g.job.options.strokes_per_min;
@@ -235,14 +239,16 @@ void print_press(const PressFeederFlags& f, const GeneratedPressJob& g) {
                "nominal speed; {} revolution{} a cycle)\n",
                g.insert_entry_deg, g.takeout_entry_deg, g.revolutions_per_cycle,
                g.revolutions_per_cycle == 1 ? "" : "s");
-    fmt::print(out, "  wrote          {}{}\n", f.output == "-" ? "standard output" : f.output,
-               f.output == "-" ? "" : ", " + f.output + ".job.json and " + g.job.profile_file);
+    fmt::print(out, "  wrote          {}\n",
+               files_written(f.output, g.job_file, g.job.profile_file));
 }
 
 ExitCode run_press_feeder(const PressFeederFlags& f) {
     refuse_json_beside_standard_output("gen press-feeder", f.json, "-o", f.output);
+    refuse_json_beside_standard_output("gen press-feeder", f.json, "--job-out", f.job_out);
+    generator_plan(f.profile, f.output, f.job_out, true).check();
     const auto profile = load_profile(f.profile);
-    const GeneratedPressJob g = generate_press_job(f.o, profile, f.output, f.to);
+    const GeneratedPressJob g = generate_press_job(f.o, profile, f.output, f.to, f.job_out);
     if (f.json) {
         print_json_document(press_json(f, g));
     } else {
@@ -293,6 +299,7 @@ void add_press_feeder_command(CLI::App& gen, Command& selected) {
                   "The seed's Fig. 7 (conventional): no position sync, timed to the nominal press");
     cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")->required();
     cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing");
+    add_job_out_option(*cmd, flags->job_out);
     cmd->add_option("--profile", flags->profile,
                     "Machine profile the job's profile starts from (one with press sync)")
         ->capture_default_str();

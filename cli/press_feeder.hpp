@@ -27,14 +27,16 @@ struct GeneratedPressJob {
     double insert_entry_deg = 0;
     double takeout_entry_deg = 0;
     int revolutions_per_cycle = 1;
+    std::string job_file; // where the job description went; "" for nowhere
 };
 
 // `base`: the profile the job's profile starts from (parsons-extended). Throws
 // cardreader::DeckError (exit 2) when the geometry cannot make the job or a file cannot be
 // written.
+// `job_out`: --job-out (job_file_for); the job's profile goes beside the job description.
 GeneratedPressJob generate_press_job(decks::PressFeederOptions options,
                                      const axes::MachineProfile& base, const std::string& output,
-                                     const std::string& to);
+                                     const std::string& to, const std::string& job_out = {});
 
 // Runs cards under a profile (fast-forward unless an observer follows impulses).
 relaylogic::RunResult run_cards(const std::vector<cardreader::CardOrders>& cards,

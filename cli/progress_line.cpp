@@ -1,5 +1,7 @@
 #include "cli/progress_line.hpp"
 
+#include "cli/output_file.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -38,8 +40,7 @@ void ProgressLine::show(double fraction, const std::string& text, bool force) {
 
 void ProgressLine::clear() {
     if (drawn_) {
-        fmt::print(stderr, "\r{:<79}\r", "");
-        std::fflush(stderr);
+        say(stderr, fmt::format("\r{:<79}\r", "")); // never throws: the destructor clears too
         drawn_ = false;
     }
 }

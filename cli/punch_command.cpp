@@ -22,6 +22,10 @@ struct PunchFlags {
 
 ExitCode run_punch(const PunchFlags& f) {
     refuse_json_beside_standard_output("punch", f.json, "-o", f.output);
+    FilePlan plan;
+    plan.read("LISTING", f.listing);
+    plan.write("-o", f.output);
+    plan.check();
     DeckFlags in = f.deck;
     in.format = "listing";
     InputDeck listing(f.listing, in);

@@ -6,7 +6,9 @@
 #include "cli/applied_profile.hpp"
 #include "cli/commands.hpp"
 #include "cli/cutter_paths.hpp"
+#include "cli/data_files.hpp"
 #include "cli/deck_files.hpp"
+#include "cli/file_plan.hpp"
 #include "cli/gcode_path.hpp"
 #include "cli/output_file.hpp"
 #include "cli/plot_svg.hpp"
@@ -67,6 +69,8 @@ public:
             file_->commit();
         }
     }
+    // Its reader went away (a closed pipe): the output it names, else empty.
+    std::string gone() const { return file_ && file_->reader_gone() ? file_->name() : ""; }
 
 private:
     std::unique_ptr<OutputFile> file_;
@@ -99,11 +103,50 @@ decks::JobDescription read_job(const std::string& file, const std::string& deck_
     return job;
 }
 
+// The job description a run reads: --job, or the one beside the deck for --cut (which needs it)
+// and --html (which draws its design when there is one); "" for none.
+std::string job_file_read(const RunRequest& f) {
+    if (!f.job.empty()) {
+        return f.cut.empty() && f.html.empty() && f.timeline == nullptr ? "" : f.job;
+    }
+    const std::string beside = f.input + ".job.json";
+    if (!f.cut.empty()) {
+        return beside;
+    }
+    if ((!f.html.empty() || f.timeline != nullptr) && f.input != "-" &&
+        std::filesystem::is_regular_file(beside)) {
+        return beside;
+    }
+    return "";
+}
+
+// Every file the run reads and writes, compared before anything is written (cli/file_plan.hpp):
+// the files named on the command line.
+FilePlan run_plan(const RunRequest& f) {
+    FilePlan plan;
+    plan.read("DECK", f.input);
+    plan.read("--profile", AppliedProfile::file_read(f.profile));
+    plan.read("--resume", f.resume);
+    plan.read("--press-proof", f.press_proof);
+    plan.read("--thread-proof", f.thread_proof);
+    plan.read(f.job.empty() ? "the job description beside DECK" : "--job", job_file_read(f));
+    plan.write("--report", f.report);
+    plan.write("--trace", f.trace);
+    plan.write("--events", f.events);
+    plan.write("--path", f.path);
+    plan.write("-o", f.gcode); // convert DECK -o path.ngc
+    plan.write("--html", f.html);
+    plan.write("--plot", f.plot);
+    plan.write("--cut", f.cut);
+    plan.write("--save-state", f.save_state);
+    return plan;
+}
+
 // The replay's design (--html, the page): for an airfoil template job (its job file beside the
 // deck, or --job), the section the cut grows against in the table and cross-slide frame.
 void add_design(RunTimeline& timeline, const RunRequest& f) {
-    const std::string file = f.job.empty() ? f.input + ".job.json" : f.job;
-    if (f.job.empty() && (f.input == "-" || !std::filesystem::is_regular_file(file))) {
+    const std::string file = job_file_read(f);
+    if (file.empty()) {
         return;
     }
     const decks::JobDescription job = read_job(file, f.input, f.deck);
@@ -158,6 +201,7 @@ public:
     OperatorStop() {
         g_signal = 0;
         give_up_on_signal(&g_signal);
+        stop_on_broken_pipe(&g_signal);
         struct sigaction action {};
         action.sa_handler = on_operator_signal;
         sigemptyset(&action.sa_mask);
@@ -172,6 +216,7 @@ public:
     void restore() {
         if (!restored_) {
             give_up_on_signal(nullptr);
+            stop_on_broken_pipe(nullptr);
             sigaction(SIGINT, &old_int_, nullptr);
             sigaction(SIGTERM, &old_term_, nullptr);
             restored_ = true;
@@ -325,6 +370,8 @@ static void say_what_resumes(const nlohmann::json& state, const AppliedProfile& 
 }
 
 ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
+    FilePlan plan = run_plan(f);
+    plan.check(); // before anything is read at length or written
     for (const auto& [path, option] : {std::pair{f.plot, "--plot"}, std::pair{f.cut, "--cut"}}) {
         warn_format(path, option, "SVG", {".png", ".jpg", ".jpeg", ".gif", ".pdf", ".eps", ".ps"},
                     "name it .svg; rsvg-convert or any browser turns SVG into PNG or PDF");
@@ -388,6 +435,20 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
             applied = AppliedProfile::load(tapping_job->profile_file);
         }
     }
+    // The files the jobs name: their profiles, and the airfoil a template job is cut against.
+    if (press_job && applied.file() == press_job->profile_file) {
+        plan.read("the profile of --press-proof", press_job->profile_file);
+    }
+    if (tapping_job && applied.file() == tapping_job->profile_file) {
+        plan.read("the profile of --thread-proof", tapping_job->profile_file);
+    }
+    decks::JobDescription job;
+    const std::string job_file = job_file_read(f); // for --cut, and --html's design
+    if (!job_file.empty()) {
+        job = read_job(job_file, f.input, f.deck);
+        plan.read("the airfoil file of the job", airfoil_file_read(job.airfoil));
+    }
+    plan.check();
     applied.apply_limits(f.limits);
     axes::MachineProfile& profile = applied.profile();
     std::vector<relaylogic::Fault> faults;
@@ -450,11 +511,9 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
         observers.add(plot.get());
     }
     CutterPath cutter;
-    decks::JobDescription job;
     std::unique_ptr<WingPath> wing_path;
     std::unique_ptr<ToolPaths> tool_paths; // a two-tool job: the path by the tool that cut it
     if (!f.cut.empty()) {
-        job = read_job(f.job.empty() ? f.input + ".job.json" : f.job, f.input, f.deck);
         if (job.kind == decks::JobKind::wing) {
             wing_path = std::make_unique<WingPath>(job.wing_zero_in, profile);
             observers.add(wing_path.get());
@@ -518,6 +577,13 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     operator_stop.restore();
     if (out != nullptr) {
         *out = result;
+    }
+    // A trace whose reader went away stopped the machine: the run ends there, quietly, and
+    // leaves no other output of a run nobody asked to stop.
+    for (const std::string& gone : {vcd.gone(), events.gone(), path.gone(), gcode.gone()}) {
+        if (!gone.empty()) {
+            throw BrokenPipe(gone);
+        }
     }
 
     vcd.commit();

@@ -1,6 +1,7 @@
 // parsons show DECK [--svg DIR] [--json]: interpret every card field by field, as the operator
 // reads the printed card, with warnings for what the machine will stop on; pictures of the
 // cards. With --json the same, as one document for scripts (docs/json-output.md).
+#include "cli/applied_profile.hpp"
 #include "cli/commands.hpp"
 #include "cli/deck_files.hpp"
 #include "cli/json_output.hpp"
@@ -326,7 +327,24 @@ Json card_json(std::int64_t index, const CardOrders& o, const CardLayout& layout
             {"warnings", Json::array()}};
 }
 
+// The names show --svg writes: card-0001.svg, ... card-10000.svg.
+bool card_picture_name(const std::string& name) {
+    const std::string head = "card-";
+    const std::string tail = ".svg";
+    if (name.size() < head.size() + 4 + tail.size() || name.rfind(head, 0) != 0 ||
+        name.compare(name.size() - tail.size(), tail.size(), tail) != 0) {
+        return false;
+    }
+    const std::string digits = name.substr(head.size(), name.size() - head.size() - tail.size());
+    return digits.find_first_not_of("0123456789") == std::string::npos;
+}
+
 ExitCode run_show(const ShowFlags& f) {
+    FilePlan plan;
+    plan.read("DECK", f.input);
+    plan.read("--profile", AppliedProfile::file_read(f.profile));
+    plan.write_folder("--svg", f.svg_dir, card_picture_name);
+    plan.check();
     const axes::MachineProfile profile = load_profile(f.profile);
     InputDeck deck(f.input, f.deck);
     const CardLayout& layout = *deck.options().layout;
@@ -423,9 +441,8 @@ ExitCode run_show(const ShowFlags& f) {
                 : kind == CardKind::tap     ? " · tap card (an addition after EP 0360190)"
                                             : "");
             pic.bad_punch = decoded.bad_punch;
-            const auto path =
-                std::filesystem::path(f.svg_dir) / fmt::format("card-{:04}.svg", index);
-            write_file(path.string(), card_svg(*card, layout, pic, deck.options().code));
+            write_file(file_in_folder(f.svg_dir, fmt::format("card-{:04}.svg", index)),
+                       card_svg(*card, layout, pic, deck.options().code));
         }
     }
     for (const ReviewNote& n : reviewer.finish()) {

@@ -19,7 +19,8 @@ using cardreader::DeckError;
 
 GeneratedTappingJob generate_tapping_job(const decks::TappingOptions& options,
                                          const axes::MachineProfile& base,
-                                         const std::string& output, const std::string& to) {
+                                         const std::string& output, const std::string& to,
+                                         const std::string& job_out) {
     GeneratedTappingJob g;
     try {
         g.deck = decks::make_tapping_deck(options, base);
@@ -42,10 +43,13 @@ GeneratedTappingJob generate_tapping_job(const decks::TappingOptions& options,
     if (output.empty()) {
         return g;
     }
-    job.profile_file = output == "-" ? "" : output + ".profile.json";
+    g.job_file = job_file_for(output, job_out);
+    job.profile_file = profile_file_for(g.job_file);
     write_cards(g.deck.cards, output, to, nullptr, "gen tapping");
-    if (output != "-") {
-        write_file(output + ".job.json", decks::tapping_job_to_json(job));
+    if (!g.job_file.empty()) {
+        write_file(g.job_file, decks::tapping_job_to_json(job));
+    }
+    if (!job.profile_file.empty()) {
         write_file(job.profile_file, axes::profile_to_json(g.profile));
     }
     return g;
@@ -59,6 +63,7 @@ struct TappingFlags {
     int rpm = 0; // 0: the fastest each tap allows
     std::string output;
     std::string to;
+    std::string job_out;
     std::string profile = "parsons-extended";
     bool json = false;
 };
@@ -69,8 +74,8 @@ Json tapping_json(const TappingFlags& f, const GeneratedTappingJob& g) {
     doc["job"] = "tapping";
     doc["ratio_source"] = decks::ratio_source_name(g.job.ratio_source);
     doc["deck"] = f.output;
-    doc["job_file"] = f.output + ".job.json";
-    doc["profile_file"] = g.job.profile_file;
+    doc["job_file"] = file_or_null(g.job_file);
+    doc["profile_file"] = file_or_null(g.job.profile_file);
     doc["cards"] = g.deck.cards.size();
     Json holes = Json::array();
     for (const auto& h : g.deck.holes) {
@@ -107,8 +112,8 @@ void print_tapping(const TappingFlags& f, const GeneratedTappingJob& g) {
                    h.hole, h.card, h.x_in, h.y_in, h.tool, h.tap_pitch_in, h.head_ratio, h.rpm,
                    h.feed_in_per_min);
     }
-    fmt::print(out, "  wrote          {}{}\n", f.output == "-" ? "standard output" : f.output,
-               f.output == "-" ? "" : ", " + f.output + ".job.json and " + g.job.profile_file);
+    fmt::print(out, "  wrote          {}\n",
+               files_written(f.output, g.job_file, g.job.profile_file));
 }
 
 ExitCode run_tapping(TappingFlags f) {
@@ -122,8 +127,10 @@ ExitCode run_tapping(TappingFlags f) {
     if (f.rpm != 0) {
         f.o.rpm = f.rpm;
     }
+    refuse_json_beside_standard_output("gen tapping", f.json, "--job-out", f.job_out);
+    generator_plan(f.profile, f.output, f.job_out, true).check();
     const auto profile = load_profile(f.profile);
-    const GeneratedTappingJob g = generate_tapping_job(f.o, profile, f.output, f.to);
+    const GeneratedTappingJob g = generate_tapping_job(f.o, profile, f.output, f.to, f.job_out);
     if (f.json) {
         print_json_document(tapping_json(f, g));
     } else {
@@ -174,6 +181,7 @@ void add_tapping_command(CLI::App& gen, Command& selected) {
         ->capture_default_str();
     cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")->required();
     cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing");
+    add_job_out_option(*cmd, flags->job_out);
     cmd->add_option("--profile", flags->profile,
                     "Machine profile the job's profile starts from (one with spindle heads)")
         ->capture_default_str();

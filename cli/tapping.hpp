@@ -19,13 +19,16 @@ struct GeneratedTappingJob {
     decks::TappingJob job;
     decks::TappingDeck deck;
     axes::MachineProfile profile;
+    std::string job_file; // where the job description went; "" for nowhere
 };
 
 // `base`: the profile the job's profile starts from (parsons-extended). Throws
 // cardreader::DeckError (exit 2) when the plate cannot be tapped or a file cannot be written.
+// `job_out`: --job-out (job_file_for); the job's profile goes beside the job description.
 GeneratedTappingJob generate_tapping_job(const decks::TappingOptions& options,
                                          const axes::MachineProfile& base,
-                                         const std::string& output, const std::string& to);
+                                         const std::string& output, const std::string& to,
+                                         const std::string& job_out = {});
 
 void add_tapping_command(CLI::App& gen, Command& selected);
 

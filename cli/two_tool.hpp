@@ -81,16 +81,19 @@ decks::CutProof combine_proofs(const std::vector<decks::CutProof>& proofs,
 std::string write_two_tool_cut(const TwoToolCut& cut, const decks::JobDescription& job,
                                const std::string& svg, nlohmann::json& report);
 
-// A two-tool deck generated and written (DECK and DECK.job.json), for gen and demo.
+// A two-tool deck generated and written (DECK and its job description, DECK.job.json or
+// --job-out), for gen and demo.
 struct GeneratedTwoToolJob {
     decks::JobDescription description;
     decks::TwoToolDeck deck;
+    std::string job_file; // where the job description went; "" for nowhere
 };
-// `airfoil`: "naca 2412" or "dat PATH". Throws cardreader::DeckError (exit 2) when the job
-// cannot be made or written.
+// `airfoil`: "naca 2412" or "dat PATH"; `job_out`: --job-out (job_file_for). Throws
+// cardreader::DeckError (exit 2) when the job cannot be made or written.
 GeneratedTwoToolJob generate_two_tool_job(const std::string& airfoil, bool closed_te,
                                           const decks::TwoToolOptions& options,
                                           const axes::MachineProfile& profile,
-                                          const std::string& output, const std::string& to);
+                                          const std::string& output, const std::string& to,
+                                          const std::string& job_out = {});
 
 } // namespace parsons::cli

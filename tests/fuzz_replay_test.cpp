@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -171,4 +172,32 @@ TEST_CASE("Fuzz replay: the machine target's tapping seed makes a deck with tap 
     parsons::fuzz::machine_deck(
         {reinterpret_cast<const std::uint8_t*>(faulty.data()), faulty.size()}, p2, &f2);
     CHECK(f2.size() == 2);
+}
+
+TEST_CASE("Fuzz replay: every kept command line leaves its inputs as they were, refuses an output "
+          "that is an input or another output, and is never an internal error",
+          "[fuzz][cli][never-lose]") {
+    replay("cli");
+}
+
+TEST_CASE("Never lose a file: random command lines of every command that writes, their outputs "
+          "named as inputs, as each other, through links, - and /dev/null: no input changes, "
+          "every clash is refused, no temporary file stays (the cli target, a fixed sample)",
+          "[fuzz][cli][never-lose]") {
+    const parsons::fuzz::FuzzTarget* cli = parsons::fuzz::fuzz_target_named("cli");
+    REQUIRE(cli != nullptr);
+#ifdef PARSONS_SANITIZE
+    constexpr int kLines = 150;
+#else
+    constexpr int kLines = 600;
+#endif
+    std::mt19937 rng(27);
+    for (int i = 0; i < kLines; ++i) {
+        std::vector<std::uint8_t> bytes(2 + rng() % 14);
+        for (auto& b : bytes) {
+            b = static_cast<std::uint8_t>(rng());
+        }
+        INFO("line " << i);
+        CHECK_NOTHROW(cli->run({bytes.data(), bytes.size()}));
+    }
 }

@@ -5,7 +5,7 @@
 namespace parsons::fuzz {
 namespace {
 
-constexpr std::array<FuzzTarget, 10> kTargets = {{
+constexpr std::array<FuzzTarget, 11> kTargets = {{
     {"cbn", "column-binary decks (.cbn), as SIMH writes them", fuzz_cbn},
     {"bin", "IBM 1130 binary decks (.bin)", fuzz_bin},
     {"text", "80-column text card images, in 029 and 026 code", fuzz_text},
@@ -17,6 +17,8 @@ constexpr std::array<FuzzTarget, 10> kTargets = {{
     {"gcode", "G-code programs (gen gcode), then the deck made of them", fuzz_gcode},
     {"machine", "a short valid-looking deck, some punches flipped, run on the machine",
      fuzz_machine},
+    {"cli", "command lines whose outputs name inputs, other outputs, links, - and /dev/null",
+     fuzz_cli},
 }};
 
 } // namespace

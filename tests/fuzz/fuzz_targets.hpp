@@ -56,6 +56,7 @@ void fuzz_airfoil(Bytes input);
 void fuzz_profile(Bytes input);
 void fuzz_gcode(Bytes input);
 void fuzz_machine(Bytes input);
+void fuzz_cli(Bytes input); // cli_target.cpp
 
 // The deck the machine target makes of an input, the profile it runs it with and (if asked)
 // the faults of its spindle byte (for the tests that its seeds reach what they are for).
