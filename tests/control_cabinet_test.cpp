@@ -4,6 +4,7 @@
 
 #include "axes/profile_json.hpp"
 #include "cardreader/deck_io.hpp"
+#include "relaylogic/balancing_circuit.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -472,4 +473,131 @@ TEST_CASE("Profile: a card cycle too short for the relays and speed switches is 
                                       "reader_cycle_s must hold"));
     CHECK_NOTHROW(parsons::axes::profile_from_json(R"({"reader_cycle_s": 0.33})",
                                                    parsons::axes::default_profile()));
+}
+
+TEST_CASE("Sequence: the spindle's cutting signal follows the last position of the sequence, "
+          "position 5 when the tilt runs there",
+          "[cabinet][sequence][fig10][mutation]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 300, 3, {}, {}, 0b00011);
+    c.axis(Axis::cross) = order(0, 200, 3, {}, {}, 0b00011);
+    c.axis(Axis::vertical) = order(0, 100, 3, {}, {}, 0b01100);
+    c.axis(Axis::swivel) = order(0, 150, 3, {}, {}, 0b01100);
+    c.axis(Axis::tilt) = order(0, 50, 3, {}, {}, 0b10000);
+    Recorder rec;
+    REQUIRE(run_orders({c}, parsons::axes::default_profile(), &rec).completed);
+    const std::string cutting = "cabinet.spindle_control_165.cutting";
+    const double tilt_on = first_time(rec, "tilt.motor_40", 1);
+    const double tilt_off = last_time(rec, "tilt.motor_40", 0);
+    REQUIRE(tilt_on > 0);
+    // Rises once, as the tilt starts at position 5, and falls as it stops: never while the
+    // axes of positions 1-4 run (the swivel still runs at position 4).
+    std::vector<Change> rises;
+    for (const auto& ch : rec.of(cutting)) {
+        if (ch.new_value == 1) {
+            rises.push_back(ch);
+        }
+    }
+    REQUIRE(rises.size() == 1);
+    CHECK(rises.front().t == tilt_on);
+    CHECK(last_time(rec, cutting, 0) >= tilt_off); // as the shaft steps on from position 5
+
+    SECTION("with the spindle off nothing cuts, whatever runs at position 5") {
+        CardOrders off = c;
+        off.spindle = Spindle::off;
+        Recorder r;
+        REQUIRE(run_orders({off}, parsons::axes::default_profile(), &r).completed);
+        CHECK(first_time(r, cutting, 1) == -1);
+        CHECK(first_time(r, "tilt.motor_40", 1) > 0);
+    }
+}
+
+TEST_CASE("Balancing circuit 266: when it trips, indicator 268 is listed first and the "
+          "comparer's lamp after it, and 266 acts before 265, 204 and 268",
+          "[cabinet][lamps][fig10][mutation]") {
+    for (bool absolute : {true, false}) {
+        INFO("absolute conducting " << absolute);
+        Tracer tracer;
+        Recorder rec;
+        BalancingCircuit b(tracer);
+        tracer.attach(&rec);
+        CHECK_FALSE(b.check_at_stop(absolute, !absolute));
+        CHECK_FALSE(b.master_switch_closed());
+        CHECK(b.lamps() ==
+              std::vector<std::string>{"indicator 268",
+                                       absolute ? "lamp 270 (absolute comparer 122' conducting)"
+                                                : "lamp 272 (incremental comparer 122'' "
+                                                  "conducting)"});
+        std::vector<std::string> order;
+        for (const auto& ch : rec.changes) {
+            order.push_back(ch.signal);
+        }
+        CHECK(order ==
+              std::vector<std::string>{"cabinet.balancing_circuit_266", "cabinet.electromagnet_265",
+                                       "cabinet.master_switch_204", "cabinet.indicator_268"});
+    }
+    // Balanced (both or neither conducting): nothing trips, nothing lights.
+    Tracer tracer;
+    BalancingCircuit b(tracer);
+    CHECK(b.check_at_stop(true, true));
+    CHECK(b.master_switch_closed());
+    CHECK(b.lamps().empty());
+    // A lamp lit before the trip still comes after the indicator: 268 sounds first.
+    b.light("limit-switch lamp (table; an addition)");
+    b.trip();
+    CHECK(b.lamps() ==
+          std::vector<std::string>{"indicator 268", "limit-switch lamp (table; an addition)"});
+}
+
+TEST_CASE("Profile: the card cycle must leave the first bank's relays relay_operate_s to pick "
+          "before the second bank senses the card",
+          "[cabinet][profile][mutation]") {
+    using parsons::axes::default_profile;
+    using parsons::axes::profile_from_json;
+    // first_bank_s 0.15 + relay_operate_s 0.15 reaches second_bank_s 0.30 exactly: refused.
+    CHECK_THROWS_WITH(profile_from_json(R"({"relay_operate_s": 0.15})", default_profile()),
+                      Catch::Contains("first_bank_s + relay_operate_s < second_bank_s"));
+    CHECK_NOTHROW(profile_from_json(R"({"relay_operate_s": 0.149})", default_profile()));
+    // The same rule read from the other side: the first bank moved up to the relays' time.
+    CHECK_THROWS_WITH(
+        profile_from_json(R"({"first_bank_s": 0.2, "relay_operate_s": 0.1})", default_profile()),
+        Catch::Contains("first_bank_s + relay_operate_s < second_bank_s"));
+    CHECK_NOTHROW(
+        profile_from_json(R"({"first_bank_s": 0.2, "relay_operate_s": 0.099})", default_profile()));
+}
+
+TEST_CASE("Profile: braking below 0.001 in/s2, the least an axis may have, is refused",
+          "[cabinet][profile][mutation]") {
+    using parsons::axes::default_profile;
+    using parsons::axes::profile_from_json;
+    CHECK_THROWS_WITH(profile_from_json(R"({"axes": {"cross": {"braking_in_per_s2": 0.0009}}})",
+                                        default_profile()),
+                      Catch::Contains("braking_in_per_s2: must lie between 0.001 and"));
+    const auto least = profile_from_json(R"({"axes": {"cross": {"braking_in_per_s2": 0.001}}})",
+                                         default_profile());
+    CHECK(least.axes.at(1).braking_in_per_s2 == 0.001);
+    // Its neighbour, the acceleration, has the same floor.
+    CHECK_THROWS_WITH(
+        profile_from_json(R"({"axes": {"cross": {"acceleration_in_per_s2": 0.0009}}})",
+                          default_profile()),
+        Catch::Contains("acceleration_in_per_s2: must lie between 0.001 and"));
+    CHECK_NOTHROW(profile_from_json(R"({"axes": {"cross": {"acceleration_in_per_s2": 0.001}}})",
+                                    default_profile()));
+}
+
+TEST_CASE("Profile: limit switches at one place (travel_min_in equal to travel_max_in) are "
+          "refused",
+          "[cabinet][profile][mutation]") {
+    using parsons::axes::default_profile;
+    using parsons::axes::profile_from_json;
+    CHECK_THROWS_WITH(
+        profile_from_json(R"({"axes": {"tilt": {"travel_min_in": 2, "travel_max_in": 2}}})",
+                          default_profile()),
+        Catch::Contains("travel_min_in must be below travel_max_in"));
+    CHECK_THROWS_WITH(
+        profile_from_json(R"({"axes": {"tilt": {"travel_min_in": 3, "travel_max_in": 2}}})",
+                          default_profile()),
+        Catch::Contains("travel_min_in must be below travel_max_in"));
+    CHECK_NOTHROW(profile_from_json(
+        R"({"axes": {"tilt": {"travel_min_in": 2, "travel_max_in": 2.001}}})", default_profile()));
 }

@@ -300,3 +300,30 @@ TEST_CASE("Review: a slow-down too close to its stop is a warning, with the coas
               (warns ? 1U : 0U));
     }
 }
+
+TEST_CASE("Review: a slow-down on the stop itself is not reached before the stop, one thousandth "
+          "short of it is",
+          "[review][mutation]") {
+    // Only the notes about slow-downs off the way (the shared banks may add their own).
+    auto off_the_way = [](const AxisOrder& o) {
+        DeckReviewer reviewer;
+        std::vector<std::string> found;
+        for (const auto& n : reviewer.review(card_with_table(1, o))) {
+            if (n.message.find("is not on the way") != std::string::npos) {
+                found.push_back(n.message);
+            }
+        }
+        return found;
+    };
+    // Counting up from 0.000 to 1.000: a second slow-down at 1.000 is the stop's own number.
+    CHECK(off_the_way(order(Motion::forward, 1, 900, 1000, 1000, 1000)) ==
+          std::vector<std::string>{"second slow-down 1.000 is not on the way from 0.000 to the "
+                                   "stop 1.000: the counters never reach it before the stop"});
+    CHECK(off_the_way(order(Motion::forward, 1, 900, 999, 1000, 1000)).empty());
+    // Counting down through the wrap, from 0.000 to 9.000: slow-down 9.000 is the stop, 9.001
+    // comes before it.
+    CHECK(off_the_way(order(Motion::reverse, 2, 9000, {}, 9000, 1000)) ==
+          std::vector<std::string>{"first slow-down 9.000 is not on the way from 0.000 to the "
+                                   "stop 9.000: the counters never reach it before the stop"});
+    CHECK(off_the_way(order(Motion::reverse, 2, 9001, {}, 9000, 1000)).empty());
+}

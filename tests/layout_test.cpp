@@ -178,3 +178,23 @@ TEST_CASE("Layout fig8: orders the card cannot hold are refused by the keypunch"
     REQUIRE_FALSE(r);
     CHECK(*r.error == "layout fig8 has no second slow-down field for the swivel axis");
 }
+
+TEST_CASE("Layout fig8: of several blank digits in one field, the first blank column is named, "
+          "the one the operator meets first",
+          "[layout][bad-input][mutation]") {
+    // Table check 8.985 in columns 16-19.
+    Card two = punched(patent_card());
+    two.set_column(17, 0);
+    two.set_column(18, 0); // 8 _ _ 5
+    CHECK(bad_punch_of(two).column == 17);
+    CHECK(bad_punch_of(two).what == "blank digit inside the number in table check");
+    Card apart = punched(patent_card());
+    apart.set_column(16, 0);
+    apart.set_column(19, 0); // _ 9 8 _
+    CHECK(bad_punch_of(apart).column == 16);
+    Card three = punched(patent_card());
+    for (int col : {17, 18, 19}) {
+        three.set_column(col, 0); // 8 _ _ _
+    }
+    CHECK(bad_punch_of(three).column == 17);
+}

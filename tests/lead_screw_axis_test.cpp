@@ -84,3 +84,39 @@ TEST_CASE("A speed change that ends at the very instant of an impulse leaves the
     CHECK(tried == 400);
     CHECK(differing > 0); // the test can tell the two places apart
 }
+
+TEST_CASE("Travel limits: a crossing exactly on the lower limit is inside, the next one beyond",
+          "[axes][limits][mutation]") {
+    AxisProfile p = default_profile().axes.at(0);
+    p.travel_min_in = -0.0005; // the crossing of the first impulse counting down from 0
+    LeadScrewAxis a(p);
+    a.command(-1, 1);
+    CHECK(a.real_at_impulse(1) == p.travel_min_in);
+    CHECK(a.impulses_to_limit() == 2);
+    while (a.impulses() < 1) {
+        a.advance_to(a.next_event_time());
+    }
+    CHECK_FALSE(a.beyond_limits()); // on the limit: inside
+    while (a.impulses() < 2) {
+        a.advance_to(a.next_event_time());
+    }
+    CHECK(a.beyond_limits());
+}
+
+TEST_CASE("Travel limits: a crossing exactly on the upper limit is inside, the next one beyond",
+          "[axes][limits][mutation]") {
+    AxisProfile p = default_profile().axes.at(0);
+    p.travel_max_in = 0.0015; // the crossing of the second impulse counting up from 0
+    LeadScrewAxis a(p);
+    a.command(+1, 1);
+    CHECK(a.real_at_impulse(2) == p.travel_max_in);
+    CHECK(a.impulses_to_limit() == 3);
+    while (a.impulses() < 2) {
+        a.advance_to(a.next_event_time());
+        CHECK_FALSE(a.beyond_limits());
+    }
+    while (a.impulses() < 3) {
+        a.advance_to(a.next_event_time());
+    }
+    CHECK(a.beyond_limits());
+}

@@ -8,6 +8,7 @@
 #include "cardreader/tape_format.hpp"
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include <bit>
 #include <fstream>
@@ -346,4 +347,56 @@ TEST_CASE("Ribbon: run --feed ribbon and a tape deck save the feed gaps, --feed 
     CHECK(refused.exit_code == 2);
     CHECK(refused.output.find("deck.tape: --feed cards: a tape deck has no separate cards") !=
           std::string::npos);
+}
+
+TEST_CASE("Five cards: every axis card's card number and spindle columns are compared with the "
+          "table card's, the tilt card's (the fifth) too",
+          "[five][media][bad-input][mutation]") {
+    std::mt19937 rng(73);
+    const auto cards = random_cards(rng, 1);
+    const auto step = split_into_five(cards.front(), fig8_layout()).cards;
+    auto error_of = [](const std::vector<Card>& cs) {
+        return read_error(write_deck(cs, DeckFormat::cbn), DeckFormat::five, "deck.five");
+    };
+    for (std::size_t a = 1; a < 5; ++a) {
+        INFO(axis_name(kAxes.at(a)));
+        const std::string card = std::to_string(a + 1);
+        for (int col : {77, 78, 79, 80}) {
+            std::vector<Card> deck(step.begin(), step.end());
+            deck.at(a).set_column(col, deck.at(a).column(col) ^ row_bit(Row::r11));
+            CHECK(error_of(deck) == "deck.five: card " + card + ", column " + std::to_string(col) +
+                                        ": differs from the table card (card 1) of the same step: "
+                                        "the five cards carry one card number");
+        }
+        std::vector<Card> deck(step.begin(), step.end());
+        deck.at(a).set_column(1, deck.at(a).column(1) ^ row_bit(Row::r7));
+        CHECK(error_of(deck) == "deck.five: card " + card +
+                                    ", column 1: differs from the table card (card 1) of the "
+                                    "same step: the five cards carry one spindle direction");
+    }
+    // The table card itself in a later place of its step: its own columns are the reference.
+    std::vector<Card> tilt_first = {step.at(4), step.at(1), step.at(2), step.at(3), step.at(0)};
+    tilt_first.at(0).set_column(80, tilt_first.at(0).column(80) ^ row_bit(Row::r11));
+    CHECK(error_of(tilt_first) == "deck.five: card 1, column 80: differs from the table card "
+                                  "(card 5) of the same step: the five cards carry one card "
+                                  "number");
+}
+
+TEST_CASE("Tape: an end-of-card frame with other holes besides channel 8 is a bad frame",
+          "[tape][media][bad-input][mutation]") {
+    Card card;
+    card.set_column(3, 0x400); // row 11
+    const std::string good = tape_of(card);
+    REQUIRE(good.size() == 161);
+    REQUIRE(static_cast<unsigned char>(good.at(160)) == 0x80);
+    for (unsigned frame : {0x81U, 0xC0U, 0x83U, 0xFFU}) {
+        INFO(fmt::format("{:#04x}", frame));
+        std::string bad = good + good;
+        bad.at(160) = static_cast<char>(frame);
+        CHECK(read_error(bad, DeckFormat::tape, "deck.tape") ==
+              fmt::format("deck.tape: frame 161, channel 8: card 1 has 160 data frames but frame "
+                          "{:#04x} is not the end of card (channel 8 alone)",
+                          frame));
+    }
+    CHECK(read_deck(good + good, DeckFormat::tape).size() == 2);
 }

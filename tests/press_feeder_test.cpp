@@ -167,3 +167,32 @@ TEST_CASE("Press feeder: impossible geometry is refused with exit 2", "[press_fe
         CHECK(r.output.find("gen press-feeder") != std::string::npos);
     }
 }
+
+TEST_CASE("Press feeder: the proof's least time margin is the smallest of the cycle's margins, "
+          "not the largest",
+          "[press_feeder][mutation]") {
+    // The press at one revolution a second (360 deg/s) from top dead centre; the die is below
+    // the safe height 0.25 in from angle a1 to a2 of each turn. The feeder is driven by hand
+    // across the zone edge 0.700 in, with margins 0.20, 0.05, 0.30 and 0.15 s to the die.
+    axes::PressProfile press;
+    press.strokes_per_min = 60.0;
+    press.start_angle_deg = 0.0;
+    const auto low = axes::Press(press).angles_at_height(0.25);
+    REQUIRE(low);
+    const double down = low->first / 360.0; // the die goes below safe height, in each second
+    const double up = low->second / 360.0;  // and comes back above it
+    REQUIRE(down > 0.2);
+    REQUIRE(up < 0.7);
+    cli::PressProof proof(press, 0.700, 0.25, 2);
+    auto feeder = [&](double t, double x) { proof.on_motion(t, {x, 0, 0, 0, 0}); };
+    feeder(0.0, 0.400);
+    feeder(up + 0.20, 0.750);       // in 0.20 s after the die rose
+    feeder(1 + down - 0.05, 0.400); // out 0.05 s before it goes down again
+    feeder(1 + up + 0.30, 0.750);   // in 0.30 s after it rose
+    feeder(2 + down - 0.15, 0.400); // out 0.15 s before it goes down
+    proof.on_finish(3.0);
+    CHECK_FALSE(proof.collision());
+    REQUIRE(proof.min_margin_s());
+    CHECK(*proof.min_margin_s() == Approx(0.05).margin(1e-6));
+    CHECK(proof.entries_s().size() == 2);
+}

@@ -524,3 +524,34 @@ TEST_CASE("Press sync (speed): processor 63's speed goes to the drive one refere
         }
     }
 }
+
+TEST_CASE("Press sync (speed): processor 63 never asks more of the drive than its fastest speed, "
+          "max_in_per_min, and a feed below it is followed as computed",
+          "[press_sync][speed][mutation]") {
+    const Pace pace = GENERATE(Pace::impulse_level, Pace::fast_forward);
+    axes::MachineProfile p = press_profile();
+    REQUIRE(p.sync_drive.max_in_per_min == 5.4);
+    auto outputs = [&](int travel) {
+        SparseRecorder sparse;
+        Recorder full;
+        Recorder& rec = pace == Pace::fast_forward ? static_cast<Recorder&>(sparse) : full;
+        const RunResult r = test::run_orders(
+            {sync_card(1, speed_sync(Axis::table, travel)), table_move(2, 0, 1000)}, p, &rec, {},
+            pace);
+        INFO((r.stop ? r.stop->message : std::string()));
+        REQUIRE(r.completed);
+        std::uint32_t most = 0;
+        for (const Change& c : rec.of("press.processor_63.table")) {
+            most = std::max(most, c.new_value);
+        }
+        return std::pair{most, r.machine_seconds};
+    };
+    // 0.00500 in a pulse at 48 pulses/s asks 14.4 in/min: the drive gets its 5.4 in/min.
+    const auto [fast, fast_s] = outputs(500);
+    CHECK(fast == 5400);
+    // 0.00150 in a pulse asks 4.32 in/min, under the drive's fastest: followed as asked.
+    const auto [slow, slow_s] = outputs(150);
+    CHECK(slow == 4320);
+    // The 0.850 in followed at 5.4 rather than 4.32 in/min: about 2.4 s sooner, not 6.
+    CHECK(slow_s - fast_s == Approx(0.850 / (4.32 / 60) - 0.850 / (5.4 / 60)).epsilon(0.15));
+}

@@ -5,6 +5,8 @@
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 
+#include "cli/run_report.hpp"
+
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -404,4 +406,24 @@ TEST_CASE("Progress: a line on standard error for bench, run and gen on a termin
     CHECK_THAT(gen_tty.output, Catch::Contains("punching card 1 of 9999"));
     const auto gen_piped = run_parsons(gen);
     CHECK(gen_piped.output.find("computing the stations") == std::string::npos);
+}
+
+TEST_CASE("Summary: an axis that ends half a thousandth or more from where its counters say is "
+          "warned about as counted the other way while coasting, and less is no warning",
+          "[report][summary][mutation]") {
+    const std::string warning = "counted in the other direction while coasting";
+    auto summary_with = [](double error_in) {
+        relaylogic::RunResult r;
+        r.completed = true;
+        r.axes.at(1).error_in = error_in; // the cross slide
+        return cli::summary_text(r, "d.cbn", "parsons-safe");
+    };
+    CHECK_THAT(summary_with(0.0005), Catch::Contains("cross ends +0.0005 in from where its "
+                                                     "counters say (counted in the other "
+                                                     "direction while coasting)"));
+    CHECK_THAT(summary_with(-0.0005), Catch::Contains("cross ends -0.0005 in"));
+    CHECK_THAT(summary_with(-0.0123), Catch::Contains(warning));
+    CHECK_THAT(summary_with(0.00049), !Catch::Contains(warning));
+    CHECK_THAT(summary_with(-0.00049), !Catch::Contains(warning));
+    CHECK_THAT(summary_with(0.0), !Catch::Contains("warning"));
 }

@@ -3,6 +3,8 @@
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 
+#include "cli/deck_files.hpp"
+
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -118,4 +120,25 @@ TEST_CASE("Soft limits: a move that ends exactly on the limit is allowed, one 0.
         CHECK(r.stop->reason == StopReason::soft_limit);
         CHECK(r.axes.at(0).impulses == 0);
     }
+}
+
+TEST_CASE(
+    "Soft limits: --limit AXIS=A:A, an empty range, is refused, and the least range is 0.001 in",
+    "[softlimit][cli][mutation]") {
+    auto profile = axes::default_profile();
+    CHECK_THROWS_WITH(cli::apply_limits(profile, {"table=2:2"}),
+                      "--limit 'table=2:2': the minimum must be below the maximum (expected "
+                      "AXIS=MIN:MAX in inches, e.g. table=0:9.5)");
+    CHECK_THROWS_WITH(cli::apply_limits(profile, {"cross=2.5:2.5000"}),
+                      Catch::Contains("the minimum must be below the maximum"));
+    CHECK_FALSE(profile.axes.at(0).soft_limits); // nothing set by a refused range
+    CHECK(cli::apply_limits(profile, {"table=2:2.001"}) == std::vector<Axis>{Axis::table});
+    CHECK(profile.axes.at(0).soft_limits);
+    CHECK(profile.axes.at(0).soft_min_in == 2.0);
+    CHECK(profile.axes.at(0).soft_max_in == 2.001);
+    // On the command line: exit 2, naming the option.
+    const auto r = run_parsons("check " + q(source_path("decks/samples/patent-example.csv")) +
+                               " --limit tilt=1:1");
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Catch::Contains("--limit 'tilt=1:1': the minimum must be below"));
 }

@@ -248,3 +248,42 @@ TEST_CASE("Profile: the readings and additions round-trip through JSON and a bui
         parsons::axes::profile_from_json(R"({"base": "parsons-1953"})", default_profile()),
         Catch::Contains("base: expected"));
 }
+
+TEST_CASE("Interpretation delay_258_waits_for_equality_to_leave: relays 256 and 258 hold while "
+          "the equality stands, past the hold time, and drop when the counter leaves it",
+          "[speed-switch][delay-258][interpretation][mutation]") {
+    // Speed 2, slow-down 2.885: the equality at 2.885 lasts ~35 ms as the motor leaves speed 2,
+    // far longer than a 5-ms hold. Under this reading 258 keeps channel 257 open (and 256
+    // picked) until the counter has stepped off 2.885, not when the 5 ms have passed.
+    MachineProfile p = default_profile();
+    p.delay_258_s = 0.005;
+    p.delay_258_waits_for_equality_to_leave = true;
+    const CardOrders c = table_card(2, 2885, std::nullopt, 2985, 2985);
+    Recorder rec;
+    REQUIRE(run_orders({c}, p, &rec).completed);
+    const auto delay = counter_at(rec, "table.delay_device_258");
+    const auto relay = counter_at(rec, "table.stepping_relay_256");
+    // The slow-down's step: picked at 2.885, dropped with the counter on 2.886.
+    REQUIRE(delay.size() >= 2);
+    CHECK(delay.at(0) == std::pair<int, std::uint32_t>{2885, 1});
+    CHECK(delay.at(1) == std::pair<int, std::uint32_t>{2886, 0});
+    REQUIRE(relay.size() >= 2);
+    CHECK(relay.at(0) == std::pair<int, std::uint32_t>{2885, 1});
+    CHECK(relay.at(1) == std::pair<int, std::uint32_t>{2886, 0});
+    // And the drop came well after the hold time: the equality outlasted it.
+    const auto held = rec.of("table.delay_device_258");
+    REQUIRE(held.size() >= 2);
+    CHECK(held.at(1).t - held.at(0).t > 4 * p.delay_258_s);
+
+    SECTION("the patent's timed hold drops them when the hold runs out, the equality standing") {
+        MachineProfile timed = p;
+        timed.delay_258_waits_for_equality_to_leave = false;
+        Recorder t;
+        run_orders({c}, timed, &t);
+        const auto d = counter_at(t, "table.delay_device_258");
+        REQUIRE(d.size() >= 2);
+        CHECK(d.at(1) == std::pair<int, std::uint32_t>{2885, 0});
+        const auto h = t.of("table.delay_device_258");
+        CHECK(h.at(1).t - h.at(0).t == Approx(0.005));
+    }
+}

@@ -594,3 +594,61 @@ TEST_CASE("Sync card: convert carries it through .cbn and text card images and b
     CHECK(lines.at(0).substr(75, 5) == "20001");
     CHECK(lines.at(2).substr(0, 14) == "     000019999");
 }
+
+TEST_CASE("Sync card: crank angle 359, the last whole degree before top dead centre, is read "
+          "back as the keypunch wrote it, and 360 is refused",
+          "[sync_card][card][mutation]") {
+    CardOrders last = seed_step3(4);
+    last.sync.angle_deg = 359;
+    CHECK_FALSE(sync_order_error(last.sync));
+    const Card c = punched(last);
+    CHECK(c.column(3) == digit(3));
+    CHECK(c.column(4) == digit(5));
+    CHECK(c.column(5) == digit(9));
+    const DecodeResult d = decode(c, fig8_layout());
+    INFO((d.bad_punch ? d.bad_punch->what : std::string()));
+    REQUIRE(d);
+    CHECK_FALSE(d.bad_punch);
+    CHECK(d.orders == last);
+    // From a listing row, as `punch` reads it.
+    std::istringstream in(std::string(kListingHeader) + "\n4,sync,position,359\n");
+    ListingReader reader(in, "t.csv");
+    const auto read = reader.next();
+    REQUIRE(read);
+    CHECK(read->orders.sync.position_sync);
+    CHECK(read->orders.sync.angle_deg == 359);
+    CHECK(encode(read->orders, fig8_layout()));
+    // 360 is a full turn: the keypunch refuses it, and a card punched 360 is a bad punch.
+    CardOrders full = last;
+    full.sync.angle_deg = 360;
+    CHECK(sync_order_error(full.sync));
+    Card punched_360 = c;
+    punched_360.set_column(3, digit(3));
+    punched_360.set_column(4, digit(6));
+    punched_360.set_column(5, digit(0));
+    const DecodeResult bad = decode(punched_360, fig8_layout());
+    REQUIRE(bad.bad_punch);
+    CHECK(bad.bad_punch->column == 3);
+    CHECK_THAT(bad.bad_punch->what, Catch::Contains("sync angle 360 outside 0-359"));
+    CHECK_THAT(listing_error("3,sync,position,360\n"),
+               Catch::Contains("angle '360' outside 0-359"));
+}
+
+TEST_CASE("Sync card: a loop back to card number 9999, the last a deck can number, is punched and "
+          "read back, and 10000 is refused by the keypunch",
+          "[sync_card][card][mutation]") {
+    const CardOrders last = loop_card(12, 9999, 3);
+    CHECK_FALSE(sync_order_error(last.sync));
+    const Card c = punched(last);
+    for (int col = 7; col <= 10; ++col) { // target 9999
+        CHECK(c.column(col) == digit(9));
+    }
+    const DecodeResult d = decode(c, fig8_layout());
+    REQUIRE(d);
+    CHECK(d.orders == last);
+    const CardOrders first = loop_card(12, 0, 3); // card number 0000 follows 9999
+    CHECK(decode(punched(first), fig8_layout()).orders == first);
+    const CardOrders beyond = loop_card(12, 10000, 3);
+    CHECK(sync_order_error(beyond.sync) == "loop target 10000 is not a card number 0..9999");
+    CHECK_FALSE(encode(beyond, fig8_layout()));
+}

@@ -2,6 +2,7 @@
 // and no silent position error, and the cut they leave stays within the planned scallop plus
 // quantisation of the design.
 #include "tests/machine_support.hpp"
+#include "tests/test_support.hpp"
 
 #include "cli/cutter_paths.hpp"
 
@@ -13,8 +14,10 @@
 #include "decks/template_job.hpp"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <limits>
+#include <regex>
 
 using namespace parsons;
 using namespace parsons::decks;
@@ -373,4 +376,94 @@ TEST_CASE("Deck limits: counts are written as a person reads them", "[decks][lim
     CHECK(decks::count_text(10000003) == "10,000,003");
     CHECK(decks::count_text(-1234) == "-1,234");
     CHECK(decks::kMaxDeckCards == 9999);
+}
+
+TEST_CASE("Template: the job must fit the counters with its margin at both ends, 9.999 in less "
+          "twice the margin",
+          "[template][decks][mutation]") {
+    const auto airfoil = naca4("2412");
+    const auto profile = axes::default_profile();
+    TemplateOptions o;
+    o.chord_in = 6.0;
+    // The refusal names the path's extent: ask with a margin nothing fits in.
+    o.margin_in = 4.9;
+    std::string said;
+    try {
+        make_template_deck(*airfoil, o, profile);
+    } catch (const JobError& e) {
+        said = e.what();
+    }
+    std::smatch m;
+    REQUIRE(std::regex_search(said, m, std::regex(R"(spans ([0-9.]+) x ([0-9.]+) in)")));
+    const double extent = std::max(std::stod(m[1]), std::stod(m[2]));
+    const double spare = 9.999 - extent; // what the two margins share
+    REQUIRE(spare > 1.0);
+    // A margin 0.6 of the spare: room for it once, not twice.
+    o.margin_in = 0.6 * spare;
+    CHECK_THROWS_AS(make_template_deck(*airfoil, o, profile), JobError);
+    // 0.45 of it fits twice over, and every station's centre lies the margin inside 0 .. 9.999.
+    o.margin_in = 0.45 * spare;
+    const TemplateDeck deck = make_template_deck(*airfoil, o, profile);
+    for (const Station& s : deck.stations) {
+        const Eigen::Vector2d at = s.centre + deck.work_zero_in;
+        for (double v : {at.x(), at.y()}) {
+            CHECK(v >= o.margin_in - 1e-9);
+            CHECK(v <= 9.999 - o.margin_in + 1e-9);
+        }
+    }
+}
+
+TEST_CASE(
+    "Template: the cut of the tutorial's deck (NACA 2412, chord 6, cutter 0.25, scallop "
+    "0.002): every design point machined, its scallops as planned and its gouge within the "
+    "planned dip, each within quantising, and run --cut reports the proof of the emulated path",
+    "[template][cut][mutation]") {
+    using parsons::test::q;
+    using parsons::test::run_parsons;
+    const parsons::test::TempDir dir;
+    const std::string deck = dir.str("n.cbn");
+    const auto gen = run_parsons("gen airfoil --naca 2412 --chord 6 --cutter-radius 0.25 "
+                                 "--scallop 0.002 --json -o " +
+                                 q(deck) + " 2>/dev/null");
+    REQUIRE(gen.exit_code == 0);
+    const auto planned = nlohmann::json::parse(gen.output);
+    const double planned_scallop = planned.at("largest_scallop_in").get<double>();
+    const double planned_dip = planned.at("largest_dip_in").get<double>();
+    CHECK(planned_scallop == Approx(0.002).margin(1e-9)); // what --scallop asked
+    const auto run = run_parsons("run " + q(deck) + " -q --cut " + q(dir.str("cut.svg")) +
+                                 " --report " + q(dir.str("r.json")));
+    REQUIRE(run.exit_code == 0);
+    const auto cut = nlohmann::json::parse(parsons::test::read_bytes(dir.path("r.json"))).at("cut");
+    const double gouge = cut.at("max_gouge_in").get<double>();
+    const double leftover = cut.at("max_leftover_in").get<double>();
+    const double scallop = cut.at("max_scallop_in").get<double>();
+    // 1,500 design intervals on the one surface cut, and the cutter reached every point.
+    CHECK(cut.at("design_points") == 1501);
+    CHECK(cut.at("machined_points") == 1501);
+    // The scallops stand as high as planned, give or take quantising to 0.001 in and the coast.
+    CHECK(leftover <= planned_scallop + kQuantisation);
+    CHECK(leftover >= planned_scallop - kQuantisation);
+    CHECK(scallop <= leftover);
+    CHECK(scallop >= planned_scallop - kQuantisation);
+    CHECK(gouge > 0);
+    CHECK(gouge <= planned_dip + kQuantisation);
+
+    // The same proof, from the same deck run here: the report's figures are this path's.
+    TemplateOptions o;
+    o.chord_in = 6.0;
+    o.cutter_radius_in = 0.25;
+    o.scallop_in = 0.002;
+    const auto airfoil = naca4("2412");
+    const auto profile = axes::default_profile();
+    const TemplateDeck made = make_template_deck(*airfoil, o, profile);
+    cli::CutterPath cutter;
+    REQUIRE(run_orders(made.cards, profile, &cutter).completed);
+    const auto samples = design_samples(*airfoil, o, made.work_zero_in);
+    const CutProof proof =
+        prove_cut(simplify_path(cutter.path, 1e-7), o.cutter_radius_in,
+                  DesignContour{samples.points, samples.toward_cutter}, 1.5 * o.cutter_radius_in);
+    CHECK(samples.points.size() == 1501);
+    CHECK(gouge == Approx(proof.max_gouge_in).margin(5e-6));
+    CHECK(leftover == Approx(proof.max_leftover_in).margin(5e-6));
+    CHECK(scallop == Approx(proof.max_scallop_in).margin(5e-6));
 }

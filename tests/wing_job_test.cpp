@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include <limits>
+#include <regex>
 #include <tuple>
 
 using namespace parsons;
@@ -180,4 +181,34 @@ TEST_CASE("Wing: a root or tip chord or a span under 0.1 in, a cutter radius und
     // Too big for the counters stays the counters' refusal.
     CHECK_THROWS_WITH(make([](WingOptions& o) { o.span_in = 20; }),
                       Contains("wing: the job spans") && Contains("use a smaller wing"));
+}
+
+TEST_CASE("Wing: the job must fit the counters with its margin at both ends, 9.999 in less twice "
+          "the margin",
+          "[wing][decks][mutation]") {
+    const auto airfoil = naca4("2412");
+    const auto profile = axes::default_profile();
+    WingOptions o;
+    o.stations = 12;
+    o.margin_in = 4.9; // nothing fits: the refusal names the job's extent
+    std::string said;
+    try {
+        make_wing_deck(*airfoil, o, profile);
+    } catch (const JobError& e) {
+        said = e.what();
+    }
+    std::smatch m;
+    REQUIRE(
+        std::regex_search(said, m, std::regex(R"(spans ([0-9.]+) x ([0-9.]+) x ([0-9.]+) in)")));
+    const double extent = std::max({std::stod(m[1]), std::stod(m[2]), std::stod(m[3])});
+    const double spare = 9.999 - extent;
+    REQUIRE(spare > 1.0);
+    o.margin_in = 0.6 * spare; // room for the margin once, not twice
+    CHECK_THROWS_AS(make_wing_deck(*airfoil, o, profile), JobError);
+    o.margin_in = 0.45 * spare;
+    const WingDeck deck = make_wing_deck(*airfoil, o, profile);
+    CHECK_FALSE(deck.cards.empty());
+    for (double z : {deck.zero.x(), deck.zero.y(), deck.zero.z()}) {
+        CHECK(z >= o.margin_in - 1e-9); // the job's lowest point sits the margin above 0
+    }
 }
