@@ -50,6 +50,17 @@ double last_time(const Recorder& r, const std::string& signal, std::uint32_t to)
     return t;
 }
 
+// Fig. 10's sequence: table and cross at positions 1-2, vertical and swivel at 3-4, tilt at 5.
+CardOrders fig10_sequence_card() {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 300, 3, {}, {}, 0b00011);
+    c.axis(Axis::cross) = order(0, 200, 3, {}, {}, 0b00011);
+    c.axis(Axis::vertical) = order(0, 100, 3, {}, {}, 0b01100);
+    c.axis(Axis::swivel) = order(0, 150, 3, {}, {}, 0b01100);
+    c.axis(Axis::tilt) = order(0, 50, 3, {}, {}, 0b10000);
+    return c;
+}
+
 } // namespace
 
 TEST_CASE("Cabinet: the sample deck completes and every axis ends on the last card's stop",
@@ -75,12 +86,7 @@ TEST_CASE("Cabinet: the sample deck completes and every axis ends on the last ca
 
 TEST_CASE("Sequence: table and cross run first, then vertical and swivel, then tilt (Fig. 10)",
           "[cabinet][sequence][fig10]") {
-    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
-    c.axis(Axis::table) = order(0, 300, 3, {}, {}, 0b00011);
-    c.axis(Axis::cross) = order(0, 200, 3, {}, {}, 0b00011);
-    c.axis(Axis::vertical) = order(0, 100, 3, {}, {}, 0b01100);
-    c.axis(Axis::swivel) = order(0, 150, 3, {}, {}, 0b01100);
-    c.axis(Axis::tilt) = order(0, 50, 3, {}, {}, 0b10000);
+    const CardOrders c = fig10_sequence_card();
     Recorder rec;
     RunResult r = run_orders({c}, parsons::axes::default_profile(), &rec);
     REQUIRE(r.completed);
@@ -478,12 +484,7 @@ TEST_CASE("Profile: a card cycle too short for the relays and speed switches is 
 TEST_CASE("Sequence: the spindle's cutting signal follows the last position of the sequence, "
           "position 5 when the tilt runs there",
           "[cabinet][sequence][fig10][mutation]") {
-    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
-    c.axis(Axis::table) = order(0, 300, 3, {}, {}, 0b00011);
-    c.axis(Axis::cross) = order(0, 200, 3, {}, {}, 0b00011);
-    c.axis(Axis::vertical) = order(0, 100, 3, {}, {}, 0b01100);
-    c.axis(Axis::swivel) = order(0, 150, 3, {}, {}, 0b01100);
-    c.axis(Axis::tilt) = order(0, 50, 3, {}, {}, 0b10000);
+    const CardOrders c = fig10_sequence_card();
     Recorder rec;
     REQUIRE(run_orders({c}, parsons::axes::default_profile(), &rec).completed);
     const std::string cutting = "cabinet.spindle_control_165.cutting";

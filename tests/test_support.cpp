@@ -5,9 +5,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <sys/wait.h>
 
@@ -134,6 +136,21 @@ std::vector<std::string> lines_of(const std::string& text) {
 
 std::string source_path(const std::string& relative) {
     return std::string(PARSONS_SOURCE_DIR) + "/" + relative;
+}
+
+double widest_span_in(const std::string& refusal) {
+    std::smatch m;
+    if (!std::regex_search(refusal, m,
+                           std::regex(R"(spans ([0-9.]+) x ([0-9.]+)(?: x ([0-9.]+))? in)"))) {
+        return -1;
+    }
+    double widest = 0;
+    for (std::size_t i = 1; i < m.size(); ++i) {
+        if (m[i].matched) {
+            widest = std::max(widest, std::stod(m[i].str()));
+        }
+    }
+    return widest;
 }
 
 cardreader::CardOrders random_orders(std::mt19937& rng, const cardreader::CardLayout& layout) {

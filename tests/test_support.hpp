@@ -63,6 +63,10 @@ std::string source_path(const std::string& relative); // a file of the source tr
 // Random orders a layout can hold (a second slow-down only where the layout has the field).
 cardreader::CardOrders random_orders(std::mt19937& rng, const cardreader::CardLayout& layout);
 
+// The widest of the sizes a generator's refusal names ("the cutter path spans 6.484 x 0.766 in",
+// "the job spans 4.5 x 6.2 x 1.0 in"), or -1 when it names none.
+double widest_span_in(const std::string& refusal);
+
 // The header of a listing (docs/deck-formats.md).
 inline constexpr const char* kHeader =
     "card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq\n";
