@@ -187,16 +187,10 @@ std::string random_deck(Outputs& o, int i, std::mt19937& rng) {
     parsons::axes::MachineProfile profile = parsons::axes::default_profile();
     std::vector<parsons::relaylogic::Fault> faults;
     const auto cards = parsons::fuzz::machine_deck(bytes, profile, &faults);
-    std::ostringstream deck;
-    parsons::cardreader::DeckOptions options;
-    options.format = parsons::cardreader::DeckFormat::cbn;
-    auto sink = parsons::cardreader::open_card_sink(deck, options);
-    for (const auto& c : cards) {
-        sink->write(c);
-    }
     const std::string name = fmt::format("random/{:03}", i);
     fs::create_directories(o.work() / "random");
-    write_bytes(o.work() / (name + ".cbn"), deck.str());
+    write_bytes(o.work() / (name + ".cbn"),
+                parsons::test::deck_bytes(cards, parsons::cardreader::DeckFormat::cbn));
     write_bytes(o.work() / (name + ".profile.json"), parsons::axes::profile_to_json(profile));
     o.record_file(name + ".cbn");
     std::string args = "--profile " + q(name + ".profile.json");

@@ -36,14 +36,7 @@ std::vector<Card> random_cards(std::mt19937& rng, int n) {
 }
 
 std::string write_deck(const std::vector<Card>& cards, DeckFormat format) {
-    std::ostringstream out;
-    DeckOptions options;
-    options.format = format;
-    auto sink = open_card_sink(out, options);
-    for (const Card& c : cards) {
-        sink->write(c);
-    }
-    return out.str();
+    return test::deck_bytes(cards, format);
 }
 
 std::vector<Card> read_deck(const std::string& bytes, DeckFormat format) {

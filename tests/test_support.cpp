@@ -138,6 +138,17 @@ std::string source_path(const std::string& relative) {
     return std::string(PARSONS_SOURCE_DIR) + "/" + relative;
 }
 
+std::string deck_bytes(const std::vector<cardreader::Card>& cards, cardreader::DeckFormat format) {
+    std::ostringstream out;
+    cardreader::DeckOptions options;
+    options.format = format;
+    auto sink = cardreader::open_card_sink(out, options);
+    for (const auto& c : cards) {
+        sink->write(c);
+    }
+    return out.str();
+}
+
 double widest_span_in(const std::string& refusal) {
     std::smatch m;
     if (!std::regex_search(refusal, m,

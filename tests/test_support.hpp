@@ -67,6 +67,9 @@ cardreader::CardOrders random_orders(std::mt19937& rng, const cardreader::CardLa
 // "the job spans 4.5 x 6.2 x 1.0 in"), or -1 when it names none.
 double widest_span_in(const std::string& refusal);
 
+// The cards as a deck file of `format` holds them (the card sink `convert` writes through).
+std::string deck_bytes(const std::vector<cardreader::Card>& cards, cardreader::DeckFormat format);
+
 // The header of a listing (docs/deck-formats.md).
 inline constexpr const char* kHeader =
     "card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq\n";
