@@ -1,0 +1,339 @@
+// Control cabinet 52, the impulses and the comparers: each commutator 102 impulse steps the
+// counters (duplicate contact sets A and B), the comparers 122' and 122'' are read, stepping
+// relay 256 steps speed switch 236 through delay 258, and the motors follow the switches.
+// Fast-forward (relaylogic/fast_forward.hpp) is the same rules jumped: it is planned here, next
+// to the rules it jumps (plan_quiet_stretches, catch_up), and impulse level without an
+// observer takes the impulses straight from the plants (run_impulses).
+#include "relaylogic/control_cabinet.hpp"
+#include "relaylogic/fast_forward.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace parsons::relaylogic {
+
+using cardreader::Axis;
+using cardreader::axis_name;
+
+double ControlCabinet::next_axis_event(std::size_t i) const {
+    return jumping_ ? quiet_end_.at(i) : circuits_[i]->plant.next_event_time();
+}
+
+// Fast-forward: how far each moving axis can go on quietly, and when its next event that
+// matters comes (the impulse that ends the stretch, or the end of its speed change).
+void ControlCabinet::plan_quiet_stretches() {
+    QuietConditions q;
+    q.min_interval_s = 1.0 / profile_.max_stepping_rate_per_s;
+    q.machine_stopped = stop_.has_value();
+    q.prg = conditions_.present() ? &conditions_.prg() : nullptr;
+    for (std::size_t i = 0; i < circuits_.size(); ++i) {
+        AxisCircuit& c = *circuits_[i];
+        quiet_.at(i) = 0;
+        quiet_end_.at(i) = c.plant.next_event_time();
+        if (!c.plant.next_event_is_impulse()) {
+            continue;
+        }
+        q.counting_hundredths =
+            profile_.count_hundredths_at_speed_1 && c.speed_switch.position() == 1 && !stop_;
+        q.watching_soft_limits = c.powered && c.plant.profile().soft_limits;
+        q.next_fault_impulse = 0;
+        q.faulty_switch_ahead = false;
+        for (const Fault& f : faults_) {
+            if (f.axis != c.axis) {
+                continue;
+            }
+            if (f.kind == FaultKind::drop_impulse && f.n > c.contact_set_a &&
+                (q.next_fault_impulse == 0 || f.n < q.next_fault_impulse)) {
+                q.next_fault_impulse = f.n;
+            }
+            if (f.kind == FaultKind::skip_step && switch_numbered(c, f.numeral).skip_pending()) {
+                q.faulty_switch_ahead = true;
+            }
+        }
+        const std::int64_t quiet = quiet_impulses(c, q);
+        if (quiet > 0) {
+            quiet_.at(i) = quiet;
+            // The impulse that ends the stretch or, if the phase ends first, the phase's end.
+            const double after = quiet == std::numeric_limits<std::int64_t>::max()
+                                     ? axes::kNever
+                                     : c.plant.impulse_time(quiet + 1);
+            quiet_end_.at(i) = after != axes::kNever ? after : c.plant.phase_end_time();
+        }
+    }
+    // The press: every edge of this segment of constant crank speed only counts, but the one
+    // that brings register 14 onto a held card's angle R.
+    press_quiet_ = 0;
+    if (press_running()) {
+        const axes::Press& press = sync_.press();
+        press_quiet_end_ = press.next_event_time();
+        if (press.next_event_is_pulse()) {
+            const std::int64_t in_segment = press.pulses_by(axes::kNever);
+            const std::int64_t quiet = sync_.quiet_edges(in_segment);
+            if (quiet > 0) {
+                press_quiet_ = quiet;
+                // The edge after the stretch, or the stretch's last edge when the segment ends
+                // with it (the segment's end then comes up as the press's next event).
+                press_quiet_end_ =
+                    quiet < in_segment ? press.pulse_time(quiet + 1) : press.pulse_time(quiet);
+            }
+        }
+    }
+}
+
+// Fast-forward: every axis takes its quiet impulses due by time t, in one jump each.
+void ControlCabinet::catch_up(double t) {
+    for (std::size_t i = 0; i < circuits_.size(); ++i) {
+        if (quiet_.at(i) == 0) {
+            continue;
+        }
+        AxisCircuit& c = *circuits_[i];
+        const std::int64_t n = std::min(quiet_.at(i), c.plant.impulses_by(t));
+        if (n > 0) {
+            if (tapping_.present() && tapping_.feeding(c.axis) &&
+                c.direction != c.plant.moving_direction()) {
+                // Reversing control 214 follows the drive at the first impulse of the jump.
+                tracer_.set_time(c.plant.impulse_time(1));
+                tap_counting_sense(c, c.plant.moving_direction());
+                tracer_.set_time(t);
+            }
+            jump_quiet_impulses(c, n);
+            quiet_.at(i) -= n;
+        }
+    }
+}
+
+// Impulse level with no observer: while only impulses come (no relay event is due), take them
+// straight from the plants in time order, lowest axis first at the same instant as the main
+// loop does, without looking at anything else. Back to the main loop as soon as an impulse
+// does more than count.
+void ControlCabinet::run_impulses() {
+    double queued = queue_.empty() ? axes::kNever : queue_.top().t;
+    if (press_running()) {
+        queued = std::min(queued, sync_.press().next_event_time()); // the press's edge first
+    }
+    const std::size_t n = circuits_.size();
+    while (true) {
+        std::size_t first = 0;
+        double t = circuits_[0]->plant.next_event_time();
+        for (std::size_t j = 1; j < n; ++j) {
+            const double tj = circuits_[j]->plant.next_event_time();
+            if (tj < t) {
+                t = tj;
+                first = j;
+            }
+        }
+        // This axis goes on alone until another's impulse (a lower axis at the same instant
+        // goes first) or a relay event comes.
+        double before = axes::kNever; // strictly before
+        double until = queued;        // at or before
+        for (std::size_t j = 0; j < n; ++j) {
+            const double tj = circuits_[j]->plant.next_event_time();
+            if (j < first) {
+                before = std::min(before, tj);
+            } else if (j > first) {
+                until = std::min(until, tj);
+            }
+        }
+        AxisCircuit& c = *circuits_[first];
+        axes::LeadScrewAxis& plant = c.plant;
+        if (interrupt_ != nullptr && *interrupt_ != 0) {
+            return;
+        }
+        while (plant.next_event_is_impulse()) {
+            t = plant.next_event_time();
+            if (!(t < before && t <= until)) {
+                break;
+            }
+            now_ = t;
+            tracer_.set_time(t);
+            if (!on_impulse(c, plant.take_next_impulse())) {
+                return; // something happened: the main loop looks at everything again
+            }
+        }
+        if (!plant.next_event_is_impulse() || t > queued) {
+            return; // a speed change ends, or a relay event is due: the main loop
+        }
+    }
+}
+
+bool ControlCabinet::live(const AxisCircuit& c) const {
+    return balancing_.master_switch_closed() && reading_complete_ && !c.stopped &&
+           !c.speed_switch.off() && c.sequence_switch.closed(shaft_.position()) &&
+           !(sync_.present() && sync_.scp().holding());
+}
+
+bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
+    // Duplicate contact sets on commutator 102: both must see every impulse.
+    ++c.contact_set_a;
+    if (faults_.empty() || !fault_drops(c)) {
+        ++c.contact_set_b;
+    }
+    c.show_contacts(); // the contacts, then the switches they step
+    // The patent's answer to stepping-rate loss (col. 8), a profile option: while the speed
+    // switch stands on speed 1, count only every hundredth until the first slow-down.
+    if (tapping_.present() && tapping_.feeding(c.axis) && !stop_) {
+        tap_counting_sense(c, impulse.direction);
+    }
+    const bool hundredths_only =
+        profile_.count_hundredths_at_speed_1 && c.speed_switch.position() == 1 && !stop_;
+    // The counters count up or down as reversing control 214 set them (the motion column),
+    // whichever way the screw really turns: coast that runs on after the next card has set the
+    // other sense is counted the wrong way, as on the 1952 machine.
+    const bool stepped =
+        c.absolute_counter.impulse(c.direction, impulse.hundredths, impulse.tenths, impulse.inches,
+                                   now_, min_interval_s_, !hundredths_only);
+    if (!hundredths_only) {
+        c.increment_counter.impulse(now_, min_interval_s_);
+    } else if (impulse.hundredths) {
+        c.increment_counter.hundredths_impulse(now_, min_interval_s_);
+    }
+    if (stepped) {
+        c.speed_switch.equality_left(now_); // the wipers break contact as they step
+    }
+    if (stop_) {
+        c.compare();
+        return true; // coasting after a stop: the counters still count
+    }
+    if (c.contact_set_a != c.contact_set_b) {
+        missed_impulse(c);
+        return false;
+    }
+    if (c.plant.beyond_limits()) {
+        travel_limit(c);
+        return false;
+    }
+    bool quiet = !(stepped && conditions_.watching(c.axis) && conditions_met(c));
+    c.compare();
+    if (!c.absolute_conducting && !c.incremental_conducting) {
+        c.speed_switch.equality_left(now_);
+    } else {
+        quiet = evaluate(c) && quiet;
+    }
+    // The soft-limit watch, after the comparers: an axis that stops here anyway is not tripped.
+    if (c.powered && c.plant.profile().soft_limits && !stop_ &&
+        soft_limit_trips(c.plant.profile(), c.plant.moving_direction(), c.plant.real_in(),
+                         c.plant.speed_in_per_s())) {
+        soft_limit_watch(c);
+        return false;
+    }
+    return quiet;
+}
+
+bool ControlCabinet::fault_drops(const AxisCircuit& c) {
+    for (std::size_t i = 0; i < faults_.size(); ++i) {
+        const Fault& f = faults_[i];
+        if (f.kind == FaultKind::drop_impulse && f.axis == c.axis && f.n == c.contact_set_a) {
+            effects_.at(i).acted = true;
+            effects_.at(i).effect =
+                fmt::format("contact set B of the {} commutator 102 missed impulse {} ({})",
+                            axis_name(c.axis), f.n, card_name());
+            return true;
+        }
+    }
+    return false;
+}
+
+void ControlCabinet::missed_impulse(AxisCircuit& c) {
+    machine_stop(StopReason::missed_impulse, c.axis,
+                 fmt::format("{}, {}: impulse {} of commutator 102 was seen by contact set A "
+                             "but not by its duplicate set B",
+                             card_name(), axis_name(c.axis), c.contact_set_a),
+                 fmt::format("duplicate-contact lamp ({} commutator 102)", axis_name(c.axis)));
+    c.compare();
+}
+
+void ControlCabinet::soft_limit_watch(AxisCircuit& c) {
+    const auto& p = c.plant.profile();
+    const bool up = c.plant.moving_direction() > 0;
+    machine_stop(StopReason::soft_limit, c.axis,
+                 fmt::format("{}, {}: at {:.4f} in, moving {} at {:.3f} in/min, the part could "
+                             "no longer brake to rest inside its soft limit {:.3f} in (movement "
+                             "range {:.3f} .. {:.3f} in): switched off (soft limits are an "
+                             "addition of this emulator, after Mitsubishi's movement range)",
+                             card_name(), axis_name(c.axis), c.plant.real_in(), up ? "up" : "down",
+                             c.plant.speed_in_per_s() * 60, up ? p.soft_max_in : p.soft_min_in,
+                             p.soft_min_in, p.soft_max_in),
+                 fmt::format("soft-limit lamp ({}; an addition)", axis_name(c.axis)));
+    c.compare();
+}
+
+void ControlCabinet::travel_limit(AxisCircuit& c) {
+    const auto& p = c.plant.profile();
+    machine_stop(StopReason::soft_limit, c.axis,
+                 fmt::format("{}, {}: the part reached its travel limit at {:.4f} in (limit "
+                             "switches at {:.3f} .. {:.3f} in; travel-limit switches are an "
+                             "addition of this emulator: the patent shows none)",
+                             card_name(), axis_name(c.axis), c.plant.real_in(), p.travel_min_in,
+                             p.travel_max_in),
+                 fmt::format("limit-switch lamp ({}; an addition)", axis_name(c.axis)));
+    c.compare();
+}
+
+bool ControlCabinet::evaluate(AxisCircuit& c) {
+    c.compare();
+    const bool any = c.absolute_conducting || c.incremental_conducting;
+    if (!any) {
+        c.speed_switch.equality_left(now_);
+    }
+    if (!any || !live(c)) {
+        return true;
+    }
+    if (!c.speed_switch.channel_257_open(now_)) {
+        if (now_ < c.speed_switch.hold_until()) {
+            schedule(c.speed_switch.hold_until(), EventKind::delay_258_release,
+                     static_cast<int>(cardreader::axis_index(c.axis)));
+        }
+        return false;
+    }
+    // One impulse to stepping relay 256, one step of speed switch 236, whichever comparer sent
+    // it: from speed 3 the step is to off (contact 238), the stop (col. 10-11).
+    if (c.speed_switch.position() == 3 ||
+        (profile_.incremental_equality_stops_at_any_speed && c.incremental_conducting)) {
+        stop_axis(c);
+        return false;
+    }
+    c.speed_switch.impulse_256(now_, profile_.delay_258_s);
+    update_motor(c);
+    // When delay 258 closes channel 257 again the comparer is read again: an equality that
+    // still stands then steps the switch once more (a delay too short for the speed).
+    schedule(c.speed_switch.hold_until(), EventKind::delay_258_release,
+             static_cast<int>(cardreader::axis_index(c.axis)));
+    return false;
+}
+
+void ControlCabinet::update_motor(AxisCircuit& c) {
+    const bool on = live(c) && !conditions_.held(c.axis); // a dwell opens the hold relay
+    if (auto impulse = c.plant.advance_to(now_)) {
+        on_impulse(c, *impulse); // never let an impulse due now go uncounted
+    }
+    if (tapping_.present() && tapping_.feeding(c.axis) && !stop_) {
+        // A tap: the synchronous operation control sets the follower drive.
+        const FeedCommand f = tapping_.feed();
+        c.plant.command_follow(f.direction, f.speed_in_per_s,
+                               profile_.sync_drive.acceleration_in_per_s2);
+        c.set_powered(true);
+        return;
+    }
+    if (on && sync_.present() && c.speed_switch.position() == 1 &&
+        sync_.scp().speed_synced(c.axis)) {
+        // Speed synchronisation: speed 1 is the follower drive at processor 63's speed.
+        c.plant.command_follow(c.direction, sync_.scp().output(c.axis),
+                               profile_.sync_drive.acceleration_in_per_s2);
+    } else {
+        c.plant.command(c.direction, on ? c.speed_switch.position() : 0);
+    }
+    c.set_powered(on);
+}
+
+void ControlCabinet::update_motors() {
+    bool cutting = false;
+    for (auto& c : circuits_) {
+        update_motor(*c);
+        cutting = cutting || (c->powered && shaft_.position() == last_sequence_position_);
+    }
+    tracer_.set(cutting_, cutting && orders_.spindle != cardreader::Spindle::off ? 1 : 0);
+}
+
+} // namespace parsons::relaylogic

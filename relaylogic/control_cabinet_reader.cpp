@@ -1,0 +1,286 @@
+// Control cabinet 52, the reader and the two banks: card reader 134 feeds a card (zeroizing's
+// channel 304 indexed it); the first bank of brushes senses it (the card-number check, the
+// card's kind, the checks on a card before anything moves); the holding relays pick (storage
+// 350-356 and 318-324, sequence switches 224, spindle control 165); the second bank steps the
+// speed switches 236 through stepping device 252 (handle()); read_complete closes the circuits.
+#include "relaylogic/card_reader.hpp"
+#include "relaylogic/control_cabinet.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace parsons::relaylogic {
+
+using cardreader::Axis;
+using cardreader::axis_name;
+
+void ControlCabinet::feed() {
+    if (stop_) {
+        return;
+    }
+    if (keep_resume_point_) {
+        resume_point_ = capture();
+    }
+    tracer_.set(zeroizing_, 0);
+    for (SignalId channel :
+         {channel_294_, channel_298_, channel_300_, channel_302_, channel_304_}) {
+        tracer_.set(channel, 0);
+    }
+    card_ = next_card();
+    condition_card_ = false;
+    sync_card_ = false;
+    tap_card_ = false;
+    if (!card_ && sync_.present() && sync_.scp().pending()) {
+        const SynchronisationProcessor& scp = sync_.scp();
+        machine_stop(StopReason::sync_refused, std::nullopt,
+                     fmt::format("card {} (number {:04}): a sync card with no motion card after "
+                                 "it: the deck ends (its orders are for the motion card that "
+                                 "follows it; sync cards are an addition after EP 0436887, "
+                                 "Mitsubishi)",
+                                 scp.pending_card(), scp.pending_number()),
+                     "sync lamp (an addition)");
+        return;
+    }
+    if (!card_ && conditions_.stored()) {
+        const BufferPair& p =
+            conditions_.buffer().pair(conditions_.buffer().first(PairState::stored));
+        machine_stop(StopReason::condition_refused, std::nullopt,
+                     fmt::format("card {} (number {:04}): a condition card with no motion card "
+                                 "after it: the deck ends (condition cards stand before the "
+                                 "motion card they watch, EP 0640901 claim 4)",
+                                 p.card, p.card_number),
+                     "condition lamp (an addition)");
+        return;
+    }
+    if (!card_) {
+        deck_finished_ = true;
+        tracer_.set(reader_feeding_, 0);
+        return;
+    }
+    ++cards_read_;
+    if (record_times_) {
+        timings_.push_back(CardTiming{cards_read_, -1, now_, now_});
+    }
+    orders_ = cardreader::CardOrders{};
+    orders_.number = -1;
+    tracer_.set(reader_card_, static_cast<std::uint32_t>(cards_read_));
+    tracer_.set(reader_feeding_, 1);
+    // Fig. 9: on a ribbon (or tape) the next card follows with no gap; it is sensed sooner.
+    const double gap = profile_.ribbon_feed && cards_read_ > 1 ? profile_.feed_gap_s : 0.0;
+    schedule(now_ + (profile_.first_bank_s - gap), EventKind::first_bank);
+    schedule(now_ + (profile_.second_bank_s - gap), EventKind::second_bank);
+    schedule(now_ + (profile_.reader_cycle_s - gap), EventKind::read_complete);
+}
+
+void ControlCabinet::first_bank() {
+    SensedCard sensed = sense_card(*card_, layout_, profile_.refuse_double_punch);
+    if (!sensed.decoded) {
+        const auto& bad = *sensed.decoded.bad_punch;
+        machine_stop(StopReason::bad_punch, std::nullopt,
+                     fmt::format("card {}, column {}: {}: the reader stops the machine (bad-punch "
+                                 "refusal, an addition of this emulator: a 1952 reader would "
+                                 "sense the holes as they are)",
+                                 cards_read_, bad.column, bad.what),
+                     "card reader 134 check lamp (an addition)");
+        return;
+    }
+    orders_ = sensed.decoded.orders;
+    extra_relays_ = sensed.extra;
+    if (record_times_) {
+        timings_.back().number = orders_.number;
+    }
+    if (tracer_.observer() != nullptr) {
+        tracer_.observer()->on_card(now_, cards_read_, orders_);
+    }
+    // The card-number check (col. 8, no numeral): each card must be the previous one + 1
+    // (0000 follows 9999).
+    if (previous_number_ && orders_.number != (*previous_number_ + 1) % 10000) {
+        machine_stop(StopReason::out_of_order_card, std::nullopt,
+                     fmt::format("{}: card number {:04} follows {:04} (expected {:04}); stopped "
+                                 "before any axis moved",
+                                 card_name(), orders_.number, *previous_number_,
+                                 (*previous_number_ + 1) % 10000),
+                     "card-number lamp");
+        return;
+    }
+    previous_number_ = orders_.number;
+    tracer_.set(card_number_check_, static_cast<std::uint32_t>(orders_.number));
+    if (sync_.present() && tape_index_ < tape_numbers_.size()) {
+        tape_numbers_.at(tape_index_) = orders_.number;
+    }
+    if (orders_.kind == cardreader::CardKind::condition) {
+        condition_card();
+        return;
+    }
+    if (orders_.kind == cardreader::CardKind::sync) {
+        sync_card();
+        return;
+    }
+    if (orders_.kind == cardreader::CardKind::tap) {
+        tap_card();
+        return;
+    }
+    if (sync_.present() && sync_.scp().pending()) {
+        // Speed synchronisation of an axis this card does not move cannot be followed.
+        const SynchronisationProcessor& scp = sync_.scp();
+        for (Axis a : cardreader::kAxes) {
+            if (scp.pending_order().travel_per_pulse.at(cardreader::axis_index(a)) &&
+                orders_.axis(a).check == 0) {
+                machine_stop(StopReason::sync_refused, a,
+                             fmt::format("{}: sync card {} (number {:04}) orders speed "
+                                         "synchronisation of the {} axis, which this card does "
+                                         "not move (check 0) (sync cards are an addition after "
+                                         "EP 0436887, Mitsubishi)",
+                                         card_name(), scp.pending_card(), scp.pending_number(),
+                                         axis_name(a)),
+                             "sync lamp (an addition)");
+                return;
+            }
+        }
+    }
+    if (auto refusal = conditions_.refuse_unmoved(orders_, cards_read_)) {
+        machine_stop(StopReason::condition_refused, std::nullopt, *refusal,
+                     "condition lamp (an addition)");
+        return;
+    }
+    if (!move_within_soft_limits()) {
+        return;
+    }
+    // The brushes have sensed the card; the holding relays pick a relay's operate time later.
+    schedule(now_ + profile_.relay_operate_s, EventKind::relays_pick);
+}
+
+// The reader takes the next card: from the deck, or, after a loop card sent it back, again
+// from the cards it has taken (press synchronisation keeps them, as a ribbon made into an
+// endless loop keeps its cards).
+std::optional<cardreader::Card> ControlCabinet::next_card() {
+    if (!sync_.present()) {
+        return deck_->next();
+    }
+    if (replay_ < tape_.size()) {
+        tape_index_ = replay_++;
+        return tape_.at(tape_index_);
+    }
+    std::optional<cardreader::Card> card = deck_->next();
+    if (card) {
+        ++deck_taken_;
+        tape_.push_back(*card);
+        tape_numbers_.push_back(-1); // known once the first bank has sensed it
+        tape_index_ = tape_.size() - 1;
+        replay_ = tape_.size();
+    }
+    return card;
+}
+
+// The movement range, judged on the card before anything moves: where would each axis end
+// if it travels exactly its check in the sense of its motion column?
+bool ControlCabinet::move_within_soft_limits() {
+    for (const auto& c : circuits_) {
+        const auto& p = c->plant.profile();
+        if (!p.soft_limits) {
+            continue;
+        }
+        const cardreader::AxisOrder& o = orders_.axis(c->axis);
+        const double from = c->plant.real_in();
+        const double move = (o.motion == cardreader::Motion::forward ? 1 : -1) * o.check / 1000.0;
+        const double to = from + move;
+        if (to > p.soft_max_in || to < p.soft_min_in) {
+            machine_stop(StopReason::soft_limit, c->axis,
+                         fmt::format("{}, {}: this card moves it {:+.3f} in, from {:.4f} to {:.4f} "
+                                     "in, past its soft limit {:.3f} in (movement range {:.3f} .. "
+                                     "{:.3f} in); stopped before any axis moved (soft limits are "
+                                     "an addition of this emulator, after Mitsubishi's movement "
+                                     "range)",
+                                     card_name(), axis_name(c->axis), move, from, to,
+                                     to > p.soft_max_in ? p.soft_max_in : p.soft_min_in,
+                                     p.soft_min_in, p.soft_max_in),
+                         fmt::format("soft-limit lamp ({}; an addition)", axis_name(c->axis)));
+            return false;
+        }
+    }
+    return true;
+}
+
+void ControlCabinet::relays_pick() {
+    tracer_.set(spindle_165_, static_cast<std::uint32_t>(orders_.spindle));
+    last_sequence_position_ = 0;
+    for (auto& c : circuits_) {
+        c->order = orders_.axis(c->axis);
+        c->set_direction(c->order.motion);
+        std::array<int, 3> numbers{};
+        std::size_t count = 0;
+        for (const auto& sd : c->order.slow_down) {
+            if (sd) {
+                numbers.at(count++) = *sd;
+            }
+        }
+        numbers.at(count++) = c->order.stop;
+        c->absolute_storage.store(std::span<const int>(numbers.data(), count));
+        c->incremental_storage.store(c->order.check);
+        // A double-punched digit column picks a second relay of its bank (parsons-1952).
+        const auto& extra = extra_relays_.at(cardreader::axis_index(c->axis));
+        for (std::size_t field = 0; field < kNumberFields; ++field) {
+            for (std::size_t i = 0; i < 4; ++i) {
+                const unsigned mask = extra.at(field).at(i);
+                if (mask == 0) {
+                    continue; // the common case: one punch a column
+                }
+                HoldingRelayBank& bank = field < 3
+                                             ? c->absolute_storage.bank(static_cast<int>(i))
+                                             : c->incremental_storage.bank(static_cast<int>(i));
+                for (int d = 0; d < 10; ++d) {
+                    if ((mask >> d & 1U) != 0) {
+                        bank.pick(d);
+                    }
+                }
+            }
+        }
+        c->sequence_switch.close_pattern(c->order.sequence);
+        for (int p = 5; p >= 1; --p) {
+            if (c->sequence_switch.closed(p)) {
+                last_sequence_position_ = std::max(last_sequence_position_, p);
+                break;
+            }
+        }
+        c->compare();
+    }
+    if (conditions_.present()) {
+        conditions_.spindle_from_card(orders_.spindle, now_);
+        conditions_.arm(cards_read_); // PFR supplies each stored condition to PRG
+    }
+    if (sync_.present()) {
+        sync_.scp().arm(); // a sync card's orders into readers 60 and 62
+    }
+}
+
+void ControlCabinet::read_complete() {
+    reading_complete_ = true;
+    tracer_.set(reader_feeding_, 0);
+    if (tap_card_) {
+        reading_complete_ = false; // no axis moves by the 1952 columns
+        start_tool_call();
+        return;
+    }
+    if (condition_card_ || sync_card_) {
+        reading_complete_ = false;
+        if (sync_card_ && orders_.sync.loop) {
+            loop_card();
+            if (stop_) {
+                return;
+            }
+        }
+        tracer_.set(channel_304_, 1); // nothing to move: the reader indexes the next card
+        schedule(now_, EventKind::feed);
+        return;
+    }
+    if (sync_.present() && sync_.scp().hold_unless_at(sync_.position_register().value(), now_)) {
+        return; // position reader 60 holds the card's motion until the crank reaches R
+    }
+    update_motors();
+    for (auto& c : circuits_) {
+        evaluate(*c);
+    }
+}
+
+} // namespace parsons::relaylogic

@@ -1,0 +1,163 @@
+// Control cabinet 52, saved state and result: the machine captured at a card's feed (run
+// --save-state), loaded again (--resume), and what a run reports.
+#include "relaylogic/control_cabinet.hpp"
+
+#include "axes/state_json.hpp"
+
+#include <fmt/format.h>
+
+namespace parsons::relaylogic {
+
+using cardreader::Axis;
+using cardreader::axis_name;
+
+nlohmann::json ControlCabinet::capture() const {
+    using axes::exact;
+    nlohmann::json axes = nlohmann::json::object();
+    for (const auto& c : circuits_) {
+        axes[std::string(axis_name(c->axis))] = c->save();
+    }
+    nlohmann::json times = nlohmann::json::array();
+    for (const CardTiming& ct : timings_) {
+        times.push_back({ct.index, ct.number, exact(ct.start_s), exact(ct.end_s)});
+    }
+    nlohmann::json faults = nlohmann::json::array();
+    for (const FaultEffect& e : effects_) {
+        faults.push_back({{"fault", e.spec}, {"acted", e.acted}, {"effect", e.effect}});
+    }
+    return nlohmann::json{{"machine_seconds", exact(now_)},
+                          {"event_sequence", seq_},
+                          {"cards_read", cards_read_},
+                          {"card_number_check", previous_number_ ? nlohmann::json(*previous_number_)
+                                                                 : nlohmann::json(nullptr)},
+                          {"last_card_number", orders_.number},
+                          {"spindle", static_cast<int>(orders_.spindle)},
+                          {"last_sequence_position", last_sequence_position_},
+                          {"axes", axes},
+                          {"stepping_shaft_280", shaft_.save()},
+                          {"signals", tracer_.save()},
+                          {"card_times", times},
+                          {"faults", faults},
+                          {"conditions", conditions_.save()},
+                          {"actions", actions_to_json(actions_)},
+                          {"sync", capture_sync()},
+                          {"tapping", tapping_.present() ? tapping_.save() : nlohmann::json()}};
+}
+
+void ControlCabinet::resume(const nlohmann::json& j) {
+    using axes::exact;
+    using axes::member;
+    using axes::read;
+    now_ = exact(member(j, "machine_seconds"));
+    seq_ = read<std::uint64_t>(j, "event_sequence");
+    cards_read_ = read<std::int64_t>(j, "cards_read");
+    const auto& number = member(j, "card_number_check");
+    previous_number_ = number.is_null() ? std::nullopt : std::optional(number.get<int>());
+    orders_ = cardreader::CardOrders{};
+    orders_.number = read<int>(j, "last_card_number");
+    orders_.spindle = static_cast<cardreader::Spindle>(read<int>(j, "spindle"));
+    last_sequence_position_ = read<int>(j, "last_sequence_position");
+    const auto& axes = member(j, "axes");
+    for (auto& c : circuits_) {
+        c->load(member(axes, std::string(axis_name(c->axis)).c_str()));
+    }
+    shaft_.load(member(j, "stepping_shaft_280"));
+    tracer_.load(member(j, "signals"));
+    timings_.clear();
+    for (const auto& t : member(j, "card_times")) {
+        timings_.push_back(CardTiming{t.at(0).get<std::int64_t>(), t.at(1).get<int>(),
+                                      exact(t.at(2)), exact(t.at(3))});
+    }
+    conditions_.load(j.contains("conditions") ? j.at("conditions") : nlohmann::json());
+    actions_ = actions_from_json(j.contains("actions") ? j.at("actions") : nlohmann::json::array());
+    resume_sync(j.contains("sync") ? j.at("sync") : nlohmann::json());
+    const bool saved_tapping = j.contains("tapping") && !j.at("tapping").is_null();
+    if (saved_tapping != tapping_.present()) {
+        throw axes::StateError(saved_tapping ? "the saved state has spindle synchronisation and "
+                                               "this profile has none"
+                                             : "this profile has spindle synchronisation and the "
+                                               "saved state has none");
+    }
+    if (saved_tapping) {
+        tapping_.load(j.at("tapping"));
+    }
+    effects_.clear();
+    for (const auto& e : member(j, "faults")) {
+        effects_.push_back(FaultEffect{read<std::string>(e, "fault"), read<bool>(e, "acted"),
+                                       read<std::string>(e, "effect")});
+    }
+    if (cards_read_ < 0 || now_ < 0) {
+        throw axes::StateError("cards_read and machine_seconds must not be negative");
+    }
+    reading_complete_ = false;
+    deck_finished_ = false;
+    stop_.reset();
+    resuming_ = true;
+}
+
+RunResult ControlCabinet::result() const {
+    RunResult r;
+    r.completed = deck_finished_ && !stop_;
+    r.cards_read = cards_read_;
+    r.machine_seconds = now_;
+    r.stop = stop_;
+    r.cards = timings_;
+    r.faults = effects_;
+    r.actions = actions_;
+    if (conditions_.present()) {
+        r.tool_in_spindle = conditions_.ale().tool_in_spindle();
+    }
+    if (sync_.present()) {
+        PressResult p;
+        p.revolution = sync_.press().revolution();
+        p.crank_angle_deg = sync_.press().angle_deg();
+        p.position_register = sync_.position_register().value();
+        p.press_stopped = sync_.press().stopped();
+        p.cycles = cycles_;
+        p.loop_backs = loop_backs_;
+        if (loop_backs_ >= 2) {
+            p.mean_cycle_s =
+                (last_loop_back_s_ - first_loop_back_s_) / static_cast<double>(loop_backs_ - 1);
+            p.shortest_cycle_s = shortest_cycle_s_;
+            p.longest_cycle_s = longest_cycle_s_;
+        }
+        p.waited_s = waited_s_;
+        r.press = p;
+    }
+    if (tapping_.present()) {
+        TappingResult tr;
+        tr.tool_on_spindle = tapping_.spindle().tool();
+        tr.ratio_in_memory = tapping_.memory().ratio();
+        tr.head_exchanges = tapping_.pc().exchanges();
+        tr.transfers = tapping_.pc().transfers();
+        tr.ratios_received = tapping_.memory().received();
+        tr.holes = tapping_.holes();
+        r.tapping = std::move(tr);
+    }
+    for (std::size_t i = 0; i < circuits_.size(); ++i) {
+        const AxisCircuit& c = *circuits_[i];
+        AxisResult& a = r.axes.at(i);
+        a.counter_in = c.absolute_counter.value() / 1000.0;
+        a.real_in = c.plant.real_in();
+        // The counters read 0 .. 9.999 and wrap; the error counts the wraps (switch 104's turns),
+        // so a part 10 inches from where the counters say is not reported as on the spot.
+        a.error_in = a.real_in - static_cast<double>(c.absolute_counter.unwrapped_value()) / 1000.0;
+        a.impulses = c.plant.impulses();
+        a.lost_steps = c.absolute_counter.lost() + c.increment_counter.lost();
+        if (orders_.number >= 0) {
+            a.last_stop_in = c.order.stop / 1000.0;
+        }
+        a.slip_in = c.plant.slip_in();
+        a.screw_in = c.plant.screw_in();
+        for (std::size_t k = 0; k < 4; ++k) {
+            a.skipped_steps += c.absolute_counter.stepping_switch(k).skipped() ? 1 : 0;
+            a.skipped_steps += c.increment_counter.stepping_switch(k).skipped() ? 1 : 0;
+        }
+        if (c.axis == Axis::swivel || c.axis == Axis::tilt) {
+            a.fixture_angle_deg = c.plant.fixture_angle_deg(c.axis == Axis::tilt);
+        }
+    }
+    return r;
+}
+
+} // namespace parsons::relaylogic
