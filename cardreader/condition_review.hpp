@@ -33,7 +33,7 @@ struct ConditionFinding {
     bool deck_error = true; // false: the deck runs, and the machine stops (condition_not_met)
 };
 
-// How many condition/action pairs buffer PFR holds (relaylogic/internal_buffer.hpp).
+// How many condition/action pairs buffer PFR holds (relaylogic/conditions/internal_buffer.hpp).
 inline constexpr int kBufferPairs = 10;
 
 class ConditionReview {

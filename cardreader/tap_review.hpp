@@ -26,7 +26,7 @@ namespace parsons::cardreader {
 
 // The slowest feed a tap card may order (the follower drive's least steady speed, in/min): a
 // slower one would take hours a hole. The review refuses it on the card; the cabinet's own
-// refusal (relaylogic/tapping_units.cpp) uses the same figure.
+// refusal (relaylogic/tapping/tapping_units.cpp) uses the same figure.
 inline constexpr double kLeastTapFeedInPerMin = 0.5;
 
 // What the review needs of the spindle and the follower drive (from the machine profile;

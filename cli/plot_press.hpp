@@ -16,7 +16,7 @@
 //                       wait for their motion card), a mark where detector 61 conducted
 //   processor 63 ...... the speed it sent each speed-synchronised axis's drive, in/min
 //
-// How we record it: from the trace signals of scope "press" (relaylogic/sync_units.cpp and
+// How we record it: from the trace signals of scope "press" (relaylogic/press/sync_units.cpp and
 // the units it installs), through the same observer as the panels. The crank, die and
 // registers change at every detector edge — 4 pulses a degree at 2 strokes a minute is 1440
 // edges a revolution — so each is kept as the panels keep a position (the "M4" reduction of

@@ -18,7 +18,7 @@
 //                       NC ready, data valid, NC received, tool ready (the seed's order)
 //   PC 130 ............ a bar per relay of its ladder while it is picked, CR1 to CR8
 //
-// How we record it: from the trace signals of scope "spindle" (relaylogic/tapping_units.cpp,
+// How we record it: from the trace signals of scope "spindle" (relaylogic/tapping/tapping_units.cpp,
 // programmable_controller.cpp, gear_ratio_memory.cpp and interface 33's registers), through the
 // same observer as the panels. The speeds, the feed and the depth change at every sample of
 // interface 33 (20 a second by default) for as long as a tap runs, so each is kept as the press

@@ -9,8 +9,9 @@ foreach(part IN LISTS parsons_parts)
   # Installed as libparsons_<part>.a, so no other package's libaxes.a can be mistaken for ours.
   set_target_properties(${part} PROPERTIES OUTPUT_NAME parsons_${part} EXPORT_NAME ${part})
   add_library(parsons::${part} ALIAS ${part})
-  file(GLOB part_headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${part}/*.hpp)
-  install(FILES ${part_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/parsons/${part})
+  # With their subfolders (relaylogic/conditions, press, tapping: the later systems).
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${part}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/parsons/${part}
+          FILES_MATCHING PATTERN "*.hpp" PATTERN "airfoils" EXCLUDE PATTERN "samples" EXCLUDE)
 endforeach()
 
 install(TARGETS parsons RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

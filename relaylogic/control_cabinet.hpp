@@ -23,10 +23,10 @@
 #include "cardreader/layout.hpp"
 #include "relaylogic/axis_circuit.hpp"
 #include "relaylogic/balancing_circuit.hpp"
-#include "relaylogic/condition_units.hpp"
+#include "relaylogic/conditions/condition_units.hpp"
 #include "relaylogic/faults.hpp"
-#include "relaylogic/sync_units.hpp"
-#include "relaylogic/tapping_units.hpp"
+#include "relaylogic/press/sync_units.hpp"
+#include "relaylogic/tapping/tapping_units.hpp"
 
 #include <csignal>
 #include <map>

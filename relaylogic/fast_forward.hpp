@@ -20,7 +20,7 @@
 #pragma once
 
 #include "relaylogic/axis_circuit.hpp"
-#include "relaylogic/monitoring_unit.hpp"
+#include "relaylogic/conditions/monitoring_unit.hpp"
 
 namespace parsons::relaylogic {
 

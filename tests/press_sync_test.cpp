@@ -5,9 +5,9 @@
 #include "tests/machine_support.hpp"
 
 #include "axes/press.hpp"
-#include "relaylogic/direction_judging_device.hpp"
-#include "relaylogic/position_register.hpp"
-#include "relaylogic/speed_register.hpp"
+#include "relaylogic/press/direction_judging_device.hpp"
+#include "relaylogic/press/position_register.hpp"
+#include "relaylogic/press/speed_register.hpp"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>

@@ -6,8 +6,8 @@
 #include "tests/machine_support.hpp"
 
 #include "axes/spindle.hpp"
-#include "relaylogic/gear_ratio_memory.hpp"
-#include "relaylogic/programmable_controller.hpp"
+#include "relaylogic/tapping/gear_ratio_memory.hpp"
+#include "relaylogic/tapping/programmable_controller.hpp"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>

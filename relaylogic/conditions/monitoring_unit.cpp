@@ -1,4 +1,4 @@
-#include "relaylogic/monitoring_unit.hpp"
+#include "relaylogic/conditions/monitoring_unit.hpp"
 
 #include "axes/state_json.hpp"
 

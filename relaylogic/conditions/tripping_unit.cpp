@@ -1,4 +1,4 @@
-#include "relaylogic/tripping_unit.hpp"
+#include "relaylogic/conditions/tripping_unit.hpp"
 
 #include "axes/state_json.hpp"
 

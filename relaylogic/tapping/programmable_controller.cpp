@@ -59,7 +59,7 @@
 // never picks, busy() is false): the cabinet refuses such a card (tap_refused) before it calls.
 // An exchange once started completes even if the call is withdrawn (the mechanism does not stop
 // halfway); the NC holds its call until tool ready, so that does not happen in a run.
-#include "relaylogic/programmable_controller.hpp"
+#include "relaylogic/tapping/programmable_controller.hpp"
 
 #include "axes/state_json.hpp"
 

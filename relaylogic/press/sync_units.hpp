@@ -21,10 +21,10 @@
 #pragma once
 
 #include "axes/press.hpp"
-#include "relaylogic/direction_judging_device.hpp"
-#include "relaylogic/position_register.hpp"
-#include "relaylogic/speed_register.hpp"
-#include "relaylogic/synchronisation_processor.hpp"
+#include "relaylogic/press/direction_judging_device.hpp"
+#include "relaylogic/press/position_register.hpp"
+#include "relaylogic/press/speed_register.hpp"
+#include "relaylogic/press/synchronisation_processor.hpp"
 
 #include <memory>
 

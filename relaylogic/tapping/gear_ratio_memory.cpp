@@ -26,7 +26,7 @@
 // Emulation note: the NC is a computer; it is built here as the cabinet builds everything, the
 // memory a bank of holding relays for the ratio's digits (traced in millionths), the steps a
 // stepping switch.
-#include "relaylogic/gear_ratio_memory.hpp"
+#include "relaylogic/tapping/gear_ratio_memory.hpp"
 
 #include "axes/state_json.hpp"
 

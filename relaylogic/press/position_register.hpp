@@ -20,7 +20,7 @@
 // profile is loaded), so no count is lost to a moving wiper.
 #pragma once
 
-#include "relaylogic/direction_judging_device.hpp"
+#include "relaylogic/press/direction_judging_device.hpp"
 
 #include "relaylogic/counters.hpp"
 #include "relaylogic/tracer.hpp"

@@ -1,4 +1,4 @@
-#include "relaylogic/speed_register.hpp"
+#include "relaylogic/press/speed_register.hpp"
 
 #include "axes/state_json.hpp"
 

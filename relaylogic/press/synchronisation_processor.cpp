@@ -1,4 +1,4 @@
-#include "relaylogic/synchronisation_processor.hpp"
+#include "relaylogic/press/synchronisation_processor.hpp"
 
 #include "axes/state_json.hpp"
 

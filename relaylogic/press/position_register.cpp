@@ -1,4 +1,4 @@
-#include "relaylogic/position_register.hpp"
+#include "relaylogic/press/position_register.hpp"
 
 #include "axes/state_json.hpp"
 

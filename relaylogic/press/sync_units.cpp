@@ -1,4 +1,4 @@
-#include "relaylogic/sync_units.hpp"
+#include "relaylogic/press/sync_units.hpp"
 
 #include "axes/state_json.hpp"
 

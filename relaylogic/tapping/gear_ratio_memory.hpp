@@ -16,7 +16,7 @@
 #pragma once
 
 #include "axes/machine_profile.hpp"
-#include "relaylogic/programmable_controller.hpp"
+#include "relaylogic/tapping/programmable_controller.hpp"
 #include "relaylogic/tracer.hpp"
 
 #include <nlohmann/json.hpp>

@@ -1,4 +1,4 @@
-#include "relaylogic/internal_buffer.hpp"
+#include "relaylogic/conditions/internal_buffer.hpp"
 
 #include "axes/state_json.hpp"
 #include "cardreader/condition_card.hpp"

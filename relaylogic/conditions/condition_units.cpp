@@ -1,4 +1,4 @@
-#include "relaylogic/condition_units.hpp"
+#include "relaylogic/conditions/condition_units.hpp"
 
 #include "axes/state_json.hpp"
 

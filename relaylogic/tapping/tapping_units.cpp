@@ -1,4 +1,4 @@
-#include "relaylogic/tapping_units.hpp"
+#include "relaylogic/tapping/tapping_units.hpp"
 
 #include "axes/state_json.hpp"
 #include "cardreader/tap_review.hpp"

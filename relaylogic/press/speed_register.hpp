@@ -10,7 +10,7 @@
 // Processor 63 reads the bank.
 #pragma once
 
-#include "relaylogic/direction_judging_device.hpp"
+#include "relaylogic/press/direction_judging_device.hpp"
 
 #include "relaylogic/counters.hpp"
 #include "relaylogic/tracer.hpp"

@@ -15,7 +15,7 @@
 //   then drop request and data, and tell the NC the tool is ready.
 // Second embodiment (ratio_source stored, Figs. 5-7): the PC exchanges the head and tells the NC
 // the tool is ready; there is no transfer (steps S2-S8 answer "no"), the NC selects the ratio
-// stored for the tool number in memory 12a itself (relaylogic/gear_ratio_memory.hpp).
+// stored for the tool number in memory 12a itself (relaylogic/tapping/gear_ratio_memory.hpp).
 //
 // The NC's side of the handshake (operation I, S11-S16) is gear_ratio_memory.hpp. Both sides
 // act once per scan each (PC first, then the NC), so every step of the handshake is a scan of

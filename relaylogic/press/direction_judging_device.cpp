@@ -1,4 +1,4 @@
-#include "relaylogic/direction_judging_device.hpp"
+#include "relaylogic/press/direction_judging_device.hpp"
 
 #include "axes/state_json.hpp"
 

@@ -22,7 +22,7 @@
 
 #include "cardreader/orders.hpp"
 #include "relaylogic/counters.hpp"
-#include "relaylogic/internal_buffer.hpp"
+#include "relaylogic/conditions/internal_buffer.hpp"
 #include "relaylogic/storage.hpp"
 
 #include <array>

@@ -1,6 +1,6 @@
 // Control cabinet 52 with the spindle synchronisation of EP 0360190 (Mitsubishi): a
 // tap card's cycle, from the tool call on bus 35 to the feed standing on its starting count
-// again (relaylogic/tapping_units.hpp tells the sequence). An addition, not in the 1952 patent.
+// again (relaylogic/tapping/tapping_units.hpp tells the sequence). An addition, not in the 1952 patent.
 #include "relaylogic/control_cabinet.hpp"
 
 #include <fmt/format.h>

@@ -1,6 +1,6 @@
 // The condition units of EP 0640901 (Siemens) wired into the cabinet: converter UMS
-// and internal buffer PFR (relaylogic/internal_buffer.hpp), monitoring unit PRG
-// (relaylogic/monitoring_unit.hpp) and tripping unit ALE (relaylogic/tripping_unit.hpp). An
+// and internal buffer PFR (relaylogic/conditions/internal_buffer.hpp), monitoring unit PRG
+// (relaylogic/conditions/monitoring_unit.hpp) and tripping unit ALE (relaylogic/conditions/tripping_unit.hpp). An
 // addition, not in the 1952 patent: present only when the profile allows condition cards
 // (parsons-extended); otherwise the cabinet has none of these relays and traces none of them.
 //
@@ -17,9 +17,9 @@
 //                             clears PFR and PRG and feeds the next card
 #pragma once
 
-#include "relaylogic/internal_buffer.hpp"
-#include "relaylogic/monitoring_unit.hpp"
-#include "relaylogic/tripping_unit.hpp"
+#include "relaylogic/conditions/internal_buffer.hpp"
+#include "relaylogic/conditions/monitoring_unit.hpp"
+#include "relaylogic/conditions/tripping_unit.hpp"
 
 #include <algorithm>
 #include <memory>

@@ -23,7 +23,7 @@
 #include "axes/spindle_motor.hpp"
 #include "axes/tool_changer.hpp"
 #include "cardreader/orders.hpp"
-#include "relaylogic/internal_buffer.hpp"
+#include "relaylogic/conditions/internal_buffer.hpp"
 
 namespace parsons::relaylogic {
 
