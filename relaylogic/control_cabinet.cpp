@@ -58,9 +58,18 @@ ControlCabinet::ControlCabinet(axes::MachineProfile profile, const cardreader::C
         circuits_.push_back(std::make_unique<AxisCircuit>(tracer_, profile_, a));
         circuits_.back()->plant.measure_by(profile_.measuring_chain); // Fig. 3
     }
-    conditions_.install(tracer_, profile_); // EP 0640901's units, if the profile has them
-    sync_.install(tracer_, profile_);       // EP 0436887's press and units, likewise
-    tapping_.install(tracer_, profile_);    // EP 0360190's spindle, PC 130 and 12a, likewise
+    // The later systems the profile asks for (relaylogic/attachments.cpp), each defining its
+    // signals after the cabinet's.
+    attachments_ = make_attachments(tracer_, profile_);
+    for (const auto& a : attachments_) {
+        if (a->supplies_cards()) {
+            supplier_ = a.get();
+        }
+        has_clock_ = has_clock_ || a->has_clock();
+        if (const CounterWatch* w = a->counter_watch()) {
+            counter_watches_.push_back(w);
+        }
+    }
 }
 
 void ControlCabinet::attach(MachineObserver* observer) {
@@ -68,9 +77,18 @@ void ControlCabinet::attach(MachineObserver* observer) {
 }
 
 void ControlCabinet::schedule(double t, EventKind kind, int axis) {
-    queue_.push(Event{t, seq_++, kind, axis, cards_read_});
-    if (kind == EventKind::reference_block) {
-        ++blocks_queued_;
+    queue_.push(Event{t, seq_++, kind, 0, false, axis, cards_read_});
+}
+
+void ControlCabinet::schedule(const Attachment& owner, double t, int code, bool standing) {
+    std::size_t slot = 0;
+    while (attachments_.at(slot).get() != &owner) {
+        ++slot;
+    }
+    queue_.push(Event{t, seq_++, EventKind::attachment, static_cast<std::uint8_t>(slot), standing,
+                      code, cards_read_});
+    if (standing) {
+        ++standing_queued_;
     }
 }
 
@@ -83,14 +101,10 @@ std::string ControlCabinet::card_name() const {
 RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     deck_ = &deck;
     apply_faults(deck);
-    if (tapping_.present()) {
-        tapping_.inject(faults_);
-        tapping_.keep_samples(record_tap_samples_);
-    }
     MachineObserver* observer = tracer_.observer();
-    if (resuming_ && sync_.present()) {
-        resume_tape(deck_taken_);
-    } else if (resuming_) {
+    const bool deck_resumed =
+        resuming_ && supplier_ != nullptr && supplier_->resume_deck(*this, *deck_);
+    if (resuming_ && !deck_resumed) {
         // The cards read before the saved one went through the reader already.
         for (std::int64_t i = 0; i < cards_read_; ++i) {
             if (!deck_->next()) {
@@ -104,8 +118,8 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
         pace_ == Pace::fast_forward && (observer == nullptr || !observer->follows_impulses());
     const bool alone = !jumping_ && observer == nullptr;
     const bool follows_motion = observer != nullptr && observer->follows_motion();
-    if (sync_.present()) {
-        schedule_block();
+    for (const auto& a : attachments_) {
+        a->start(*this);
     }
     schedule(now_, EventKind::feed);
     while (true) {
@@ -115,32 +129,7 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
         if (jumping_) {
             plan_quiet_stretches();
         }
-        while (blocks_queued_ > 0 && !press_running() && !queue_.empty() &&
-               queue_.top().kind == EventKind::reference_block) {
-            queue_.pop(); // the deck is done: the reference blocks end with it, taking no time
-            --blocks_queued_;
-        }
-        double t = queue_.empty() ? axes::kNever : queue_.top().t;
-        for (std::size_t i = 0; i < circuits_.size(); ++i) {
-            t = std::min(t, next_axis_event(i));
-        }
-        if (t == axes::kNever && unqueued_release_s_ > now_) {
-            t = unqueued_release_s_; // the last release after a stop (release_after_stop)
-        }
-        if (press_running()) {
-            // The press turns on whatever the cabinet does; when nothing else can happen and
-            // nothing waits on it, the cabinet itself is idle (a sequence stall).
-            if (idle()) {
-                t = axes::kNever;
-            } else {
-                t = std::min(t, jumping_ ? press_quiet_end_ : sync_.press().next_event_time());
-                if (unqueued_release_s_ > now_) {
-                    // The last release after a stop (release_after_stop) is an instant of its
-                    // own here too: a stall comes at it, whatever the press's pace.
-                    t = std::min(t, unqueued_release_s_);
-                }
-            }
-        }
+        const double t = next_event_time();
         if (t == axes::kNever) {
             if (!deck_finished_ && !stop_) {
                 sequence_stall();
@@ -148,45 +137,7 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
             }
             break;
         }
-        now_ = t;
-        tracer_.set_time(t);
-        if (jumping_) {
-            // The axes' quiet impulses first: a tap's reversal of control 214 is reported at the
-            // first impulse of its jump, before this instant, so it must come before anything
-            // reported at this instant (the spindle's edges below).
-            catch_up(t);
-        }
-        if (tapping_.present()) {
-            spindle_edges(t);
-        }
-        if (jumping_) {
-            if (press_running()) {
-                // The press's quiet edges before this instant, whatever the instant brings (at
-                // impulse level each was an instant of its own).
-                press_edges(std::nextafter(t, -axes::kNever));
-            }
-        }
-        bool moved = false;
-        for (std::size_t i = 0; i < circuits_.size(); ++i) {
-            AxisCircuit& c = *circuits_[i];
-            if (c.plant.next_event_time() <= t) {
-                auto impulse = c.plant.advance_to(t);
-                moved = true;
-                if (impulse) {
-                    on_impulse(c, *impulse);
-                }
-            }
-        }
-        if (press_running()) {
-            press_edges(t);
-        }
-        if (moved && follows_motion) {
-            std::array<double, 5> real{};
-            for (std::size_t i = 0; i < circuits_.size(); ++i) {
-                real.at(i) = circuits_[i]->plant.real_in_at(t);
-            }
-            tracer_.observer()->on_motion(t, real);
-        }
+        advance(t, follows_motion);
         while (!queue_.empty() && queue_.top().t <= t) {
             const Event e = queue_.top();
             queue_.pop();
@@ -199,8 +150,8 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     for (const auto& c : circuits_) {
         c->plant.advance_to(now_);
     }
-    if (tapping_.present()) {
-        spindle_edges(now_);
+    for (const auto& a : attachments_) {
+        a->advance_plants(*this, now_);
     }
     report_faults();
     if (tracer_.observer() != nullptr) {
@@ -209,13 +160,91 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     return result();
 }
 
+// The next instant anything happens: a queued event, an axis's next event, the last release
+// after a stop, or an attachment's clock; axes::kNever when nothing will.
+double ControlCabinet::next_event_time() {
+    while (standing_queued_ > 0 && !clock_running() && !queue_.empty() && queue_.top().standing) {
+        queue_.pop(); // the deck is done: the clock's events end with it, taking no time
+        --standing_queued_;
+    }
+    double t = queue_.empty() ? axes::kNever : queue_.top().t;
+    for (std::size_t i = 0; i < circuits_.size(); ++i) {
+        t = std::min(t, next_axis_event(i));
+    }
+    if (t == axes::kNever && unqueued_release_s_ > now_) {
+        t = unqueued_release_s_; // the last release after a stop (release_after_stop)
+    }
+    if (clock_running()) {
+        // The press turns on whatever the cabinet does; when nothing else can happen and
+        // nothing waits on it, the cabinet itself is idle (a sequence stall).
+        if (idle()) {
+            return axes::kNever;
+        }
+        for (const auto& a : attachments_) {
+            t = std::min(t, a->next_clock_event(*this));
+        }
+        if (unqueued_release_s_ > now_) {
+            // The last release after a stop (release_after_stop) is an instant of its own
+            // here too: a stall comes at it, whatever the clock's pace.
+            t = std::min(t, unqueued_release_s_);
+        }
+    }
+    return t;
+}
+
+// Machine time comes to t: the quiet impulses before it, the attachments' plants and clocks,
+// then every axis's event due at t.
+void ControlCabinet::advance(double t, bool follows_motion) {
+    now_ = t;
+    tracer_.set_time(t);
+    if (jumping_) {
+        // The axes' quiet impulses first: a tap's reversal of control 214 is reported at the
+        // first impulse of its jump, before this instant, so it must come before anything
+        // reported at this instant (the spindle's edges below).
+        catch_up(t);
+    }
+    for (const auto& a : attachments_) {
+        a->advance_plants(*this, t);
+    }
+    if (jumping_ && clock_running()) {
+        // The clock's quiet edges before this instant, whatever the instant brings (at
+        // impulse level each was an instant of its own).
+        for (const auto& a : attachments_) {
+            a->clock_edges_before(*this, t);
+        }
+    }
+    bool moved = false;
+    for (std::size_t i = 0; i < circuits_.size(); ++i) {
+        AxisCircuit& c = *circuits_[i];
+        if (c.plant.next_event_time() <= t) {
+            auto impulse = c.plant.advance_to(t);
+            moved = true;
+            if (impulse) {
+                on_impulse(c, *impulse);
+            }
+        }
+    }
+    if (clock_running()) {
+        for (const auto& a : attachments_) {
+            a->clock_edges_at(*this, t);
+        }
+    }
+    if (moved && follows_motion) {
+        std::array<double, 5> real{};
+        for (std::size_t i = 0; i < circuits_.size(); ++i) {
+            real.at(i) = circuits_[i]->plant.real_in_at(t);
+        }
+        tracer_.observer()->on_motion(t, real);
+    }
+}
+
 void ControlCabinet::handle(const Event& e) {
     if (stop_ && e.kind != EventKind::feed) {
         return; // master switch open: the cabinet is dead
     }
-    if (e.kind == EventKind::reference_block) {
-        --blocks_queued_;
-        reference_block(); // the blocks run on whatever card is in the reader
+    if (e.kind == EventKind::attachment && e.standing) {
+        --standing_queued_;
+        attachments_.at(e.owner)->on_event(*this, e.axis); // on whatever card is in the reader
         return;
     }
     if (e.kind != EventKind::feed && e.card != cards_read_) {
@@ -232,13 +261,7 @@ void ControlCabinet::handle(const Event& e) {
         relays_pick();
         break;
     case EventKind::second_bank:
-        for (std::size_t i = 0;
-             i < circuits_.size() && !condition_card_ && !sync_card_ && !tap_card_; ++i) {
-            for (int k = 0; k < circuits_[i]->order.start_speed; ++k) {
-                schedule(now_ + k * profile_.stepping_switch_step_s, EventKind::speed_step_252,
-                         static_cast<int>(i));
-            }
-        }
+        second_bank();
         break;
     case EventKind::speed_step_252: {
         AxisCircuit& c = *circuits_.at(static_cast<std::size_t>(e.axis));
@@ -259,21 +282,29 @@ void ControlCabinet::handle(const Event& e) {
     case EventKind::shaft_step:
         shaft_step();
         break;
-    case EventKind::action_done:
-        acknowledge(e.axis);
-        break;
-    case EventKind::reference_block:
-        break; // taken above
-    case EventKind::sync_release:
-        sync_release();
-        break;
-    case EventKind::pc_scan:
-        pc_scan();
-        break;
-    case EventKind::spindle_sample:
-        spindle_sample();
+    case EventKind::attachment:
+        attachments_.at(e.owner)->on_event(*this, e.axis);
         break;
     }
+}
+
+// Nothing can happen but the clock turning and its standing events: no axis moves, no other
+// event is queued, and nothing waits on the clock.
+bool ControlCabinet::idle() const {
+    if (queue_.size() != static_cast<std::size_t>(standing_queued_) || unqueued_release_s_ > now_) {
+        return false;
+    }
+    for (std::size_t i = 0; i < circuits_.size(); ++i) {
+        if (next_axis_event(i) != axes::kNever) {
+            return false;
+        }
+    }
+    for (const auto& a : attachments_) {
+        if (a->waited_on(*this)) {
+            return false;
+        }
+    }
+    return true;
 }
 
 bool ControlCabinet::interrupted() {

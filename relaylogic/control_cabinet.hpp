@@ -2,90 +2,51 @@
 // the stepping shaft 280 of the sequence control, balancing circuit 266 and the zeroizing
 // circuit 290-304, run event by event in machine time.
 //
-// A card cycle, as the cabinet runs it:
+// A card cycle, as the cabinet runs it (each phase in a file of its own):
 //   feed ........ reader 134 takes the next card (zeroizing, channel 304, indexed it)
 //   first bank .. spindle 165, motion -> reversing control 214, slow-downs and stop -> banks
 //                 350-356, check -> banks 318-324, sequence pattern 222 -> switches 224; the
 //                 card number is checked (no numeral in the patent); a bad punch stops the reader
+//                 ........................................... control_cabinet_reader.cpp
 //   second bank . speed columns -> sensing circuit 250 -> stepping device 252 steps each
-//                 speed switch 236 one, two or three times
-//   cycle end ... every axis whose contact is closed under rotary member 282 runs; each stop
-//                 impulse steps shaft 280; after the fifth the members come home past
-//                 contact 290 and the zeroizing circuit clears storage and the increment
-//                 counters, opens the sequence contacts, resets device 288 and feeds a card.
+//                 speed switch 236 one, two or three times ...... control_cabinet_reader.cpp
+//   cycle end ... every axis whose contact is closed under rotary member 282 runs; each
+//                 commutator impulse steps the counters and the comparers are read; relay 256
+//                 steps switch 236 through delay 258 ............ control_cabinet_comparers.cpp
+//                 (fast-forward jumps the impulses that only count, in the same file); each
+//                 stop impulse steps shaft 280; after the fifth the members come home past
+//                 contact 290 ..........................................
+//                 control_cabinet_sequence.cpp and the zeroizing circuit clears storage and the
+//                 increment counters, opens the sequence contacts, resets device 288 and feeds a
+//                 card
+//                 ........................................... control_cabinet_zeroizing.cpp
+// Faults (control_cabinet_faults.cpp) and the saved state and result (control_cabinet_state.cpp)
+// have files of their own; this file keeps the wiring and the event loop.
 //
 // Time jumps from event to event: the next commutator impulse of an axis (solved exactly from
 // its motion), or the next relay operation in the queue. Nothing polls a clock.
+//
+// The later systems (condition cards, press synchronisation, tapping) are attachments
+// (relaylogic/attachment.hpp): the cabinet calls their hooks at fixed points of the card cycle
+// and knows nothing else of them. Profile parsons-1952 has none.
 #pragma once
 
 #include "axes/machine_profile.hpp"
 #include "cardreader/deck_io.hpp"
 #include "cardreader/layout.hpp"
+#include "relaylogic/attachment.hpp"
 #include "relaylogic/axis_circuit.hpp"
 #include "relaylogic/balancing_circuit.hpp"
-#include "relaylogic/conditions/condition_units.hpp"
 #include "relaylogic/faults.hpp"
-#include "relaylogic/press/sync_units.hpp"
-#include "relaylogic/tapping/tapping_units.hpp"
+#include "relaylogic/run_result.hpp"
 
 #include <csignal>
-#include <map>
 #include <memory>
 #include <optional>
 #include <queue>
 #include <vector>
 
 namespace parsons::relaylogic {
-
-struct AxisResult {
-    double counter_in = 0;                   // what absolute counter 104-110 reads
-    double real_in = 0;                      // where the part really is
-    double error_in = 0;                     // real - counter, the counter's wraps counted
-    std::int64_t impulses = 0;               // commutator 102 impulses the screw produced
-    std::int64_t lost_steps = 0;             // impulses the stepping switches could not follow
-    std::optional<double> fixture_angle_deg; // swivel and tilt
-    std::optional<double> last_stop_in;      // the stop of the last card read, if any
-    double slip_in = 0;                      // a slip fault: how far the part lags the screw
-    double screw_in = 0;                     // the main screw's travel (turns x lead)
-    int skipped_steps = 0;                   // skip faults that acted on its switches
-};
-
-struct CardTiming {
-    std::int64_t index = 0;
-    int number = -1;
-    double start_s = 0;
-    double end_s = 0;
-};
-
-// Press synchronisation (an addition after EP 0436887): the press and the job's cycles.
-struct PressResult {
-    int revolution = 0;          // the crank's revolution (1 = the first)
-    double crank_angle_deg = 0;  // where crank 21 stood at the last detector edge taken
-    int position_register = 0;   // register 14, detector pulses
-    bool press_stopped = false;  // motor 22 stopped (the profile's stop)
-    std::int64_t cycles = 0;     // how many times the job reached its loop card (M99)
-    std::int64_t loop_backs = 0; // how many times the reader went back
-    // Time between two loop-backs: the job's cycle (none with fewer than two loop-backs).
-    std::optional<double> mean_cycle_s;
-    std::optional<double> shortest_cycle_s;
-    std::optional<double> longest_cycle_s;
-    double waited_s = 0; // machine time cards spent held by position reader 60
-};
-
-struct RunResult {
-    bool completed = false;
-    std::int64_t cards_read = 0;
-    double machine_seconds = 0;
-    std::optional<StopInfo> stop;
-    std::array<AxisResult, cardreader::kAxisCount> axes{};
-    std::vector<CardTiming> cards;   // each card's machine time, if asked for (record_card_times)
-    std::vector<FaultEffect> faults; // what each injected fault did
-    // Condition cards (an addition): the actions acknowledged, and the tool in the spindle.
-    std::vector<ActionRecord> actions;
-    std::optional<int> tool_in_spindle;   // when the profile has a tool changer
-    std::optional<PressResult> press;     // when the profile has press synchronisation
-    std::optional<TappingResult> tapping; // when the profile has spindle synchronisation
-};
 
 // How the cabinet spends its time. Both give the same machine, event for event: impulse level
 // takes every commutator impulse one by one (the reference); fast-forward jumps analytically
@@ -113,6 +74,8 @@ public:
     RunResult run(cardreader::CardSource& deck);
 
     const Tracer& tracer() const { return tracer_; }
+    // The later systems this cabinet carries (none under parsons-1952).
+    const Attachments& attachments() const { return attachments_; }
 
     // Saved state. With keep_resume_point on, the machine is captured each time a card is
     // fed; resume_point() is the capture for the last card fed: the state a resumed run starts
@@ -125,6 +88,46 @@ public:
     // (set by a signal handler).
     void watch_interrupt(const volatile std::sig_atomic_t* flag) { interrupt_ = flag; }
 
+    // --- For attachments (relaylogic/attachment.hpp): what a later system may see and do ---
+    double now() const { return now_; }
+    Tracer& tracer() { return tracer_; }
+    MachineObserver* observer() const { return tracer_.observer(); }
+    const axes::MachineProfile& profile() const { return profile_; }
+    const cardreader::CardLayout& layout() const { return layout_; }
+    const std::vector<Fault>& faults() const { return faults_; }
+    bool keeps_tap_samples() const { return record_tap_samples_; }
+    bool jumping() const { return jumping_; }
+    // The card in the reader: its orders, its place in the run, its name in messages.
+    const cardreader::CardOrders& orders() const { return orders_; }
+    std::int64_t cards_read() const { return cards_read_; }
+    std::string card_name() const;
+    AxisCircuit& circuit(cardreader::Axis axis) {
+        return *circuits_.at(cardreader::axis_index(axis));
+    }
+    const std::vector<std::unique_ptr<AxisCircuit>>& circuits() const { return circuits_; }
+    // The machine stopped (master switch open), or the deck is not done and no stop came.
+    bool stopped() const { return stop_.has_value(); }
+    bool running() const { return !deck_finished_ && !stop_; }
+    // One of the attachment's events at time t, passed back to its on_event(code). A standing
+    // event outlives the card (the zeroizing circuit does not clear it).
+    void schedule(const Attachment& owner, double t, int code, bool standing = false);
+    void machine_stop(StopReason reason, std::optional<cardreader::Axis> axis,
+                      const std::string& message, const std::string& lamp);
+    // The axis's motor follows the circuits again; every comparer is read again.
+    void update_motor(AxisCircuit& c);
+    void update_motors();
+    void evaluate_all();
+    // An impulse of the axis due now is counted before anything else acts on it (true if one
+    // was due).
+    bool count_due_impulse(AxisCircuit& c);
+    // The card's last motion ended now (condition cards report it).
+    void motion_ended() { motion_end_s_ = now_; }
+    double motion_end_s() const { return motion_end_s_; }
+    // The card-number check expects `number` next (a loop card sends the reader back).
+    void expect_card_number(int number) { previous_number_ = (number + 9999) % 10000; }
+    // The zeroizing circuit runs now and feeds the next card.
+    void zeroize();
+
 private:
     enum class EventKind : std::uint8_t {
         feed,
@@ -135,83 +138,74 @@ private:
         read_complete,
         delay_258_release,
         shaft_step,
-        action_done,     // an action of ALE is done (axis: its channel)
-        reference_block, // press synchronisation: a reference block of Fig. 6 (any card)
-        sync_release,    // detector 61 conducted: 60's hold relay drops
-        pc_scan,         // spindle synchronisation: a scan of PC 130 (a tap card's tool call)
-        spindle_sample,  // spindle synchronisation: a sample of encoder interface 33
+        attachment, // an attachment's event (owner, code in axis)
     };
     struct Event {
         double t;
         std::uint64_t seq;
         EventKind kind;
+        std::uint8_t owner; // attachment: its place in attachments_
+        bool standing;      // attachment: outlives the card
         int axis;
         std::int64_t
             card; // the card it belongs to: the zeroizing circuit ends every pending action
         bool operator>(const Event& o) const { return t != o.t ? t > o.t : seq > o.seq; }
     };
 
+    // control_cabinet.cpp: the wiring and the event loop
     void schedule(double t, EventKind kind, int axis = -1);
     void handle(const Event& e);
+    double next_event_time();
+    void advance(double t, bool follows_motion);
+    bool clock_running() const { return has_clock_ && running(); }
+    bool attachment_holds() const {
+        for (const auto& a : attachments_) {
+            if (a->holding()) {
+                return true;
+            }
+        }
+        return false;
+    }
+    bool idle() const;
+    bool interrupted();
+    // control_cabinet_reader.cpp: the reader and the two banks
     void feed();
     void first_bank();
+    bool first_bank_refuses();
+    std::optional<cardreader::Card> next_card();
+    bool move_within_soft_limits();
     void relays_pick();
+    void pick_double_punches(AxisCircuit& c);
+    void second_bank();
     void read_complete();
-    double next_axis_event(std::size_t i) const;
-    void plan_quiet_stretches();
-    void catch_up(double t);
-    void run_impulses();
+    // control_cabinet_comparers.cpp: impulses, comparers, speed switch 236, fast-forward
+    bool live(const AxisCircuit& c) const;
     // Returns true if the impulse only counted (nothing scheduled, no other axis touched).
     bool on_impulse(AxisCircuit& c, const axes::Impulse& impulse);
     bool evaluate(AxisCircuit& c);
     bool fault_drops(const AxisCircuit& c);
+    [[gnu::cold]] void missed_impulse(AxisCircuit& c);
+    [[gnu::cold]] void travel_limit(AxisCircuit& c);
+    [[gnu::cold]] void soft_limit_watch(AxisCircuit& c);
+    double next_axis_event(std::size_t i) const;
+    void plan_quiet_stretches();
+    void catch_up(double t);
+    void run_impulses();
+    // control_cabinet_sequence.cpp: stops, stepping shaft 280, the sequence
+    void stop_axis(AxisCircuit& c);
+    void release_after_stop(const AxisCircuit& c);
+    void shaft_step();
+    void shaft_home();
+    void sequence_stall();
+    // control_cabinet_faults.cpp
     void apply_faults(cardreader::CardSource& deck);
     void report_faults();
     std::string slip_effect(const Fault& f, const AxisCircuit& c) const;
     HoldingRelayBank& bank_numbered(AxisCircuit& c, int numeral);
     SteppingSwitch& switch_numbered(AxisCircuit& c, int numeral);
-    [[gnu::cold]] void missed_impulse(AxisCircuit& c);
-    [[gnu::cold]] void travel_limit(AxisCircuit& c);
-    [[gnu::cold]] void soft_limit_watch(AxisCircuit& c);
-    bool move_within_soft_limits();
-    bool live(const AxisCircuit& c) const;
-    void stop_axis(AxisCircuit& c);
-    void release_after_stop(const AxisCircuit& c);
-    void shaft_step();
-    void shaft_home();
-    void zeroize();
-    void condition_card();
-    bool conditions_met(AxisCircuit& c);
-    void acknowledge(int channel);
-    void tell(int channel, ConditionEventKind kind);
-    std::optional<cardreader::Card> next_card();
-    void sync_card();
-    void loop_card();
-    void press_edges(double t);
-    void reference_block();
-    void sync_release();
-    bool press_running() const { return sync_.present() && !deck_finished_ && !stop_; }
-    bool waiting_on_press() const;
-    bool idle() const;
-    void schedule_block();
-    void resume_tape(std::int64_t taken);
-    nlohmann::json capture_sync() const;
-    void resume_sync(const nlohmann::json& j);
-    void tap_card();
-    void start_tool_call();
-    void pc_scan();
-    void spindle_sample();
-    void spindle_edges(double t);
-    void tap_counting_sense(AxisCircuit& c, int direction);
-    void update_motors();
-    void update_motor(AxisCircuit& c);
-    void machine_stop(StopReason reason, std::optional<cardreader::Axis> axis,
-                      const std::string& message, const std::string& lamp);
-    void sequence_stall();
+    // control_cabinet_state.cpp
     RunResult result() const;
     nlohmann::json capture() const;
-    bool interrupted();
-    std::string card_name() const;
 
     axes::MachineProfile profile_;
     const cardreader::CardLayout& layout_;
@@ -230,6 +224,7 @@ private:
 
     std::priority_queue<Event, std::vector<Event>, std::greater<>> queue_;
     std::uint64_t seq_ = 0;
+    int standing_queued_ = 0; // standing events in the queue (an attachment's clock)
     // The latest delay-258 release after a stop that was not queued (no observer), or -inf.
     double unqueued_release_s_ = -axes::kNever;
     bool keep_resume_point_ = false;
@@ -251,39 +246,16 @@ private:
     bool record_tap_samples_ = false;
     std::vector<CardTiming> timings_;
     std::optional<StopInfo> stop_;
-    // Condition cards (an addition): the seed's units, the card being a condition card, the
-    // zeroizing circuit waiting for acknowledgements, when this card's last axis stopped.
-    ConditionUnits conditions_;
-    bool condition_card_ = false;
-    bool zeroize_waiting_ = false;
-    double motion_end_s_ = 0;
-    std::vector<ActionRecord> actions_;
-    // Press synchronisation (an addition): the units, the card being a sync card, the cards the
-    // reader has taken (a loop card sends it back among them, as round a ribbon made into an
-    // endless loop), the reference blocks, fast-forward's quiet detector edges.
-    SyncUnits sync_;
-    bool sync_card_ = false;
-    std::vector<cardreader::Card> tape_;
-    std::vector<int> tape_numbers_;
-    std::size_t replay_ = 0;      // the next card comes from tape_[replay_] if within it
-    std::size_t tape_index_ = 0;  // the card in the reader
-    std::int64_t deck_taken_ = 0; // cards taken from the deck itself
-    std::map<std::size_t, int> loops_left_;
-    std::int64_t cycles_ = 0;
-    std::int64_t loop_backs_ = 0;
-    double last_loop_back_s_ = 0;
-    double first_loop_back_s_ = 0;
-    double shortest_cycle_s_ = 0;
-    double longest_cycle_s_ = 0;
-    double waited_s_ = 0;
-    std::int64_t block_ = 1;       // the reference block queued next: at block_ x speed_sample_s
-    int blocks_queued_ = 0;        // reference blocks in the queue (0 or 1)
-    std::int64_t press_quiet_ = 0; // fast-forward: edges that only count, ahead of the press
-    double press_quiet_end_ = axes::kNever; // ... and when the press's next event that matters is
+    double motion_end_s_ = 0; // when this card's last axis stopped
 
-    // Spindle synchronisation (an addition): the units, the card being a tap card.
-    TappingUnits tapping_;
-    bool tap_card_ = false;
+    // The later systems: their hooks are called in this order. own_card_: the attachment whose
+    // kind of card is in the reader (none for a motion card); supplier_: the one the reader
+    // takes its cards through, if any; has_clock_: one turns a clock of its own (the press).
+    Attachments attachments_;
+    Attachment* own_card_ = nullptr;
+    Attachment* supplier_ = nullptr;
+    bool has_clock_ = false;
+    std::vector<const CounterWatch*> counter_watches_;
 
     SignalId reader_card_;
     SignalId reader_feeding_;

@@ -27,7 +27,7 @@ void ControlCabinet::plan_quiet_stretches() {
     QuietConditions q;
     q.min_interval_s = 1.0 / profile_.max_stepping_rate_per_s;
     q.machine_stopped = stop_.has_value();
-    q.prg = conditions_.present() ? &conditions_.prg() : nullptr;
+    q.watches = counter_watches_;
     for (std::size_t i = 0; i < circuits_.size(); ++i) {
         AxisCircuit& c = *circuits_[i];
         quiet_.at(i) = 0;
@@ -62,23 +62,8 @@ void ControlCabinet::plan_quiet_stretches() {
             quiet_end_.at(i) = after != axes::kNever ? after : c.plant.phase_end_time();
         }
     }
-    // The press: every edge of this segment of constant crank speed only counts, but the one
-    // that brings register 14 onto a held card's angle R.
-    press_quiet_ = 0;
-    if (press_running()) {
-        const axes::Press& press = sync_.press();
-        press_quiet_end_ = press.next_event_time();
-        if (press.next_event_is_pulse()) {
-            const std::int64_t in_segment = press.pulses_by(axes::kNever);
-            const std::int64_t quiet = sync_.quiet_edges(in_segment);
-            if (quiet > 0) {
-                press_quiet_ = quiet;
-                // The edge after the stretch, or the stretch's last edge when the segment ends
-                // with it (the segment's end then comes up as the press's next event).
-                press_quiet_end_ =
-                    quiet < in_segment ? press.pulse_time(quiet + 1) : press.pulse_time(quiet);
-            }
-        }
+    for (const auto& a : attachments_) {
+        a->plan_quiet(*this); // e.g. the press's detector edges that only count
     }
 }
 
@@ -91,12 +76,8 @@ void ControlCabinet::catch_up(double t) {
         AxisCircuit& c = *circuits_[i];
         const std::int64_t n = std::min(quiet_.at(i), c.plant.impulses_by(t));
         if (n > 0) {
-            if (tapping_.present() && tapping_.feeding(c.axis) &&
-                c.direction != c.plant.moving_direction()) {
-                // Reversing control 214 follows the drive at the first impulse of the jump.
-                tracer_.set_time(c.plant.impulse_time(1));
-                tap_counting_sense(c, c.plant.moving_direction());
-                tracer_.set_time(t);
+            for (const auto& a : attachments_) {
+                a->before_jump(*this, c, t);
             }
             jump_quiet_impulses(c, n);
             quiet_.at(i) -= n;
@@ -110,8 +91,10 @@ void ControlCabinet::catch_up(double t) {
 // does more than count.
 void ControlCabinet::run_impulses() {
     double queued = queue_.empty() ? axes::kNever : queue_.top().t;
-    if (press_running()) {
-        queued = std::min(queued, sync_.press().next_event_time()); // the press's edge first
+    if (clock_running()) {
+        for (const auto& a : attachments_) {
+            queued = std::min(queued, a->next_clock_event(*this)); // the press's edge first
+        }
     }
     const std::size_t n = circuits_.size();
     while (true) {
@@ -161,7 +144,7 @@ void ControlCabinet::run_impulses() {
 bool ControlCabinet::live(const AxisCircuit& c) const {
     return balancing_.master_switch_closed() && reading_complete_ && !c.stopped &&
            !c.speed_switch.off() && c.sequence_switch.closed(shaft_.position()) &&
-           !(sync_.present() && sync_.scp().holding());
+           !attachment_holds();
 }
 
 bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
@@ -173,8 +156,8 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     c.show_contacts(); // the contacts, then the switches they step
     // The patent's answer to stepping-rate loss (col. 8), a profile option: while the speed
     // switch stands on speed 1, count only every hundredth until the first slow-down.
-    if (tapping_.present() && tapping_.feeding(c.axis) && !stop_) {
-        tap_counting_sense(c, impulse.direction);
+    for (const auto& a : attachments_) {
+        a->before_count(*this, c, impulse.direction);
     }
     const bool hundredths_only =
         profile_.count_hundredths_at_speed_1 && c.speed_switch.position() == 1 && !stop_;
@@ -204,7 +187,12 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
         travel_limit(c);
         return false;
     }
-    bool quiet = !(stepped && conditions_.watching(c.axis) && conditions_met(c));
+    bool quiet = true;
+    if (stepped) {
+        for (const auto& a : attachments_) {
+            quiet = !a->after_count(*this, c) && quiet;
+        }
+    }
     c.compare();
     if (!c.absolute_conducting && !c.incremental_conducting) {
         c.speed_switch.equality_left(now_);
@@ -304,27 +292,32 @@ bool ControlCabinet::evaluate(AxisCircuit& c) {
 }
 
 void ControlCabinet::update_motor(AxisCircuit& c) {
-    const bool on = live(c) && !conditions_.held(c.axis); // a dwell opens the hold relay
-    if (auto impulse = c.plant.advance_to(now_)) {
-        on_impulse(c, *impulse); // never let an impulse due now go uncounted
+    bool on = live(c);
+    for (const auto& a : attachments_) {
+        on = on && !a->holds_axis(c.axis); // e.g. a dwell opens the hold relay
     }
-    if (tapping_.present() && tapping_.feeding(c.axis) && !stop_) {
-        // A tap: the synchronous operation control sets the follower drive.
-        const FeedCommand f = tapping_.feed();
-        c.plant.command_follow(f.direction, f.speed_in_per_s,
-                               profile_.sync_drive.acceleration_in_per_s2);
-        c.set_powered(true);
-        return;
+    count_due_impulse(c); // never let an impulse due now go uncounted
+    for (const auto& a : attachments_) {
+        if (a->drive(*this, c, on)) {
+            return; // e.g. a tap's follower drive, or speed 1 following the press
+        }
     }
-    if (on && sync_.present() && c.speed_switch.position() == 1 &&
-        sync_.scp().speed_synced(c.axis)) {
-        // Speed synchronisation: speed 1 is the follower drive at processor 63's speed.
-        c.plant.command_follow(c.direction, sync_.scp().output(c.axis),
-                               profile_.sync_drive.acceleration_in_per_s2);
-    } else {
-        c.plant.command(c.direction, on ? c.speed_switch.position() : 0);
-    }
+    c.plant.command(c.direction, on ? c.speed_switch.position() : 0);
     c.set_powered(on);
+}
+
+bool ControlCabinet::count_due_impulse(AxisCircuit& c) {
+    if (auto impulse = c.plant.advance_to(now_)) {
+        on_impulse(c, *impulse);
+        return true;
+    }
+    return false;
+}
+
+void ControlCabinet::evaluate_all() {
+    for (auto& c : circuits_) {
+        evaluate(*c);
+    }
 }
 
 void ControlCabinet::update_motors() {

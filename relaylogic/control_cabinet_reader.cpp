@@ -28,32 +28,17 @@ void ControlCabinet::feed() {
         tracer_.set(channel, 0);
     }
     card_ = next_card();
-    condition_card_ = false;
-    sync_card_ = false;
-    tap_card_ = false;
-    if (!card_ && sync_.present() && sync_.scp().pending()) {
-        const SynchronisationProcessor& scp = sync_.scp();
-        machine_stop(StopReason::sync_refused, std::nullopt,
-                     fmt::format("card {} (number {:04}): a sync card with no motion card after "
-                                 "it: the deck ends (its orders are for the motion card that "
-                                 "follows it; sync cards are an addition after EP 0436887, "
-                                 "Mitsubishi)",
-                                 scp.pending_card(), scp.pending_number()),
-                     "sync lamp (an addition)");
-        return;
-    }
-    if (!card_ && conditions_.stored()) {
-        const BufferPair& p =
-            conditions_.buffer().pair(conditions_.buffer().first(PairState::stored));
-        machine_stop(StopReason::condition_refused, std::nullopt,
-                     fmt::format("card {} (number {:04}): a condition card with no motion card "
-                                 "after it: the deck ends (condition cards stand before the "
-                                 "motion card they watch, EP 0640901 claim 4)",
-                                 p.card, p.card_number),
-                     "condition lamp (an addition)");
-        return;
+    own_card_ = nullptr;
+    if (stop_) {
+        return; // the attachment the reader takes its cards through refused
     }
     if (!card_) {
+        for (const auto& a : attachments_) {
+            a->deck_ended(*this);
+            if (stop_) {
+                return;
+            }
+        }
         deck_finished_ = true;
         tracer_.set(reader_feeding_, 0);
         return;
@@ -106,71 +91,52 @@ void ControlCabinet::first_bank() {
     }
     previous_number_ = orders_.number;
     tracer_.set(card_number_check_, static_cast<std::uint32_t>(orders_.number));
-    if (sync_.present() && tape_index_ < tape_numbers_.size()) {
-        tape_numbers_.at(tape_index_) = orders_.number;
-    }
-    if (orders_.kind == cardreader::CardKind::condition) {
-        condition_card();
-        return;
-    }
-    if (orders_.kind == cardreader::CardKind::sync) {
-        sync_card();
-        return;
-    }
-    if (orders_.kind == cardreader::CardKind::tap) {
-        tap_card();
-        return;
-    }
-    if (sync_.present() && sync_.scp().pending()) {
-        // Speed synchronisation of an axis this card does not move cannot be followed.
-        const SynchronisationProcessor& scp = sync_.scp();
-        for (Axis a : cardreader::kAxes) {
-            if (scp.pending_order().travel_per_pulse.at(cardreader::axis_index(a)) &&
-                orders_.axis(a).check == 0) {
-                machine_stop(StopReason::sync_refused, a,
-                             fmt::format("{}: sync card {} (number {:04}) orders speed "
-                                         "synchronisation of the {} axis, which this card does "
-                                         "not move (check 0) (sync cards are an addition after "
-                                         "EP 0436887, Mitsubishi)",
-                                         card_name(), scp.pending_card(), scp.pending_number(),
-                                         axis_name(a)),
-                             "sync lamp (an addition)");
-                return;
-            }
-        }
-    }
-    if (auto refusal = conditions_.refuse_unmoved(orders_, cards_read_)) {
-        machine_stop(StopReason::condition_refused, std::nullopt, *refusal,
-                     "condition lamp (an addition)");
-        return;
-    }
-    if (!move_within_soft_limits()) {
+    if (first_bank_refuses()) {
         return;
     }
     // The brushes have sensed the card; the holding relays pick a relay's operate time later.
     schedule(now_ + profile_.relay_operate_s, EventKind::relays_pick);
 }
 
-// The reader takes the next card: from the deck, or, after a loop card sent it back, again
-// from the cards it has taken (press synchronisation keeps them, as a ribbon made into an
-// endless loop keeps its cards).
+// After the card-number check: a later kind of card goes to its attachment (none moves an
+// axis by the 1952 columns); a motion card is checked before anything moves. True if the
+// card goes no further here.
+bool ControlCabinet::first_bank_refuses() {
+    for (const auto& a : attachments_) {
+        a->sensed(*this);
+        if (stop_) {
+            return true;
+        }
+    }
+    if (orders_.kind != cardreader::CardKind::motion) {
+        for (const auto& a : attachments_) {
+            if (a->card_kind() == orders_.kind) {
+                own_card_ = a.get();
+            }
+        }
+        if (own_card_ == nullptr) {
+            refuse_unattached_card(*this, orders_.kind); // the registry words the refusal
+        } else {
+            own_card_->read_card(*this);
+        }
+        return true;
+    }
+    for (const auto& a : attachments_) {
+        a->check_motion_card(*this);
+        if (stop_) {
+            return true;
+        }
+    }
+    return !move_within_soft_limits();
+}
+
+// The reader takes the next card: from the deck, or through the attachment that keeps the
+// cards it has taken (press synchronisation: a loop card sends the reader back among them).
 std::optional<cardreader::Card> ControlCabinet::next_card() {
-    if (!sync_.present()) {
+    if (supplier_ == nullptr) {
         return deck_->next();
     }
-    if (replay_ < tape_.size()) {
-        tape_index_ = replay_++;
-        return tape_.at(tape_index_);
-    }
-    std::optional<cardreader::Card> card = deck_->next();
-    if (card) {
-        ++deck_taken_;
-        tape_.push_back(*card);
-        tape_numbers_.push_back(-1); // known once the first bank has sensed it
-        tape_index_ = tape_.size() - 1;
-        replay_ = tape_.size();
-    }
-    return card;
+    return supplier_->next_card(*this, *deck_);
 }
 
 // The movement range, judged on the card before anything moves: where would each axis end
@@ -245,42 +211,43 @@ void ControlCabinet::relays_pick() {
         }
         c->compare();
     }
-    if (conditions_.present()) {
-        conditions_.spindle_from_card(orders_.spindle, now_);
-        conditions_.arm(cards_read_); // PFR supplies each stored condition to PRG
+    for (const auto& a : attachments_) {
+        a->relays_picked(*this);
     }
-    if (sync_.present()) {
-        sync_.scp().arm(); // a sync card's orders into readers 60 and 62
+}
+
+// The second bank: the speed columns step each speed switch 236 through stepping device 252,
+// one step a stepping time (a card of a later kind moves no axis by them).
+void ControlCabinet::second_bank() {
+    if (own_card_ != nullptr) {
+        return;
+    }
+    for (std::size_t i = 0; i < circuits_.size(); ++i) {
+        for (int k = 0; k < circuits_[i]->order.start_speed; ++k) {
+            schedule(now_ + k * profile_.stepping_switch_step_s, EventKind::speed_step_252,
+                     static_cast<int>(i));
+        }
     }
 }
 
 void ControlCabinet::read_complete() {
     reading_complete_ = true;
     tracer_.set(reader_feeding_, 0);
-    if (tap_card_) {
+    if (own_card_ != nullptr) {
         reading_complete_ = false; // no axis moves by the 1952 columns
-        start_tool_call();
-        return;
-    }
-    if (condition_card_ || sync_card_) {
-        reading_complete_ = false;
-        if (sync_card_ && orders_.sync.loop) {
-            loop_card();
-            if (stop_) {
-                return;
-            }
+        if (own_card_->card_read(*this) && !stop_) {
+            tracer_.set(channel_304_, 1); // nothing to move: the reader indexes the next card
+            schedule(now_, EventKind::feed);
         }
-        tracer_.set(channel_304_, 1); // nothing to move: the reader indexes the next card
-        schedule(now_, EventKind::feed);
         return;
     }
-    if (sync_.present() && sync_.scp().hold_unless_at(sync_.position_register().value(), now_)) {
-        return; // position reader 60 holds the card's motion until the crank reaches R
+    for (const auto& a : attachments_) {
+        if (a->holds_motion(*this)) {
+            return; // e.g. position reader 60 holds the card's motion until the crank reaches R
+        }
     }
     update_motors();
-    for (auto& c : circuits_) {
-        evaluate(*c);
-    }
+    evaluate_all();
 }
 
 } // namespace parsons::relaylogic

@@ -86,41 +86,17 @@ void ControlCabinet::shaft_step() {
         schedule(now_ + profile_.sequence_shaft_step_s, EventKind::shaft_step);
     }
     update_motors();
-    for (auto& c : circuits_) {
-        evaluate(*c);
-    }
+    evaluate_all();
 }
 
-// Members 282 home past contact 290. With condition cards (an addition), a condition still
-// armed was never met on this card: the machine stops; and the zeroizing circuit waits until
-// tripping unit ALE has every action acknowledged (EP 0640901 claim 2).
+// Members 282 home past contact 290: the zeroizing circuit, unless an attachment stops the
+// machine or holds zeroizing (condition cards: an action not yet acknowledged, EP 0640901
+// claim 2).
 void ControlCabinet::shaft_home() {
-    const int unmet = conditions_.first_unmet();
-    if (unmet >= 0) {
-        const BufferPair& p = conditions_.buffer().pair(unmet);
-        const AxisCircuit& c = *circuits_.at(cardreader::axis_index(p.condition.axis));
-        machine_stop(
-            StopReason::condition_not_met, p.condition.axis,
-            fmt::format("{}: event {} (condition card {}) was not met: the {} axis "
-                        "never passed {} {} before the card's last axis stopped (its "
-                        "counter reads {}; condition cards are an addition after "
-                        "EP 0640901, Siemens)",
-                        card_name(), p.condition.event, p.card, axis_name(p.condition.axis),
-                        format_inches(p.condition.position),
-                        p.condition.sense == cardreader::PassingSense::either
-                            ? std::string("in either sense")
-                            : fmt::format("counting {}",
-                                          p.condition.sense == cardreader::PassingSense::forward
-                                              ? "up (forward)"
-                                              : "down (reverse)"),
-                        inches(c.absolute_counter.value())),
-            "condition lamp (monitoring unit PRG; an addition)");
-        return;
-    }
-    if (!conditions_.all_acknowledged()) {
-        zeroize_waiting_ = true;
-        conditions_.set_waiting(true);
-        return;
+    for (const auto& a : attachments_) {
+        if (!a->zeroizing_may_start(*this)) {
+            return;
+        }
     }
     zeroize();
 }
@@ -150,11 +126,10 @@ void ControlCabinet::machine_stop(StopReason reason, std::optional<Axis> axis,
         timings_.back().end_s = now_;
     }
     queue_ = {};
-    blocks_queued_ = 0;
+    standing_queued_ = 0;
     unqueued_release_s_ = -axes::kNever;
-    if (tapping_.present()) {
-        spindle_edges(now_);
-        tapping_.halt(); // motor 27 runs down to rest; the feed is the 1952 motor's again
+    for (const auto& a : attachments_) {
+        a->machine_stopped(*this); // e.g. the spindle's motor 27 runs down to rest
     }
     update_motors();
     if (tracer_.observer() != nullptr) {

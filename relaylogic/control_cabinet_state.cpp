@@ -25,23 +25,24 @@ nlohmann::json ControlCabinet::capture() const {
     for (const FaultEffect& e : effects_) {
         faults.push_back({{"fault", e.spec}, {"acted", e.acted}, {"effect", e.effect}});
     }
-    return nlohmann::json{{"machine_seconds", exact(now_)},
-                          {"event_sequence", seq_},
-                          {"cards_read", cards_read_},
-                          {"card_number_check", previous_number_ ? nlohmann::json(*previous_number_)
-                                                                 : nlohmann::json(nullptr)},
-                          {"last_card_number", orders_.number},
-                          {"spindle", static_cast<int>(orders_.spindle)},
-                          {"last_sequence_position", last_sequence_position_},
-                          {"axes", axes},
-                          {"stepping_shaft_280", shaft_.save()},
-                          {"signals", tracer_.save()},
-                          {"card_times", times},
-                          {"faults", faults},
-                          {"conditions", conditions_.save()},
-                          {"actions", actions_to_json(actions_)},
-                          {"sync", capture_sync()},
-                          {"tapping", tapping_.present() ? tapping_.save() : nlohmann::json()}};
+    nlohmann::json state{{"machine_seconds", exact(now_)},
+                         {"event_sequence", seq_},
+                         {"cards_read", cards_read_},
+                         {"card_number_check", previous_number_ ? nlohmann::json(*previous_number_)
+                                                                : nlohmann::json(nullptr)},
+                         {"last_card_number", orders_.number},
+                         {"spindle", static_cast<int>(orders_.spindle)},
+                         {"last_sequence_position", last_sequence_position_},
+                         {"axes", axes},
+                         {"stepping_shaft_280", shaft_.save()},
+                         {"signals", tracer_.save()},
+                         {"card_times", times},
+                         {"faults", faults}};
+    for (const auto& a : attachments_) {
+        a->save(*this, state);
+    }
+    save_absent(attachments_, state); // the later systems this machine does not have
+    return state;
 }
 
 void ControlCabinet::resume(const nlohmann::json& j) {
@@ -68,19 +69,7 @@ void ControlCabinet::resume(const nlohmann::json& j) {
         timings_.push_back(CardTiming{t.at(0).get<std::int64_t>(), t.at(1).get<int>(),
                                       exact(t.at(2)), exact(t.at(3))});
     }
-    conditions_.load(j.contains("conditions") ? j.at("conditions") : nlohmann::json());
-    actions_ = actions_from_json(j.contains("actions") ? j.at("actions") : nlohmann::json::array());
-    resume_sync(j.contains("sync") ? j.at("sync") : nlohmann::json());
-    const bool saved_tapping = j.contains("tapping") && !j.at("tapping").is_null();
-    if (saved_tapping != tapping_.present()) {
-        throw axes::StateError(saved_tapping ? "the saved state has spindle synchronisation and "
-                                               "this profile has none"
-                                             : "this profile has spindle synchronisation and the "
-                                               "saved state has none");
-    }
-    if (saved_tapping) {
-        tapping_.load(j.at("tapping"));
-    }
+    load_all(*this, attachments_, j); // and those it does not have: the state must agree
     effects_.clear();
     for (const auto& e : member(j, "faults")) {
         effects_.push_back(FaultEffect{read<std::string>(e, "fault"), read<bool>(e, "acted"),
@@ -103,36 +92,8 @@ RunResult ControlCabinet::result() const {
     r.stop = stop_;
     r.cards = timings_;
     r.faults = effects_;
-    r.actions = actions_;
-    if (conditions_.present()) {
-        r.tool_in_spindle = conditions_.ale().tool_in_spindle();
-    }
-    if (sync_.present()) {
-        PressResult p;
-        p.revolution = sync_.press().revolution();
-        p.crank_angle_deg = sync_.press().angle_deg();
-        p.position_register = sync_.position_register().value();
-        p.press_stopped = sync_.press().stopped();
-        p.cycles = cycles_;
-        p.loop_backs = loop_backs_;
-        if (loop_backs_ >= 2) {
-            p.mean_cycle_s =
-                (last_loop_back_s_ - first_loop_back_s_) / static_cast<double>(loop_backs_ - 1);
-            p.shortest_cycle_s = shortest_cycle_s_;
-            p.longest_cycle_s = longest_cycle_s_;
-        }
-        p.waited_s = waited_s_;
-        r.press = p;
-    }
-    if (tapping_.present()) {
-        TappingResult tr;
-        tr.tool_on_spindle = tapping_.spindle().tool();
-        tr.ratio_in_memory = tapping_.memory().ratio();
-        tr.head_exchanges = tapping_.pc().exchanges();
-        tr.transfers = tapping_.pc().transfers();
-        tr.ratios_received = tapping_.memory().received();
-        tr.holes = tapping_.holes();
-        r.tapping = std::move(tr);
+    for (const auto& a : attachments_) {
+        a->add_to(r);
     }
     for (std::size_t i = 0; i < circuits_.size(); ++i) {
         const AxisCircuit& c = *circuits_[i];

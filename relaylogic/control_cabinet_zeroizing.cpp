@@ -33,25 +33,8 @@ void ControlCabinet::zeroize() {
     }
     tracer_.set(channel_302_, 1); // resets device 288, closing circuit 274
     shaft_.reset();
-    if (conditions_.present()) {
-        const std::size_t first = actions_.size();
-        for (int k = 0; k < InternalBuffer::kChannels; ++k) {
-            const BufferPair& p = conditions_.buffer().pair(k);
-            if (p.state == PairState::acknowledged) {
-                actions_.push_back(
-                    ActionRecord{p.condition.event, p.card, cards_read_, orders_.number,
-                                 p.condition.axis, p.condition.position, p.action.action,
-                                 p.action.parameter, p.tripped_s, p.acknowledged_s, motion_end_s_});
-            }
-        }
-        // The card's actions in the order they were tripped (channel order at one instant).
-        std::stable_sort(
-            actions_.begin() + static_cast<std::ptrdiff_t>(first), actions_.end(),
-            [](const ActionRecord& a, const ActionRecord& b) { return a.tripped_s < b.tripped_s; });
-        conditions_.zeroize(); // channel 294 clears PFR and PRG too
-    }
-    if (sync_.present()) {
-        sync_.scp().clear(); // and readers 60 and 62
+    for (const auto& a : attachments_) {
+        a->zeroized(*this); // e.g. channel 294 clears PFR and PRG too
     }
     tracer_.set(channel_304_, 1); // indexes card reader 134 to the next card
     reading_complete_ = false;

@@ -72,10 +72,10 @@ std::optional<std::int64_t> least_over_matches(const std::array<unsigned, 4>& al
 }
 
 // Absolute comparer 122': the first coming impulse after which it conducts, or kForever.
-// Returns nullopt when the banks hold too many numbers to search. With `prg`, the same for
-// the monitoring unit's channels on this axis instead (each holds one position).
+// Returns nullopt when the banks hold too many numbers to search. With `watch`, the same for
+// the readings it watches on this axis instead (condition cards: one a channel).
 std::optional<std::int64_t> first_absolute_equality(const AxisCircuit& c,
-                                                    const MonitoringUnit* prg = nullptr) {
+                                                    const CounterWatch* watch = nullptr) {
     const std::int64_t k0 = c.plant.commutator_index();
     const int d = c.plant.moving_direction();
     const int sigma = c.direction * d;
@@ -96,10 +96,11 @@ std::optional<std::int64_t> first_absolute_equality(const AxisCircuit& c,
         }
         return distance(w);
     };
-    if (prg != nullptr) {
+    if (watch != nullptr) {
         std::int64_t first = kForever;
-        prg->each_watched(c.axis, c.direction,
-                          [&](int position) { first = std::min(first, until_reading(position)); });
+        watch->each_watched(c.axis, c.direction, [&](int position) {
+            first = std::min(first, until_reading(position));
+        });
         return first;
     }
     if (c.absolute_storage.separate_registers()) {
@@ -188,8 +189,10 @@ std::int64_t quiet_impulses(const AxisCircuit& c, const QuietConditions& q) {
         return 0;
     }
     first_event = std::min({first_event, *absolute, *incremental});
-    if (q.prg != nullptr && !q.machine_stopped && q.prg->watching(c.axis)) {
-        first_event = std::min(first_event, *first_absolute_equality(c, q.prg));
+    for (const CounterWatch* watch : q.watches) {
+        if (!q.machine_stopped && watch->watching(c.axis)) {
+            first_event = std::min(first_event, *first_absolute_equality(c, watch));
+        }
     }
     return first_event == kForever ? kForever : first_event - 1;
 }

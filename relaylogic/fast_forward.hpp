@@ -20,9 +20,24 @@
 #pragma once
 
 #include "relaylogic/axis_circuit.hpp"
-#include "relaylogic/conditions/monitoring_unit.hpp"
+
+#include <functional>
+#include <span>
 
 namespace parsons::relaylogic {
+
+// Counter readings an attachment watches (condition cards' monitoring unit PRG): a quiet
+// stretch ends at the impulse that steps the axis's absolute counter onto one of them.
+class CounterWatch {
+public:
+    virtual bool watching(cardreader::Axis axis) const = 0;
+    // Each reading watched on the axis while its counter counts in `direction` (+1 up, -1 down).
+    virtual void each_watched(cardreader::Axis axis, int direction,
+                              const std::function<void(int)>& f) const = 0;
+
+protected:
+    ~CounterWatch() = default;
+};
 
 struct QuietConditions {
     double min_interval_s = 0;           // 1 / the stepping switches' fastest rate
@@ -31,9 +46,9 @@ struct QuietConditions {
     bool counting_hundredths = false;    // the profile's hundredths-only counting is in force
     bool watching_soft_limits = false;   // the axis is powered and has a movement range
     bool faulty_switch_ahead = false;    // a skip fault waits on one of the axis's switches
-    // Monitoring unit PRG (condition cards, an addition): its armed positions end a stretch
-    // at the impulse that steps the counter onto one of them. Null when there is none.
-    const MonitoringUnit* prg = nullptr;
+    // The attachments' counter watches (condition cards' monitoring unit PRG, an addition):
+    // their readings end a stretch at the impulse that steps the counter onto one of them.
+    std::span<const CounterWatch* const> watches;
 };
 
 // The control's soft-limit watch (Mitsubishi's movement range): with the part at x after an

@@ -1,8 +1,9 @@
 // The condition units of EP 0640901 (Siemens) wired into the cabinet: converter UMS
 // and internal buffer PFR (relaylogic/conditions/internal_buffer.hpp), monitoring unit PRG
-// (relaylogic/conditions/monitoring_unit.hpp) and tripping unit ALE (relaylogic/conditions/tripping_unit.hpp). An
-// addition, not in the 1952 patent: present only when the profile allows condition cards
-// (parsons-extended); otherwise the cabinet has none of these relays and traces none of them.
+// (relaylogic/conditions/monitoring_unit.hpp) and tripping unit ALE
+// (relaylogic/conditions/tripping_unit.hpp). An addition, not in the 1952 patent: present only when
+// the profile allows condition cards (parsons-extended); otherwise the cabinet has none of these
+// relays and traces none of them.
 //
 // The seed's sequence, as the cabinet runs it (claims 1, 2, 4):
 //   condition card read ..... UMS enters each record into PFR as a condition entry and an

@@ -1,73 +1,176 @@
-// Control cabinet 52 with the condition cards of EP 0640901 (Siemens): converter UMS, buffer
-// PFR, monitoring unit PRG and tripping unit ALE on the card cycle. An addition, not in the
-// 1952 patent.
+// Condition cards (an addition after EP 0640901, Siemens) on the card cycle of control cabinet
+// 52: converter UMS, buffer PFR, monitoring unit PRG and tripping unit ALE. Not in the 1952
+// patent.
+#include "relaylogic/conditions/conditions_attachment.hpp"
+
 #include "relaylogic/control_cabinet.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace parsons::relaylogic {
 
-using cardreader::Axis;
+using cardreader::axis_name;
+using cardreader::format_inches;
 
-// A condition card (an addition after EP 0640901): no axis moves; converter UMS enters its
-// records into buffer PFR, and at the end of the card cycle channel 304 indexes the next card.
-void ControlCabinet::condition_card() {
-    condition_card_ = true;
-    if (!conditions_.present()) {
-        machine_stop(StopReason::condition_refused, std::nullopt,
-                     fmt::format("{}, column {}: a condition card (an addition after EP 0640901, "
-                                 "Siemens): profile {} has no condition units; the built-in "
-                                 "profile parsons-extended allows them",
-                                 card_name(), layout_.extension_column, profile_.name),
-                     "card reader 134 check lamp (an addition)");
+ConditionsAttachment::ConditionsAttachment(Tracer& tracer, const axes::MachineProfile& profile) {
+    units_.install(tracer, profile);
+}
+
+// A condition card with no motion card after it: the deck ends.
+void ConditionsAttachment::deck_ended(ControlCabinet& cab) {
+    if (!units_.stored()) {
         return;
     }
-    if (auto refusal = conditions_.convert(orders_, cards_read_)) {
-        machine_stop(StopReason::condition_refused, std::nullopt, *refusal,
+    const BufferPair& p = units_.buffer().pair(units_.buffer().first(PairState::stored));
+    cab.machine_stop(StopReason::condition_refused, std::nullopt,
+                     fmt::format("card {} (number {:04}): a condition card with no motion card "
+                                 "after it: the deck ends (condition cards stand before the "
+                                 "motion card they watch, EP 0640901 claim 4)",
+                                 p.card, p.card_number),
                      "condition lamp (an addition)");
+}
+
+// A condition card: no axis moves; converter UMS enters its records into buffer PFR, and at
+// the end of the card cycle channel 304 indexes the next card.
+void ConditionsAttachment::read_card(ControlCabinet& cab) {
+    if (auto refusal = units_.convert(cab.orders(), cab.cards_read())) {
+        cab.machine_stop(StopReason::condition_refused, std::nullopt, *refusal,
+                         "condition lamp (an addition)");
     }
+}
+
+void ConditionsAttachment::check_motion_card(ControlCabinet& cab) {
+    if (auto refusal = units_.refuse_unmoved(cab.orders(), cab.cards_read())) {
+        cab.machine_stop(StopReason::condition_refused, std::nullopt, *refusal,
+                         "condition lamp (an addition)");
+    }
+}
+
+void ConditionsAttachment::relays_picked(ControlCabinet& cab) {
+    units_.spindle_from_card(cab.orders().spindle, cab.now());
+    units_.arm(cab.cards_read()); // PFR supplies each stored condition to PRG
 }
 
 // Monitoring unit PRG: the axis's counter stepped; each channel whose circuit closed reports its
 // identifier, and tripping unit ALE initiates that channel's action (EP 0640901 claim 1).
-bool ControlCabinet::conditions_met(AxisCircuit& c) {
-    const unsigned met =
-        conditions_.on_counter_step(c.axis, c.absolute_counter.digits(), c.direction);
+bool ConditionsAttachment::after_count(ControlCabinet& cab, AxisCircuit& c) {
+    if (!units_.watching(c.axis)) {
+        return false;
+    }
+    const unsigned met = units_.on_counter_step(c.axis, c.absolute_counter.digits(), c.direction);
     for (int k = 0; k < InternalBuffer::kChannels; ++k) {
         if ((met >> k & 1U) == 0) {
             continue;
         }
-        const double done = conditions_.trip(k, now_);
-        tell(k, ConditionEventKind::met);
-        tell(k, ConditionEventKind::action_started);
-        schedule(done, EventKind::action_done, k);
-        const ActionEntry& a = conditions_.buffer().pair(k).action;
-        if (a.action == cardreader::ActionKind::dwell) {
-            update_motor(*circuits_.at(static_cast<std::size_t>(a.parameter - 1)));
-        }
+        const double done = units_.trip(k, cab.now());
+        tell(cab, k, ConditionEventKind::met);
+        tell(cab, k, ConditionEventKind::action_started);
+        cab.schedule(*this, done, k); // the acknowledgement, when the action is done
+        dwell_follows(cab, k);
     }
     return met != 0;
 }
 
-void ControlCabinet::acknowledge(int channel) {
-    conditions_.acknowledge(channel, now_);
-    tell(channel, ConditionEventKind::acknowledged);
-    const ActionEntry& a = conditions_.buffer().pair(channel).action;
-    if (a.action == cardreader::ActionKind::dwell) {
-        update_motor(*circuits_.at(static_cast<std::size_t>(a.parameter - 1)));
-    }
-    if (zeroize_waiting_ && conditions_.all_acknowledged()) {
+void ConditionsAttachment::on_event(ControlCabinet& cab, int channel) {
+    acknowledge(cab, channel);
+}
+
+void ConditionsAttachment::acknowledge(ControlCabinet& cab, int channel) {
+    units_.acknowledge(channel, cab.now());
+    tell(cab, channel, ConditionEventKind::acknowledged);
+    dwell_follows(cab, channel);
+    if (zeroize_waiting_ && units_.all_acknowledged()) {
         zeroize_waiting_ = false;
-        conditions_.set_waiting(false);
-        zeroize(); // claim 2: every action acknowledged, the next card may be processed
+        units_.set_waiting(false);
+        cab.zeroize(); // claim 2: every action acknowledged, the next card may be processed
     }
 }
 
-void ControlCabinet::tell(int channel, ConditionEventKind kind) {
-    if (tracer_.observer() != nullptr) {
-        tracer_.observer()->on_condition(
-            now_, conditions_.event(channel, kind, cards_read_, orders_.number));
+// A dwell holds (or frees) its axis's motor circuit.
+void ConditionsAttachment::dwell_follows(ControlCabinet& cab, int channel) {
+    const ActionEntry& a = units_.buffer().pair(channel).action;
+    if (a.action == cardreader::ActionKind::dwell) {
+        cab.update_motor(*cab.circuits().at(static_cast<std::size_t>(a.parameter - 1)));
     }
+}
+
+void ConditionsAttachment::tell(ControlCabinet& cab, int channel, ConditionEventKind kind) {
+    if (cab.observer() != nullptr) {
+        cab.observer()->on_condition(
+            cab.now(), units_.event(channel, kind, cab.cards_read(), cab.orders().number));
+    }
+}
+
+// Members 282 came home. A condition still armed was never met on this card: the machine
+// stops; and the zeroizing circuit waits until tripping unit ALE has every action
+// acknowledged (EP 0640901 claim 2).
+bool ConditionsAttachment::zeroizing_may_start(ControlCabinet& cab) {
+    const int unmet = units_.first_unmet();
+    if (unmet >= 0) {
+        const BufferPair& p = units_.buffer().pair(unmet);
+        const AxisCircuit& c = cab.circuit(p.condition.axis);
+        const int reads = c.absolute_counter.value();
+        cab.machine_stop(
+            StopReason::condition_not_met, p.condition.axis,
+            fmt::format("{}: event {} (condition card {}) was not met: the {} axis "
+                        "never passed {} {} before the card's last axis stopped (its "
+                        "counter reads {}; condition cards are an addition after "
+                        "EP 0640901, Siemens)",
+                        cab.card_name(), p.condition.event, p.card, axis_name(p.condition.axis),
+                        format_inches(p.condition.position),
+                        p.condition.sense == cardreader::PassingSense::either
+                            ? std::string("in either sense")
+                            : fmt::format("counting {}",
+                                          p.condition.sense == cardreader::PassingSense::forward
+                                              ? "up (forward)"
+                                              : "down (reverse)"),
+                        format_inches(static_cast<cardreader::Thousandths>(
+                            ((reads % 10000) + 10000) % 10000))),
+            "condition lamp (monitoring unit PRG; an addition)");
+        return false;
+    }
+    if (!units_.all_acknowledged()) {
+        zeroize_waiting_ = true;
+        units_.set_waiting(true);
+        return false;
+    }
+    return true;
+}
+
+void ConditionsAttachment::zeroized(ControlCabinet& cab) {
+    const std::size_t first = actions_.size();
+    for (int k = 0; k < InternalBuffer::kChannels; ++k) {
+        const BufferPair& p = units_.buffer().pair(k);
+        if (p.state == PairState::acknowledged) {
+            actions_.push_back(ActionRecord{
+                p.condition.event, p.card, cab.cards_read(), cab.orders().number, p.condition.axis,
+                p.condition.position, p.action.action, p.action.parameter, p.tripped_s,
+                p.acknowledged_s, cab.motion_end_s()});
+        }
+    }
+    // The card's actions in the order they were tripped (channel order at one instant).
+    std::stable_sort(
+        actions_.begin() + static_cast<std::ptrdiff_t>(first), actions_.end(),
+        [](const ActionRecord& a, const ActionRecord& b) { return a.tripped_s < b.tripped_s; });
+    units_.zeroize(); // channel 294 clears PFR and PRG too
+}
+
+void ConditionsAttachment::save(const ControlCabinet& /*cab*/, nlohmann::json& state) const {
+    state["conditions"] = units_.save();
+    state["actions"] = actions_to_json(actions_);
+}
+
+void ConditionsAttachment::load(ControlCabinet& /*cab*/, const nlohmann::json& state) {
+    units_.load(state.contains("conditions") ? state.at("conditions") : nlohmann::json());
+    actions_ = actions_from_json(state.contains("actions") ? state.at("actions")
+                                                           : nlohmann::json::array());
+}
+
+void ConditionsAttachment::add_to(RunResult& result) const {
+    result.actions = actions_;
+    result.tool_in_spindle = units_.ale().tool_in_spindle();
 }
 
 } // namespace parsons::relaylogic

@@ -21,8 +21,8 @@
 #pragma once
 
 #include "cardreader/orders.hpp"
-#include "relaylogic/counters.hpp"
 #include "relaylogic/conditions/internal_buffer.hpp"
+#include "relaylogic/counters.hpp"
 #include "relaylogic/storage.hpp"
 
 #include <array>

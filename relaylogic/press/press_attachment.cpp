@@ -1,6 +1,8 @@
-// Control cabinet 52 with the press synchronisation of EP 0436887 (Mitsubishi): sync cards,
-// loop cards and the reader's tape, the press's detector edges and the reference blocks of
-// Fig. 6. An addition, not in the 1952 patent.
+// Press synchronisation (an addition after EP 0436887, Mitsubishi) on the card cycle of control
+// cabinet 52: sync cards, loop cards and the reader's tape, the press's detector edges and the
+// reference blocks of Fig. 6. Not in the 1952 patent.
+#include "relaylogic/press/press_attachment.hpp"
+
 #include "relaylogic/control_cabinet.hpp"
 
 #include "axes/state_json.hpp"
@@ -9,61 +11,127 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace parsons::relaylogic {
 
+using cardreader::Axis;
 using cardreader::axis_name;
 
-// Resuming a run with press synchronisation: the cards the reader had taken from the deck are
-// taken again, their numbers read, so that a loop card finds its way back.
-void ControlCabinet::resume_tape(std::int64_t taken) {
-    std::vector<cardreader::Card> saved_tape;
-    for (std::int64_t i = 0; i < taken; ++i) {
-        std::optional<cardreader::Card> card = deck_->next();
+PressAttachment::PressAttachment(Tracer& tracer, const axes::MachineProfile& profile) {
+    units_.install(tracer, profile);
+}
+
+void PressAttachment::refuse(ControlCabinet& cab, std::optional<Axis> axis,
+                             const std::string& message, StopReason reason) {
+    cab.machine_stop(reason, axis, message, "sync lamp (an addition)");
+}
+
+// The press turns from the start: its first reference block.
+void PressAttachment::start(ControlCabinet& cab) {
+    schedule_block(cab);
+}
+
+// Resuming: the cards the reader had taken from the deck are taken again, their numbers read,
+// so that a loop card finds its way back.
+bool PressAttachment::resume_deck(ControlCabinet& cab, cardreader::CardSource& deck) {
+    for (std::int64_t i = 0; i < deck_taken_; ++i) {
+        std::optional<cardreader::Card> card = deck.next();
         if (!card) {
             throw cardreader::DeckError(fmt::format(
-                "the deck has {} cards; the saved state resumes after card {}", i, taken));
+                "the deck has {} cards; the saved state resumes after card {}", i, deck_taken_));
         }
-        const cardreader::DecodeResult decoded = cardreader::decode(*card, layout_);
+        const cardreader::DecodeResult decoded = cardreader::decode(*card, cab.layout());
         tape_.push_back(*card);
         tape_numbers_.push_back(decoded ? decoded.orders.number : -1);
     }
+    return true;
 }
 
-// A sync card (an addition after EP 0436887): no axis moves; its orders wait in readers 60 and
-// 62 for the motion card after it, or, a loop card, it sends the reader back at the end of its
-// card cycle.
-void ControlCabinet::sync_card() {
-    sync_card_ = true;
-    if (!sync_.present()) {
-        machine_stop(StopReason::sync_refused, std::nullopt,
-                     fmt::format("{}, column {}: a sync card (an addition after EP 0436887, "
-                                 "Mitsubishi): profile {} has no press synchronisation; the "
-                                 "built-in profile parsons-extended has it",
-                                 card_name(), layout_.extension_column, profile_.name),
-                     "card reader 134 check lamp (an addition)");
+// The reader takes the next card: from the deck, or, after a loop card sent it back, again
+// from the cards it has taken. At the end of the deck a sync card still waiting for its motion
+// card stops the machine.
+std::optional<cardreader::Card> PressAttachment::next_card(ControlCabinet& cab,
+                                                           cardreader::CardSource& deck) {
+    if (replay_ < tape_.size()) {
+        tape_index_ = replay_++;
+        return tape_.at(tape_index_);
+    }
+    std::optional<cardreader::Card> card = deck.next();
+    if (card) {
+        ++deck_taken_;
+        tape_.push_back(*card);
+        tape_numbers_.push_back(-1); // known once the first bank has sensed it
+        tape_index_ = tape_.size() - 1;
+        replay_ = tape_.size();
+    } else if (units_.scp().pending()) {
+        const SynchronisationProcessor& scp = units_.scp();
+        refuse(cab, std::nullopt,
+               fmt::format("card {} (number {:04}): a sync card with no motion card after "
+                           "it: the deck ends (its orders are for the motion card that "
+                           "follows it; sync cards are an addition after EP 0436887, "
+                           "Mitsubishi)",
+                           scp.pending_card(), scp.pending_number()));
+    }
+    return card;
+}
+
+// Every card sensed: its number goes on the tape. A motion card cannot follow speed
+// synchronisation of an axis it does not move.
+void PressAttachment::sensed(ControlCabinet& cab) {
+    const cardreader::CardOrders& orders = cab.orders();
+    if (tape_index_ < tape_numbers_.size()) {
+        tape_numbers_.at(tape_index_) = orders.number;
+    }
+    if (orders.kind != cardreader::CardKind::motion || !units_.scp().pending()) {
         return;
     }
-    if (orders_.sync.loop) {
-        return; // at the end of its card cycle (read_complete)
+    const SynchronisationProcessor& scp = units_.scp();
+    for (Axis a : cardreader::kAxes) {
+        if (scp.pending_order().travel_per_pulse.at(cardreader::axis_index(a)) &&
+            orders.axis(a).check == 0) {
+            refuse(cab, a,
+                   fmt::format("{}: sync card {} (number {:04}) orders speed "
+                               "synchronisation of the {} axis, which this card does "
+                               "not move (check 0) (sync cards are an addition after "
+                               "EP 0436887, Mitsubishi)",
+                               cab.card_name(), scp.pending_card(), scp.pending_number(),
+                               axis_name(a)));
+            return;
+        }
     }
-    SynchronisationProcessor& scp = sync_.scp();
+}
+
+// A sync card: no axis moves; its orders wait in readers 60 and 62 for the motion card after
+// it, or, a loop card, it sends the reader back at the end of its card cycle.
+void PressAttachment::read_card(ControlCabinet& cab) {
+    const cardreader::CardOrders& orders = cab.orders();
+    if (orders.sync.loop) {
+        return; // at the end of its card cycle (card_read)
+    }
+    SynchronisationProcessor& scp = units_.scp();
     if (scp.pending()) {
-        machine_stop(StopReason::sync_refused, std::nullopt,
-                     fmt::format("{}: a second sync card before one motion card (card {}, "
-                                 "number {:04}, waits already; sync cards are an addition after "
-                                 "EP 0436887, Mitsubishi)",
-                                 card_name(), scp.pending_card(), scp.pending_number()),
-                     "sync lamp (an addition)");
+        refuse(cab, std::nullopt,
+               fmt::format("{}: a second sync card before one motion card (card {}, "
+                           "number {:04}, waits already; sync cards are an addition after "
+                           "EP 0436887, Mitsubishi)",
+                           cab.card_name(), scp.pending_card(), scp.pending_number()));
         return;
     }
-    scp.take(orders_.sync, cards_read_, orders_.number);
+    scp.take(orders.sync, cab.cards_read(), orders.number);
+}
+
+bool PressAttachment::card_read(ControlCabinet& cab) {
+    if (cab.orders().sync.loop) {
+        loop_card(cab);
+    }
+    return true;
 }
 
 // The seed's M99: the reader goes back to the card numbered loop_to, loop_count times; the
 // card-number check then expects that number next.
-void ControlCabinet::loop_card() {
-    const cardreader::SyncOrder& o = orders_.sync;
+void PressAttachment::loop_card(ControlCabinet& cab) {
+    const cardreader::SyncOrder& o = cab.orders().sync;
     ++cycles_;
     const auto it = loops_left_.find(tape_index_);
     const int left = it == loops_left_.end() ? o.loop_count : it->second;
@@ -79,126 +147,192 @@ void ControlCabinet::loop_card() {
         }
     }
     if (!target) {
-        machine_stop(StopReason::sync_refused, std::nullopt,
-                     fmt::format("{}: a loop card to card number {:04}, which the deck does not "
-                                 "hold before it (the seed's M99; sync cards are an addition "
-                                 "after EP 0436887, Mitsubishi)",
-                                 card_name(), o.loop_to),
-                     "sync lamp (an addition)");
+        refuse(cab, std::nullopt,
+               fmt::format("{}: a loop card to card number {:04}, which the deck does not "
+                           "hold before it (the seed's M99; sync cards are an addition "
+                           "after EP 0436887, Mitsubishi)",
+                           cab.card_name(), o.loop_to));
         return;
     }
     loops_left_[tape_index_] = left - 1;
     replay_ = *target;
-    previous_number_ = (o.loop_to + 9999) % 10000;
+    cab.expect_card_number(o.loop_to);
+    const double now = cab.now();
     if (loop_backs_ > 0) {
-        const double cycle = now_ - last_loop_back_s_;
+        const double cycle = now - last_loop_back_s_;
         shortest_cycle_s_ = loop_backs_ == 1 ? cycle : std::min(shortest_cycle_s_, cycle);
         longest_cycle_s_ = loop_backs_ == 1 ? cycle : std::max(longest_cycle_s_, cycle);
     } else {
-        first_loop_back_s_ = now_;
+        first_loop_back_s_ = now;
     }
-    last_loop_back_s_ = now_;
+    last_loop_back_s_ = now;
     ++loop_backs_;
 }
 
+void PressAttachment::relays_picked(ControlCabinet& /*cab*/) {
+    units_.scp().arm(); // a sync card's orders into readers 60 and 62
+}
+
+// Position reader 60 holds the card's motion until the crank reaches R.
+bool PressAttachment::holds_motion(ControlCabinet& cab) {
+    return units_.scp().hold_unless_at(units_.position_register().value(), cab.now());
+}
+
+// Speed synchronisation: speed 1 is the follower drive at processor 63's speed.
+bool PressAttachment::drive(ControlCabinet& cab, AxisCircuit& c, bool on) {
+    if (!(on && c.speed_switch.position() == 1 && units_.scp().speed_synced(c.axis))) {
+        return false;
+    }
+    c.plant.command_follow(c.direction, units_.scp().output(c.axis),
+                           cab.profile().sync_drive.acceleration_in_per_s2);
+    c.set_powered(on);
+    return true;
+}
+
+void PressAttachment::zeroized(ControlCabinet& /*cab*/) {
+    units_.scp().clear(); // and readers 60 and 62
+}
+
+void PressAttachment::on_event(ControlCabinet& cab, int code) {
+    if (code == reference_block_event) {
+        reference_block(cab); // the blocks run on whatever card is in the reader
+    } else {
+        sync_release(cab);
+    }
+}
+
+double PressAttachment::next_clock_event(const ControlCabinet& cab) const {
+    return cab.jumping() ? press_quiet_end_ : units_.press().next_event_time();
+}
+
+// Fast-forward: every edge of this segment of constant crank speed only counts, but the one
+// that brings register 14 onto a held card's angle R.
+void PressAttachment::plan_quiet(ControlCabinet& cab) {
+    press_quiet_ = 0;
+    if (!cab.running()) {
+        return;
+    }
+    const axes::Press& press = units_.press();
+    press_quiet_end_ = press.next_event_time();
+    if (press.next_event_is_pulse()) {
+        const std::int64_t in_segment = press.pulses_by(axes::kNever);
+        const std::int64_t quiet = units_.quiet_edges(in_segment);
+        if (quiet > 0) {
+            press_quiet_ = quiet;
+            // The edge after the stretch, or the stretch's last edge when the segment ends
+            // with it (the segment's end then comes up as the press's next event).
+            press_quiet_end_ =
+                quiet < in_segment ? press.pulse_time(quiet + 1) : press.pulse_time(quiet);
+        }
+    }
+}
+
+void PressAttachment::clock_edges_before(ControlCabinet& cab, double t) {
+    press_edges(cab, std::nextafter(t, -axes::kNever));
+}
+
+void PressAttachment::clock_edges_at(ControlCabinet& cab, double t) {
+    press_edges(cab, t);
+}
+
 // Detector edges due by time t: in fast-forward the quiet ones in one jump, then the one due now.
-void ControlCabinet::press_edges(double t) {
-    axes::Press& press = sync_.press();
-    if (jumping_ && press_quiet_ > 0) {
+void PressAttachment::press_edges(ControlCabinet& cab, double t) {
+    axes::Press& press = units_.press();
+    if (cab.jumping() && press_quiet_ > 0) {
         const std::int64_t n = std::min(press_quiet_, press.pulses_by(t));
         if (n > 0) {
             const double at = press.pulse_time(n);
             const axes::DetectorEdge last = press.skip_pulses(n);
-            sync_.on_edges(n, last, at);
+            units_.on_edges(n, last, at);
             press_quiet_ -= n;
         }
     }
     if (press.next_event_time() <= t) {
         if (auto edge = press.advance_to(t)) {
-            if (sync_.on_edge(*edge, t)) {
+            if (units_.on_edge(*edge, t)) {
                 // Detector 61 conducts; 60's hold relay drops a relay's time later.
-                schedule(t + profile_.relay_operate_s, EventKind::sync_release);
+                cab.schedule(*this, t + cab.profile().relay_operate_s, sync_release_event);
             }
         }
     }
 }
 
-void ControlCabinet::schedule_block() {
-    schedule(static_cast<double>(block_) * profile_.speed_sample_s, EventKind::reference_block);
+void PressAttachment::schedule_block(ControlCabinet& cab) {
+    cab.schedule(*this, static_cast<double>(block_) * cab.profile().speed_sample_s,
+                 reference_block_event, true);
 }
 
 // A reference block of Fig. 6: the speeds processor 63 computed last block go to the drives,
 // speed register 11 is read, 63 computes the next; and the wait is timed (sync_timeout).
-void ControlCabinet::reference_block() {
-    if (deck_finished_ || stop_) {
+void PressAttachment::reference_block(ControlCabinet& cab) {
+    if (!cab.running()) {
         return;
     }
-    SynchronisationProcessor& scp = sync_.scp();
-    const int pulses = sync_.sample_speed();
-    if (scp.reference_block(pulses, profile_.sync_drive.max_in_per_min / 60.0)) {
-        for (auto& c : circuits_) {
+    const axes::MachineProfile& profile = cab.profile();
+    const double now = cab.now();
+    SynchronisationProcessor& scp = units_.scp();
+    const int pulses = units_.sample_speed();
+    if (scp.reference_block(pulses, profile.sync_drive.max_in_per_min / 60.0)) {
+        for (const auto& c : cab.circuits()) {
             if (scp.speed_synced(c->axis)) {
-                update_motor(*c);
+                cab.update_motor(*c);
             }
         }
     }
-    const double timeout = profile_.sync_timeout_s;
-    if (scp.holding() && now_ - scp.hold_since() >= timeout) {
-        machine_stop(StopReason::sync_timeout, std::nullopt,
-                     fmt::format("{}: the card waited {:.1f} s for crank 21 to reach {} deg and "
-                                 "it did not (crank at {:.1f} deg{}); synchronisation control "
-                                 "processor 17 gave up after sync_timeout_s {:.1f} s (press "
-                                 "synchronisation is an addition after EP 0436887, Mitsubishi)",
-                                 card_name(), now_ - scp.hold_since(),
-                                 scp.target_pulses() / sync_.press().profile().pulses_per_degree,
-                                 sync_.press().angle_deg(),
-                                 sync_.press().stopped() ? ", motor 22 stopped" : "", timeout),
-                     "sync lamp (an addition)");
+    const double timeout = profile.sync_timeout_s;
+    if (scp.holding() && now - scp.hold_since() >= timeout) {
+        refuse(cab, std::nullopt,
+               fmt::format("{}: the card waited {:.1f} s for crank 21 to reach {} deg and "
+                           "it did not (crank at {:.1f} deg{}); synchronisation control "
+                           "processor 17 gave up after sync_timeout_s {:.1f} s (press "
+                           "synchronisation is an addition after EP 0436887, Mitsubishi)",
+                           cab.card_name(), now - scp.hold_since(),
+                           scp.target_pulses() / units_.press().profile().pulses_per_degree,
+                           units_.press().angle_deg(),
+                           units_.press().stopped() ? ", motor 22 stopped" : "", timeout),
+               StopReason::sync_timeout);
         return;
     }
-    if (!scp.holding() && now_ - sync_.last_edge_s() >= timeout) {
-        for (const auto& c : circuits_) {
+    if (!scp.holding() && now - units_.last_edge_s() >= timeout) {
+        for (const auto& c : cab.circuits()) {
             if (c->powered && scp.speed_synced(c->axis)) {
-                machine_stop(StopReason::sync_timeout, c->axis,
-                             fmt::format("{}, {}: speed-synchronised, and detector 10 gave no "
-                                         "pulse for {:.1f} s (crank at {:.1f} deg{}): the axis "
-                                         "stands; synchronisation control processor 17 gave up "
-                                         "after sync_timeout_s {:.1f} s (press synchronisation "
-                                         "is an addition after EP 0436887, Mitsubishi)",
-                                         card_name(), axis_name(c->axis),
-                                         now_ - sync_.last_edge_s(), sync_.press().angle_deg(),
-                                         sync_.press().stopped() ? ", motor 22 stopped" : "",
-                                         timeout),
-                             "sync lamp (an addition)");
+                refuse(cab, c->axis,
+                       fmt::format("{}, {}: speed-synchronised, and detector 10 gave no "
+                                   "pulse for {:.1f} s (crank at {:.1f} deg{}): the axis "
+                                   "stands; synchronisation control processor 17 gave up "
+                                   "after sync_timeout_s {:.1f} s (press synchronisation "
+                                   "is an addition after EP 0436887, Mitsubishi)",
+                                   cab.card_name(), axis_name(c->axis), now - units_.last_edge_s(),
+                                   units_.press().angle_deg(),
+                                   units_.press().stopped() ? ", motor 22 stopped" : "", timeout),
+                       StopReason::sync_timeout);
                 return;
             }
         }
     }
     ++block_;
-    schedule_block();
+    schedule_block(cab);
 }
 
-void ControlCabinet::sync_release() {
-    SynchronisationProcessor& scp = sync_.scp();
+void PressAttachment::sync_release(ControlCabinet& cab) {
+    SynchronisationProcessor& scp = units_.scp();
     if (!scp.holding()) {
         return;
     }
-    waited_s_ += now_ - scp.hold_since();
+    waited_s_ += cab.now() - scp.hold_since();
     scp.release();
-    update_motors();
-    for (auto& c : circuits_) {
-        evaluate(*c);
-    }
+    cab.update_motors();
+    cab.evaluate_all();
 }
 
 // The cabinet waits on the press: a card held for its angle, or a speed-synchronised axis
 // powered (its speed is the press's).
-bool ControlCabinet::waiting_on_press() const {
-    const SynchronisationProcessor& scp = sync_.scp();
+bool PressAttachment::waited_on(const ControlCabinet& cab) const {
+    const SynchronisationProcessor& scp = units_.scp();
     if (scp.holding()) {
         return true;
     }
-    for (const auto& c : circuits_) {
+    for (const auto& c : cab.circuits()) {
         if (c->powered && scp.speed_synced(c->axis)) {
             return true;
         }
@@ -206,58 +340,36 @@ bool ControlCabinet::waiting_on_press() const {
     return false;
 }
 
-// Nothing can happen but the press turning and the reference blocks: no axis moves, no other
-// event is queued, and nothing waits on the press.
-bool ControlCabinet::idle() const {
-    if (queue_.size() != static_cast<std::size_t>(blocks_queued_) || unqueued_release_s_ > now_) {
-        return false;
-    }
-    for (std::size_t i = 0; i < circuits_.size(); ++i) {
-        if (next_axis_event(i) != axes::kNever) {
-            return false;
-        }
-    }
-    return !waiting_on_press();
-}
-
-nlohmann::json ControlCabinet::capture_sync() const {
-    if (!sync_.present()) {
-        return nullptr;
-    }
+void PressAttachment::save(const ControlCabinet& /*cab*/, nlohmann::json& state) const {
     using axes::exact;
     nlohmann::json loops = nlohmann::json::array();
     for (const auto& [index, left] : loops_left_) {
         loops.push_back({index, left});
     }
-    return {{"units", sync_.save()},
-            {"deck_cards_taken", deck_taken_},
-            {"replay", replay_},
-            {"tape_index", tape_index_},
-            {"loops_left", loops},
-            {"cycles", cycles_},
-            {"loop_backs", loop_backs_},
-            {"first_loop_back_s", exact(first_loop_back_s_)},
-            {"last_loop_back_s", exact(last_loop_back_s_)},
-            {"shortest_cycle_s", exact(shortest_cycle_s_)},
-            {"longest_cycle_s", exact(longest_cycle_s_)},
-            {"waited_s", exact(waited_s_)},
-            {"reference_block", block_}};
+    state["sync"] = {{"units", units_.save()},
+                     {"deck_cards_taken", deck_taken_},
+                     {"replay", replay_},
+                     {"tape_index", tape_index_},
+                     {"loops_left", loops},
+                     {"cycles", cycles_},
+                     {"loop_backs", loop_backs_},
+                     {"first_loop_back_s", exact(first_loop_back_s_)},
+                     {"last_loop_back_s", exact(last_loop_back_s_)},
+                     {"shortest_cycle_s", exact(shortest_cycle_s_)},
+                     {"longest_cycle_s", exact(longest_cycle_s_)},
+                     {"waited_s", exact(waited_s_)},
+                     {"reference_block", block_}};
 }
 
-void ControlCabinet::resume_sync(const nlohmann::json& j) {
+void PressAttachment::load(ControlCabinet& /*cab*/, const nlohmann::json& state) {
     using axes::exact;
     using axes::member;
     using axes::read;
-    if (!sync_.present()) {
-        if (!j.is_null()) {
-            throw axes::StateError("the saved machine has a press; this profile has none");
-        }
-        return;
-    }
+    const nlohmann::json& j = state.contains("sync") ? state.at("sync") : nlohmann::json();
     if (j.is_null()) {
         throw axes::StateError("the saved machine has no press; this profile has one");
     }
-    sync_.load(member(j, "units"));
+    units_.load(member(j, "units"));
     deck_taken_ = read<std::int64_t>(j, "deck_cards_taken");
     replay_ = read<std::size_t>(j, "replay");
     tape_index_ = read<std::size_t>(j, "tape_index");
@@ -276,6 +388,24 @@ void ControlCabinet::resume_sync(const nlohmann::json& j) {
     if (deck_taken_ < 0 || replay_ > static_cast<std::size_t>(deck_taken_) || block_ < 1) {
         throw axes::StateError("sync: deck_cards_taken, replay and reference_block out of range");
     }
+}
+
+void PressAttachment::add_to(RunResult& result) const {
+    PressResult p;
+    p.revolution = units_.press().revolution();
+    p.crank_angle_deg = units_.press().angle_deg();
+    p.position_register = units_.position_register().value();
+    p.press_stopped = units_.press().stopped();
+    p.cycles = cycles_;
+    p.loop_backs = loop_backs_;
+    if (loop_backs_ >= 2) {
+        p.mean_cycle_s =
+            (last_loop_back_s_ - first_loop_back_s_) / static_cast<double>(loop_backs_ - 1);
+        p.shortest_cycle_s = shortest_cycle_s_;
+        p.longest_cycle_s = longest_cycle_s_;
+    }
+    p.waited_s = waited_s_;
+    result.press = p;
 }
 
 } // namespace parsons::relaylogic

@@ -1,108 +1,173 @@
-// Control cabinet 52 with the spindle synchronisation of EP 0360190 (Mitsubishi): a
-// tap card's cycle, from the tool call on bus 35 to the feed standing on its starting count
-// again (relaylogic/tapping/tapping_units.hpp tells the sequence). An addition, not in the 1952 patent.
+// Spindle synchronisation (an addition after EP 0360190, Mitsubishi) on the card cycle of
+// control cabinet 52: a tap card's cycle, from the tool call on bus 35 to the feed standing on
+// its starting count again (relaylogic/tapping/tapping_units.hpp tells the sequence). Not in
+// the 1952 patent.
+#include "relaylogic/tapping/tapping_attachment.hpp"
+
 #include "relaylogic/control_cabinet.hpp"
 
 #include <fmt/format.h>
 
 namespace parsons::relaylogic {
 
-using cardreader::Axis;
+TappingAttachment::TappingAttachment(Tracer& tracer, const axes::MachineProfile& profile) {
+    units_.install(tracer, profile);
+}
+
+void TappingAttachment::start(ControlCabinet& cab) {
+    units_.inject(cab.faults()); // --fault stale-ratio, transfer-hang: PC 130's
+    units_.keep_samples(cab.keeps_tap_samples());
+}
 
 // Encoder 32's edges due by time t: in fast-forward in one jump a segment, at impulse level one
 // by one. Nothing but interface 33 reads them, and it is read at the scans and samples only.
-void ControlCabinet::spindle_edges(double t) {
-    if (jumping_) {
-        tapping_.jump_to(t);
+void TappingAttachment::advance_plants(ControlCabinet& cab, double t) {
+    if (cab.jumping()) {
+        units_.jump_to(t);
     } else {
-        tapping_.catch_up(t);
+        units_.catch_up(t);
     }
 }
 
 // During a tap the counters of the feed axis count the way the drive turns: the NC sets
 // reversing control 214 from the drive's sense (an addition; the 1952 motion column sets it
 // once a card).
-void ControlCabinet::tap_counting_sense(AxisCircuit& c, int direction) {
+void TappingAttachment::counting_sense(AxisCircuit& c, int direction) {
     if (c.direction != direction) {
         c.set_direction(direction > 0 ? cardreader::Motion::forward : cardreader::Motion::reverse);
     }
 }
 
-// A tap card (an addition after EP 0360190): no axis moves by the 1952 columns; at the end of
-// its reading the tool call goes on bus 35.
-void ControlCabinet::tap_card() {
-    tap_card_ = true;
-    if (!tapping_.present()) {
-        machine_stop(StopReason::tap_refused, std::nullopt,
-                     fmt::format("{}, column {}: a tap card (an addition after EP 0360190, "
-                                 "Mitsubishi): profile {} has no spindle synchronisation; the "
-                                 "built-in profile parsons-extended has it",
-                                 card_name(), layout_.extension_column, profile_.name),
-                     "card reader 134 check lamp (an addition)");
-        return;
-    }
-    if (auto refusal = tapping_.refusal(orders_.tap, profile_)) {
-        machine_stop(StopReason::tap_refused, orders_.tap.axis,
-                     fmt::format("{}: {} (tap cards are an addition after EP 0360190, "
-                                 "Mitsubishi)",
-                                 card_name(), *refusal),
-                     "spindle lamp (an addition)");
+void TappingAttachment::before_count(ControlCabinet& cab, AxisCircuit& c, int direction) {
+    if (units_.feeding(c.axis) && !cab.stopped()) {
+        counting_sense(c, direction);
     }
 }
 
-void ControlCabinet::start_tool_call() {
-    tapping_.open_hole(cards_read_, orders_.number, orders_.tap.tool);
-    tapping_.begin(orders_.tap, now_);
-    pc_scan();
+// Fast-forward: reversing control 214 follows the drive at the first impulse of the jump.
+void TappingAttachment::before_jump(ControlCabinet& cab, AxisCircuit& c, double t) {
+    if (units_.feeding(c.axis) && c.direction != c.plant.moving_direction()) {
+        cab.tracer().set_time(c.plant.impulse_time(1));
+        counting_sense(c, c.plant.moving_direction());
+        cab.tracer().set_time(t);
+    }
+}
+
+// A tap: the synchronous operation control sets the follower drive.
+bool TappingAttachment::drive(ControlCabinet& cab, AxisCircuit& c, bool /*on*/) {
+    if (!units_.feeding(c.axis) || cab.stopped()) {
+        return false;
+    }
+    const FeedCommand f = units_.feed();
+    c.plant.command_follow(f.direction, f.speed_in_per_s,
+                           cab.profile().sync_drive.acceleration_in_per_s2);
+    c.set_powered(true);
+    return true;
+}
+
+void TappingAttachment::machine_stopped(ControlCabinet& cab) {
+    advance_plants(cab, cab.now());
+    units_.halt(); // motor 27 runs down to rest; the feed is the 1952 motor's again
+}
+
+// A tap card: no axis moves by the 1952 columns; at the end of its reading the tool call goes
+// on bus 35.
+void TappingAttachment::read_card(ControlCabinet& cab) {
+    const cardreader::CardOrders& orders = cab.orders();
+    if (auto refusal = units_.refusal(orders.tap, cab.profile())) {
+        cab.machine_stop(StopReason::tap_refused, orders.tap.axis,
+                         fmt::format("{}: {} (tap cards are an addition after EP 0360190, "
+                                     "Mitsubishi)",
+                                     cab.card_name(), *refusal),
+                         "spindle lamp (an addition)");
+    }
+}
+
+// The end of the tap card's reading: the tool call. The attachment ends the card (zeroizing).
+bool TappingAttachment::card_read(ControlCabinet& cab) {
+    const cardreader::CardOrders& orders = cab.orders();
+    units_.open_hole(cab.cards_read(), orders.number, orders.tap.tool);
+    units_.begin(orders.tap, cab.now());
+    pc_scan(cab);
+    return false;
+}
+
+void TappingAttachment::on_event(ControlCabinet& cab, int code) {
+    if (code == pc_scan_event) {
+        pc_scan(cab);
+    } else {
+        spindle_sample(cab);
+    }
 }
 
 // A scan of PC 130 and of the NC's side of the handshake.
-void ControlCabinet::pc_scan() {
-    if (tapping_.scan(now_)) {
-        AxisCircuit& c = *circuits_.at(cardreader::axis_index(orders_.tap.axis));
-        if (auto impulse = c.plant.advance_to(now_)) {
-            on_impulse(c, *impulse);
-        }
-        tapping_.start(now_, c.absolute_counter.value(), c.plant.real_in());
-        update_motor(c);
-        schedule(now_ + profile_.spindle.sample_s, EventKind::spindle_sample);
+void TappingAttachment::pc_scan(ControlCabinet& cab) {
+    const axes::MachineProfile& profile = cab.profile();
+    const cardreader::TapOrder& tap = cab.orders().tap;
+    if (units_.scan(cab.now())) {
+        AxisCircuit& c = cab.circuit(tap.axis);
+        cab.count_due_impulse(c);
+        units_.start(cab.now(), c.absolute_counter.value(), c.plant.real_in());
+        cab.update_motor(c);
+        cab.schedule(*this, cab.now() + profile.spindle.sample_s, spindle_sample_event);
         return;
     }
-    if (tapping_.timed_out()) {
-        const GearRatioMemory& m = tapping_.memory();
-        machine_stop(StopReason::transfer_timeout, std::nullopt,
-                     fmt::format("{}: PC 130 asked to transfer the gear ratio of tool {} at "
-                                 "{:.2f} s and the NC answered ready, but the ratio never reached "
-                                 "gear ratio data memory 12a; the NC gave up after "
-                                 "transfer_timeout_s {:.1f} s (12a still holds {:.4f}; spindle "
-                                 "synchronisation is an addition after EP 0360190, Mitsubishi)",
-                                 card_name(), orders_.tap.tool, m.request_since_s(),
-                                 profile_.spindle.transfer_timeout_s, m.ratio()),
-                     "spindle lamp (an addition)");
+    if (units_.timed_out()) {
+        const GearRatioMemory& m = units_.memory();
+        cab.machine_stop(StopReason::transfer_timeout, std::nullopt,
+                         fmt::format("{}: PC 130 asked to transfer the gear ratio of tool {} at "
+                                     "{:.2f} s and the NC answered ready, but the ratio never "
+                                     "reached gear ratio data memory 12a; the NC gave up after "
+                                     "transfer_timeout_s {:.1f} s (12a still holds {:.4f}; "
+                                     "spindle synchronisation is an addition after EP 0360190, "
+                                     "Mitsubishi)",
+                                     cab.card_name(), tap.tool, m.request_since_s(),
+                                     profile.spindle.transfer_timeout_s, m.ratio()),
+                         "spindle lamp (an addition)");
         return;
     }
-    schedule(now_ + profile_.spindle.pc_scan_s, EventKind::pc_scan);
+    cab.schedule(*this, cab.now() + profile.spindle.pc_scan_s, pc_scan_event);
 }
 
 // A sample of interface 33: the synchronous operation control sets the feed.
-void ControlCabinet::spindle_sample() {
-    AxisCircuit& c = *circuits_.at(cardreader::axis_index(orders_.tap.axis));
-    if (auto impulse = c.plant.advance_to(now_)) {
-        on_impulse(c, *impulse);
-        if (stop_) {
-            return;
-        }
+void TappingAttachment::spindle_sample(ControlCabinet& cab) {
+    AxisCircuit& c = cab.circuit(cab.orders().tap.axis);
+    if (cab.count_due_impulse(c) && cab.stopped()) {
+        return;
     }
     const bool done =
-        tapping_.sample(now_, c.absolute_counter.value(), c.plant.real_in(), c.plant.at_rest());
-    update_motor(c);
+        units_.sample(cab.now(), c.absolute_counter.value(), c.plant.real_in(), c.plant.at_rest());
+    cab.update_motor(c);
     if (!done) {
-        schedule(now_ + profile_.spindle.sample_s, EventKind::spindle_sample);
+        cab.schedule(*this, cab.now() + cab.profile().spindle.sample_s, spindle_sample_event);
         return;
     }
     c.set_powered(false);
-    motion_end_s_ = now_;
-    zeroize(); // the card's cycle ends: channel 304 indexes the next card
+    cab.motion_ended();
+    cab.zeroize(); // the card's cycle ends: channel 304 indexes the next card
+}
+
+void TappingAttachment::save(const ControlCabinet& /*cab*/, nlohmann::json& state) const {
+    state["tapping"] = units_.save();
+}
+
+void TappingAttachment::load(ControlCabinet& /*cab*/, const nlohmann::json& state) {
+    if (!state.contains("tapping") || state.at("tapping").is_null()) {
+        throw axes::StateError("this profile has spindle synchronisation and the saved state "
+                               "has none");
+    }
+    units_.load(state.at("tapping"));
+}
+
+void TappingAttachment::add_to(RunResult& result) const {
+    TappingResult tr;
+    tr.tool_on_spindle = units_.spindle().tool();
+    tr.ratio_in_memory = units_.memory().ratio();
+    tr.head_exchanges = units_.pc().exchanges();
+    tr.transfers = units_.pc().transfers();
+    tr.ratios_received = units_.memory().received();
+    tr.holes = units_.holes();
+    result.tapping = std::move(tr);
 }
 
 } // namespace parsons::relaylogic

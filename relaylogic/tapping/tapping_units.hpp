@@ -38,12 +38,12 @@
 #include "axes/machine_profile.hpp"
 #include "axes/spindle.hpp"
 #include "cardreader/orders.hpp"
-#include "relaylogic/press/direction_judging_device.hpp"
 #include "relaylogic/faults.hpp"
-#include "relaylogic/tapping/gear_ratio_memory.hpp"
+#include "relaylogic/press/direction_judging_device.hpp"
 #include "relaylogic/press/position_register.hpp"
-#include "relaylogic/tapping/programmable_controller.hpp"
 #include "relaylogic/press/speed_register.hpp"
+#include "relaylogic/tapping/gear_ratio_memory.hpp"
+#include "relaylogic/tapping/programmable_controller.hpp"
 #include "relaylogic/tracer.hpp"
 
 #include <nlohmann/json.hpp>

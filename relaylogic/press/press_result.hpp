@@ -1,0 +1,24 @@
+// Press synchronisation (an addition after EP 0436887): what a run reports of the press and the
+// job's cycles (relaylogic/press/press_attachment.hpp).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+namespace parsons::relaylogic {
+
+struct PressResult {
+    int revolution = 0;          // the crank's revolution (1 = the first)
+    double crank_angle_deg = 0;  // where crank 21 stood at the last detector edge taken
+    int position_register = 0;   // register 14, detector pulses
+    bool press_stopped = false;  // motor 22 stopped (the profile's stop)
+    std::int64_t cycles = 0;     // how many times the job reached its loop card (M99)
+    std::int64_t loop_backs = 0; // how many times the reader went back
+    // Time between two loop-backs: the job's cycle (none with fewer than two loop-backs).
+    std::optional<double> mean_cycle_s;
+    std::optional<double> shortest_cycle_s;
+    std::optional<double> longest_cycle_s;
+    double waited_s = 0; // machine time cards spent held by position reader 60
+};
+
+} // namespace parsons::relaylogic
