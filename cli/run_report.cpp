@@ -137,8 +137,9 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const AppliedProfile&
                              {"machine_seconds", time_s(c.end_s - c.start_s)}});
     }
     j["cards"] = cards;
-    // Condition cards (an addition after EP 0640901): only in a profile that has them.
-    if (r.tool_in_spindle) {
+    // Condition cards (an addition after EP 0640901): only when the deck used them (the profile
+    // has them and a condition card was read), as the press and the tapping below.
+    if (r.tool_in_spindle && r.conditions_used) {
         j["tool_in_spindle"] = *r.tool_in_spindle;
         json actions = json::array();
         double saved = 0;
@@ -159,8 +160,8 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const AppliedProfile&
         j["actions"] = actions;
         j["actions_overlap_seconds"] = time_s(saved);
     }
-    // Press synchronisation (an addition after EP 0436887): only in a profile that has it.
-    if (r.press) {
+    // Press synchronisation (an addition after EP 0436887): only when a sync card was read.
+    if (r.press && r.press->used) {
         const relaylogic::PressResult& p = *r.press;
         auto seconds = [](const std::optional<double>& v) {
             return v ? json(time_s(*v)) : json(nullptr);
@@ -176,8 +177,8 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const AppliedProfile&
                           {"longest_cycle_seconds", seconds(p.longest_cycle_s)},
                           {"waited_seconds", time_s(p.waited_s)}};
     }
-    // Spindle synchronisation (an addition after EP 0360190): only in a profile that has it.
-    if (r.tapping) {
+    // Spindle synchronisation (an addition after EP 0360190): only when a tap card was read.
+    if (r.tapping && r.tapping->used) {
         j["tapping"] = tapping_json(*r.tapping);
     }
     return j;
@@ -224,11 +225,11 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
                          a.motion_card, cardreader::action_text(a.action, a.parameter), a.tripped_s,
                          a.acknowledged_s, a.overlap_s()));
     }
-    if (r.tool_in_spindle) {
+    if (r.tool_in_spindle && r.conditions_used) {
         line(fmt::format("  tool           {} in the spindle (the condition cards' tool changer)",
                          *r.tool_in_spindle));
     }
-    if (r.press) {
+    if (r.press && r.press->used) {
         const relaylogic::PressResult& p = *r.press;
         line(fmt::format("  press          revolution {}, crank at {:.2f} deg{}; {} cycle{} of "
                          "the job{}; cards held {:.3f} s for the crank",
@@ -241,7 +242,7 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
                              : "",
                          p.waited_s));
     }
-    if (r.tapping) {
+    if (r.tapping && r.tapping->used) {
         const relaylogic::TappingResult& t = *r.tapping;
         const std::int64_t done =
             std::count_if(t.holes.begin(), t.holes.end(),

@@ -49,7 +49,8 @@ struct RunResult {
     // spindle (when the profile has a tool changer).
     std::vector<ActionRecord> actions;
     std::optional<int> tool_in_spindle;
-    std::optional<PressResult> press;     // when the profile has press synchronisation
+    bool conditions_used = false;     // a condition card was read: the report shows them only then
+    std::optional<PressResult> press; // when the profile has press synchronisation
     std::optional<TappingResult> tapping; // when the profile has spindle synchronisation
 };
 

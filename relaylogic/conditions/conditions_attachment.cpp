@@ -5,6 +5,8 @@
 
 #include "relaylogic/control_cabinet.hpp"
 
+#include "axes/state_json.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -35,6 +37,7 @@ void ConditionsAttachment::deck_ended(ControlCabinet& cab) {
 // A condition card: no axis moves; converter UMS enters its records into buffer PFR, and at
 // the end of the card cycle channel 304 indexes the next card.
 void ConditionsAttachment::read_card(ControlCabinet& cab) {
+    used_ = true;
     if (auto refusal = units_.convert(cab.orders(), cab.cards_read())) {
         cab.machine_stop(StopReason::condition_refused, std::nullopt, *refusal,
                          "condition lamp (an addition)");
@@ -159,16 +162,22 @@ void ConditionsAttachment::zeroized(ControlCabinet& cab) {
 
 void ConditionsAttachment::save(const ControlCabinet& /*cab*/, nlohmann::json& state) const {
     state["conditions"] = units_.save();
+    state["conditions"]["used"] = used_;
     state["actions"] = actions_to_json(actions_);
 }
 
 void ConditionsAttachment::load(ControlCabinet& /*cab*/, const nlohmann::json& state) {
-    units_.load(state.contains("conditions") ? state.at("conditions") : nlohmann::json());
+    const nlohmann::json& j =
+        state.contains("conditions") ? state.at("conditions") : nlohmann::json();
+    units_.load(j);
+    // A state saved before the report knew whether the deck used it: shown, as it was then.
+    used_ = j.is_null() || !j.contains("used") || axes::read<bool>(j, "used");
     actions_ = actions_from_json(state.contains("actions") ? state.at("actions")
                                                            : nlohmann::json::array());
 }
 
 void ConditionsAttachment::add_to(RunResult& result) const {
+    result.conditions_used = used_;
     result.actions = actions_;
     result.tool_in_spindle = units_.ale().tool_in_spindle();
 }

@@ -46,6 +46,7 @@ private:
     void dwell_follows(ControlCabinet& cab, int channel);
 
     ConditionUnits units_;
+    bool used_ = false;                 // a condition card was read (the report shows it)
     bool zeroize_waiting_ = false;      // the zeroizing circuit waits for acknowledgements
     std::vector<ActionRecord> actions_; // every action acknowledged, for the report
 };

@@ -105,6 +105,7 @@ void PressAttachment::sensed(ControlCabinet& cab) {
 // A sync card: no axis moves; its orders wait in readers 60 and 62 for the motion card after
 // it, or, a loop card, it sends the reader back at the end of its card cycle.
 void PressAttachment::read_card(ControlCabinet& cab) {
+    used_ = true;
     const cardreader::CardOrders& orders = cab.orders();
     if (orders.sync.loop) {
         return; // at the end of its card cycle (card_read)
@@ -358,7 +359,8 @@ void PressAttachment::save(const ControlCabinet& /*cab*/, nlohmann::json& state)
                      {"shortest_cycle_s", exact(shortest_cycle_s_)},
                      {"longest_cycle_s", exact(longest_cycle_s_)},
                      {"waited_s", exact(waited_s_)},
-                     {"reference_block", block_}};
+                     {"reference_block", block_},
+                     {"used", used_}};
 }
 
 void PressAttachment::load(ControlCabinet& /*cab*/, const nlohmann::json& state) {
@@ -385,6 +387,8 @@ void PressAttachment::load(ControlCabinet& /*cab*/, const nlohmann::json& state)
     longest_cycle_s_ = exact(member(j, "longest_cycle_s"));
     waited_s_ = exact(member(j, "waited_s"));
     block_ = read<std::int64_t>(j, "reference_block");
+    // A state saved before the report knew whether the deck used it: shown, as it was then.
+    used_ = !j.contains("used") || read<bool>(j, "used");
     if (deck_taken_ < 0 || replay_ > static_cast<std::size_t>(deck_taken_) || block_ < 1) {
         throw axes::StateError("sync: deck_cards_taken, replay and reference_block out of range");
     }
@@ -392,6 +396,7 @@ void PressAttachment::load(ControlCabinet& /*cab*/, const nlohmann::json& state)
 
 void PressAttachment::add_to(RunResult& result) const {
     PressResult p;
+    p.used = used_;
     p.revolution = units_.press().revolution();
     p.crank_angle_deg = units_.press().angle_deg();
     p.position_register = units_.position_register().value();

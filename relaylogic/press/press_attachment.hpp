@@ -60,6 +60,7 @@ private:
                 const std::string& message, StopReason reason = StopReason::sync_refused);
 
     SyncUnits units_;
+    bool used_ = false; // a sync card was read (the report shows the press)
     // The cards the reader has taken (a loop card sends it back among them) and their numbers.
     std::vector<cardreader::Card> tape_;
     std::vector<int> tape_numbers_;

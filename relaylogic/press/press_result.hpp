@@ -19,6 +19,9 @@ struct PressResult {
     std::optional<double> shortest_cycle_s;
     std::optional<double> longest_cycle_s;
     double waited_s = 0; // machine time cards spent held by position reader 60
+    // The deck used it (a sync card was read): the report and the summary show the press only
+    // then (it turns under parsons-extended whatever the deck).
+    bool used = false;
 };
 
 } // namespace parsons::relaylogic

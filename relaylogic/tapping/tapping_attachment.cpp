@@ -6,6 +6,8 @@
 
 #include "relaylogic/control_cabinet.hpp"
 
+#include "axes/state_json.hpp"
+
 #include <fmt/format.h>
 
 namespace parsons::relaylogic {
@@ -73,6 +75,7 @@ void TappingAttachment::machine_stopped(ControlCabinet& cab) {
 // A tap card: no axis moves by the 1952 columns; at the end of its reading the tool call goes
 // on bus 35.
 void TappingAttachment::read_card(ControlCabinet& cab) {
+    used_ = true;
     const cardreader::CardOrders& orders = cab.orders();
     if (auto refusal = units_.refusal(orders.tap, cab.profile())) {
         cab.machine_stop(StopReason::tap_refused, orders.tap.axis,
@@ -149,6 +152,7 @@ void TappingAttachment::spindle_sample(ControlCabinet& cab) {
 
 void TappingAttachment::save(const ControlCabinet& /*cab*/, nlohmann::json& state) const {
     state["tapping"] = units_.save();
+    state["tapping"]["used"] = used_;
 }
 
 void TappingAttachment::load(ControlCabinet& /*cab*/, const nlohmann::json& state) {
@@ -156,11 +160,15 @@ void TappingAttachment::load(ControlCabinet& /*cab*/, const nlohmann::json& stat
         throw axes::StateError("this profile has spindle synchronisation and the saved state "
                                "has none");
     }
-    units_.load(state.at("tapping"));
+    const nlohmann::json& j = state.at("tapping");
+    units_.load(j);
+    // A state saved before the report knew whether the deck used it: shown, as it was then.
+    used_ = !j.contains("used") || axes::read<bool>(j, "used");
 }
 
 void TappingAttachment::add_to(RunResult& result) const {
     TappingResult tr;
+    tr.used = used_;
     tr.tool_on_spindle = units_.spindle().tool();
     tr.ratio_in_memory = units_.memory().ratio();
     tr.head_exchanges = units_.pc().exchanges();

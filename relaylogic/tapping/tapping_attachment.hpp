@@ -41,6 +41,7 @@ private:
     static void counting_sense(AxisCircuit& c, int direction);
 
     TappingUnits units_;
+    bool used_ = false; // a tap card was read (the report shows the spindle)
 };
 
 } // namespace parsons::relaylogic

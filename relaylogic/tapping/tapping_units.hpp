@@ -92,6 +92,7 @@ struct TappingResult {
     std::int64_t transfers = 0;       // ratios PC 130 sent (S6)
     std::int64_t ratios_received = 0; // ratios the NC stored (S16)
     std::vector<HoleRecord> holes;
+    bool used = false; // the deck used it (a tap card was read): the report shows it only then
 };
 
 // What the synchronous operation control asks of the feed axis's follower drive.
