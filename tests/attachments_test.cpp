@@ -1,8 +1,6 @@
 // The house (docs/architecture.md): the later systems are attachments of control cabinet 52
 // (relaylogic/attachment.hpp), built only when the profile asks for them; the report and the
-// summary show one only when the deck used it; and the layers keep their order (no file of the
-// 1952 machine includes a later system's folder, no library of the machine includes cli/ or
-// outputs/).
+// summary show one only when the deck used it (tests/house_test.cpp holds the layers).
 #include "tests/test_support.hpp"
 
 #include "axes/machine_profile.hpp"
@@ -106,36 +104,4 @@ TEST_CASE("Attachments: a saved state keeps whether the deck used the press, so 
                                      " --limit table=0:1 --report " + q(report.string()) + " -q");
     REQUIRE(resumed.exit_code == 0);
     CHECK(read_bytes(report).find("\"press\"") != std::string::npos);
-}
-
-TEST_CASE("House: no file of the 1952 machine includes a later system's folder, and no library "
-          "of the machine includes cli/ or outputs/") {
-    namespace fs = std::filesystem;
-    const std::regex later(R"(#include "relaylogic/(conditions|press|tapping)/)");
-    const std::regex upward(R"(#include "(cli|outputs|web)/)");
-    // The two files that name every later system by design: the registry, and the result that
-    // lists each system's part.
-    const std::vector<std::string> allowed = {"attachments.cpp", "run_result.hpp"};
-    int read = 0;
-    for (const auto& e : fs::directory_iterator(source_path("relaylogic"))) {
-        const std::string name = e.path().filename().string();
-        if (!e.is_regular_file() ||
-            std::find(allowed.begin(), allowed.end(), name) != allowed.end()) {
-            continue;
-        }
-        ++read;
-        INFO("relaylogic/" << name);
-        CHECK_FALSE(std::regex_search(read_bytes(e.path()), later));
-    }
-    CHECK(read > 20);
-    for (const char* part : {"relaylogic", "axes", "cardreader", "decks"}) {
-        for (const auto& e : fs::recursive_directory_iterator(source_path(part))) {
-            const std::string ext = e.path().extension().string();
-            if (!e.is_regular_file() || (ext != ".cpp" && ext != ".hpp")) {
-                continue;
-            }
-            INFO(e.path().string());
-            CHECK_FALSE(std::regex_search(read_bytes(e.path()), upward));
-        }
-    }
 }
