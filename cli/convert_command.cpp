@@ -4,7 +4,7 @@
 #include "cli/applied_profile.hpp"
 #include "cli/commands.hpp"
 #include "cli/deck_files.hpp"
-#include "cli/output_file.hpp"
+#include "outputs/output_file.hpp"
 
 #include "cardreader/deck_error.hpp"
 

@@ -2,7 +2,7 @@
 
 #include "cardreader/layout.hpp"
 #include "cli/applied_profile.hpp"
-#include "cli/output_file.hpp"
+#include "outputs/output_file.hpp"
 
 #include "axes/profile_json.hpp"
 #include "cardreader/deck_error.hpp"

@@ -1,6 +1,6 @@
 #include "cli/file_plan.hpp"
 
-#include "cli/output_file.hpp"
+#include "outputs/output_file.hpp"
 
 #include "cardreader/deck_error.hpp"
 

@@ -11,11 +11,11 @@
 #include "cli/data_files.hpp"
 #include "cli/deck_files.hpp"
 #include "cli/json_output.hpp"
-#include "cli/output_file.hpp"
 #include "cli/press_feeder.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/tapping.hpp"
-#include "cli/two_tool.hpp"
+#include "outputs/output_file.hpp"
+#include "outputs/proofs/two_tool_proof.hpp"
 
 #include "cardreader/deck_error.hpp"
 #include "cardreader/layout.hpp"

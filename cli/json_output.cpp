@@ -1,6 +1,6 @@
 #include "cli/json_output.hpp"
 
-#include "cli/output_file.hpp"
+#include "outputs/output_file.hpp"
 
 #include "cardreader/deck_error.hpp"
 

@@ -6,10 +6,10 @@
 #include "cardreader/deck_error.hpp"
 #include "cli/deck_files.hpp"
 #include "cli/json_output.hpp"
-#include "cli/output_file.hpp"
-#include "cli/press_proof.hpp"
 #include "decks/move_planner.hpp"
 #include "decks/template_job.hpp"
+#include "outputs/output_file.hpp"
+#include "outputs/proofs/press_proof.hpp"
 
 #include <fmt/format.h>
 

@@ -1,6 +1,6 @@
 #include "cli/progress_line.hpp"
 
-#include "cli/output_file.hpp"
+#include "outputs/output_file.hpp"
 
 #include <fmt/format.h>
 

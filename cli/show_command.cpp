@@ -5,7 +5,7 @@
 #include "cli/commands.hpp"
 #include "cli/deck_files.hpp"
 #include "cli/json_output.hpp"
-#include "cli/output_file.hpp"
+#include "outputs/output_file.hpp"
 
 #include "cardreader/card_svg.hpp"
 #include "cardreader/condition_card.hpp"

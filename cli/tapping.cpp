@@ -6,9 +6,9 @@
 #include "cardreader/deck_error.hpp"
 #include "cli/deck_files.hpp"
 #include "cli/json_output.hpp"
-#include "cli/output_file.hpp"
 #include "decks/move_planner.hpp"
 #include "decks/template_job.hpp"
+#include "outputs/output_file.hpp"
 
 #include <fmt/format.h>
 

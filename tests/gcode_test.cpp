@@ -5,11 +5,11 @@
 #include "test_support.hpp"
 
 #include "cardreader/deck_error.hpp"
-#include "cli/gcode_path.hpp"
 #include "decks/gcode_job.hpp"
 #include "decks/gcode_program.hpp"
 #include "decks/move_planner.hpp"
 #include "decks/template_job.hpp"
+#include "outputs/traces/gcode_path.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -6,7 +6,7 @@
 
 #include "axes/press.hpp"
 #include "cli/press_feeder.hpp"
-#include "cli/press_proof.hpp"
+#include "outputs/proofs/press_proof.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

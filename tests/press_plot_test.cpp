@@ -9,8 +9,8 @@
 
 #include "axes/machine_profile.hpp"
 #include "cardreader/deck_io.hpp"
-#include "cli/plot_press_lanes.hpp"
-#include "cli/plot_svg.hpp"
+#include "outputs/plots/plot_press_lanes.hpp"
+#include "outputs/plots/plot_svg.hpp"
 #include "relaylogic/control_cabinet.hpp"
 
 #include <catch2/catch.hpp>

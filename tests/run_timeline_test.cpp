@@ -4,8 +4,8 @@
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 
-#include "cli/replay_page.hpp"
-#include "cli/run_timeline.hpp"
+#include "outputs/replay/replay_page.hpp"
+#include "outputs/replay/run_timeline.hpp"
 
 #include "axes/machine_profile.hpp"
 #include "cardreader/layout.hpp"

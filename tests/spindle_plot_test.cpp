@@ -8,8 +8,8 @@
 // tests/golden/plot-1952.svg: tests/press_plot_test.cpp).
 #include "tests/machine_support.hpp"
 
-#include "cli/plot_spindle_lanes.hpp"
-#include "cli/plot_svg.hpp"
+#include "outputs/plots/plot_spindle_lanes.hpp"
+#include "outputs/plots/plot_svg.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -9,8 +9,8 @@
 #include "tests/test_support.hpp"
 
 #include "cli/tapping.hpp"
-#include "cli/thread_proof.hpp"
 #include "decks/template_job.hpp"
+#include "outputs/proofs/thread_proof.hpp"
 #include "relaylogic/faults.hpp"
 
 #include <catch2/catch.hpp>

@@ -2,8 +2,8 @@
 // runs of small decks through the control cabinet: the VCD must declare every relay and switch
 // of the cabinet once and replay to the counters' final positions, the JSON lines must parse,
 // the path must end where the part is, and the plot must show every axis's stop.
-#include "cli/plot_svg.hpp"
-#include "cli/trace_outputs.hpp"
+#include "outputs/plots/plot_svg.hpp"
+#include "outputs/traces/trace_outputs.hpp"
 
 #include "axes/machine_profile.hpp"
 #include "cardreader/layout.hpp"

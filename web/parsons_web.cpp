@@ -4,7 +4,7 @@
 // are worded as the program words them. A run is also recorded (cli/run_timeline.hpp) for the
 // viewer, whose arrays the page reads in place.
 #include "cli/command_line.hpp"
-#include "cli/run_timeline.hpp"
+#include "outputs/replay/run_timeline.hpp"
 
 #include <emscripten/bind.h>
 #include <emscripten/val.h>

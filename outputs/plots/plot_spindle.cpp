@@ -1,4 +1,4 @@
-#include "cli/plot_spindle.hpp"
+#include "outputs/plots/plot_spindle.hpp"
 
 #include <array>
 

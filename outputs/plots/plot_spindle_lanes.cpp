@@ -11,7 +11,7 @@
 //            ...            ...                                          order (Fig. 4)
 //   PC 130   CR1 ... CR8                                                 a bar a picked relay
 //   0     100     200 ...  machine time (s)
-#include "cli/plot_spindle_lanes.hpp"
+#include "outputs/plots/plot_spindle_lanes.hpp"
 
 #include <fmt/format.h>
 

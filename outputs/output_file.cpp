@@ -1,4 +1,4 @@
-#include "cli/output_file.hpp"
+#include "outputs/output_file.hpp"
 
 #include "cardreader/deck_error.hpp"
 

@@ -30,7 +30,7 @@
 #pragma once
 
 #include "cardreader/orders.hpp"
-#include "cli/plot_reduce.hpp"
+#include "outputs/plots/plot_reduce.hpp"
 #include "relaylogic/machine_observer.hpp"
 
 #include <array>

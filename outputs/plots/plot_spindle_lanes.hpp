@@ -3,8 +3,8 @@
 // a tap card has them; the chart of any other run is drawn as before, byte for byte.
 #pragma once
 
-#include "cli/plot_lanes.hpp"
-#include "cli/plot_spindle.hpp"
+#include "outputs/plots/plot_lanes.hpp"
+#include "outputs/plots/plot_spindle.hpp"
 
 #include <array>
 #include <string>

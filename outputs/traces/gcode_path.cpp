@@ -1,5 +1,5 @@
 // The machine's path as G-code (cli/gcode_path.hpp; docs/gcode.md).
-#include "cli/gcode_path.hpp"
+#include "outputs/traces/gcode_path.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>

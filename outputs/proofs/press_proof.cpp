@@ -1,5 +1,5 @@
 // The press-feeder proof (cli/press_proof.hpp says what it checks and how).
-#include "cli/press_proof.hpp"
+#include "outputs/proofs/press_proof.hpp"
 
 #include "cardreader/deck_error.hpp"
 #include "cli/deck_files.hpp"

@@ -4,7 +4,7 @@
 // disk with no server and no WebAssembly, and plays the recorded run on machine time.
 #pragma once
 
-#include "cli/run_timeline.hpp"
+#include "outputs/replay/run_timeline.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,11 +1,11 @@
 // Drawing the plot that PlotSvgRecorder (plot_svg.cpp) recorded.
-#include "cli/plot_svg.hpp"
+#include "outputs/plots/plot_svg.hpp"
 
 #include "cardreader/card_svg.hpp"
-#include "cli/plot_geometry.hpp"
-#include "cli/plot_press_lanes.hpp"
-#include "cli/plot_reduce.hpp"
-#include "cli/plot_spindle_lanes.hpp"
+#include "outputs/plots/plot_geometry.hpp"
+#include "outputs/plots/plot_press_lanes.hpp"
+#include "outputs/plots/plot_reduce.hpp"
+#include "outputs/plots/plot_spindle_lanes.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "cli/run_timeline.hpp"
+#include "outputs/replay/run_timeline.hpp"
 
 #include "axes/lead_screw_axis.hpp"
 #include "cardreader/orders.hpp"

@@ -12,7 +12,7 @@
 //                        card        stop
 #pragma once
 
-#include "cli/plot_geometry.hpp"
+#include "outputs/plots/plot_geometry.hpp"
 
 #include <algorithm>
 #include <cstdint>

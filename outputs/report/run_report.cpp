@@ -1,4 +1,4 @@
-#include "cli/run_report.hpp"
+#include "outputs/report/run_report.hpp"
 
 #include <fmt/format.h>
 

@@ -1,5 +1,5 @@
 // The thread proof (cli/thread_proof.hpp says what it measures and how).
-#include "cli/thread_proof.hpp"
+#include "outputs/proofs/thread_proof.hpp"
 
 #include "cardreader/deck_error.hpp"
 #include "cli/deck_files.hpp"

@@ -23,8 +23,8 @@
 // chart it drew before them.
 #pragma once
 
-#include "cli/plot_press.hpp"
-#include "cli/plot_spindle.hpp"
+#include "outputs/plots/plot_press.hpp"
+#include "outputs/plots/plot_spindle.hpp"
 #include "relaylogic/machine_observer.hpp"
 
 #include <array>

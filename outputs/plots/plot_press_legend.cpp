@@ -1,6 +1,6 @@
 // The legend of the press lanes (plot_press_lanes.hpp): under the panels' legend, a glyph and a
 // few words for each lane and for detector 61's mark, in as many rows as the page needs.
-#include "cli/plot_press_lanes.hpp"
+#include "outputs/plots/plot_press_lanes.hpp"
 
 #include <vector>
 

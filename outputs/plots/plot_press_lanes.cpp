@@ -9,7 +9,7 @@
 //   reader 60  [=====hold=====]   [==]                               a bar while 60 holds
 //   processor 63 (when a drive followed the press)
 //   0     100     200 ...  machine time (s)
-#include "cli/plot_press_lanes.hpp"
+#include "outputs/plots/plot_press_lanes.hpp"
 
 #include <fmt/format.h>
 

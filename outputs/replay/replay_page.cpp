@@ -1,6 +1,6 @@
-#include "cli/replay_page.hpp"
+#include "outputs/replay/replay_page.hpp"
 
-#include "cli/web_assets.hpp" // generated: cmake/embed_web.cmake
+#include "outputs/web_assets.hpp" // generated: cmake/embed_web.cmake
 
 #include "cardreader/card_svg.hpp"
 

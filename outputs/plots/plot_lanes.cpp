@@ -1,5 +1,5 @@
 // The frame and the lines every lane under the panels draws (plot_lanes.hpp).
-#include "cli/plot_lanes.hpp"
+#include "outputs/plots/plot_lanes.hpp"
 
 #include "cardreader/card_svg.hpp"
 

@@ -1,7 +1,7 @@
 // The legend of the spindle lanes (plot_spindle_lanes.hpp): under the legend above it (the
 // panels', the press's), a glyph and a few words for each line, mark and kind of bar the lanes
 // draw, in as many rows as the page needs.
-#include "cli/plot_spindle_lanes.hpp"
+#include "outputs/plots/plot_spindle_lanes.hpp"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
-#include "cli/plot_svg.hpp"
+#include "outputs/plots/plot_svg.hpp"
 
 #include "cardreader/card_svg.hpp"
-#include "cli/plot_reduce.hpp"
+#include "outputs/plots/plot_reduce.hpp"
 
 #include <fmt/format.h>
 

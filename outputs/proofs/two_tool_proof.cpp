@@ -1,9 +1,9 @@
 // The proof of a two-tool job's cut (cli/two_tool.hpp): each stretch of the path swept with
 // the radius of the tool that cut it, and the surface the passes left together.
-#include "cli/two_tool.hpp"
+#include "outputs/proofs/two_tool_proof.hpp"
 
-#include "cli/output_file.hpp"
-#include "cli/run_report.hpp"
+#include "outputs/output_file.hpp"
+#include "outputs/report/run_report.hpp"
 
 #include "cardreader/deck_error.hpp"
 #include "decks/cut_svg.hpp"

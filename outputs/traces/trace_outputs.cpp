@@ -1,4 +1,4 @@
-#include "cli/trace_outputs.hpp"
+#include "outputs/traces/trace_outputs.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

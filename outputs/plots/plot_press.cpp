@@ -1,6 +1,6 @@
-#include "cli/plot_press.hpp"
+#include "outputs/plots/plot_press.hpp"
 
-#include "cli/plot_reduce.hpp"
+#include "outputs/plots/plot_reduce.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -3,8 +3,8 @@
 // drawn as before, byte for byte.
 #pragma once
 
-#include "cli/plot_lanes.hpp"
-#include "cli/plot_press.hpp"
+#include "outputs/plots/plot_lanes.hpp"
+#include "outputs/plots/plot_press.hpp"
 
 #include <array>
 #include <string>
