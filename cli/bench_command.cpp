@@ -17,7 +17,7 @@
 //                                        memory of 100 and 1,000 cycles (flat)
 // A benchmark, not a test: it asserts nothing about time. --json for the same as JSON.
 #include "cli/commands.hpp"
-#include "cli/progress_line.hpp"
+#include "cli/support/progress_line.hpp"
 #include "outputs/output_file.hpp"
 
 #include "cardreader/deck_io.hpp"

@@ -15,7 +15,7 @@
 //
 // With --json the findings are one document for scripts instead (docs/json-output.md).
 #include "cli/commands.hpp"
-#include "cli/json_output.hpp"
+#include "cli/support/json_output.hpp"
 
 #include "cardreader/deck_error.hpp"
 #include "cardreader/deck_review.hpp"

@@ -3,9 +3,9 @@
 // cardreader::DeckError for bad input (exit 2); the function returns the exit code otherwise.
 #pragma once
 
-#include "cli/deck_files.hpp"
 #include "cli/exit_codes.hpp"
-#include "cli/file_plan.hpp"
+#include "cli/support/deck_files.hpp"
+#include "cli/support/file_plan.hpp"
 
 #include "axes/machine_profile.hpp"
 #include "decks/job_file.hpp"

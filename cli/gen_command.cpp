@@ -6,14 +6,14 @@
 // addition after EP 0640901, run under --profile parsons-extended). parsons gen press-feeder and
 // parsons gen tapping: the jobs of the press and spindle synchronisations (cli/press_feeder.hpp,
 // cli/tapping.hpp).
-#include "cli/applied_profile.hpp"
 #include "cli/commands.hpp"
-#include "cli/data_files.hpp"
-#include "cli/deck_files.hpp"
-#include "cli/json_output.hpp"
-#include "cli/press_feeder.hpp"
-#include "cli/progress_line.hpp"
-#include "cli/tapping.hpp"
+#include "cli/gen_press_feeder.hpp"
+#include "cli/gen_tapping.hpp"
+#include "cli/support/applied_profile.hpp"
+#include "cli/support/data_files.hpp"
+#include "cli/support/deck_files.hpp"
+#include "cli/support/json_output.hpp"
+#include "cli/support/progress_line.hpp"
 #include "outputs/output_file.hpp"
 #include "outputs/proofs/two_tool_proof.hpp"
 

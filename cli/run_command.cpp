@@ -3,13 +3,13 @@
 // Exit 0: the deck completed. Exit 3: the machine stopped itself (a check fired: a correct
 // emulation). Exit 2: the deck or a flag could not be read. Every output file is written
 // whole or not at all.
-#include "cli/applied_profile.hpp"
 #include "cli/commands.hpp"
-#include "cli/data_files.hpp"
-#include "cli/deck_files.hpp"
-#include "cli/file_plan.hpp"
-#include "cli/progress_line.hpp"
 #include "cli/run_outputs.hpp"
+#include "cli/support/applied_profile.hpp"
+#include "cli/support/data_files.hpp"
+#include "cli/support/deck_files.hpp"
+#include "cli/support/file_plan.hpp"
+#include "cli/support/progress_line.hpp"
 #include "outputs/output.hpp"
 #include "outputs/output_file.hpp"
 #include "outputs/proofs/press_proof.hpp"

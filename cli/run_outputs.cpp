@@ -4,7 +4,7 @@
 
 #include "axes/profile_json.hpp"
 #include "axes/state_json.hpp"
-#include "cli/deck_files.hpp"
+#include "cli/support/deck_files.hpp"
 #include "outputs/output_file.hpp"
 #include "outputs/plots/plot_output.hpp"
 #include "outputs/proofs/cut_output.hpp"

@@ -4,8 +4,8 @@
 // with the result; adding an output is one entry here and its class in outputs/.
 #pragma once
 
-#include "cli/applied_profile.hpp"
 #include "cli/commands.hpp"
+#include "cli/support/applied_profile.hpp"
 #include "outputs/output.hpp"
 
 #include "decks/job_file.hpp"

@@ -3,7 +3,7 @@
 // pages are clean roff, the bash script completes as a user would see it, and the files the
 // build wrote are the ones the command line gives now.
 #include "cli/command_line.hpp"
-#include "cli/manual.hpp"
+#include "cli/support/manual.hpp"
 #include "tests/test_support.hpp"
 
 #include <catch2/catch.hpp>

@@ -5,7 +5,7 @@
 #include "tests/test_support.hpp"
 
 #include "axes/press.hpp"
-#include "cli/press_feeder.hpp"
+#include "cli/gen_press_feeder.hpp"
 #include "outputs/proofs/press_proof.hpp"
 
 #include <catch2/catch.hpp>

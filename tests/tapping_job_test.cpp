@@ -8,7 +8,7 @@
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 
-#include "cli/tapping.hpp"
+#include "cli/gen_tapping.hpp"
 #include "decks/template_job.hpp"
 #include "outputs/proofs/thread_proof.hpp"
 #include "relaylogic/faults.hpp"

@@ -2,7 +2,7 @@
 #include "outputs/proofs/press_proof.hpp"
 
 #include "cardreader/deck_error.hpp"
-#include "cli/deck_files.hpp"
+#include "cli/support/deck_files.hpp"
 
 #include <fmt/format.h>
 

@@ -2,7 +2,7 @@
 #include "outputs/proofs/thread_proof.hpp"
 
 #include "cardreader/deck_error.hpp"
-#include "cli/deck_files.hpp"
+#include "cli/support/deck_files.hpp"
 #include "decks/template_job.hpp"
 
 #include <fmt/format.h>

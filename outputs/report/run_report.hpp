@@ -2,7 +2,7 @@
 // summary.
 #pragma once
 
-#include "cli/applied_profile.hpp"
+#include "cli/support/applied_profile.hpp"
 #include "relaylogic/control_cabinet.hpp"
 
 #include <nlohmann/json.hpp>

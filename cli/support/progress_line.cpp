@@ -1,4 +1,4 @@
-#include "cli/progress_line.hpp"
+#include "cli/support/progress_line.hpp"
 
 #include "outputs/output_file.hpp"
 

@@ -1,6 +1,6 @@
-#include "cli/applied_profile.hpp"
+#include "cli/support/applied_profile.hpp"
 
-#include "cli/deck_files.hpp"
+#include "cli/support/deck_files.hpp"
 
 #include "axes/profile_json.hpp"
 #include "axes/state_json.hpp"

@@ -1,5 +1,5 @@
 // Finding the data parsons ships (cli/data_files.hpp).
-#include "cli/data_files.hpp"
+#include "cli/support/data_files.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

@@ -1,4 +1,4 @@
-#include "cli/file_plan.hpp"
+#include "cli/support/file_plan.hpp"
 
 #include "outputs/output_file.hpp"
 

@@ -1,11 +1,11 @@
 // parsons gen tapping: a plate of tapped holes with two taps on two spindle heads
 // (decks/tapping_job.hpp), its job file and its profile (cli/tapping.hpp).
-#include "cli/tapping.hpp"
+#include "cli/gen_tapping.hpp"
 
 #include "axes/profile_json.hpp"
 #include "cardreader/deck_error.hpp"
-#include "cli/deck_files.hpp"
-#include "cli/json_output.hpp"
+#include "cli/support/deck_files.hpp"
+#include "cli/support/json_output.hpp"
 #include "decks/move_planner.hpp"
 #include "decks/template_job.hpp"
 #include "outputs/output_file.hpp"

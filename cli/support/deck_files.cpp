@@ -1,7 +1,7 @@
-#include "cli/deck_files.hpp"
+#include "cli/support/deck_files.hpp"
 
 #include "cardreader/layout.hpp"
-#include "cli/applied_profile.hpp"
+#include "cli/support/applied_profile.hpp"
 #include "outputs/output_file.hpp"
 
 #include "axes/profile_json.hpp"

@@ -1,4 +1,4 @@
-#include "cli/json_output.hpp"
+#include "cli/support/json_output.hpp"
 
 #include "outputs/output_file.hpp"
 

@@ -1,11 +1,11 @@
 // parsons gen press-feeder: the seed's Fig. 3 cycle (decks/press_feeder_job.hpp), its job file
 // and its profile; the speed-only variant timed by running it (cli/press_feeder.hpp).
-#include "cli/press_feeder.hpp"
+#include "cli/gen_press_feeder.hpp"
 
 #include "axes/profile_json.hpp"
 #include "cardreader/deck_error.hpp"
-#include "cli/deck_files.hpp"
-#include "cli/json_output.hpp"
+#include "cli/support/deck_files.hpp"
+#include "cli/support/json_output.hpp"
 #include "decks/move_planner.hpp"
 #include "decks/template_job.hpp"
 #include "outputs/output_file.hpp"
