@@ -9,6 +9,7 @@
 
 #include "axes/machine_profile.hpp"
 #include "decks/job_file.hpp"
+#include "decks/two_tool_job.hpp"
 #include "relaylogic/control_cabinet.hpp"
 
 #include <CLI/CLI.hpp>
@@ -106,5 +107,20 @@ GeneratedJob generate_job(const decks::JobDescription& description,
                           const axes::MachineProfile& profile, const std::string& output,
                           const std::string& to, const std::string& centres,
                           ProgressLine* progress = nullptr, const std::string& job_out = {});
+
+// A two-tool deck generated and written (DECK and its job description, DECK.job.json or
+// --job-out), for gen and demo.
+struct GeneratedTwoToolJob {
+    decks::JobDescription description;
+    decks::TwoToolDeck deck;
+    std::string job_file; // where the job description went; "" for nowhere
+};
+// `airfoil`: "naca 2412" or "dat PATH"; `job_out`: --job-out (job_file_for). Throws
+// cardreader::DeckError (exit 2) when the job cannot be made or written.
+GeneratedTwoToolJob generate_two_tool_job(const std::string& airfoil, bool closed_te,
+                                          const decks::TwoToolOptions& options,
+                                          const axes::MachineProfile& profile,
+                                          const std::string& output, const std::string& to,
+                                          const std::string& job_out = {});
 
 } // namespace parsons::cli

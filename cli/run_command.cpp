@@ -9,6 +9,7 @@
 #include "cli/support/data_files.hpp"
 #include "cli/support/deck_files.hpp"
 #include "cli/support/file_plan.hpp"
+#include "cli/support/job_files.hpp"
 #include "cli/support/progress_line.hpp"
 #include "outputs/output.hpp"
 #include "outputs/output_file.hpp"
@@ -38,32 +39,6 @@ namespace parsons::cli {
 namespace {
 
 using cardreader::DeckError;
-
-// The job description of a generated deck; refused when it was written for another deck.
-decks::JobDescription read_job(const std::string& file, const std::string& deck_path,
-                               const DeckFlags& deck_flags) {
-    const std::string text =
-        read_text_file(file, "cannot open the job description (written by 'parsons gen airfoil' "
-                             "beside the deck; or give --job FILE)");
-    decks::JobDescription job;
-    try {
-        job = decks::job_from_json(text);
-    } catch (const decks::JobError& e) {
-        throw DeckError::in_file(file, e.what());
-    }
-    if (!job.deck_fingerprint.empty() && deck_path != "-") {
-        const cardreader::DeckFingerprint fingerprint = fingerprint_deck(deck_path, deck_flags);
-        if (fingerprint.hex() != job.deck_fingerprint) {
-            throw DeckError::in_file(
-                file, fmt::format("this job description was written for another deck ({} cards, "
-                                  "fingerprint {}), not {} ({} cards, fingerprint {}): give the "
-                                  "job the deck was generated with (--job FILE)",
-                                  job.deck_cards, job.deck_fingerprint, deck_path,
-                                  fingerprint.cards(), fingerprint.hex()));
-        }
-    }
-    return job;
-}
 
 // The job description a run reads: --job, or the one beside the deck for --cut (which needs it)
 // and --html (which draws its design when there is one); "" for none.
@@ -437,7 +412,7 @@ void finish_outputs(const std::vector<std::unique_ptr<Output>>& outputs,
             throw BrokenPipe(gone);
         }
     }
-    nlohmann::json report = report_json(result, applied, f.input);
+    nlohmann::json report = report_json(result, applied.profile(), applied.describe(), f.input);
     std::string summary;
     RunEnd end{result, report, summary};
     for (const auto& output : outputs) {

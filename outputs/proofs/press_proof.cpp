@@ -2,7 +2,6 @@
 #include "outputs/proofs/press_proof.hpp"
 
 #include "cardreader/deck_error.hpp"
-#include "cli/support/deck_files.hpp"
 
 #include <fmt/format.h>
 
@@ -133,17 +132,6 @@ void PressProof::check(double t) {
     low_ = low;
     last_t_ = t;
     last_theta_ = press_.theta_deg();
-}
-
-decks::PressFeederJob read_press_job(const std::string& file) {
-    const std::string text = read_text_file(
-        file, "cannot open the press-feeder job (written by 'parsons gen press-feeder' beside "
-              "the deck as DECK.job.json)");
-    try {
-        return decks::press_job_from_json(text);
-    } catch (const decks::JobError& e) {
-        throw DeckError::in_file(file, e.what());
-    }
 }
 
 namespace {

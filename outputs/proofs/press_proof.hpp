@@ -94,9 +94,6 @@ private:
     std::vector<double> entries_;
 };
 
-// The job file for --press-proof; throws DeckError naming the file.
-decks::PressFeederJob read_press_job(const std::string& file);
-
 // The report's press block (RunResult.press and the proof) and the summary's lines.
 nlohmann::json press_block(const relaylogic::RunResult& result, const PressProof& proof,
                            const decks::PressFeederJob& job);

@@ -2,7 +2,6 @@
 #include "outputs/proofs/thread_proof.hpp"
 
 #include "cardreader/deck_error.hpp"
-#include "cli/support/deck_files.hpp"
 #include "decks/template_job.hpp"
 
 #include <fmt/format.h>
@@ -193,17 +192,6 @@ ThreadProof prove_threads(const relaylogic::TappingResult& tapping, const decks:
         proof.holes.push_back(std::move(h));
     }
     return proof;
-}
-
-decks::TappingJob read_tapping_job(const std::string& file) {
-    const std::string text = read_text_file(
-        file, "cannot open the tapping job (written by 'parsons gen tapping' beside the deck as "
-              "DECK.job.json)");
-    try {
-        return decks::tapping_job_from_json(text);
-    } catch (const decks::JobError& e) {
-        throw DeckError::in_file(file, e.what());
-    }
 }
 
 void add_thread_proof(nlohmann::json& block, const ThreadProof& proof) {

@@ -85,9 +85,6 @@ ThreadProof prove_threads(const relaylogic::TappingResult& tapping, const decks:
                           const axes::SpindleSyncProfile& spindle,
                           std::optional<double> tolerance_percent);
 
-// The job file for --thread-proof; throws DeckError naming the file.
-decks::TappingJob read_tapping_job(const std::string& file);
-
 // The proof's keys: added to the report's tapping block and to each of its holes.
 void add_thread_proof(nlohmann::json& tapping_block, const ThreadProof& proof);
 // The summary's lines ("  thread proof   ...").

@@ -1,6 +1,6 @@
-// The two-tool job in the CLI (decks/two_tool_job.hpp; condition cards, an addition after
-// EP 0640901): generating it (`parsons gen two-tool`, gen_command.cpp, and `parsons demo`)
-// and proving its cut per tool (`parsons run DECK --cut SVG`, two_tool_proof.cpp).
+// The two-tool job's cut (decks/two_tool_job.hpp; condition cards, an addition after
+// EP 0640901), proved per tool (`parsons run DECK --cut SVG`, two_tool_proof.cpp; generating the
+// job is `parsons gen two-tool`, cli/gen_command.cpp).
 //
 // The proof sweeps each stretch of the recorded path with the radius of the tool that was in
 // the spindle while it was cut: a stretch ends where a tool change is acknowledged (the new
@@ -80,20 +80,5 @@ decks::CutProof combine_proofs(const std::vector<decks::CutProof>& proofs,
 // Writes the picture to `svg` and the figures into report["cut"]; returns the summary lines.
 std::string write_two_tool_cut(const TwoToolCut& cut, const decks::JobDescription& job,
                                const std::string& svg, nlohmann::json& report);
-
-// A two-tool deck generated and written (DECK and its job description, DECK.job.json or
-// --job-out), for gen and demo.
-struct GeneratedTwoToolJob {
-    decks::JobDescription description;
-    decks::TwoToolDeck deck;
-    std::string job_file; // where the job description went; "" for nowhere
-};
-// `airfoil`: "naca 2412" or "dat PATH"; `job_out`: --job-out (job_file_for). Throws
-// cardreader::DeckError (exit 2) when the job cannot be made or written.
-GeneratedTwoToolJob generate_two_tool_job(const std::string& airfoil, bool closed_te,
-                                          const decks::TwoToolOptions& options,
-                                          const axes::MachineProfile& profile,
-                                          const std::string& output, const std::string& to,
-                                          const std::string& job_out = {});
 
 } // namespace parsons::cli

@@ -78,16 +78,15 @@ double angle_deg(double degrees) {
     return rounded(degrees, 0.0001);
 }
 
-nlohmann::json report_json(const relaylogic::RunResult& r, const AppliedProfile& applied,
-                           const std::string& deck) {
+nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachineProfile& profile,
+                           const nlohmann::json& profile_applied, const std::string& deck) {
     using nlohmann::json;
-    const axes::MachineProfile& profile = applied.profile();
     json j;
     j["parsons_version"] = PARSONS_VERSION;
     j["schema_version"] = kReportSchemaVersion;
     j["deck"] = deck;
     j["profile"] = profile.name;
-    j["profile_applied"] = applied.describe();
+    j["profile_applied"] = profile_applied;
     j["status"] = r.completed ? "completed" : "stopped";
     j["cards_read"] = r.cards_read;
     j["machine_seconds"] = time_s(r.machine_seconds);

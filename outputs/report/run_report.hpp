@@ -2,7 +2,7 @@
 // summary.
 #pragma once
 
-#include "cli/support/applied_profile.hpp"
+#include "axes/machine_profile.hpp"
 #include "relaylogic/control_cabinet.hpp"
 
 #include <nlohmann/json.hpp>
@@ -23,8 +23,10 @@ double fine_length(double inches);
 double time_s(double seconds);
 double angle_deg(double degrees);
 
-nlohmann::json report_json(const relaylogic::RunResult& result, const AppliedProfile& profile,
-                           const std::string& deck);
+// `profile_applied`: where each part of the profile came from (cli/support/applied_profile.hpp,
+// AppliedProfile::describe()).
+nlohmann::json report_json(const relaylogic::RunResult& result, const axes::MachineProfile& profile,
+                           const nlohmann::json& profile_applied, const std::string& deck);
 
 // What the operator reads at the end: cards run, machine time, where every axis stands and,
 // on a stop, the reason with card, axis and the lamps lit.
