@@ -27,7 +27,8 @@ using Command = std::function<ExitCode()>;
 void add_punch_command(CLI::App& app, Command& selected);
 void add_convert_command(CLI::App& app, Command& selected);
 void add_show_command(CLI::App& app, Command& selected);
-// `timeline` (may be null): recorded on every run the command line starts (the page's hook).
+// `timeline` (may be null): recorded on every run the command line starts (the page's hook),
+// attached as run's replay output (cli/run_outputs.cpp).
 void add_run_command(CLI::App& app, Command& selected, RunTimeline* timeline = nullptr);
 void add_profile_command(CLI::App& app, Command& selected);
 void add_gen_command(CLI::App& app, Command& selected);
@@ -45,7 +46,7 @@ struct RunRequest {
     std::string events;
     std::string path;
     std::string gcode; // the path as G-code (convert DECK -o path.ngc)
-    std::string html;  // the run as one self-contained replay page (cli/replay_page.hpp)
+    std::string html;  // the run as one self-contained replay page (outputs/replay/replay_page.hpp)
     std::string plot;
     std::string cut;
     std::string job;
@@ -79,8 +80,8 @@ struct GeneratedJob {
 };
 
 // The files a generator reads and writes, to compare before it writes anything
-// (cli/file_plan.hpp): --profile's file, the deck (-o), its job description (job_file_for) and,
-// for a press or tapping job, the profile beside that. The caller adds what else it reads or
+// (cli/support/file_plan.hpp): --profile's file, the deck (-o), its job description (job_file_for)
+// and, for a press or tapping job, the profile beside that. The caller adds what else it reads or
 // writes, then checks.
 FilePlan generator_plan(const std::string& profile, const std::string& output,
                         const std::string& job_out, bool writes_profile);

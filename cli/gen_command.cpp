@@ -4,8 +4,8 @@
 // parsons gen two-tool: the template roughed with one tool and finished with another, the tool
 // change tripped by a condition card during the return move (decks/two_tool_job.hpp; an
 // addition after EP 0640901, run under --profile parsons-extended). parsons gen press-feeder and
-// parsons gen tapping: the jobs of the press and spindle synchronisations (cli/press_feeder.hpp,
-// cli/tapping.hpp).
+// parsons gen tapping: the jobs of the press and spindle synchronisations
+// (cli/gen_press_feeder.hpp, cli/gen_tapping.hpp).
 #include "cli/commands.hpp"
 #include "cli/gen_press_feeder.hpp"
 #include "cli/gen_tapping.hpp"
@@ -33,8 +33,8 @@ namespace parsons::cli {
 namespace {
 
 // The source a job is computed from: "naca DIGITS", or "dat FILE" with FILE found as given or
-// among the bundled airfoil files (cli/data_files.hpp). A file that cannot be found is named,
-// with the bundled ones a bare name could have given.
+// among the bundled airfoil files (cli/support/data_files.hpp). A file that cannot be found is
+// named, with the bundled ones a bare name could have given.
 std::string airfoil_source(const std::string& naca, const std::string& dat) {
     if (!naca.empty()) {
         return "naca " + naca;

@@ -1,5 +1,5 @@
 // parsons gen press-feeder: the seed's Fig. 3 cycle (decks/press_feeder_job.hpp), its job file
-// and its profile; the speed-only variant timed by running it (cli/press_feeder.hpp).
+// and its profile; the speed-only variant timed by running it (cli/gen_press_feeder.hpp).
 #include "cli/gen_press_feeder.hpp"
 
 #include "axes/profile_json.hpp"

@@ -1,5 +1,5 @@
 // parsons gen tapping: a plate of tapped holes with two taps on two spindle heads
-// (decks/tapping_job.hpp), its job file and its profile (cli/tapping.hpp).
+// (decks/tapping_job.hpp), its job file and its profile (cli/gen_tapping.hpp).
 #include "cli/gen_tapping.hpp"
 
 #include "axes/profile_json.hpp"

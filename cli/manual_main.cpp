@@ -1,6 +1,6 @@
 // parsons_manual OUTDIR: writes parsons' manual pages (OUTDIR/man/man1/NAME.1) and its shell
 // completion (OUTDIR/completion/parsons.bash and _parsons) from the command line itself. Run
-// by the build (cli/CMakeLists.txt); cli/manual.hpp says what is in them.
+// by the build (cli/CMakeLists.txt); cli/support/manual.hpp says what is in them.
 #include "cli/command_line.hpp"
 #include "cli/support/manual.hpp"
 

@@ -57,8 +57,8 @@ std::string job_file_read(const RunRequest& f) {
     return "";
 }
 
-// Every file the run reads and writes, compared before anything is written (cli/file_plan.hpp):
-// the files named on the command line.
+// Every file the run reads and writes, compared before anything is written
+// (cli/support/file_plan.hpp): the files named on the command line.
 FilePlan run_plan(const RunRequest& f) {
     FilePlan plan;
     plan.read("DECK", f.input);

@@ -1,6 +1,7 @@
 // G-code both ways (docs/gcode.md): reading a program (decks/gcode_program.hpp), the deck made
-// of it (decks/gcode_job.hpp), the machine's path written as G-code (cli/gcode_path.hpp), and
-// the commands. The independent cross-check of the round trip is tests/js/gcode_crosscheck.js.
+// of it (decks/gcode_job.hpp), the machine's path written as G-code
+// (outputs/traces/gcode_path.hpp), and the commands. The independent cross-check of the round trip
+// is tests/js/gcode_crosscheck.js.
 #include "machine_support.hpp"
 #include "test_support.hpp"
 

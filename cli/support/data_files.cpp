@@ -1,4 +1,4 @@
-// Finding the data parsons ships (cli/data_files.hpp).
+// Finding the data parsons ships (cli/support/data_files.hpp).
 #include "cli/support/data_files.hpp"
 
 #include <fmt/format.h>

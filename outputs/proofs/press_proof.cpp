@@ -1,4 +1,4 @@
-// The press-feeder proof (cli/press_proof.hpp says what it checks and how).
+// The press-feeder proof (outputs/proofs/press_proof.hpp says what it checks and how).
 #include "outputs/proofs/press_proof.hpp"
 
 #include "cardreader/deck_error.hpp"

@@ -1,4 +1,4 @@
-// The thread proof (cli/thread_proof.hpp says what it measures and how).
+// The thread proof (outputs/proofs/thread_proof.hpp says what it measures and how).
 #include "outputs/proofs/thread_proof.hpp"
 
 #include "cardreader/deck_error.hpp"

@@ -1,5 +1,5 @@
-// The proof of a two-tool job's cut (cli/two_tool.hpp): each stretch of the path swept with
-// the radius of the tool that cut it, and the surface the passes left together.
+// The proof of a two-tool job's cut (outputs/proofs/two_tool_proof.hpp): each stretch of the path
+// swept with the radius of the tool that cut it, and the surface the passes left together.
 #include "outputs/proofs/two_tool_proof.hpp"
 
 #include "outputs/output_file.hpp"

@@ -1,4 +1,4 @@
-// The machine's path as G-code (cli/gcode_path.hpp; docs/gcode.md).
+// The machine's path as G-code (outputs/traces/gcode_path.hpp; docs/gcode.md).
 #include "outputs/traces/gcode_path.hpp"
 
 #include <fmt/format.h>
