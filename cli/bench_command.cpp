@@ -17,8 +17,8 @@
 //                                        memory of 100 and 1,000 cycles (flat)
 // A benchmark, not a test: it asserts nothing about time. --json for the same as JSON.
 #include "cli/commands.hpp"
-#include "cli/output_file.hpp"
-#include "cli/progress_line.hpp"
+#include "cli/support/progress_line.hpp"
+#include "outputs/output_file.hpp"
 
 #include "cardreader/deck_io.hpp"
 #include "cardreader/deck_review.hpp"
@@ -326,6 +326,244 @@ std::int64_t vcd_events(const std::string& path) {
     return n;
 }
 
+// One benchmark: its scratch folder, the JSON it fills and the lines it says, measured in steps.
+class Bench {
+public:
+    explicit Bench(const BenchOptions& o)
+        : o_(o), scratch_("parsons-bench"), dir_(scratch_.path()),
+          stages_(12 + (o.scaling ? 4 : 0)) {}
+
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    void say(const std::string& s) {
+        stages_.clear();
+        if (!o_.json) {
+            fmt::print("{}\n", s);
+            std::fflush(stdout);
+        }
+    }
+    void machine();
+    void impulse_level_and_fast_forward();
+    void vcd_trace();
+    void short_moves();
+    void generation_and_cut();
+    void peak_memory();
+    void press_cycles();
+    void scaling();
+    void print_json() const {
+        if (o_.json) {
+            fmt::print("{}\n", j_.dump(2));
+        }
+    }
+
+private:
+    const BenchOptions& o_;
+    const ScratchFolder scratch_; // made new, so removing it harms nothing else
+    const fs::path dir_;
+    nlohmann::json j_;
+    Stages stages_;
+};
+
+void Bench::machine() {
+    j_["machine"] = {{"cpu", cpu_model()},
+                     {"cores", sysconf(_SC_NPROCESSORS_ONLN)},
+                     {"build", PARSONS_BUILD_TYPE}};
+    j_["runs"] = o_.runs;
+    say(fmt::format("parsons bench: {} ({} cores), {} build, median of {} runs", cpu_model(),
+                    sysconf(_SC_NPROCESSORS_ONLN), PARSONS_BUILD_TYPE, o_.runs));
+}
+
+// Impulse level and fast-forward on the same long deck.
+void Bench::impulse_level_and_fast_forward() {
+    stages_.begin("impulse level");
+    write_deck(path("long.cbn"), o_.long_cards, kLongMoves);
+    RunRequest impulse_level = quiet_run(path("long.cbn"));
+    impulse_level.impulse_level = true;
+    const Timed il = time_run(impulse_level, o_.runs, stages_);
+    const std::int64_t impulses = impulses_of(il.result);
+    j_["impulse_level"] = {{"cards", o_.long_cards},
+                           {"impulses", impulses},
+                           {"seconds", il.seconds},
+                           {"impulses_per_s", static_cast<double>(impulses) / il.seconds}};
+    say(fmt::format("impulse level, no observer  {:>8.1f} M impulses/s  ({} cards, {} impulses "
+                    "in {:.3f} s)",
+                    static_cast<double>(impulses) / il.seconds / 1e6, o_.long_cards, impulses,
+                    il.seconds));
+
+    stages_.begin("fast-forward, long moves");
+    const Timed ff = time_run(quiet_run(path("long.cbn")), o_.runs, stages_);
+    j_["fast_forward_long"] = {{"cards", o_.long_cards},
+                               {"impulses", impulses_of(ff.result)},
+                               {"seconds", ff.seconds},
+                               {"impulses_per_s", static_cast<double>(impulses) / ff.seconds},
+                               {"cards_per_s", o_.long_cards / ff.seconds}};
+    say(fmt::format("fast-forward, long moves    {:>8.1f} M impulses/s  (the same deck: {:.0f} "
+                    "cards/s)",
+                    static_cast<double>(impulses) / ff.seconds / 1e6, o_.long_cards / ff.seconds));
+}
+
+// The VCD trace, written to a file.
+void Bench::vcd_trace() {
+    stages_.begin("VCD trace");
+    write_deck(path("trace.cbn"), o_.trace_cards, kLongMoves);
+    RunRequest traced = quiet_run(path("trace.cbn"));
+    traced.trace = path("trace.vcd");
+    const Timed tr = time_run(traced, o_.runs, stages_);
+    const std::int64_t events = vcd_events(traced.trace);
+    const double mb = static_cast<double>(fs::file_size(traced.trace)) / 1e6;
+    const std::int64_t trace_impulses = impulses_of(tr.result);
+    j_["vcd"] = {{"cards", o_.trace_cards},
+                 {"impulses", trace_impulses},
+                 {"events", events},
+                 {"mb", mb},
+                 {"seconds", tr.seconds},
+                 {"impulses_per_s", static_cast<double>(trace_impulses) / tr.seconds},
+                 {"events_per_s", static_cast<double>(events) / tr.seconds},
+                 {"mb_per_s", mb / tr.seconds}};
+    say(fmt::format("VCD trace to a file         {:>8.1f} M events/s    ({:.1f} M impulses/s, "
+                    "{:.1f} MB in {:.3f} s, {:.0f} MB/s)",
+                    static_cast<double>(events) / tr.seconds / 1e6,
+                    static_cast<double>(trace_impulses) / tr.seconds / 1e6, mb, tr.seconds,
+                    mb / tr.seconds));
+}
+
+// Short moves: cards a second; and the cost of a card against the length of its move.
+void Bench::short_moves() {
+    stages_.begin("fast-forward, short moves");
+    write_deck(path("short.cbn"), o_.short_cards, kShortMoves);
+    const Timed sh = time_run(quiet_run(path("short.cbn")), o_.runs, stages_);
+    j_["short_moves"] = {{"cards", o_.short_cards},
+                         {"seconds", sh.seconds},
+                         {"cards_per_s", o_.short_cards / sh.seconds}};
+    say(fmt::format("fast-forward, short moves   {:>8.3f} M cards/s     ({} cards of 0.010 in "
+                    "in {:.3f} s)",
+                    o_.short_cards / sh.seconds / 1e6, o_.short_cards, sh.seconds));
+    const int per = std::max(1000, o_.short_cards / 10);
+    write_deck(path("ten.cbn"), per, kTenInchMoves);
+    write_deck(path("hundredth.cbn"), per, kShortMoves);
+    stages_.begin("cost per card, 10 in moves");
+    const Timed ten = time_run(quiet_run(path("ten.cbn")), o_.runs, stages_);
+    stages_.begin("cost per card, 0.010 in moves");
+    const Timed hundredth = time_run(quiet_run(path("hundredth.cbn")), o_.runs, stages_);
+    const double us_ten = ten.seconds / per * 1e6;
+    const double us_hundredth = hundredth.seconds / per * 1e6;
+    j_["move_length"] = {
+        {"cards", per}, {"us_per_card_0_01_in", us_hundredth}, {"us_per_card_10_in", us_ten}};
+    say(fmt::format("cost per card               {:>8.2f} us (0.010 in move), {:.2f} us (10 in "
+                    "move, {} impulses a card)",
+                    us_hundredth, us_ten, impulses_of(ten.result) / per));
+}
+
+// Deck generation and the cut sweep.
+void Bench::generation_and_cut() {
+    decks::JobDescription big;
+    big.airfoil = "naca 2412";
+    // The most stations one surface's deck can hold: 9,997 and 3 cards to approach, 9,999 cards
+    // (decks/deck_limits.hpp).
+    constexpr int kBigStations = static_cast<int>(decks::kMaxDeckCards) - 2;
+    big.options.stations = kBigStations;
+    std::vector<double> gen_s;
+    stages_.begin("deck generation");
+    for (int r = 0; r < o_.runs; ++r) {
+        stages_.run(r, o_.runs);
+        gen_s.push_back(
+            seconds([&] { generate_job(big, axes::default_profile(), path("gen.cbn"), "", ""); }));
+    }
+    j_["generation"] = {{"stations", kBigStations}, {"seconds", median(gen_s)}};
+    say(fmt::format("deck generation             {:>8.3f} s         ({} stations, the most a "
+                    "deck holds, NACA 2412, written)",
+                    median(gen_s), decks::count_text(kBigStations)));
+    stages_.begin("cut sweep");
+    decks::JobDescription cut_job;
+    cut_job.airfoil = "naca 2412";
+    cut_job.options.stations = 2000;
+    generate_job(cut_job, axes::default_profile(), path("cut.cbn"), "", "");
+    RunRequest cut = quiet_run(path("cut.cbn"));
+    cut.cut = path("cut.svg");
+    const Timed sweep = time_run(cut, o_.runs, stages_);
+    j_["cut_sweep"] = {{"stations", 2000}, {"seconds", sweep.seconds}};
+    say(fmt::format("cut sweep                   {:>8.3f} s         (run --cut of a 2,000-station "
+                    "deck)",
+                    sweep.seconds));
+}
+
+// Memory: one child process per deck length.
+void Bench::peak_memory() {
+    nlohmann::json memory = nlohmann::json::object();
+    std::string line;
+    for (int cards : {1000, 10000, 100000}) {
+        stages_.begin(fmt::format("peak memory, {} cards", cards));
+        const std::string deck = path(fmt::format("mem{}.cbn", cards));
+        write_deck(deck, cards, kShortMoves);
+        const double peak = child_peak_mb(deck, path("peak.txt"), {});
+        memory[std::to_string(cards)] = peak;
+        line += fmt::format("{}{:.1f} MB ({} cards)", line.empty() ? "" : ", ", peak, cards);
+    }
+    j_["peak_memory_mb"] = memory;
+    say(fmt::format("peak memory of parsons run  {}", line));
+}
+
+// Press synchronisation: 1,000 press cycles in fast-forward, and memory flat in cycles.
+void Bench::press_cycles() {
+    stages_.begin("press cycles");
+    write_press_deck(path("press.cbn"), 1000);
+    RunRequest press = quiet_run(path("press.cbn"));
+    press.profile = "parsons-extended";
+    const Timed pc = time_run(press, o_.runs, stages_);
+    if (!pc.result.press || pc.result.press->cycles != 1000) {
+        throw std::logic_error("the press benchmark deck did not run 1,000 cycles");
+    }
+    write_press_deck(path("press100.cbn"), 100);
+    const double peak_100 = child_peak_mb(path("press100.cbn"), path("peak.txt"),
+                                          {"--child-profile", "parsons-extended"});
+    const double peak_1000 =
+        child_peak_mb(path("press.cbn"), path("peak.txt"), {"--child-profile", "parsons-extended"});
+    j_["press_cycles"] = {{"cycles", 1000},
+                          {"cards", pc.result.cards_read},
+                          {"machine_seconds", pc.result.machine_seconds},
+                          {"seconds", pc.seconds},
+                          {"peak_mb_100_cycles", peak_100},
+                          {"peak_mb_1000_cycles", peak_1000}};
+    say(fmt::format("press cycles, fast-forward  {:>8.3f} s         (1,000 cycles, {} cards, "
+                    "{:.0f} s of machine time; peak {:.1f} MB at 100 cycles, {:.1f} MB at 1,000)",
+                    pc.seconds, pc.result.cards_read, pc.result.machine_seconds, peak_100,
+                    peak_1000));
+}
+
+// How cost grows: decks of short moves, 10^3 .. 10^6 cards, each run once in a child process
+// (wall time and peak memory): fast-forward, impulse level, and with a VCD.
+void Bench::scaling() {
+    say("scaling (short moves; one run each, in a child process):");
+    say("     cards   fast-fwd s  impulse s   VCD s   VCD MB   peak MB");
+    nlohmann::json rows = nlohmann::json::array();
+    for (int cards : {1000, 10000, 100000, 1000000}) {
+        stages_.begin(fmt::format("scaling, {} cards", cards));
+        const std::string deck = path("scale.cbn");
+        write_deck(deck, cards, kShortMoves);
+        double peak = 0;
+        const double ff_s = seconds([&] { peak = child_peak_mb(deck, path("peak.txt"), {}); });
+        const double il_s =
+            seconds([&] { child_peak_mb(deck, path("peak.txt"), {"--child-impulse-level"}); });
+        double vcd_s = 0;
+        double vcd_mb = 0;
+        if (cards <= 100000) {
+            const std::string vcd = path("scale.vcd");
+            vcd_s = seconds([&] { child_peak_mb(deck, path("peak.txt"), {"--child-trace", vcd}); });
+            vcd_mb = static_cast<double>(fs::file_size(vcd)) / 1e6;
+            fs::remove(vcd);
+        }
+        rows.push_back({{"cards", cards},
+                        {"fast_forward_s", ff_s},
+                        {"impulse_level_s", il_s},
+                        {"vcd_s", vcd_s},
+                        {"vcd_mb", vcd_mb},
+                        {"peak_mb", peak}});
+        say(fmt::format("  {:>8}   {:>10.3f} {:>10.3f} {:>7} {:>8} {:>9.1f}", cards, ff_s, il_s,
+                        vcd_s > 0 ? fmt::format("{:.3f}", vcd_s) : "-",
+                        vcd_s > 0 ? fmt::format("{:.1f}", vcd_mb) : "-", peak));
+    }
+    j_["scaling"] = rows;
+}
+
 ExitCode run_bench(const BenchOptions& o) {
     if (!o.child_deck.empty()) {
         RunRequest child = quiet_run(o.child_deck);
@@ -336,209 +574,18 @@ ExitCode run_bench(const BenchOptions& o) {
         std::ofstream(o.child_report) << own_peak_mb() << "\n";
         return code;
     }
-    const ScratchFolder scratch("parsons-bench"); // made new, so removing it harms nothing else
-    const fs::path dir = scratch.path();
-    auto path = [&dir](const std::string& name) { return (dir / name).string(); };
-    nlohmann::json j;
-    j["machine"] = {{"cpu", cpu_model()},
-                    {"cores", sysconf(_SC_NPROCESSORS_ONLN)},
-                    {"build", PARSONS_BUILD_TYPE}};
-    j["runs"] = o.runs;
-    Stages stages(12 + (o.scaling ? 4 : 0));
-    auto say = [&o, &stages](const std::string& s) {
-        stages.clear();
-        if (!o.json) {
-            fmt::print("{}\n", s);
-            std::fflush(stdout);
-        }
-    };
-    say(fmt::format("parsons bench: {} ({} cores), {} build, median of {} runs", cpu_model(),
-                    sysconf(_SC_NPROCESSORS_ONLN), PARSONS_BUILD_TYPE, o.runs));
-
-    // Impulse level and fast-forward on the same long deck.
-    stages.begin("impulse level");
-    write_deck(path("long.cbn"), o.long_cards, kLongMoves);
-    RunRequest impulse_level = quiet_run(path("long.cbn"));
-    impulse_level.impulse_level = true;
-    const Timed il = time_run(impulse_level, o.runs, stages);
-    const std::int64_t impulses = impulses_of(il.result);
-    j["impulse_level"] = {{"cards", o.long_cards},
-                          {"impulses", impulses},
-                          {"seconds", il.seconds},
-                          {"impulses_per_s", static_cast<double>(impulses) / il.seconds}};
-    say(fmt::format("impulse level, no observer  {:>8.1f} M impulses/s  ({} cards, {} impulses "
-                    "in {:.3f} s)",
-                    static_cast<double>(impulses) / il.seconds / 1e6, o.long_cards, impulses,
-                    il.seconds));
-
-    stages.begin("fast-forward, long moves");
-    const Timed ff = time_run(quiet_run(path("long.cbn")), o.runs, stages);
-    j["fast_forward_long"] = {{"cards", o.long_cards},
-                              {"impulses", impulses_of(ff.result)},
-                              {"seconds", ff.seconds},
-                              {"impulses_per_s", static_cast<double>(impulses) / ff.seconds},
-                              {"cards_per_s", o.long_cards / ff.seconds}};
-    say(fmt::format("fast-forward, long moves    {:>8.1f} M impulses/s  (the same deck: {:.0f} "
-                    "cards/s)",
-                    static_cast<double>(impulses) / ff.seconds / 1e6, o.long_cards / ff.seconds));
-
-    // The VCD trace, written to a file.
-    stages.begin("VCD trace");
-    write_deck(path("trace.cbn"), o.trace_cards, kLongMoves);
-    RunRequest traced = quiet_run(path("trace.cbn"));
-    traced.trace = path("trace.vcd");
-    const Timed tr = time_run(traced, o.runs, stages);
-    const std::int64_t events = vcd_events(traced.trace);
-    const double mb = static_cast<double>(fs::file_size(traced.trace)) / 1e6;
-    const std::int64_t trace_impulses = impulses_of(tr.result);
-    j["vcd"] = {{"cards", o.trace_cards},
-                {"impulses", trace_impulses},
-                {"events", events},
-                {"mb", mb},
-                {"seconds", tr.seconds},
-                {"impulses_per_s", static_cast<double>(trace_impulses) / tr.seconds},
-                {"events_per_s", static_cast<double>(events) / tr.seconds},
-                {"mb_per_s", mb / tr.seconds}};
-    say(fmt::format("VCD trace to a file         {:>8.1f} M events/s    ({:.1f} M impulses/s, "
-                    "{:.1f} MB in {:.3f} s, {:.0f} MB/s)",
-                    static_cast<double>(events) / tr.seconds / 1e6,
-                    static_cast<double>(trace_impulses) / tr.seconds / 1e6, mb, tr.seconds,
-                    mb / tr.seconds));
-
-    // Short moves: cards a second; and the cost of a card against the length of its move.
-    stages.begin("fast-forward, short moves");
-    write_deck(path("short.cbn"), o.short_cards, kShortMoves);
-    const Timed sh = time_run(quiet_run(path("short.cbn")), o.runs, stages);
-    j["short_moves"] = {{"cards", o.short_cards},
-                        {"seconds", sh.seconds},
-                        {"cards_per_s", o.short_cards / sh.seconds}};
-    say(fmt::format("fast-forward, short moves   {:>8.3f} M cards/s     ({} cards of 0.010 in "
-                    "in {:.3f} s)",
-                    o.short_cards / sh.seconds / 1e6, o.short_cards, sh.seconds));
-    const int per = std::max(1000, o.short_cards / 10);
-    write_deck(path("ten.cbn"), per, kTenInchMoves);
-    write_deck(path("hundredth.cbn"), per, kShortMoves);
-    stages.begin("cost per card, 10 in moves");
-    const Timed ten = time_run(quiet_run(path("ten.cbn")), o.runs, stages);
-    stages.begin("cost per card, 0.010 in moves");
-    const Timed hundredth = time_run(quiet_run(path("hundredth.cbn")), o.runs, stages);
-    const double us_ten = ten.seconds / per * 1e6;
-    const double us_hundredth = hundredth.seconds / per * 1e6;
-    j["move_length"] = {
-        {"cards", per}, {"us_per_card_0_01_in", us_hundredth}, {"us_per_card_10_in", us_ten}};
-    say(fmt::format("cost per card               {:>8.2f} us (0.010 in move), {:.2f} us (10 in "
-                    "move, {} impulses a card)",
-                    us_hundredth, us_ten, impulses_of(ten.result) / per));
-
-    // Deck generation and the cut sweep.
-    decks::JobDescription big;
-    big.airfoil = "naca 2412";
-    // The most stations one surface's deck can hold: 9,997 and 3 cards to approach, 9,999 cards
-    // (decks/deck_limits.hpp).
-    constexpr int kBigStations = static_cast<int>(decks::kMaxDeckCards) - 2;
-    big.options.stations = kBigStations;
-    std::vector<double> gen_s;
-    stages.begin("deck generation");
-    for (int r = 0; r < o.runs; ++r) {
-        stages.run(r, o.runs);
-        gen_s.push_back(
-            seconds([&] { generate_job(big, axes::default_profile(), path("gen.cbn"), "", ""); }));
-    }
-    j["generation"] = {{"stations", kBigStations}, {"seconds", median(gen_s)}};
-    say(fmt::format("deck generation             {:>8.3f} s         ({} stations, the most a "
-                    "deck holds, NACA 2412, written)",
-                    median(gen_s), decks::count_text(kBigStations)));
-    stages.begin("cut sweep");
-    decks::JobDescription cut_job;
-    cut_job.airfoil = "naca 2412";
-    cut_job.options.stations = 2000;
-    generate_job(cut_job, axes::default_profile(), path("cut.cbn"), "", "");
-    RunRequest cut = quiet_run(path("cut.cbn"));
-    cut.cut = path("cut.svg");
-    const Timed sweep = time_run(cut, o.runs, stages);
-    j["cut_sweep"] = {{"stations", 2000}, {"seconds", sweep.seconds}};
-    say(fmt::format("cut sweep                   {:>8.3f} s         (run --cut of a 2,000-station "
-                    "deck)",
-                    sweep.seconds));
-
-    // Memory: one child process per deck length.
-    nlohmann::json memory = nlohmann::json::object();
-    std::string line;
-    for (int cards : {1000, 10000, 100000}) {
-        stages.begin(fmt::format("peak memory, {} cards", cards));
-        const std::string deck = path(fmt::format("mem{}.cbn", cards));
-        write_deck(deck, cards, kShortMoves);
-        const double peak = child_peak_mb(deck, path("peak.txt"), {});
-        memory[std::to_string(cards)] = peak;
-        line += fmt::format("{}{:.1f} MB ({} cards)", line.empty() ? "" : ", ", peak, cards);
-    }
-    j["peak_memory_mb"] = memory;
-    say(fmt::format("peak memory of parsons run  {}", line));
-
-    // Press synchronisation: 1,000 press cycles in fast-forward, and memory flat in cycles.
-    stages.begin("press cycles");
-    write_press_deck(path("press.cbn"), 1000);
-    RunRequest press = quiet_run(path("press.cbn"));
-    press.profile = "parsons-extended";
-    const Timed pc = time_run(press, o.runs, stages);
-    if (!pc.result.press || pc.result.press->cycles != 1000) {
-        throw std::logic_error("the press benchmark deck did not run 1,000 cycles");
-    }
-    write_press_deck(path("press100.cbn"), 100);
-    const double peak_100 = child_peak_mb(path("press100.cbn"), path("peak.txt"),
-                                          {"--child-profile", "parsons-extended"});
-    const double peak_1000 =
-        child_peak_mb(path("press.cbn"), path("peak.txt"), {"--child-profile", "parsons-extended"});
-    j["press_cycles"] = {{"cycles", 1000},
-                         {"cards", pc.result.cards_read},
-                         {"machine_seconds", pc.result.machine_seconds},
-                         {"seconds", pc.seconds},
-                         {"peak_mb_100_cycles", peak_100},
-                         {"peak_mb_1000_cycles", peak_1000}};
-    say(fmt::format("press cycles, fast-forward  {:>8.3f} s         (1,000 cycles, {} cards, "
-                    "{:.0f} s of machine time; peak {:.1f} MB at 100 cycles, {:.1f} MB at 1,000)",
-                    pc.seconds, pc.result.cards_read, pc.result.machine_seconds, peak_100,
-                    peak_1000));
-
+    Bench bench(o);
+    bench.machine();
+    bench.impulse_level_and_fast_forward();
+    bench.vcd_trace();
+    bench.short_moves();
+    bench.generation_and_cut();
+    bench.peak_memory();
+    bench.press_cycles();
     if (o.scaling) {
-        // How cost grows: decks of short moves, 10^3 .. 10^6 cards, each run once in a child
-        // process (wall time and peak memory): fast-forward, impulse level, and with a VCD.
-        say("scaling (short moves; one run each, in a child process):");
-        say("     cards   fast-fwd s  impulse s   VCD s   VCD MB   peak MB");
-        nlohmann::json rows = nlohmann::json::array();
-        for (int cards : {1000, 10000, 100000, 1000000}) {
-            stages.begin(fmt::format("scaling, {} cards", cards));
-            const std::string deck = path("scale.cbn");
-            write_deck(deck, cards, kShortMoves);
-            double peak = 0;
-            const double ff_s = seconds([&] { peak = child_peak_mb(deck, path("peak.txt"), {}); });
-            const double il_s =
-                seconds([&] { child_peak_mb(deck, path("peak.txt"), {"--child-impulse-level"}); });
-            double vcd_s = 0;
-            double vcd_mb = 0;
-            if (cards <= 100000) {
-                const std::string vcd = path("scale.vcd");
-                vcd_s = seconds([&] {
-                    child_peak_mb(deck, path("peak.txt"), {"--child-trace", vcd});
-                });
-                vcd_mb = static_cast<double>(fs::file_size(vcd)) / 1e6;
-                fs::remove(vcd);
-            }
-            rows.push_back({{"cards", cards},
-                            {"fast_forward_s", ff_s},
-                            {"impulse_level_s", il_s},
-                            {"vcd_s", vcd_s},
-                            {"vcd_mb", vcd_mb},
-                            {"peak_mb", peak}});
-            say(fmt::format("  {:>8}   {:>10.3f} {:>10.3f} {:>7} {:>8} {:>9.1f}", cards, ff_s, il_s,
-                            vcd_s > 0 ? fmt::format("{:.3f}", vcd_s) : "-",
-                            vcd_s > 0 ? fmt::format("{:.1f}", vcd_mb) : "-", peak));
-        }
-        j["scaling"] = rows;
+        bench.scaling();
     }
-    if (o.json) {
-        fmt::print("{}\n", j.dump(2));
-    }
+    bench.print_json();
     return ExitCode::ok;
 }
 

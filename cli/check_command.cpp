@@ -15,7 +15,7 @@
 //
 // With --json the findings are one document for scripts instead (docs/json-output.md).
 #include "cli/commands.hpp"
-#include "cli/json_output.hpp"
+#include "cli/support/json_output.hpp"
 
 #include "cardreader/deck_error.hpp"
 #include "cardreader/deck_review.hpp"
@@ -47,166 +47,215 @@ Json finding(std::int64_t card, const Json& number, std::string_view kind, std::
             {"message", message}};
 }
 
+// One check of a deck: what the cards have moved each axis to, and the findings so far, printed
+// as they come (text) or gathered for --json.
+class DeckCheck {
+public:
+    DeckCheck(const CheckFlags& f, const axes::MachineProfile& profile)
+        : f_(f), profile_(profile), reviewer_(deck_reviewer(profile)), text_(!f.json) {}
+    void card(const Card& card, const CardLayout& layout);
+    void finish() {
+        for (const ReviewNote& n : reviewer_.finish()) {
+            deck_error(n, nullptr);
+        }
+    }
+    ExitCode report(const InputDeck& deck, const CardLayout& layout);
+
+private:
+    void deck_error(const ReviewNote& n, const Json& number);
+    void bad_punch(const DecodeResult& decoded);
+    void double_punches(const relaylogic::SensedCard& sensed);
+    void review(const CardOrders& o);
+    void judge(const CardOrders& o, Axis a, double move, bool returns);
+    bool runs_through() const {
+        return passing_ == 0 && bad_ == 0 && stops_ == 0 && deck_errors_ == 0;
+    }
+
+    const CheckFlags& f_;
+    const axes::MachineProfile& profile_;
+    DeckReviewer reviewer_;
+    const bool text_;
+    std::array<double, kAxisCount> at_{};
+    std::int64_t index_ = 0;
+    std::int64_t passing_ = 0;
+    std::int64_t warnings_ = 0;
+    std::int64_t stops_ = 0; // findings the machine will stop on
+    std::int64_t bad_ = 0;
+    Json findings_ = Json::array();
+    std::optional<std::string> first_deck_error_;
+    std::int64_t deck_errors_ = 0;
+};
+
+// A condition, sync or tap card's deck error (additions): `run` refuses the deck, so check
+// exits 2.
+void DeckCheck::deck_error(const ReviewNote& n, const Json& number) {
+    ++deck_errors_;
+    first_deck_error_ = first_deck_error_.value_or(
+        DeckError::at_card_column(f_.input, n.card, n.column, n.message).what());
+    if (text_) {
+        fmt::print("card {}: DECK ERROR: column {}: {}\n", n.card, n.column, n.message);
+    }
+    Json found = finding(n.card, number, "deck_error", n.axis, n.message);
+    found["column"] = n.column;
+    findings_.push_back(std::move(found));
+}
+
+void DeckCheck::card(const Card& card, const CardLayout& layout) {
+    ++index_;
+    // The reader as the profile has it: parsons-1952 senses a double punch as two relays.
+    const relaylogic::SensedCard sensed =
+        relaylogic::sense_card(card, layout, profile_.refuse_double_punch);
+    const DecodeResult& decoded = sensed.decoded;
+    if (!decoded) {
+        bad_punch(decoded);
+        return;
+    }
+    double_punches(sensed);
+    const CardOrders& o = decoded.orders;
+    review(o);
+    if (o.kind == CardKind::tap) {
+        const TapOrder& t = o.tap;
+        judge(o, t.axis, (t.motion == Motion::forward ? 1 : -1) * t.depth / 1000.0, true);
+        return;
+    }
+    for (Axis a : kAxes) {
+        const AxisOrder& x = o.axis(a);
+        judge(o, a, (x.motion == Motion::forward ? 1 : -1) * x.check / 1000.0, false);
+    }
+}
+
+void DeckCheck::bad_punch(const DecodeResult& decoded) {
+    ++bad_;
+    const std::string message = fmt::format("column {}: {} (the reader stops the machine here: "
+                                            "bad-punch refusal, an addition of this emulator)",
+                                            decoded.bad_punch->column, decoded.bad_punch->what);
+    if (text_) {
+        fmt::print("card {}: BAD PUNCH: {}\n", index_, message);
+    }
+    Json found = finding(index_, nullptr, "bad_punch", std::nullopt, message);
+    found["column"] = decoded.bad_punch->column;
+    findings_.push_back(std::move(found));
+    reviewer_.skip();
+}
+
+void DeckCheck::double_punches(const relaylogic::SensedCard& sensed) {
+    for (int column : sensed.double_columns) {
+        ++warnings_;
+        const std::string message =
+            fmt::format("column {}: double punch: the reader closes two relays of the bank, "
+                        "as a 1952 reader would (profile {}; parsons-safe refuses the card)",
+                        column, profile_.name);
+        if (text_) {
+            fmt::print("card {}: warning: {}\n", index_, message);
+        }
+        Json found =
+            finding(index_, sensed.decoded.orders.number, "double_punch", std::nullopt, message);
+        found["column"] = column;
+        findings_.push_back(std::move(found));
+    }
+}
+
+// The careful operator's warnings of `parsons show` (deck_review).
+void DeckCheck::review(const CardOrders& o) {
+    for (const ReviewNote& n : reviewer_.review(o)) {
+        if (n.deck_error) {
+            deck_error(n, n.card == index_ ? Json(o.number) : Json(nullptr));
+            continue;
+        }
+        ++(n.stops ? stops_ : warnings_);
+        if (text_) {
+            fmt::print("card {} (number {:04}): {}: {}{}\n", index_, o.number,
+                       n.stops ? "STOP" : "warning",
+                       n.axis ? fmt::format("{}: ", axis_name(*n.axis)) : "", n.message);
+        }
+        findings_.push_back(
+            finding(index_, o.number, n.stops ? "stop" : "warning", n.axis, n.message));
+    }
+}
+
+// The axis moves `move` inches from where it stands; a tap comes back (`returns`).
+void DeckCheck::judge(const CardOrders& o, Axis a, double move, bool returns) {
+    const auto& p = profile_.axes.at(axis_index(a));
+    double& pos = at_.at(axis_index(a));
+    const double to = pos + move;
+    std::string past;
+    double limit = 0;
+    const char* limit_kind = "";
+    if (p.soft_limits && (to > p.soft_max_in || to < p.soft_min_in)) {
+        limit = to > p.soft_max_in ? p.soft_max_in : p.soft_min_in;
+        limit_kind = "soft_limit";
+        past = fmt::format("its soft limit {:.3f} in (movement range {:.3f} .. {:.3f} in)", limit,
+                           p.soft_min_in, p.soft_max_in);
+    } else if (to > p.travel_max_in || to < p.travel_min_in) {
+        limit = to > p.travel_max_in ? p.travel_max_in : p.travel_min_in;
+        limit_kind = "limit_switch";
+        past = fmt::format("its limit switch at {:.3f} in", limit);
+    }
+    if (!past.empty()) {
+        ++passing_;
+        const std::string message =
+            fmt::format("{} {} {:+.3f} in, from {:.3f} to {:.3f} in, past {}", axis_name(a),
+                        returns ? "taps" : "moves", move, pos, to, past);
+        if (text_) {
+            fmt::print("card {} (number {:04}): {}\n", index_, o.number, message);
+        }
+        Json found = finding(index_, o.number, "limit", a, message);
+        found["from_in"] = rounded_inches(pos);
+        found["to_in"] = rounded_inches(to);
+        found["limit_in"] = rounded_inches(limit);
+        found["limit_kind"] = limit_kind;
+        findings_.push_back(std::move(found));
+    }
+    pos = returns ? pos : to;
+}
+
+// The totals (text) or the document (--json); the exit code.
+ExitCode DeckCheck::report(const InputDeck& deck, const CardLayout& layout) {
+    if (text_) {
+        fmt::print("{} card{} checked: {} move{} past a limit, {} with bad punches, {} other "
+                   "finding{} the machine stops on, {} warning{}\n",
+                   index_, index_ == 1 ? "" : "s", passing_, passing_ == 1 ? "" : "s", bad_, stops_,
+                   stops_ == 1 ? "" : "s", warnings_, warnings_ == 1 ? "" : "s");
+        if (deck_errors_ > 0) {
+            fmt::print("{} deck error{} in condition, sync or tap cards: run refuses the deck\n",
+                       deck_errors_, deck_errors_ == 1 ? "" : "s");
+        }
+    } else {
+        Json doc = json_document("check");
+        doc["deck"] = f_.input;
+        doc["format"] = std::string(format_name(deck.options().format));
+        doc["layout"] = layout.name;
+        doc["profile"] = profile_.name;
+        doc["cards_checked"] = index_;
+        doc["findings"] = std::move(findings_);
+        doc["past_limit"] = passing_;
+        doc["bad_punches"] = bad_;
+        doc["stops"] = stops_;
+        doc["warnings"] = warnings_;
+        doc["deck_errors"] = deck_errors_;
+        doc["will_run_through"] = runs_through();
+        print_json_document(doc);
+    }
+    if (first_deck_error_) {
+        throw DeckError(*first_deck_error_ +
+                        (deck_errors_ > 1
+                             ? fmt::format(" (and {} more deck errors)", deck_errors_ - 1)
+                             : std::string{}));
+    }
+    return runs_through() ? ExitCode::ok : ExitCode::machine_stop;
+}
+
 ExitCode run_check(const CheckFlags& f) {
     axes::MachineProfile profile = load_profile(f.profile);
     apply_limits(profile, f.limits);
     InputDeck deck(f.input, f.deck);
     const CardLayout& layout = *deck.options().layout;
-    DeckReviewer reviewer = deck_reviewer(profile);
-    std::array<double, kAxisCount> at{};
-    std::int64_t index = 0;
-    std::int64_t passing = 0;
-    std::int64_t warnings = 0;
-    std::int64_t stops = 0; // findings the machine will stop on
-    std::int64_t bad = 0;
-    const bool text = !f.json;
-    Json findings = Json::array();
-    std::optional<std::string> first_deck_error;
-    std::int64_t deck_errors = 0;
-    // A condition, sync or tap card's deck error (additions): `run` refuses the deck, so check
-    // exits 2.
-    auto deck_error = [&](const ReviewNote& n, const Json& number) {
-        ++deck_errors;
-        first_deck_error = first_deck_error.value_or(
-            DeckError::at_card_column(f.input, n.card, n.column, n.message).what());
-        if (text) {
-            fmt::print("card {}: DECK ERROR: column {}: {}\n", n.card, n.column, n.message);
-        }
-        Json found = finding(n.card, number, "deck_error", n.axis, n.message);
-        found["column"] = n.column;
-        findings.push_back(std::move(found));
-    };
+    DeckCheck check(f, profile);
     while (auto card = deck.cards().next()) {
-        ++index;
-        // The reader as the profile has it: parsons-1952 senses a double punch as two relays.
-        const relaylogic::SensedCard sensed =
-            relaylogic::sense_card(*card, layout, profile.refuse_double_punch);
-        const DecodeResult& decoded = sensed.decoded;
-        if (!decoded) {
-            ++bad;
-            const std::string message =
-                fmt::format("column {}: {} (the reader stops the machine here: bad-punch "
-                            "refusal, an addition of this emulator)",
-                            decoded.bad_punch->column, decoded.bad_punch->what);
-            if (text) {
-                fmt::print("card {}: BAD PUNCH: {}\n", index, message);
-            }
-            Json found = finding(index, nullptr, "bad_punch", std::nullopt, message);
-            found["column"] = decoded.bad_punch->column;
-            findings.push_back(std::move(found));
-            reviewer.skip();
-            continue;
-        }
-        for (int column : sensed.double_columns) {
-            ++warnings;
-            const std::string message =
-                fmt::format("column {}: double punch: the reader closes two relays of the bank, "
-                            "as a 1952 reader would (profile {}; parsons-safe refuses the card)",
-                            column, profile.name);
-            if (text) {
-                fmt::print("card {}: warning: {}\n", index, message);
-            }
-            Json found =
-                finding(index, decoded.orders.number, "double_punch", std::nullopt, message);
-            found["column"] = column;
-            findings.push_back(std::move(found));
-        }
-        const CardOrders& o = decoded.orders;
-        for (const ReviewNote& n : reviewer.review(o)) {
-            if (n.deck_error) {
-                deck_error(n, n.card == index ? Json(o.number) : Json(nullptr));
-                continue;
-            }
-            ++(n.stops ? stops : warnings);
-            if (text) {
-                fmt::print("card {} (number {:04}): {}: {}{}\n", index, o.number,
-                           n.stops ? "STOP" : "warning",
-                           n.axis ? fmt::format("{}: ", axis_name(*n.axis)) : "", n.message);
-            }
-            findings.push_back(
-                finding(index, o.number, n.stops ? "stop" : "warning", n.axis, n.message));
-        }
-        // The axis moves `move` inches from where it stands; a tap comes back (`returns`).
-        auto judge = [&](Axis a, double move, bool returns) {
-            const auto& p = profile.axes.at(axis_index(a));
-            double& pos = at.at(axis_index(a));
-            const double to = pos + move;
-            std::string past;
-            double limit = 0;
-            const char* limit_kind = "";
-            if (p.soft_limits && (to > p.soft_max_in || to < p.soft_min_in)) {
-                limit = to > p.soft_max_in ? p.soft_max_in : p.soft_min_in;
-                limit_kind = "soft_limit";
-                past = fmt::format("its soft limit {:.3f} in (movement range {:.3f} .. {:.3f} in)",
-                                   limit, p.soft_min_in, p.soft_max_in);
-            } else if (to > p.travel_max_in || to < p.travel_min_in) {
-                limit = to > p.travel_max_in ? p.travel_max_in : p.travel_min_in;
-                limit_kind = "limit_switch";
-                past = fmt::format("its limit switch at {:.3f} in", limit);
-            }
-            if (!past.empty()) {
-                ++passing;
-                const std::string message =
-                    fmt::format("{} {} {:+.3f} in, from {:.3f} to {:.3f} in, past {}", axis_name(a),
-                                returns ? "taps" : "moves", move, pos, to, past);
-                if (text) {
-                    fmt::print("card {} (number {:04}): {}\n", index, o.number, message);
-                }
-                Json found = finding(index, o.number, "limit", a, message);
-                found["from_in"] = rounded_inches(pos);
-                found["to_in"] = rounded_inches(to);
-                found["limit_in"] = rounded_inches(limit);
-                found["limit_kind"] = limit_kind;
-                findings.push_back(std::move(found));
-            }
-            pos = returns ? pos : to;
-        };
-        if (o.kind == CardKind::tap) {
-            const TapOrder& t = o.tap;
-            judge(t.axis, (t.motion == Motion::forward ? 1 : -1) * t.depth / 1000.0, true);
-            continue;
-        }
-        for (Axis a : kAxes) {
-            const AxisOrder& x = o.axis(a);
-            judge(a, (x.motion == Motion::forward ? 1 : -1) * x.check / 1000.0, false);
-        }
+        check.card(*card, layout);
     }
-    for (const ReviewNote& n : reviewer.finish()) {
-        deck_error(n, nullptr);
-    }
-    const bool runs_through = passing == 0 && bad == 0 && stops == 0 && deck_errors == 0;
-    if (text) {
-        fmt::print("{} card{} checked: {} move{} past a limit, {} with bad punches, {} other "
-                   "finding{} the machine stops on, {} warning{}\n",
-                   index, index == 1 ? "" : "s", passing, passing == 1 ? "" : "s", bad, stops,
-                   stops == 1 ? "" : "s", warnings, warnings == 1 ? "" : "s");
-        if (deck_errors > 0) {
-            fmt::print("{} deck error{} in condition, sync or tap cards: run refuses the deck\n",
-                       deck_errors, deck_errors == 1 ? "" : "s");
-        }
-    } else {
-        Json doc = json_document("check");
-        doc["deck"] = f.input;
-        doc["format"] = std::string(format_name(deck.options().format));
-        doc["layout"] = layout.name;
-        doc["profile"] = profile.name;
-        doc["cards_checked"] = index;
-        doc["findings"] = std::move(findings);
-        doc["past_limit"] = passing;
-        doc["bad_punches"] = bad;
-        doc["stops"] = stops;
-        doc["warnings"] = warnings;
-        doc["deck_errors"] = deck_errors;
-        doc["will_run_through"] = runs_through;
-        print_json_document(doc);
-    }
-    if (first_deck_error) {
-        throw DeckError(*first_deck_error +
-                        (deck_errors > 1
-                             ? fmt::format(" (and {} more deck errors)", deck_errors - 1)
-                             : std::string{}));
-    }
-    return runs_through ? ExitCode::ok : ExitCode::machine_stop;
+    check.finish();
+    return check.report(deck, layout);
 }
 
 } // namespace

@@ -1,7 +1,7 @@
 #include "cli/command_line.hpp"
 
 #include "cli/exit_codes.hpp"
-#include "cli/output_file.hpp"
+#include "outputs/output_file.hpp"
 
 #include "cardreader/deck_error.hpp"
 

@@ -1,6 +1,6 @@
 // The whole command line of parsons: every command, subcommand and option, built once here.
-// main() parses with it; the manual pages and the shell completion (cli/manual.hpp) are written
-// from it, so that neither can drift from what the program accepts.
+// main() parses with it; the manual pages and the shell completion (cli/support/manual.hpp) are
+// written from it, so that neither can drift from what the program accepts.
 #pragma once
 
 #include "cli/commands.hpp"

@@ -3,12 +3,13 @@
 // cardreader::DeckError for bad input (exit 2); the function returns the exit code otherwise.
 #pragma once
 
-#include "cli/deck_files.hpp"
 #include "cli/exit_codes.hpp"
-#include "cli/file_plan.hpp"
+#include "cli/support/deck_files.hpp"
+#include "cli/support/file_plan.hpp"
 
 #include "axes/machine_profile.hpp"
 #include "decks/job_file.hpp"
+#include "decks/two_tool_job.hpp"
 #include "relaylogic/control_cabinet.hpp"
 
 #include <CLI/CLI.hpp>
@@ -26,7 +27,8 @@ using Command = std::function<ExitCode()>;
 void add_punch_command(CLI::App& app, Command& selected);
 void add_convert_command(CLI::App& app, Command& selected);
 void add_show_command(CLI::App& app, Command& selected);
-// `timeline` (may be null): recorded on every run the command line starts (the page's hook).
+// `timeline` (may be null): recorded on every run the command line starts (the page's hook),
+// attached as run's replay output (cli/run_outputs.cpp).
 void add_run_command(CLI::App& app, Command& selected, RunTimeline* timeline = nullptr);
 void add_profile_command(CLI::App& app, Command& selected);
 void add_gen_command(CLI::App& app, Command& selected);
@@ -44,7 +46,7 @@ struct RunRequest {
     std::string events;
     std::string path;
     std::string gcode; // the path as G-code (convert DECK -o path.ngc)
-    std::string html;  // the run as one self-contained replay page (cli/replay_page.hpp)
+    std::string html;  // the run as one self-contained replay page (outputs/replay/replay_page.hpp)
     std::string plot;
     std::string cut;
     std::string job;
@@ -78,8 +80,8 @@ struct GeneratedJob {
 };
 
 // The files a generator reads and writes, to compare before it writes anything
-// (cli/file_plan.hpp): --profile's file, the deck (-o), its job description (job_file_for) and,
-// for a press or tapping job, the profile beside that. The caller adds what else it reads or
+// (cli/support/file_plan.hpp): --profile's file, the deck (-o), its job description (job_file_for)
+// and, for a press or tapping job, the profile beside that. The caller adds what else it reads or
 // writes, then checks.
 FilePlan generator_plan(const std::string& profile, const std::string& output,
                         const std::string& job_out, bool writes_profile);
@@ -106,5 +108,20 @@ GeneratedJob generate_job(const decks::JobDescription& description,
                           const axes::MachineProfile& profile, const std::string& output,
                           const std::string& to, const std::string& centres,
                           ProgressLine* progress = nullptr, const std::string& job_out = {});
+
+// A two-tool deck generated and written (DECK and its job description, DECK.job.json or
+// --job-out), for gen and demo.
+struct GeneratedTwoToolJob {
+    decks::JobDescription description;
+    decks::TwoToolDeck deck;
+    std::string job_file; // where the job description went; "" for nowhere
+};
+// `airfoil`: "naca 2412" or "dat PATH"; `job_out`: --job-out (job_file_for). Throws
+// cardreader::DeckError (exit 2) when the job cannot be made or written.
+GeneratedTwoToolJob generate_two_tool_job(const std::string& airfoil, bool closed_te,
+                                          const decks::TwoToolOptions& options,
+                                          const axes::MachineProfile& profile,
+                                          const std::string& output, const std::string& to,
+                                          const std::string& job_out = {});
 
 } // namespace parsons::cli

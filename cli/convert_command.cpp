@@ -1,10 +1,10 @@
 // parsons convert DECK -o OUT: copy a deck card by card into another format; or, to a G-code
 // file (.ngc, .nc, .gcode, or --to gcode), run the deck and write the machine's path as G-code
-// (cli/gcode_path.hpp; docs/gcode.md).
-#include "cli/applied_profile.hpp"
+// (outputs/traces/gcode_path.hpp; docs/gcode.md).
 #include "cli/commands.hpp"
-#include "cli/deck_files.hpp"
-#include "cli/output_file.hpp"
+#include "cli/support/applied_profile.hpp"
+#include "cli/support/deck_files.hpp"
+#include "outputs/output_file.hpp"
 
 #include "cardreader/deck_error.hpp"
 

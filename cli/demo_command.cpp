@@ -8,16 +8,16 @@
 // heads, the gear ratio transferred by PC 130 and stored in advance, and once with a head
 // exchange that sends no ratio, which the thread proof names hole by hole.
 #include "cli/commands.hpp"
-#include "cli/output_file.hpp"
-#include "cli/press_feeder.hpp"
-#include "cli/press_proof.hpp"
-#include "cli/tapping.hpp"
-#include "cli/two_tool.hpp"
+#include "cli/gen_press_feeder.hpp"
+#include "cli/gen_tapping.hpp"
+#include "outputs/output_file.hpp"
+#include "outputs/proofs/press_proof.hpp"
+#include "outputs/proofs/two_tool_proof.hpp"
 
 #include "axes/profile_json.hpp"
 #include "cardreader/card_svg.hpp"
 #include "cardreader/layout.hpp"
-#include "cli/deck_files.hpp"
+#include "cli/support/deck_files.hpp"
 
 #include <nlohmann/json.hpp>
 

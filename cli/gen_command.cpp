@@ -4,18 +4,18 @@
 // parsons gen two-tool: the template roughed with one tool and finished with another, the tool
 // change tripped by a condition card during the return move (decks/two_tool_job.hpp; an
 // addition after EP 0640901, run under --profile parsons-extended). parsons gen press-feeder and
-// parsons gen tapping: the jobs of the press and spindle synchronisations (cli/press_feeder.hpp,
-// cli/tapping.hpp).
-#include "cli/applied_profile.hpp"
+// parsons gen tapping: the jobs of the press and spindle synchronisations
+// (cli/gen_press_feeder.hpp, cli/gen_tapping.hpp).
 #include "cli/commands.hpp"
-#include "cli/data_files.hpp"
-#include "cli/deck_files.hpp"
-#include "cli/json_output.hpp"
-#include "cli/output_file.hpp"
-#include "cli/press_feeder.hpp"
-#include "cli/progress_line.hpp"
-#include "cli/tapping.hpp"
-#include "cli/two_tool.hpp"
+#include "cli/gen_press_feeder.hpp"
+#include "cli/gen_tapping.hpp"
+#include "cli/support/applied_profile.hpp"
+#include "cli/support/data_files.hpp"
+#include "cli/support/deck_files.hpp"
+#include "cli/support/json_output.hpp"
+#include "cli/support/progress_line.hpp"
+#include "outputs/output_file.hpp"
+#include "outputs/proofs/two_tool_proof.hpp"
 
 #include "cardreader/deck_error.hpp"
 #include "cardreader/layout.hpp"
@@ -33,8 +33,8 @@ namespace parsons::cli {
 namespace {
 
 // The source a job is computed from: "naca DIGITS", or "dat FILE" with FILE found as given or
-// among the bundled airfoil files (cli/data_files.hpp). A file that cannot be found is named,
-// with the bundled ones a bare name could have given.
+// among the bundled airfoil files (cli/support/data_files.hpp). A file that cannot be found is
+// named, with the bundled ones a bare name could have given.
 std::string airfoil_source(const std::string& naca, const std::string& dat) {
     if (!naca.empty()) {
         return "naca " + naca;

@@ -1,10 +1,10 @@
 // parsons gen gcode PROGRAM: a G-code program as a deck the 1952 machine runs
 // (decks/gcode_program.hpp reads it, decks/gcode_job.hpp makes the cards; docs/gcode.md).
-#include "cli/applied_profile.hpp"
 #include "cli/commands.hpp"
-#include "cli/deck_files.hpp"
-#include "cli/json_output.hpp"
-#include "cli/output_file.hpp"
+#include "cli/support/applied_profile.hpp"
+#include "cli/support/deck_files.hpp"
+#include "cli/support/json_output.hpp"
+#include "outputs/output_file.hpp"
 
 #include "cardreader/deck_error.hpp"
 #include "decks/gcode_job.hpp"

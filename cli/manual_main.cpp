@@ -1,8 +1,8 @@
 // parsons_manual OUTDIR: writes parsons' manual pages (OUTDIR/man/man1/NAME.1) and its shell
 // completion (OUTDIR/completion/parsons.bash and _parsons) from the command line itself. Run
-// by the build (cli/CMakeLists.txt); cli/manual.hpp says what is in them.
+// by the build (cli/CMakeLists.txt); cli/support/manual.hpp says what is in them.
 #include "cli/command_line.hpp"
-#include "cli/manual.hpp"
+#include "cli/support/manual.hpp"
 
 #include "cli/version.hpp" // generated: cmake/git_version.cmake
 

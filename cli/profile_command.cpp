@@ -1,6 +1,6 @@
 // parsons profile [--profile FILE]: print the machine profile in force as JSON.
 #include "cli/commands.hpp"
-#include "cli/deck_files.hpp"
+#include "cli/support/deck_files.hpp"
 
 #include "axes/profile_json.hpp"
 

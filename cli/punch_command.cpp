@@ -1,9 +1,9 @@
 // parsons punch LISTING -o DECK: the keypunch. Reads a listing, punches one card per five rows.
 // With --json, what it says about the deck is one document for scripts (docs/json-output.md).
 #include "cli/commands.hpp"
-#include "cli/deck_files.hpp"
-#include "cli/json_output.hpp"
-#include "cli/output_file.hpp"
+#include "cli/support/deck_files.hpp"
+#include "cli/support/json_output.hpp"
+#include "outputs/output_file.hpp"
 
 #include <fmt/format.h>
 

@@ -3,29 +3,22 @@
 // Exit 0: the deck completed. Exit 3: the machine stopped itself (a check fired: a correct
 // emulation). Exit 2: the deck or a flag could not be read. Every output file is written
 // whole or not at all.
-#include "cli/applied_profile.hpp"
 #include "cli/commands.hpp"
-#include "cli/cutter_paths.hpp"
-#include "cli/data_files.hpp"
-#include "cli/deck_files.hpp"
-#include "cli/file_plan.hpp"
-#include "cli/gcode_path.hpp"
-#include "cli/output_file.hpp"
-#include "cli/plot_svg.hpp"
-#include "cli/press_proof.hpp"
-#include "cli/progress_line.hpp"
-#include "cli/replay_page.hpp"
-#include "cli/run_report.hpp"
-#include "cli/run_timeline.hpp"
-#include "cli/thread_proof.hpp"
-#include "cli/trace_outputs.hpp"
-#include "cli/two_tool.hpp"
+#include "cli/run_outputs.hpp"
+#include "cli/support/applied_profile.hpp"
+#include "cli/support/data_files.hpp"
+#include "cli/support/deck_files.hpp"
+#include "cli/support/file_plan.hpp"
+#include "cli/support/job_files.hpp"
+#include "cli/support/progress_line.hpp"
+#include "outputs/output.hpp"
+#include "outputs/output_file.hpp"
+#include "outputs/proofs/press_proof.hpp"
+#include "outputs/proofs/thread_proof.hpp"
+#include "outputs/report/run_report.hpp"
 
-#include "axes/profile_json.hpp"
 #include "axes/state_json.hpp"
 #include "cardreader/deck_error.hpp"
-#include "decks/cut_proof.hpp"
-#include "decks/cut_svg.hpp"
 #include "decks/job_file.hpp"
 #include "relaylogic/control_cabinet.hpp"
 
@@ -36,11 +29,9 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <unistd.h>
 #include <utility>
 
@@ -48,60 +39,6 @@ namespace parsons::cli {
 namespace {
 
 using cardreader::DeckError;
-
-// A trace written to a file while the machine runs; the file takes its name only when
-// complete (OutputFile), so a failed run leaves none.
-template <typename Writer>
-class TraceFile {
-public:
-    template <typename... Args>
-    void open(const std::string& path, relaylogic::ObserverFanOut& observers, Args&&... args) {
-        if (path.empty()) {
-            return;
-        }
-        file_ = std::make_unique<OutputFile>(path);
-        writer_ = std::make_unique<Writer>(file_->stream(), std::forward<Args>(args)...);
-        observers.add(writer_.get());
-    }
-    void commit() {
-        if (file_) {
-            writer_.reset(); // flushes what is buffered
-            file_->commit();
-        }
-    }
-    // Its reader went away (a closed pipe): the output it names, else empty.
-    std::string gone() const { return file_ && file_->reader_gone() ? file_->name() : ""; }
-
-private:
-    std::unique_ptr<OutputFile> file_;
-    std::unique_ptr<Writer> writer_;
-};
-
-// The job description of a generated deck; refused when it was written for another deck.
-decks::JobDescription read_job(const std::string& file, const std::string& deck_path,
-                               const DeckFlags& deck_flags) {
-    const std::string text =
-        read_text_file(file, "cannot open the job description (written by 'parsons gen airfoil' "
-                             "beside the deck; or give --job FILE)");
-    decks::JobDescription job;
-    try {
-        job = decks::job_from_json(text);
-    } catch (const decks::JobError& e) {
-        throw DeckError::in_file(file, e.what());
-    }
-    if (!job.deck_fingerprint.empty() && deck_path != "-") {
-        const cardreader::DeckFingerprint fingerprint = fingerprint_deck(deck_path, deck_flags);
-        if (fingerprint.hex() != job.deck_fingerprint) {
-            throw DeckError::in_file(
-                file, fmt::format("this job description was written for another deck ({} cards, "
-                                  "fingerprint {}), not {} ({} cards, fingerprint {}): give the "
-                                  "job the deck was generated with (--job FILE)",
-                                  job.deck_cards, job.deck_fingerprint, deck_path,
-                                  fingerprint.cards(), fingerprint.hex()));
-        }
-    }
-    return job;
-}
 
 // The job description a run reads: --job, or the one beside the deck for --cut (which needs it)
 // and --html (which draws its design when there is one); "" for none.
@@ -120,8 +57,8 @@ std::string job_file_read(const RunRequest& f) {
     return "";
 }
 
-// Every file the run reads and writes, compared before anything is written (cli/file_plan.hpp):
-// the files named on the command line.
+// Every file the run reads and writes, compared before anything is written
+// (cli/support/file_plan.hpp): the files named on the command line.
 FilePlan run_plan(const RunRequest& f) {
     FilePlan plan;
     plan.read("DECK", f.input);
@@ -142,28 +79,6 @@ FilePlan run_plan(const RunRequest& f) {
     return plan;
 }
 
-// The replay's design (--html, the page): for an airfoil template job (its job file beside the
-// deck, or --job), the section the cut grows against in the table and cross-slide frame.
-void add_design(RunTimeline& timeline, const RunRequest& f) {
-    const std::string file = job_file_read(f);
-    if (file.empty()) {
-        return;
-    }
-    const decks::JobDescription job = read_job(file, f.input, f.deck);
-    if (job.kind != decks::JobKind::template_2d || !job.passes.empty()) {
-        return; // a wing or two-tool job: the replay shows the path alone
-    }
-    const auto airfoil = decks::open_airfoil(job);
-    const auto samples = decks::design_samples(*airfoil, job.options, job.work_zero_in, 400);
-    nlohmann::json points = nlohmann::json::array();
-    for (const Eigen::Vector2d& p : samples.points) {
-        points.push_back({p.x(), p.y()});
-    }
-    timeline.set_design({{"airfoil", job.airfoil},
-                         {"cutter_radius_in", job.options.cutter_radius_in},
-                         {"points", std::move(points)}});
-}
-
 // A progress line on stderr, only when stderr is a terminal: how far through the deck file.
 class ProgressBar : public relaylogic::MachineObserver {
 public:
@@ -179,14 +94,6 @@ public:
 private:
     InputDeck& deck_;
     ProgressLine line_;
-};
-
-// Keeps the tracer's values current (a saved state writes them) and nothing else: the cabinet
-// may still fast-forward.
-class KeepsValues : public relaylogic::MachineObserver {
-public:
-    bool follows_impulses() const override { return false; }
-    bool follows_motion() const override { return false; }
 };
 
 volatile std::sig_atomic_t g_signal = 0;
@@ -236,43 +143,6 @@ nlohmann::json read_state(const std::string& file) {
     } catch (const nlohmann::json::parse_error& e) {
         throw DeckError::in_file(file, fmt::format("not valid JSON at byte {}", e.byte));
     }
-}
-
-// The saved state: where the machine stopped and why (for the operator), and the machine as
-// the card it stopped on was fed (for --resume): the profile and faults it ran with too.
-nlohmann::json state_json(const relaylogic::RunResult& r, const nlohmann::json& resume_point,
-                          const AppliedProfile& profile, const std::vector<std::string>& faults,
-                          const RunRequest& f) {
-    nlohmann::json stopped = nlohmann::json::object();
-    for (cardreader::Axis a : cardreader::kAxes) {
-        const auto& x = r.axes.at(cardreader::axis_index(a));
-        stopped[std::string(cardreader::axis_name(a))] = {{"counter_in", x.counter_in},
-                                                          {"real_in", x.real_in}};
-    }
-    const auto& s = *r.stop;
-    const std::int64_t resume_card = axes::read<std::int64_t>(resume_point, "cards_read") + 1;
-    // The cards the stopped run had machined, so that a resume can tell when they changed.
-    nlohmann::json machined = nullptr;
-    if (f.input != "-") {
-        const auto fingerprint = fingerprint_deck(f.input, f.deck, resume_card - 1);
-        machined = {{"cards", fingerprint.cards()}, {"fingerprint", fingerprint.hex()}};
-    }
-    return nlohmann::json{
-        {"parsons_state", 1},
-        {"parsons_version", PARSONS_VERSION},
-        {"deck", f.input},
-        {"cards_machined", machined},
-        {"stop",
-         {{"reason", relaylogic::stop_reason_name(s.reason)},
-          {"card", s.card},
-          {"message", s.message},
-          {"machine_seconds", r.machine_seconds},
-          {"axes_at_rest", stopped}}},
-        {"resume_card", resume_card},
-        {"profile", nlohmann::json::parse(axes::profile_to_json(profile.profile()))},
-        {"profile_applied", profile.describe()},
-        {"faults", faults},
-        {"resume", resume_point}};
 }
 
 } // namespace
@@ -369,20 +239,20 @@ static void say_what_resumes(const nlohmann::json& state, const AppliedProfile& 
     }
 }
 
-ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
-    FilePlan plan = run_plan(f);
-    plan.check(); // before anything is read at length or written
+namespace {
+
+// Pictures and traces named for another format than the one written: said.
+void warn_formats(const RunRequest& f) {
     for (const auto& [path, option] : {std::pair{f.plot, "--plot"}, std::pair{f.cut, "--cut"}}) {
         warn_format(path, option, "SVG", {".png", ".jpg", ".jpeg", ".gif", ".pdf", ".eps", ".ps"},
                     "name it .svg; rsvg-convert or any browser turns SVG into PNG or PDF");
     }
     warn_format(f.trace, "--trace", "VCD", {".fst", ".ghw", ".lxt", ".lxt2", ".vzt", ".fsdb"},
                 "name it .vcd; GTKWave's vcd2fst turns it into FST");
-    // A resumed run takes the profile and the faults the state was saved with (its --limit
-    // widens or narrows the movement range, as an operator would before going on).
-    nlohmann::json state;
-    std::vector<std::string> fault_specs = f.faults;
-    AppliedProfile applied;
+}
+
+// Flags that cannot go together, or a tolerance out of range: refused before anything is read.
+void refuse_flag_combinations(const RunRequest& f) {
     if (!f.resume.empty() && !f.press_proof.empty()) {
         throw DeckError("--press-proof with --resume: the proof follows the press from the start "
                         "of the job, so it proves whole runs only (run the deck from its first "
@@ -403,69 +273,86 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
                                     "than 0 and less than 100",
                                     *f.thread_tolerance_percent));
     }
-    if (!f.resume.empty()) {
-        if (!f.profile.empty() || !f.faults.empty()) {
-            throw DeckError("--resume: the saved state carries its machine profile and faults; "
-                            "give --limit to change the movement range, not --profile or --fault");
-        }
-        state = read_state(f.resume);
-        try {
-            applied = AppliedProfile::from_state(state, f.resume);
-            fault_specs = axes::read<std::vector<std::string>>(state, "faults");
-        } catch (const std::exception& e) {
-            throw DeckError::in_file(f.resume, e.what());
-        }
-    } else {
-        applied = AppliedProfile::load(f.profile);
-    }
-    // --press-proof: the job's geometry; with no --profile, the profile written beside it.
+}
+
+// What a run reads before the machine starts: the saved state it resumes, the profile and faults
+// it applies, and the job descriptions its cut, page and proofs are judged against.
+struct RunInputs {
+    nlohmann::json state;
+    std::vector<std::string> fault_specs;
+    AppliedProfile applied;
     std::optional<decks::PressFeederJob> press_job;
-    if (!f.press_proof.empty()) {
-        press_job = read_press_job(f.press_proof);
-        if (f.profile.empty() && f.resume.empty() && !press_job->profile_file.empty()) {
-            applied = AppliedProfile::load(press_job->profile_file);
-        }
-    }
-    // --thread-proof: the job's holes; with no --profile, the profile written beside it.
     std::optional<decks::TappingJob> tapping_job;
-    if (!f.thread_proof.empty()) {
-        tapping_job = read_tapping_job(f.thread_proof);
-        if (f.profile.empty() && f.resume.empty() && !press_job &&
-            !tapping_job->profile_file.empty()) {
-            applied = AppliedProfile::load(tapping_job->profile_file);
+    std::optional<decks::JobDescription> job; // for --cut, and --html's design
+};
+
+// A resumed run takes the profile and the faults the state was saved with (its --limit
+// widens or narrows the movement range, as an operator would before going on).
+void read_profile_and_faults(const RunRequest& f, RunInputs& in) {
+    in.fault_specs = f.faults;
+    if (f.resume.empty()) {
+        in.applied = AppliedProfile::load(f.profile);
+        return;
+    }
+    if (!f.profile.empty() || !f.faults.empty()) {
+        throw DeckError("--resume: the saved state carries its machine profile and faults; "
+                        "give --limit to change the movement range, not --profile or --fault");
+    }
+    in.state = read_state(f.resume);
+    try {
+        in.applied = AppliedProfile::from_state(in.state, f.resume);
+        in.fault_specs = axes::read<std::vector<std::string>>(in.state, "faults");
+    } catch (const std::exception& e) {
+        throw DeckError::in_file(f.resume, e.what());
+    }
+}
+
+// The proofs' jobs (--press-proof, --thread-proof); with no --profile, a run takes the profile
+// written beside the job. Then the files the jobs name: their profiles, and the airfoil a
+// template job is cut against.
+void read_jobs(const RunRequest& f, FilePlan& plan, RunInputs& in) {
+    if (!f.press_proof.empty()) {
+        in.press_job = read_press_job(f.press_proof);
+        if (f.profile.empty() && f.resume.empty() && !in.press_job->profile_file.empty()) {
+            in.applied = AppliedProfile::load(in.press_job->profile_file);
         }
     }
-    // The files the jobs name: their profiles, and the airfoil a template job is cut against.
-    if (press_job && applied.file() == press_job->profile_file) {
-        plan.read("the profile of --press-proof", press_job->profile_file);
+    if (!f.thread_proof.empty()) {
+        in.tapping_job = read_tapping_job(f.thread_proof);
+        if (f.profile.empty() && f.resume.empty() && !in.press_job &&
+            !in.tapping_job->profile_file.empty()) {
+            in.applied = AppliedProfile::load(in.tapping_job->profile_file);
+        }
     }
-    if (tapping_job && applied.file() == tapping_job->profile_file) {
-        plan.read("the profile of --thread-proof", tapping_job->profile_file);
+    if (in.press_job && in.applied.file() == in.press_job->profile_file) {
+        plan.read("the profile of --press-proof", in.press_job->profile_file);
     }
-    decks::JobDescription job;
-    const std::string job_file = job_file_read(f); // for --cut, and --html's design
+    if (in.tapping_job && in.applied.file() == in.tapping_job->profile_file) {
+        plan.read("the profile of --thread-proof", in.tapping_job->profile_file);
+    }
+    const std::string job_file = job_file_read(f);
     if (!job_file.empty()) {
-        job = read_job(job_file, f.input, f.deck);
-        plan.read("the airfoil file of the job", airfoil_file_read(job.airfoil));
+        in.job = read_job(job_file, f.input, f.deck);
+        plan.read("the airfoil file of the job", airfoil_file_read(in.job->airfoil));
     }
-    plan.check();
-    applied.apply_limits(f.limits);
-    axes::MachineProfile& profile = applied.profile();
+}
+
+std::vector<relaylogic::Fault> parse_faults(const std::vector<std::string>& specs) {
     std::vector<relaylogic::Fault> faults;
-    for (const auto& spec : fault_specs) {
+    for (const auto& spec : specs) {
         try {
             faults.push_back(relaylogic::parse_fault(spec));
         } catch (const relaylogic::FaultSpecError& e) {
             throw DeckError(e.what());
         }
     }
-    InputDeck deck(f.input, f.deck);
-    apply_feed(profile, f.feed, deck.options());
-    refuse_condition_errors(deck, profile); // condition cards (an addition): before any motion
-    if (!f.resume.empty()) {
-        say_what_resumes(state, applied, f);
-    }
-    relaylogic::ControlCabinet cabinet(profile, *deck.options().layout);
+    return faults;
+}
+
+// The cabinet before its first card: the faults injected, the state resumed, and what the run
+// needs kept (the resume point for --save-state, the card times for --report).
+void prepare_cabinet(relaylogic::ControlCabinet& cabinet, const RunRequest& f,
+                     const std::vector<relaylogic::Fault>& faults, const nlohmann::json& state) {
     for (const auto& fault : faults) {
         cabinet.add_fault(fault);
     }
@@ -482,91 +369,133 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     cabinet.set_pace(f.impulse_level ? relaylogic::Pace::impulse_level
                                      : relaylogic::Pace::fast_forward);
     cabinet.record_card_times(!f.report.empty());
+}
+
+ExitCode interrupted_exit(const OperatorStop& operator_stop) {
+    return operator_stop.signal() == SIGTERM ? ExitCode::terminated : ExitCode::interrupted;
+}
+
+// Every output the run asks for, made in the table's order (cli/run_outputs.hpp). An output
+// that opens its file when made is where an operator's signal can end the wait for a FIFO's
+// reader: the run then ends before any card (nullopt, and `code` says how).
+std::optional<std::vector<std::unique_ptr<Output>>>
+make_outputs(RunSetup& setup, const OperatorStop& operator_stop, ExitCode& code) {
+    std::vector<std::unique_ptr<Output>> made;
+    for (const RunOutputOption& option : run_output_options()) {
+        if (!option.wanted(setup.request)) {
+            continue;
+        }
+        try {
+            made.push_back(option.make(setup));
+        } catch (const DeckError& e) {
+            if (!option.opens_when_made || operator_stop.signal() == 0) {
+                throw;
+            }
+            fmt::print(stderr,
+                       "parsons: interrupted while opening the outputs, before any card: {}\n",
+                       e.what());
+            code = interrupted_exit(operator_stop);
+            return std::nullopt;
+        }
+    }
+    return made;
+}
+
+// The run is over: a trace whose reader went away stopped the machine, and the run ends there,
+// quietly, leaving no other output of a run nobody asked to stop. Else every output is
+// finished in the table's order, and the summary printed with what the outputs added.
+void finish_outputs(const std::vector<std::unique_ptr<Output>>& outputs,
+                    const relaylogic::RunResult& result, const AppliedProfile& applied,
+                    const RunRequest& f) {
+    for (const auto& output : outputs) {
+        if (const std::string gone = output->gone(); !gone.empty()) {
+            throw BrokenPipe(gone);
+        }
+    }
+    nlohmann::json report = report_json(result, applied.profile(), applied.describe(), f.input);
+    std::string summary;
+    RunEnd end{result, report, summary};
+    for (const auto& output : outputs) {
+        output->finish(end);
+    }
+    if (!f.quiet) {
+        fmt::print(message_stream(), "{}{}", summary_text(result, f.input, applied.profile().name),
+                   summary);
+    }
+}
+
+// The exit code: a stop (the operator's or the machine's), else the first proof that objects.
+ExitCode verdict(const relaylogic::RunResult& result,
+                 const std::vector<std::unique_ptr<Output>>& outputs,
+                 const OperatorStop& operator_stop, const RunRequest& f) {
+    if (result.stop && result.stop->reason == relaylogic::StopReason::interrupted) {
+        fmt::print(stderr, "parsons: interrupted: {}\n", result.stop->message);
+        say_how_to_resume(f);
+        return interrupted_exit(operator_stop);
+    }
+    if (result.stop) {
+        fmt::print(stderr, "parsons: machine stop: {}: {}\n",
+                   relaylogic::stop_reason_name(result.stop->reason), result.stop->message);
+        say_how_to_resume(f);
+        return ExitCode::machine_stop;
+    }
+    for (const auto& output : outputs) {
+        if (const std::string objection = output->objection(); !objection.empty()) {
+            fmt::print(stderr, "{}", objection);
+            return ExitCode::machine_stop;
+        }
+    }
+    return ExitCode::ok;
+}
+
+} // namespace
+
+ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
+    FilePlan plan = run_plan(f);
+    plan.check(); // before anything is read at length or written
+    warn_formats(f);
+    refuse_flag_combinations(f);
+    RunInputs in;
+    read_profile_and_faults(f, in);
+    read_jobs(f, plan, in);
+    plan.check();
+    in.applied.apply_limits(f.limits);
+    axes::MachineProfile& profile = in.applied.profile();
+    const std::vector<relaylogic::Fault> faults = parse_faults(in.fault_specs);
+    InputDeck deck(f.input, f.deck);
+    apply_feed(profile, f.feed, deck.options());
+    refuse_condition_errors(deck, profile); // condition cards (an addition): before any motion
+    if (!f.resume.empty()) {
+        say_what_resumes(in.state, in.applied, f);
+    }
+    relaylogic::ControlCabinet cabinet(profile, *deck.options().layout);
+    prepare_cabinet(cabinet, f, faults, in.state);
 
     // Ctrl-C and SIGTERM stop the machine at its next event; the outputs are then written
     // whole, as after any stop. Caught from here on: opening a FIFO waits for its reader, and
     // a signal then ends the wait (and the run, before any card) instead of killing parsons.
     OperatorStop operator_stop;
+    RunSetup setup{f,
+                   in.applied,
+                   in.fault_specs,
+                   in.job ? &*in.job : nullptr,
+                   in.press_job,
+                   in.tapping_job,
+                   cabinet};
+    ExitCode code = ExitCode::ok;
+    const auto outputs = make_outputs(setup, operator_stop, code);
+    if (!outputs) {
+        return code;
+    }
     relaylogic::ObserverFanOut observers;
-    TraceFile<VcdWriter> vcd;
-    TraceFile<EventsJsonlWriter> events;
-    TraceFile<PathCsvWriter> path;
-    TraceFile<GcodePathWriter> gcode;
-    try {
-        vcd.open(f.trace, observers);
-        events.open(f.events, observers);
-        path.open(f.path, observers);
-        gcode.open(f.gcode, observers, f.input == "-" ? std::string("standard input") : f.input);
-    } catch (const DeckError& e) {
-        if (operator_stop.signal() == 0) {
-            throw;
+    for (const auto& output : *outputs) {
+        if (relaylogic::MachineObserver* observer = output->observer()) {
+            observers.add(observer);
         }
-        fmt::print(stderr, "parsons: interrupted while opening the outputs, before any card: {}\n",
-                   e.what());
-        return operator_stop.signal() == SIGTERM ? ExitCode::terminated : ExitCode::interrupted;
-    }
-    std::unique_ptr<PlotSvgRecorder> plot;
-    if (!f.plot.empty()) {
-        plot = std::make_unique<PlotSvgRecorder>(f.input);
-        observers.add(plot.get());
-    }
-    CutterPath cutter;
-    std::unique_ptr<WingPath> wing_path;
-    std::unique_ptr<ToolPaths> tool_paths; // a two-tool job: the path by the tool that cut it
-    if (!f.cut.empty()) {
-        if (job.kind == decks::JobKind::wing) {
-            wing_path = std::make_unique<WingPath>(job.wing_zero_in, profile);
-            observers.add(wing_path.get());
-        } else if (!job.passes.empty()) {
-            tool_paths = std::make_unique<ToolPaths>(profile.first_tool);
-            observers.add(tool_paths.get());
-        } else {
-            observers.add(&cutter);
-        }
-    }
-    std::unique_ptr<PressProof> press_proof;
-    if (press_job) {
-        if (!profile.press_sync) {
-            throw DeckError(fmt::format("--press-proof: profile {} has no press synchronisation "
-                                        "(give --profile {})",
-                                        profile.name, press_job->profile_file));
-        }
-        press_proof =
-            std::make_unique<PressProof>(profile.press, press_job->options.zone_edge_x_in,
-                                         press_job->options.safe_height_in, press_job->cycle_card);
-        observers.add(press_proof.get());
-    }
-    if (tapping_job) {
-        if (!profile.spindle_sync) {
-            throw DeckError(fmt::format("--thread-proof: profile {} has no spindle "
-                                        "synchronisation (give --profile {})",
-                                        profile.name,
-                                        tapping_job->profile_file.empty()
-                                            ? std::string("parsons-extended")
-                                            : tapping_job->profile_file));
-        }
-        cabinet.record_tap_samples(true);
-    }
-    // The replay page's recording (--html), or the embedder's.
-    std::unique_ptr<RunTimeline> html_timeline;
-    RunTimeline* timeline = f.timeline;
-    if (timeline == nullptr && !f.html.empty()) {
-        html_timeline = std::make_unique<RunTimeline>();
-        timeline = html_timeline.get();
-    }
-    if (timeline != nullptr) {
-        timeline->set_machine(profile);
-        observers.add(timeline);
-        add_design(*timeline, f);
     }
     ProgressBar progress(deck, !f.quiet);
     if (progress.shown()) {
         observers.add(&progress);
-    }
-    // A state to be saved needs the signal values kept: an observer that wants nothing more.
-    KeepsValues values_kept;
-    if (!f.save_state.empty()) {
-        observers.add(&values_kept);
     }
     if (!observers.empty()) {
         cabinet.attach(observers.attachable());
@@ -578,139 +507,8 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     if (out != nullptr) {
         *out = result;
     }
-    // A trace whose reader went away stopped the machine: the run ends there, quietly, and
-    // leaves no other output of a run nobody asked to stop.
-    for (const std::string& gone : {vcd.gone(), events.gone(), path.gone(), gcode.gone()}) {
-        if (!gone.empty()) {
-            throw BrokenPipe(gone);
-        }
-    }
-
-    vcd.commit();
-    events.commit();
-    path.commit();
-    gcode.commit();
-    if (plot) {
-        write_file(f.plot, plot->svg());
-    }
-    nlohmann::json report = report_json(result, applied, f.input);
-    std::string cut_summary;
-    if (wing_path) {
-        const auto airfoil = decks::open_airfoil(job);
-        const decks::WingProof proof = decks::prove_wing(wing_path->path, *airfoil, job.wing);
-        write_file(f.cut, decks::wing_cut_svg(proof, wing_path->path, job.wing,
-                                              fmt::format("{} wing", job.airfoil)));
-        report["cut"] = {{"root",
-                          {{"max_gouge_in", fine_length(proof.root.max_gouge_in)},
-                           {"max_leftover_in", fine_length(proof.root.max_leftover_in)}}},
-                         {"tip",
-                          {{"max_gouge_in", fine_length(proof.tip.max_gouge_in)},
-                           {"max_leftover_in", fine_length(proof.tip.max_leftover_in)}}}};
-        cut_summary = fmt::format("  cut            root section: deepest gouge {:.5f} in, most "
-                                  "left standing {:.5f} in; tip section: {:.5f} in, {:.5f} in\n",
-                                  proof.root.max_gouge_in, proof.root.max_leftover_in,
-                                  proof.tip.max_gouge_in, proof.tip.max_leftover_in);
-    } else if (tool_paths) {
-        try {
-            cut_summary = write_two_tool_cut(prove_two_tool_cut(*tool_paths, job, profile), job,
-                                             f.cut, report);
-        } catch (const decks::JobError& e) {
-            throw DeckError(fmt::format("--cut: {}", e.what()));
-        }
-    } else if (!f.cut.empty()) {
-        const auto airfoil = decks::open_airfoil(job);
-        const auto samples = decks::design_samples(*airfoil, job.options, job.work_zero_in);
-        const decks::DesignContour design{samples.points, samples.toward_cutter};
-        const double radius = job.options.cutter_radius_in;
-        const auto path = decks::simplify_path(cutter.path, 1e-7);
-        const decks::CutProof proof = decks::prove_cut(path, radius, design, 1.5 * radius);
-        write_file(f.cut,
-                   decks::cut_svg(proof, path, design, radius,
-                                  fmt::format("{}: the cut, from the emulated path", job.airfoil)));
-        report["cut"] = {{"max_gouge_in", fine_length(proof.max_gouge_in)},
-                         {"max_leftover_in", fine_length(proof.max_leftover_in)},
-                         {"max_scallop_in", fine_length(proof.max_scallop_in)},
-                         {"machined_points", proof.machined_points},
-                         {"design_points", design.points.size()}};
-        cut_summary = fmt::format("  cut            deepest gouge {:.5f} in, most left standing "
-                                  "{:.5f} in, largest scallop {:.5f} in ({} of {} design points "
-                                  "machined)\n",
-                                  proof.max_gouge_in, proof.max_leftover_in, proof.max_scallop_in,
-                                  proof.machined_points, design.points.size());
-    }
-    if (press_proof) {
-        if (!report["press"].is_object()) {
-            report["press"] = nlohmann::json::object();
-        }
-        report["press"].update(press_block(result, *press_proof, *press_job));
-        cut_summary += press_summary(result, *press_proof);
-    }
-    std::optional<ThreadProof> thread_proof;
-    if (tapping_job && result.tapping) {
-        thread_proof = prove_threads(*result.tapping, *tapping_job, profile.spindle,
-                                     f.thread_tolerance_percent);
-        if (!report["tapping"].is_object()) {
-            report["tapping"] = nlohmann::json::object();
-        }
-        add_thread_proof(report["tapping"], *thread_proof);
-        cut_summary += thread_summary(*thread_proof);
-    }
-    if (!f.report.empty()) {
-        // A deck name that is not UTF-8 is written with U+FFFD for its bad bytes, not refused.
-        write_file(f.report,
-                   report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
-    }
-    if (!f.html.empty()) {
-        write_file(f.html, replay_page(*timeline, report, f.input));
-    }
-    if (!f.save_state.empty()) {
-        if (result.stop) {
-            write_file(f.save_state,
-                       state_json(result, cabinet.resume_point(), applied, fault_specs, f)
-                               .dump(1, ' ', false, nlohmann::json::error_handler_t::replace) +
-                           "\n");
-        } else if (!f.quiet) {
-            fmt::print(message_stream(),
-                       "  state          the deck completed: no state to save ({} not written)\n",
-                       f.save_state);
-        }
-    }
-    if (!f.quiet) {
-        fmt::print(message_stream(), "{}{}", summary_text(result, f.input, profile.name),
-                   cut_summary);
-    }
-    if (result.stop && result.stop->reason == relaylogic::StopReason::interrupted) {
-        fmt::print(stderr, "parsons: interrupted: {}\n", result.stop->message);
-        say_how_to_resume(f);
-        return operator_stop.signal() == SIGTERM ? ExitCode::terminated : ExitCode::interrupted;
-    }
-    if (result.stop) {
-        fmt::print(stderr, "parsons: machine stop: {}: {}\n",
-                   relaylogic::stop_reason_name(result.stop->reason), result.stop->message);
-        say_how_to_resume(f);
-        return ExitCode::machine_stop;
-    }
-    if (press_proof && press_proof->collision()) {
-        fmt::print(stderr,
-                   "parsons: press proof: {} (the emulation ran as it should: the job is "
-                   "unsafe)\n",
-                   collision_message(*press_proof, press_job->options.safe_height_in,
-                                     press_job->options.zone_edge_x_in));
-        return ExitCode::machine_stop;
-    }
-    if (thread_proof && thread_proof->flagged() > 0) {
-        const auto lines = wrong_pitch_lines(*thread_proof);
-        fmt::print(stderr,
-                   "parsons: thread proof: wrong pitch in {} of {} hole{} (the emulation ran as "
-                   "it should: the threads are wrong):\n",
-                   lines.size(), thread_proof->holes.size(),
-                   thread_proof->holes.size() == 1 ? "" : "s");
-        for (const std::string& line : lines) {
-            fmt::print(stderr, "  {}\n", line);
-        }
-        return ExitCode::machine_stop;
-    }
-    return ExitCode::ok;
+    finish_outputs(*outputs, result, in.applied, f);
+    return verdict(result, *outputs, operator_stop, f);
 }
 
 void add_run_command(CLI::App& app, Command& selected, RunTimeline* timeline) {

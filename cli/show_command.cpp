@@ -1,11 +1,11 @@
 // parsons show DECK [--svg DIR] [--json]: interpret every card field by field, as the operator
 // reads the printed card, with warnings for what the machine will stop on; pictures of the
 // cards. With --json the same, as one document for scripts (docs/json-output.md).
-#include "cli/applied_profile.hpp"
 #include "cli/commands.hpp"
-#include "cli/deck_files.hpp"
-#include "cli/json_output.hpp"
-#include "cli/output_file.hpp"
+#include "cli/support/applied_profile.hpp"
+#include "cli/support/deck_files.hpp"
+#include "cli/support/json_output.hpp"
+#include "outputs/output_file.hpp"
 
 #include "cardreader/card_svg.hpp"
 #include "cardreader/condition_card.hpp"

@@ -130,27 +130,23 @@ cardreader::CardOrders card(int number, const Eigen::Vector3i& p, const Eigen::V
     return c;
 }
 
-} // namespace
+// A design station, in the program's frame, with the line it comes from.
+struct Design {
+    Vector3d at;
+    std::int64_t line;
+    int spindle;
+};
 
-GcodeDeck make_gcode_deck(const GcodeProgram& program, const GcodeJobOptions& o,
-                          const axes::MachineProfile& profile) {
-    if (!(o.tolerance_in >= kLeastGcodeToleranceIn) || !std::isfinite(o.tolerance_in)) {
-        throw JobError(fmt::format("tolerance {} in: at least {} in (the counters' thousandth "
-                                   "and the machine's half-thousandth stop take 0.001 in of it)",
-                                   o.tolerance_in, kLeastGcodeToleranceIn));
-    }
-    if (program.moves.empty()) {
-        throw JobError(fmt::format("{}: no moves: nothing to punch", program.file));
-    }
-    const double third = o.tolerance_in / 3;
-    GcodeDeck deck;
+// A station the cards go to.
+struct Station {
+    Eigen::Vector3i at;
+    bool corner; // the card arriving here runs at the lowest speed
+    int spindle;
+};
 
-    // The design stations, the program's frame, each with the line it comes from.
-    struct Design {
-        Vector3d at;
-        std::int64_t line;
-        int spindle;
-    };
+// The design stations, the program's frame, each with the line it comes from; counts the
+// deck's lines and arcs.
+std::vector<Design> design_of(const GcodeProgram& program, double third, GcodeDeck& deck) {
     std::vector<Design> design{{Vector3d::Zero(), 0, program.moves.front().spindle}};
     for (const GcodeMove& m : program.moves) {
         const bool is_arc = m.motion == GcodeMotion::arc_cw || m.motion == GcodeMotion::arc_ccw;
@@ -159,8 +155,12 @@ GcodeDeck make_gcode_deck(const GcodeProgram& program, const GcodeJobOptions& o,
             design.push_back({s, m.line, m.spindle});
         }
     }
+    return design;
+}
 
-    // The work zero, and the counters' range.
+// The work zero, and the counters' range.
+void place_work_zero(const std::vector<Design>& design, const GcodeProgram& program,
+                     const GcodeJobOptions& o, GcodeDeck& deck) {
     Vector3d lo = Vector3d::Zero();
     Vector3d hi = Vector3d::Zero();
     std::array<std::int64_t, 3> lo_line{};
@@ -196,11 +196,11 @@ GcodeDeck make_gcode_deck(const GcodeProgram& program, const GcodeJobOptions& o,
                 o.work_zero_in ? ", given by --work-zero" : ""));
         }
     }
+}
 
-    // The stations the cards go to: each chord cut so its staircase stays within a third of
-    // the tolerance, rounded to the thousandth.
-    // A design point where the path turns sharper than the corner limit is a corner: the card
-    // arriving there runs at the lowest speed (EP 0636958), over its last kCornerApproachIn.
+// A design point where the path turns sharper than the corner limit is a corner: the card
+// arriving there runs at the lowest speed (EP 0636958), over its last kCornerApproachIn.
+std::vector<char> corners_of(const std::vector<Design>& design, const GcodeJobOptions& o) {
     const double limit = o.corner_limit_deg * kPi / 180;
     std::vector<char> corner_at(design.size(), 0);
     for (std::size_t i = 1; o.corner_slowdown && i + 1 < design.size(); ++i) {
@@ -216,11 +216,14 @@ GcodeDeck make_gcode_deck(const GcodeProgram& program, const GcodeJobOptions& o,
             corner_at[i] = turn > limit ? 1 : 0;
         }
     }
-    struct Station {
-        Eigen::Vector3i at;
-        bool corner; // the card arriving here runs at the lowest speed
-        int spindle;
-    };
+    return corner_at;
+}
+
+// The stations the cards go to: each chord cut so its staircase stays within a third of
+// the tolerance, rounded to the thousandth.
+std::vector<Station> card_stations(const std::vector<Design>& design,
+                                   const std::vector<char>& corner_at, const GcodeProgram& program,
+                                   const GcodeJobOptions& o, double third, const GcodeDeck& deck) {
     std::vector<Station> stations;
     const Eigen::Vector3i reference = Eigen::Vector3i::Zero();
     stations.push_back({reference, false, design.front().spindle});
@@ -263,7 +266,13 @@ GcodeDeck make_gcode_deck(const GcodeProgram& program, const GcodeJobOptions& o,
             }
         }
     }
-    // The cards.
+    return stations;
+}
+
+// The cards, the stations the deck records, and the farthest the planned path strays from
+// the design.
+void punch_cards(const std::vector<Station>& stations, const axes::MachineProfile& profile,
+                 GcodeDeck& deck) {
     for (std::size_t i = 1; i < stations.size(); ++i) {
         const Station& a = stations[i - 1];
         const Station& b = stations[i];
@@ -301,6 +310,26 @@ GcodeDeck make_gcode_deck(const GcodeProgram& program, const GcodeJobOptions& o,
             std::max(deck.planned_deviation_in,
                      staircase_offset(p, q, axis_order(stations[i - 1].at, stations[i].at)));
     }
+}
+
+} // namespace
+
+GcodeDeck make_gcode_deck(const GcodeProgram& program, const GcodeJobOptions& o,
+                          const axes::MachineProfile& profile) {
+    if (!(o.tolerance_in >= kLeastGcodeToleranceIn) || !std::isfinite(o.tolerance_in)) {
+        throw JobError(fmt::format("tolerance {} in: at least {} in (the counters' thousandth "
+                                   "and the machine's half-thousandth stop take 0.001 in of it)",
+                                   o.tolerance_in, kLeastGcodeToleranceIn));
+    }
+    if (program.moves.empty()) {
+        throw JobError(fmt::format("{}: no moves: nothing to punch", program.file));
+    }
+    const double third = o.tolerance_in / 3;
+    GcodeDeck deck;
+    const std::vector<Design> design = design_of(program, third, deck);
+    place_work_zero(design, program, o, deck);
+    const std::vector<char> corner_at = corners_of(design, o);
+    punch_cards(card_stations(design, corner_at, program, o, third, deck), profile, deck);
     return deck;
 }
 

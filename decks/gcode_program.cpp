@@ -222,140 +222,164 @@ private:
         return words;
     }
 
-    void read_line(std::string_view l) {
-        const std::vector<Word> words = words_of(l);
-        if (words.empty()) {
-            return;
-        }
+    // The words of one line, sorted: the G-codes by modal group, the axis and arc words, the
+    // spindle word, and whether the program ends on this line.
+    struct LineWords {
         std::map<Group, Word> groups;
         std::map<char, Word> axis;
         std::optional<int> spindle;
         bool end_program = false;
         bool has_arc_word = false;
-        for (const Word& w : words) {
-            switch (w.letter) {
-            case 'N':
-                break;
-            case 'G': {
-                const auto info = g_code(w.value);
-                if (!info) {
-                    refuse(w.text, "not a G-code parsons reads (docs/gcode.md lists them)");
-                }
-                if (info->refusal != nullptr) {
-                    refuse(w.text, info->refusal);
-                }
-                if (info->group != Group::other) {
-                    if (const auto it = groups.find(info->group); it != groups.end()) {
-                        refuse(w.text, fmt::format("{} and {} on one line: two words of the same "
-                                                   "modal group",
-                                                   it->second.text, w.text));
-                    }
-                    groups[info->group] = w;
-                }
-                break;
-            }
-            case 'M': {
-                const int m = static_cast<int>(std::lround(w.value));
-                if (std::abs(w.value - m) > 1e-9) {
-                    refuse(w.text, "not an M-code parsons reads");
-                }
-                if (m == 2 || m == 30) {
-                    end_program = true;
-                } else if (m == 3 || m == 4 || m == 5) {
-                    if (spindle) {
-                        refuse(w.text, "two spindle words on one line");
-                    }
-                    spindle = m == 3 ? 1 : m == 4 ? 2 : 0;
-                } else if (m == 7 || m == 8 || m == 9) {
-                    ignore("M7/M8/M9", "coolant: the 1952 card has no column for it");
-                } else if (m == 6) {
-                    refuse(w.text, "a tool change: a 1952 deck runs one cutter (condition cards "
-                                   "of parsons-extended change tools: gen two-tool)");
-                } else if (m == 0 || m == 1) {
-                    refuse(w.text, "a program stop: the 1952 machine stops only at the end of "
-                                   "the deck or on a check");
-                } else {
-                    refuse(w.text, "not an M-code parsons reads (docs/gcode.md lists them)");
-                }
-                break;
-            }
-            case 'X':
-            case 'Y':
-            case 'Z':
-            case 'I':
-            case 'J':
-            case 'R':
-                if (axis.count(w.letter) != 0) {
-                    refuse(w.text, fmt::format("{} given twice on one line", w.letter));
-                }
-                if (!std::isfinite(w.value)) {
-                    refuse(w.text, "not a finite number");
-                }
-                axis[w.letter] = w;
-                has_arc_word =
-                    has_arc_word || w.letter == 'I' || w.letter == 'J' || w.letter == 'R';
-                break;
-            case 'F':
-                if (!(w.value > 0)) {
-                    refuse(w.text, "a feed must be positive");
-                }
-                ignore("F", "feeds: the deck's speeds are the speed switches', chosen by the "
-                            "slow-down rule, not the program's");
-                break;
-            case 'S':
-                if (w.value < 0) {
-                    refuse(w.text, "a spindle speed cannot be negative");
-                }
-                ignore("S", "spindle speed: the 1952 spindle runs at the speed set on the machine");
-                break;
-            case 'T':
-                refuse(w.text, "a tool: a 1952 deck runs one cutter (condition cards of "
-                               "parsons-extended change tools: gen two-tool)");
-            case 'K':
-                refuse(w.text, "K: arcs in the XY plane take I and J only");
-            case 'A':
-            case 'B':
-            case 'C':
-                refuse(w.text, "a rotary axis: the fixture's swivel and tilt stand where the "
-                               "deck's own cards set them; the program moves X, Y and Z");
-            default:
-                refuse(w.text, "not a word parsons reads (docs/gcode.md lists them)");
-            }
-        }
+    };
 
-        // In the order RS-274 applies them: units, plane, distance, spindle, then the move.
-        if (const auto it = groups.find(Group::units); it != groups.end()) {
+    void g_word(const Word& w, LineWords& line) const {
+        const auto info = g_code(w.value);
+        if (!info) {
+            refuse(w.text, "not a G-code parsons reads (docs/gcode.md lists them)");
+        }
+        if (info->refusal != nullptr) {
+            refuse(w.text, info->refusal);
+        }
+        if (info->group != Group::other) {
+            if (const auto it = line.groups.find(info->group); it != line.groups.end()) {
+                refuse(w.text, fmt::format("{} and {} on one line: two words of the same "
+                                           "modal group",
+                                           it->second.text, w.text));
+            }
+            line.groups[info->group] = w;
+        }
+    }
+
+    void m_word(const Word& w, LineWords& line) {
+        const int m = static_cast<int>(std::lround(w.value));
+        if (std::abs(w.value - m) > 1e-9) {
+            refuse(w.text, "not an M-code parsons reads");
+        }
+        if (m == 2 || m == 30) {
+            line.end_program = true;
+        } else if (m == 3 || m == 4 || m == 5) {
+            if (line.spindle) {
+                refuse(w.text, "two spindle words on one line");
+            }
+            line.spindle = m == 3 ? 1 : m == 4 ? 2 : 0;
+        } else if (m == 7 || m == 8 || m == 9) {
+            ignore("M7/M8/M9", "coolant: the 1952 card has no column for it");
+        } else if (m == 6) {
+            refuse(w.text, "a tool change: a 1952 deck runs one cutter (condition cards "
+                           "of parsons-extended change tools: gen two-tool)");
+        } else if (m == 0 || m == 1) {
+            refuse(w.text, "a program stop: the 1952 machine stops only at the end of "
+                           "the deck or on a check");
+        } else {
+            refuse(w.text, "not an M-code parsons reads (docs/gcode.md lists them)");
+        }
+    }
+
+    void sort_word(const Word& w, LineWords& line) {
+        switch (w.letter) {
+        case 'N':
+            break;
+        case 'G':
+            g_word(w, line);
+            break;
+        case 'M':
+            m_word(w, line);
+            break;
+        case 'X':
+        case 'Y':
+        case 'Z':
+        case 'I':
+        case 'J':
+        case 'R':
+            if (line.axis.count(w.letter) != 0) {
+                refuse(w.text, fmt::format("{} given twice on one line", w.letter));
+            }
+            if (!std::isfinite(w.value)) {
+                refuse(w.text, "not a finite number");
+            }
+            line.axis[w.letter] = w;
+            line.has_arc_word =
+                line.has_arc_word || w.letter == 'I' || w.letter == 'J' || w.letter == 'R';
+            break;
+        case 'F':
+            if (!(w.value > 0)) {
+                refuse(w.text, "a feed must be positive");
+            }
+            ignore("F", "feeds: the deck's speeds are the speed switches', chosen by the "
+                        "slow-down rule, not the program's");
+            break;
+        case 'S':
+            if (w.value < 0) {
+                refuse(w.text, "a spindle speed cannot be negative");
+            }
+            ignore("S", "spindle speed: the 1952 spindle runs at the speed set on the machine");
+            break;
+        case 'T':
+            refuse(w.text, "a tool: a 1952 deck runs one cutter (condition cards of "
+                           "parsons-extended change tools: gen two-tool)");
+        case 'K':
+            refuse(w.text, "K: arcs in the XY plane take I and J only");
+        case 'A':
+        case 'B':
+        case 'C':
+            refuse(w.text, "a rotary axis: the fixture's swivel and tilt stand where the "
+                           "deck's own cards set them; the program moves X, Y and Z");
+        default:
+            refuse(w.text, "not a word parsons reads (docs/gcode.md lists them)");
+        }
+    }
+
+    void read_line(std::string_view l) {
+        const std::vector<Word> words = words_of(l);
+        if (words.empty()) {
+            return;
+        }
+        LineWords line;
+        for (const Word& w : words) {
+            sort_word(w, line);
+        }
+        read_modes(line);
+        read_move(line);
+    }
+
+    // In the order RS-274 applies them: units, plane, distance, spindle, then the move.
+    void read_modes(LineWords& line) {
+        if (const auto it = line.groups.find(Group::units); it != line.groups.end()) {
             units_ = it->second.value < 20.5 ? 1.0 : 1.0 / kMmPerInch;
             units_given_ = true;
             millimetres_ = it->second.value > 20.5;
         }
-        if (const auto it = groups.find(Group::distance); it != groups.end()) {
+        if (const auto it = line.groups.find(Group::distance); it != line.groups.end()) {
             incremental_ = it->second.value > 90.5;
         }
-        if (spindle) {
-            spindle_ = *spindle;
+        if (line.spindle) {
+            spindle_ = *line.spindle;
         }
-        const bool motion_word = groups.count(Group::motion) != 0;
+        const bool motion_word = line.groups.count(Group::motion) != 0;
         if (motion_word) {
-            const double g = groups[Group::motion].value;
+            const double g = line.groups[Group::motion].value;
             motion_ = g < 0.5   ? Mode::rapid
                       : g < 1.5 ? Mode::linear
                       : g < 2.5 ? Mode::arc_cw
                       : g < 3.5 ? Mode::arc_ccw
                                 : Mode::none; // G80
         }
-        const bool has_axis = axis.count('X') + axis.count('Y') + axis.count('Z') != 0;
-        if (has_arc_word && motion_ != Mode::arc_cw && motion_ != Mode::arc_ccw) {
-            const char letter = axis.count('I') ? 'I' : axis.count('J') ? 'J' : 'R';
-            refuse(axis[letter].text, "arc words with no arc: I, J and R go with G2 or G3");
+    }
+
+    void read_move(LineWords& line) {
+        const bool has_axis =
+            line.axis.count('X') + line.axis.count('Y') + line.axis.count('Z') != 0;
+        if (line.has_arc_word && motion_ != Mode::arc_cw && motion_ != Mode::arc_ccw) {
+            const char letter = line.axis.count('I') ? 'I' : line.axis.count('J') ? 'J' : 'R';
+            refuse(line.axis[letter].text, "arc words with no arc: I, J and R go with G2 or G3");
         }
-        if (!has_axis && !has_arc_word) {
-            if (end_program) {
+        if (!has_axis && !line.has_arc_word) {
+            if (line.end_program) {
                 ended_ = true;
             }
             return;
         }
-        const Word& first = axis.begin()->second;
+        const Word& first = line.axis.begin()->second;
         if (motion_ == Mode::none) {
             refuse(first.text, "a move with no motion mode: give G0, G1, G2 or G3 first");
         }
@@ -369,7 +393,7 @@ private:
         Vector3d to = position_;
         const char names[3] = {'X', 'Y', 'Z'};
         for (int k = 0; k < 3; ++k) {
-            if (const auto it = axis.find(names[k]); it != axis.end()) {
+            if (const auto it = line.axis.find(names[k]); it != line.axis.end()) {
                 const double v = it->second.value * units_;
                 to[k] = incremental_ ? position_[k] + v : v;
             }
@@ -382,12 +406,12 @@ private:
         if (motion_ == Mode::rapid || motion_ == Mode::linear) {
             move.motion = motion_ == Mode::rapid ? GcodeMotion::rapid : GcodeMotion::linear;
         } else {
-            arc(move, axis);
+            arc(move, line.axis);
         }
         if (move.motion == GcodeMotion::rapid || move.motion == GcodeMotion::linear) {
             if ((move.to - move.from).norm() == 0) {
                 position_ = to;
-                if (end_program) {
+                if (line.end_program) {
                     ended_ = true;
                 }
                 return;
@@ -395,7 +419,7 @@ private:
         }
         program_.moves.push_back(move);
         position_ = to;
-        if (end_program) {
+        if (line.end_program) {
             ended_ = true;
         }
     }

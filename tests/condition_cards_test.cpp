@@ -11,8 +11,8 @@
 #include "cardreader/deck_error.hpp"
 #include "cardreader/deck_review.hpp"
 #include "cardreader/listing_format.hpp"
-#include "cli/plot_svg.hpp"
-#include "cli/trace_outputs.hpp"
+#include "outputs/plots/plot_svg.hpp"
+#include "outputs/traces/trace_outputs.hpp"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>

@@ -1,15 +1,16 @@
 // G-code both ways (docs/gcode.md): reading a program (decks/gcode_program.hpp), the deck made
-// of it (decks/gcode_job.hpp), the machine's path written as G-code (cli/gcode_path.hpp), and
-// the commands. The independent cross-check of the round trip is tests/js/gcode_crosscheck.js.
+// of it (decks/gcode_job.hpp), the machine's path written as G-code
+// (outputs/traces/gcode_path.hpp), and the commands. The independent cross-check of the round trip
+// is tests/js/gcode_crosscheck.js.
 #include "machine_support.hpp"
 #include "test_support.hpp"
 
 #include "cardreader/deck_error.hpp"
-#include "cli/gcode_path.hpp"
 #include "decks/gcode_job.hpp"
 #include "decks/gcode_program.hpp"
 #include "decks/move_planner.hpp"
 #include "decks/template_job.hpp"
+#include "outputs/traces/gcode_path.hpp"
 
 #include <catch2/catch.hpp>
 

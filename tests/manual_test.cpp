@@ -1,9 +1,9 @@
-// The manual pages and the shell completion (cli/manual.hpp): written from the command line
+// The manual pages and the shell completion (cli/support/manual.hpp): written from the command line
 // itself, every option of every command is in its page and in both completion scripts, the
 // pages are clean roff, the bash script completes as a user would see it, and the files the
 // build wrote are the ones the command line gives now.
 #include "cli/command_line.hpp"
-#include "cli/manual.hpp"
+#include "cli/support/manual.hpp"
 #include "tests/test_support.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// Never lose a file (issue 27; docs/reliability.md, "Nothing lost"; cli/file_plan.hpp): an
+// Never lose a file (issue 27; docs/reliability.md, "Nothing lost"; cli/support/file_plan.hpp): an
 // output is never an input and never another output, by file identity; companion files follow
 // their deck's kind; /dev/null discards every output, as root and as a user; a reader that goes
 // away ends a command quietly (exit 141); and an interrupted command leaves nothing half-done

@@ -1,7 +1,7 @@
-// The one output writer (cli/output_file.hpp, docs/design-rules.md, Interfaces): a file of ours is
-// whole or not there; a link, a FIFO, a device or a socket that is not ours is written through and
-// left what it was; every failed write is an error naming the output.
-#include "cli/output_file.hpp"
+// The one output writer (outputs/output_file.hpp, docs/design-rules.md, Interfaces): a file of ours
+// is whole or not there; a link, a FIFO, a device or a socket that is not ours is written through
+// and left what it was; every failed write is an error naming the output.
+#include "outputs/output_file.hpp"
 
 #include "cardreader/deck_error.hpp"
 #include "tests/test_support.hpp"

@@ -1,12 +1,12 @@
-// The press-feeder job and its proof (decks/press_feeder_job.hpp, cli/press_proof.hpp): the
-// point of EP 0436887 (Mitsubishi) against its Fig. 7 — with the press slowing 25 %
-// mid-cycle, position + speed sync keeps the feeder clear of the die on every cycle, speed sync
-// alone does not — and the job's deck review, nominal runs, the clearance by hand, bad geometry.
+// The press-feeder job and its proof (decks/press_feeder_job.hpp, outputs/proofs/press_proof.hpp):
+// the point of EP 0436887 (Mitsubishi) against its Fig. 7 — with the press slowing 25 % mid-cycle,
+// position + speed sync keeps the feeder clear of the die on every cycle, speed sync alone does not
+// — and the job's deck review, nominal runs, the clearance by hand, bad geometry.
 #include "tests/test_support.hpp"
 
 #include "axes/press.hpp"
-#include "cli/press_feeder.hpp"
-#include "cli/press_proof.hpp"
+#include "cli/gen_press_feeder.hpp"
+#include "outputs/proofs/press_proof.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

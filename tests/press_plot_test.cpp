@@ -1,6 +1,6 @@
-// The press lanes of run --plot (cli/plot_press.hpp, cli/plot_press_lanes.hpp; press
-// synchronisation is an addition after EP 0436887, Mitsubishi): a run under parsons-extended with
-// sync cards draws crank 21, die 20, registers 14 and 11, reader 60's holds and processor 63's
+// The press lanes of run --plot (outputs/plots/plot_press.hpp, outputs/plots/plot_press_lanes.hpp;
+// press synchronisation is an addition after EP 0436887, Mitsubishi): a run under parsons-extended
+// with sync cards draws crank 21, die 20, registers 14 and 11, reader 60's holds and processor 63's
 // speeds under the panels, on their time axis, and what it draws is the press's own motion —
 // checked against a second, deliberately plain model of the default press (12 degrees a second
 // from top dead centre, 4 pulses a degree, a slider crank with a 4 in stroke and an 8 in rod).
@@ -9,8 +9,8 @@
 
 #include "axes/machine_profile.hpp"
 #include "cardreader/deck_io.hpp"
-#include "cli/plot_press_lanes.hpp"
-#include "cli/plot_svg.hpp"
+#include "outputs/plots/plot_press_lanes.hpp"
+#include "outputs/plots/plot_svg.hpp"
 #include "relaylogic/control_cabinet.hpp"
 
 #include <catch2/catch.hpp>

@@ -5,7 +5,7 @@
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 
-#include "cli/run_report.hpp"
+#include "outputs/report/run_report.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

@@ -1,11 +1,11 @@
-// The run as the exhibit page plays it (cli/run_timeline.hpp) and `parsons run --html`
-// (cli/replay_page.hpp): the record is the machine's, change for change, and the replay page
-// is whole and self-contained whatever the deck is called.
+// The run as the exhibit page plays it (outputs/replay/run_timeline.hpp) and `parsons run --html`
+// (outputs/replay/replay_page.hpp): the record is the machine's, change for change, and the replay
+// page is whole and self-contained whatever the deck is called.
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 
-#include "cli/replay_page.hpp"
-#include "cli/run_timeline.hpp"
+#include "outputs/replay/replay_page.hpp"
+#include "outputs/replay/run_timeline.hpp"
 
 #include "axes/machine_profile.hpp"
 #include "cardreader/layout.hpp"

@@ -3,7 +3,7 @@
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 
-#include "cli/deck_files.hpp"
+#include "cli/support/deck_files.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

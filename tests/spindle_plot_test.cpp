@@ -1,15 +1,15 @@
-// The spindle lanes of run --plot (cli/plot_spindle.hpp, cli/plot_spindle_lanes.hpp; spindle
-// synchronisation is an addition after EP 0360190, Mitsubishi): a run that reads tap cards draws
-// motor 27, tool 16, interface 33, memory 12a, the synchronous control's feed and depth, bus 35's
-// handshake and PC 130's relays under the panels, on their time axis, and what they draw is what
-// the machine did — the speeds the cards ordered, the ratio changing once the transfer is done,
-// the handshake's lines in the seed's order (Fig. 4). A run without a tap card draws exactly the
-// chart it drew before the lanes, byte for byte (and a run under parsons-1952 draws
-// tests/golden/plot-1952.svg: tests/press_plot_test.cpp).
+// The spindle lanes of run --plot (outputs/plots/plot_spindle.hpp,
+// outputs/plots/plot_spindle_lanes.hpp; spindle synchronisation is an addition after EP 0360190,
+// Mitsubishi): a run that reads tap cards draws motor 27, tool 16, interface 33, memory 12a, the
+// synchronous control's feed and depth, bus 35's handshake and PC 130's relays under the panels, on
+// their time axis, and what they draw is what the machine did — the speeds the cards ordered, the
+// ratio changing once the transfer is done, the handshake's lines in the seed's order (Fig. 4). A
+// run without a tap card draws exactly the chart it drew before the lanes, byte for byte (and a run
+// under parsons-1952 draws tests/golden/plot-1952.svg: tests/press_plot_test.cpp).
 #include "tests/machine_support.hpp"
 
-#include "cli/plot_spindle_lanes.hpp"
-#include "cli/plot_svg.hpp"
+#include "outputs/plots/plot_spindle_lanes.hpp"
+#include "outputs/plots/plot_svg.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,5 +1,5 @@
-// The tapping job and its thread proof (decks/tapping_job.hpp, cli/thread_proof.hpp): the point
-// of EP 0360190 (Mitsubishi, claim 1) on a plate — two taps of different pitch on two
+// The tapping job and its thread proof (decks/tapping_job.hpp, outputs/proofs/thread_proof.hpp):
+// the point of EP 0360190 (Mitsubishi, claim 1) on a plate — two taps of different pitch on two
 // spindle heads with different gear ratios cut the right pitch whether the ratio reaches memory
 // 12a transferred by PC 130 or stored in advance, and a head exchange that sends no ratio
 // (stale-ratio) cuts a wrong pitch that the proof names hole by hole; a transfer that never
@@ -8,9 +8,9 @@
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 
-#include "cli/tapping.hpp"
-#include "cli/thread_proof.hpp"
+#include "cli/gen_tapping.hpp"
 #include "decks/template_job.hpp"
+#include "outputs/proofs/thread_proof.hpp"
 #include "relaylogic/faults.hpp"
 
 #include <catch2/catch.hpp>

@@ -4,7 +4,7 @@
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 
-#include "cli/cutter_paths.hpp"
+#include "outputs/proofs/cutter_paths.hpp"
 
 #include "cardreader/deck_review.hpp"
 #include "decks/cut_proof.hpp"

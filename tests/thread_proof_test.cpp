@@ -1,8 +1,8 @@
-// The thread proof's arithmetic (cli/thread_proof.hpp) on synthetic taps, with no cabinet: a
-// perfect helix, a helix of the wrong pitch, the chamfer left out, a revolution's advance read
-// between samples, taps too shallow to judge, and the findings besides the pitch. The tapping job
-// run end to end: tapping_job_test.cpp.
-#include "cli/thread_proof.hpp"
+// The thread proof's arithmetic (outputs/proofs/thread_proof.hpp) on synthetic taps, with no
+// cabinet: a perfect helix, a helix of the wrong pitch, the chamfer left out, a revolution's
+// advance read between samples, taps too shallow to judge, and the findings besides the pitch. The
+// tapping job run end to end: tapping_job_test.cpp.
+#include "outputs/proofs/thread_proof.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -2,7 +2,7 @@
 // circuit 266, channel 274 / circuit 276 / motor 278, the zeroizing channels 294-304 and each
 // commutator's two contact sets are signals, and at one instant a cause is logged before its
 // effect, in the observer's events and in the VCD alike.
-#include "cli/trace_outputs.hpp"
+#include "outputs/traces/trace_outputs.hpp"
 #include "tests/machine_support.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,9 +1,10 @@
-// The trace outputs of `parsons run` (cli/trace_outputs.hpp, cli/plot_svg.hpp), driven by real
-// runs of small decks through the control cabinet: the VCD must declare every relay and switch
-// of the cabinet once and replay to the counters' final positions, the JSON lines must parse,
-// the path must end where the part is, and the plot must show every axis's stop.
-#include "cli/plot_svg.hpp"
-#include "cli/trace_outputs.hpp"
+// The trace outputs of `parsons run` (outputs/traces/trace_outputs.hpp,
+// outputs/plots/plot_svg.hpp), driven by real runs of small decks through the control cabinet: the
+// VCD must declare every relay and switch of the cabinet once and replay to the counters' final
+// positions, the JSON lines must parse, the path must end where the part is, and the plot must show
+// every axis's stop.
+#include "outputs/plots/plot_svg.hpp"
+#include "outputs/traces/trace_outputs.hpp"
 
 #include "axes/machine_profile.hpp"
 #include "cardreader/layout.hpp"

@@ -9,7 +9,7 @@
 // make the tripped deck as slow as the boundary one and its overlap 0. Either fails the test.
 #include "tests/machine_support.hpp"
 
-#include "cli/two_tool.hpp"
+#include "outputs/proofs/two_tool_proof.hpp"
 
 #include "decks/job_file.hpp"
 #include "decks/two_tool_job.hpp"

@@ -3,7 +3,7 @@
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 
-#include "cli/cutter_paths.hpp"
+#include "outputs/proofs/cutter_paths.hpp"
 
 #include "decks/wing_job.hpp"
 

@@ -1,10 +1,12 @@
 // The exhibit page's door into the emulator (docs/web.md): the page gives parsons a command
 // line, exactly as a user types one, and parsons runs it on the page's in-memory files. So the
 // page decodes, punches, draws, generates and runs with the program's own code, and its errors
-// are worded as the program words them. A run is also recorded (cli/run_timeline.hpp) for the
-// viewer, whose arrays the page reads in place.
+// are worded as the program words them. A run is also recorded for the viewer, whose arrays
+// the page reads in place: the page's timeline (outputs/replay/run_timeline.hpp) is handed to
+// the command line, and run attaches it as it attaches --html's (the replay output of run's
+// table of outputs, cli/run_outputs.cpp; outputs/replay/replay_output.hpp).
 #include "cli/command_line.hpp"
-#include "cli/run_timeline.hpp"
+#include "outputs/replay/run_timeline.hpp"
 
 #include <emscripten/bind.h>
 #include <emscripten/val.h>

@@ -29,7 +29,7 @@ if (!exeArg || !program || !work) {
 }
 fs.mkdirSync(work, { recursive: true });
 const MM = 25.4;
-const WRITER_TOLERANCE_IN = 0.0001; // cli/gcode_path.hpp
+const WRITER_TOLERANCE_IN = 0.0001; // outputs/traces/gcode_path.hpp
 const PRINTED_IN = 0.000006; // 5 decimals on both sides
 
 function parsons(args, expected = 0) {

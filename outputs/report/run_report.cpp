@@ -1,0 +1,299 @@
+#include "outputs/report/run_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace parsons::cli {
+
+using cardreader::Axis;
+using cardreader::axis_name;
+
+namespace {
+
+// The main screw's travel less what the counters read, modulo their 10 inches.
+double screw_vs_counters(const relaylogic::AxisResult& x) {
+    return std::remainder(x.screw_in - x.counter_in, 10.0);
+}
+
+double rounded(double v, double step) {
+    if (!std::isfinite(v)) {
+        return v;
+    }
+    const double r = std::round(v / step) * step;
+    return r == 0 ? 0.0 : r; // no -0
+}
+
+// v to `places` decimals, as the nearest double to that decimal (no 0.59912000000000001).
+double decimals(double v, int places) {
+    const double scale = std::pow(10.0, places);
+    const double r = std::round(v * scale) / scale;
+    return r == 0 ? 0.0 : r;
+}
+
+nlohmann::json tapping_json(const relaylogic::TappingResult& t) {
+    using nlohmann::json;
+    json holes = json::array();
+    for (const relaylogic::HoleRecord& h : t.holes) {
+        holes.push_back(
+            json{{"card", h.card},
+                 {"number", h.number},
+                 {"tool_called", h.tool_called},
+                 {"tool", h.tool},
+                 {"tap_pitch_in", h.tap_pitch_in ? json(*h.tap_pitch_in) : json(nullptr)},
+                 {"head_ratio", decimals(h.head_ratio, 6)},
+                 {"ratio_used", decimals(h.ratio_used, 6)},
+                 {"pitch_ordered_in", decimals(h.pitch_ordered_in, 5)},
+                 {"rpm", h.rpm},
+                 {"axis", std::string(axis_name(h.axis))},
+                 {"sense", h.sense > 0 ? "forward" : "reverse"},
+                 {"start_in", decimals(h.start_in, 5)},
+                 {"depth_in", decimals(h.depth_in, 3)},
+                 {"deepest_in", decimals(h.deepest_in, 5)},
+                 {"end_in", decimals(h.end_in, 5)},
+                 {"start_seconds", decimals(h.start_s, 6)},
+                 {"reverse_seconds", decimals(h.reverse_s, 6)},
+                 {"end_seconds", decimals(h.end_s, 6)},
+                 {"completed", h.completed}});
+    }
+    return json{
+        {"tool_on_spindle", t.tool_on_spindle}, {"ratio_in_memory", decimals(t.ratio_in_memory, 6)},
+        {"head_exchanges", t.head_exchanges},   {"transfers", t.transfers},
+        {"ratios_received", t.ratios_received}, {"holes", holes}};
+}
+
+} // namespace
+
+double counter_reading(double inches) {
+    return rounded(inches, 0.001);
+}
+double fine_length(double inches) {
+    return rounded(inches, 0.00001);
+}
+double time_s(double seconds) {
+    return rounded(seconds, 0.000001);
+}
+double angle_deg(double degrees) {
+    return rounded(degrees, 0.0001);
+}
+
+nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachineProfile& profile,
+                           const nlohmann::json& profile_applied, const std::string& deck) {
+    using nlohmann::json;
+    json j;
+    j["parsons_version"] = PARSONS_VERSION;
+    j["schema_version"] = kReportSchemaVersion;
+    j["deck"] = deck;
+    j["profile"] = profile.name;
+    j["profile_applied"] = profile_applied;
+    j["status"] = r.completed ? "completed" : "stopped";
+    j["cards_read"] = r.cards_read;
+    j["machine_seconds"] = time_s(r.machine_seconds);
+    j["measuring_chain"] = profile.measuring_chain == axes::MeasuringChain::screw_turns
+                               ? "screw_turns"
+                               : "instrument_shaft_74";
+    if (r.stop) {
+        const auto& s = *r.stop;
+        j["stop"] = json{{"reason", relaylogic::stop_reason_name(s.reason)},
+                         {"card", s.card},
+                         {"card_number", s.card_number >= 0 ? json(s.card_number) : json(nullptr)},
+                         {"axis", s.axis ? json(std::string(axis_name(*s.axis))) : json(nullptr)},
+                         {"message", s.message},
+                         {"lamps", s.lamps}};
+    } else {
+        j["stop"] = nullptr;
+    }
+    json axes = json::object();
+    for (Axis a : cardreader::kAxes) {
+        const auto& x = r.axes.at(cardreader::axis_index(a));
+        json ax{{"position", counter_reading(x.counter_in)},
+                {"real_position", fine_length(x.real_in)},
+                {"position_error", fine_length(x.error_in)},
+                {"impulses", x.impulses},
+                {"lost_steps", x.lost_steps},
+                {"screw_slip", fine_length(x.slip_in)}};
+        // The two readings of Fig. 3: the part as the counters measured it (position) and the
+        // main screw's turns (turns x lead), and how far apart they are.
+        ax["screw_turns_position"] = fine_length(x.screw_in);
+        ax["screw_turns_minus_position"] = fine_length(screw_vs_counters(x));
+        if (x.fixture_angle_deg) {
+            ax["fixture_angle_deg"] = angle_deg(*x.fixture_angle_deg);
+        }
+        axes[std::string(axis_name(a))] = ax;
+    }
+    j["axes"] = axes;
+    json faults = json::array();
+    for (const auto& f : r.faults) {
+        faults.push_back(json{{"fault", f.spec}, {"acted", f.acted}, {"effect", f.effect}});
+    }
+    j["faults"] = faults;
+    json cards = json::array();
+    for (const auto& c : r.cards) {
+        cards.push_back(json{{"index", c.index},
+                             {"number", c.number >= 0 ? json(c.number) : json(nullptr)},
+                             {"start_seconds", time_s(c.start_s)},
+                             {"machine_seconds", time_s(c.end_s - c.start_s)}});
+    }
+    j["cards"] = cards;
+    // Condition cards (an addition after EP 0640901): only when the deck used them (the profile
+    // has them and a condition card was read), as the press and the tapping below.
+    if (r.tool_in_spindle && r.conditions_used) {
+        j["tool_in_spindle"] = *r.tool_in_spindle;
+        json actions = json::array();
+        double saved = 0;
+        for (const auto& a : r.actions) {
+            saved += a.overlap_s();
+            actions.push_back(json{{"event", a.event},
+                                   {"condition_card", a.condition_card},
+                                   {"motion_card", a.motion_card},
+                                   {"axis", std::string(axis_name(a.axis))},
+                                   {"position", cardreader::format_inches(a.position)},
+                                   {"action", std::string(cardreader::action_name(a.action))},
+                                   {"parameter", a.parameter},
+                                   {"tripped_seconds", time_s(a.tripped_s)},
+                                   {"acknowledged_seconds", time_s(a.acknowledged_s)},
+                                   {"motion_end_seconds", time_s(a.motion_end_s)},
+                                   {"overlap_seconds", time_s(a.overlap_s())}});
+        }
+        j["actions"] = actions;
+        j["actions_overlap_seconds"] = time_s(saved);
+    }
+    // Press synchronisation (an addition after EP 0436887): only when a sync card was read.
+    if (r.press && r.press->used) {
+        const relaylogic::PressResult& p = *r.press;
+        auto seconds = [](const std::optional<double>& v) {
+            return v ? json(time_s(*v)) : json(nullptr);
+        };
+        j["press"] = json{{"revolution", p.revolution},
+                          {"crank_angle_deg", std::round(p.crank_angle_deg * 1000) / 1000},
+                          {"position_register_14", p.position_register},
+                          {"press_stopped", p.press_stopped},
+                          {"cycles", p.cycles},
+                          {"loop_backs", p.loop_backs},
+                          {"mean_cycle_seconds", seconds(p.mean_cycle_s)},
+                          {"shortest_cycle_seconds", seconds(p.shortest_cycle_s)},
+                          {"longest_cycle_seconds", seconds(p.longest_cycle_s)},
+                          {"waited_seconds", time_s(p.waited_s)}};
+    }
+    // Spindle synchronisation (an addition after EP 0360190): only when a tap card was read.
+    if (r.tapping && r.tapping->used) {
+        j["tapping"] = tapping_json(*r.tapping);
+    }
+    return j;
+}
+
+std::string summary_text(const relaylogic::RunResult& r, const std::string& deck,
+                         const std::string& profile_name) {
+    std::string out;
+    auto line = [&out](const std::string& s) { out += s + "\n"; };
+    line(fmt::format("parsons run {} (profile {})", deck, profile_name));
+    line(fmt::format("  cards run      {}", r.cards_read));
+    line(fmt::format("  machine time   {:.3f} s", r.machine_seconds));
+    if (r.completed) {
+        line("  status         completed");
+    } else if (r.stop) {
+        const auto& s = *r.stop;
+        line(fmt::format("  status         STOPPED: {}", relaylogic::stop_reason_name(s.reason)));
+        line(fmt::format("  card           {}{}", s.card,
+                         s.card_number >= 0 ? fmt::format(" (number {:04})", s.card_number) : ""));
+        line(fmt::format("  axis           {}", s.axis ? std::string(axis_name(*s.axis)) : "-"));
+        line(fmt::format("  why            {}", s.message));
+        std::string lamps;
+        for (const auto& l : s.lamps) {
+            lamps += (lamps.empty() ? "" : ", ") + l;
+        }
+        line(fmt::format("  lamps lit      {}", lamps.empty() ? "-" : lamps));
+    }
+    line(fmt::format("  {:<9} {:>8} {:>10} {:>10} {:>9} {:>6}", "axis", "counter", "real in",
+                     "error in", "impulses", "lost"));
+    for (Axis a : cardreader::kAxes) {
+        const auto& x = r.axes.at(cardreader::axis_index(a));
+        std::string angle =
+            x.fixture_angle_deg ? fmt::format("  {:+.3f} deg", *x.fixture_angle_deg) : "";
+        line(fmt::format("  {:<9} {:>8.3f} {:>10.5f} {:>+10.5f} {:>9} {:>6}{}", axis_name(a),
+                         x.counter_in, x.real_in, x.error_in, x.impulses, x.lost_steps, angle));
+    }
+    for (const auto& f : r.faults) {
+        line(fmt::format("  fault          {}: {}", f.spec, f.effect));
+    }
+    for (const auto& a : r.actions) {
+        line(fmt::format("  action         event {} ({} at {}, card {}): {} at {:.3f} s, "
+                         "acknowledged {:.3f} s, {:.3f} s of it while the axes moved",
+                         a.event, axis_name(a.axis), cardreader::format_inches(a.position),
+                         a.motion_card, cardreader::action_text(a.action, a.parameter), a.tripped_s,
+                         a.acknowledged_s, a.overlap_s()));
+    }
+    if (r.tool_in_spindle && r.conditions_used) {
+        line(fmt::format("  tool           {} in the spindle (the condition cards' tool changer)",
+                         *r.tool_in_spindle));
+    }
+    if (r.press && r.press->used) {
+        const relaylogic::PressResult& p = *r.press;
+        line(fmt::format("  press          revolution {}, crank at {:.2f} deg{}; {} cycle{} of "
+                         "the job{}; cards held {:.3f} s for the crank",
+                         p.revolution, p.crank_angle_deg, p.press_stopped ? " (stopped)" : "",
+                         p.cycles, p.cycles == 1 ? "" : "s",
+                         p.mean_cycle_s
+                             ? fmt::format(", {:.3f} s each (shortest {:.3f}, "
+                                           "longest {:.3f})",
+                                           *p.mean_cycle_s, *p.shortest_cycle_s, *p.longest_cycle_s)
+                             : "",
+                         p.waited_s));
+    }
+    if (r.tapping && r.tapping->used) {
+        const relaylogic::TappingResult& t = *r.tapping;
+        const std::int64_t done =
+            std::count_if(t.holes.begin(), t.holes.end(),
+                          [](const relaylogic::HoleRecord& h) { return h.completed; });
+        line(fmt::format(
+            "  tapping        head 31 of tool {} on gear unit 30, memory 12a holds gear ratio "
+            "{:.4f}; {} head exchange{}, {} ratio{} transferred ({} received); {} "
+            "hole{} tapped{}",
+            t.tool_on_spindle, t.ratio_in_memory, t.head_exchanges,
+            t.head_exchanges == 1 ? "" : "s", t.transfers, t.transfers == 1 ? "" : "s",
+            t.ratios_received, done, done == 1 ? "" : "s",
+            static_cast<std::size_t>(done) < t.holes.size()
+                ? fmt::format(" ({} begun)", t.holes.size())
+                : std::string()));
+    }
+    for (Axis a : cardreader::kAxes) {
+        const auto& x = r.axes.at(cardreader::axis_index(a));
+        if (std::abs(screw_vs_counters(x)) >= 0.0005 && std::abs(x.error_in) < 0.0005) {
+            line(fmt::format("  note: {} screw turns read {:.4f} in, the counters {:.3f} in: the "
+                             "{:+.4f} in between (slip, backlash in nut 78, lead error) was "
+                             "measured through instrument shaft 74",
+                             axis_name(a), x.screw_in, x.counter_in, screw_vs_counters(x)));
+        }
+        if (x.slip_in != 0 && std::abs(x.error_in) >= 0.0005) {
+            line(fmt::format("  warning: {} lead screw slipped: the part is {:+.4f} in from where "
+                             "its counters say, and the 1952 checks could not see it",
+                             axis_name(a), x.error_in));
+        } else if (x.skipped_steps > 0 && std::abs(x.error_in) >= 0.0005) {
+            line(
+                fmt::format("  warning: {} ends {:+.4f} in from where its counters say (a stepping "
+                            "switch skipped a position): the 1952 checks could not see it",
+                            axis_name(a), x.error_in));
+        } else if (x.lost_steps == 0 && std::abs(x.error_in) >= 0.0005) {
+            line(fmt::format("  warning: {} ends {:+.4f} in from where its counters say (counted "
+                             "in the other direction while coasting): the 1952 checks could not "
+                             "see it",
+                             axis_name(a), x.error_in));
+        }
+        if (r.completed && x.last_stop_in && std::abs(x.counter_in - *x.last_stop_in) >= 0.001) {
+            line(fmt::format("  warning: {} ends at {:.3f} in, not on its last stop {:.3f} in: it "
+                             "coasted past (reached the stop too fast) and no later card's check "
+                             "was left to catch it",
+                             axis_name(a), x.counter_in, *x.last_stop_in));
+        }
+        if (x.lost_steps > 0) {
+            line(fmt::format("  warning: {} lost {} stepping-switch steps (impulses came faster "
+                             "than {} can step): its counters read {:+.4f} in from where the "
+                             "part really is",
+                             axis_name(a), x.lost_steps, "the switches", -x.error_in));
+        }
+    }
+    return out;
+}
+
+} // namespace parsons::cli
