@@ -28,11 +28,11 @@ enum class GcodeMotion { rapid, linear, arc_cw, arc_ccw };
 struct GcodeMove {
     std::int64_t line = 0; // 1-based line of the program
     GcodeMotion motion = GcodeMotion::linear;
-    Eigen::Vector3d from; // inches, the program's own frame
-    Eigen::Vector3d to;
-    Eigen::Vector2d centre; // arcs: the centre in XY
-    double sweep_rad = 0;   // arcs: the signed angle swept, + counter-clockwise seen from +Z
-    int spindle = 0;        // 0 off (M5, the start), 1 forward (M3), 2 reverse (M4): column 165
+    Eigen::Vector3d from = Eigen::Vector3d::Zero(); // inches, the program's own frame
+    Eigen::Vector3d to = Eigen::Vector3d::Zero();
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero(); // arcs: the centre in XY
+    double sweep_rad = 0; // arcs: the signed angle swept, + counter-clockwise seen from +Z
+    int spindle = 0;      // 0 off (M5, the start), 1 forward (M3), 2 reverse (M4): column 165
 };
 
 struct GcodeProgram {
