@@ -114,7 +114,9 @@ public:
     virtual void on_event(ControlCabinet& /*cab*/, int /*code*/) {}
     // A clock of its own that turns whatever the cabinet does (the press): its next event
     // (axes::kNever: none), its quiet stretch planned for fast-forward, its edges before and
-    // at an instant, and whether the cabinet waits on it.
+    // at an instant, and whether the cabinet waits on it. The cabinet calls these only of an
+    // attachment that has a clock (and advance_plants only of one that has plants): they come
+    // at every instant of the event loop.
     virtual bool has_clock() const { return false; }
     virtual double next_clock_event(const ControlCabinet& /*cab*/) const { return axes::kNever; }
     virtual void plan_quiet(ControlCabinet& /*cab*/) {}
@@ -123,6 +125,7 @@ public:
     virtual bool waited_on(const ControlCabinet& /*cab*/) const { return false; }
     // Plants of its own moved alongside the axes (the spindle): brought up to time t once the
     // axes' quiet impulses before t are taken.
+    virtual bool has_plants() const { return false; }
     virtual void advance_plants(ControlCabinet& /*cab*/, double /*t*/) {}
 
     // --- saved state and result ---

@@ -65,7 +65,13 @@ ControlCabinet::ControlCabinet(axes::MachineProfile profile, const cardreader::C
         if (a->supplies_cards()) {
             supplier_ = a.get();
         }
-        has_clock_ = has_clock_ || a->has_clock();
+        if (a->has_clock()) {
+            has_clock_ = true;
+            clocks_.push_back(a.get());
+        }
+        if (a->has_plants()) {
+            plants_.push_back(a.get());
+        }
         if (const CounterWatch* w = a->counter_watch()) {
             counter_watches_.push_back(w);
         }
@@ -150,7 +156,7 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     for (const auto& c : circuits_) {
         c->plant.advance_to(now_);
     }
-    for (const auto& a : attachments_) {
+    for (Attachment* a : plants_) {
         a->advance_plants(*this, now_);
     }
     report_faults();
@@ -180,7 +186,7 @@ double ControlCabinet::next_event_time() {
         if (idle()) {
             return axes::kNever;
         }
-        for (const auto& a : attachments_) {
+        for (const Attachment* a : clocks_) {
             t = std::min(t, a->next_clock_event(*this));
         }
         if (unqueued_release_s_ > now_) {
@@ -203,13 +209,13 @@ void ControlCabinet::advance(double t, bool follows_motion) {
         // reported at this instant (the spindle's edges below).
         catch_up(t);
     }
-    for (const auto& a : attachments_) {
+    for (Attachment* a : plants_) {
         a->advance_plants(*this, t);
     }
     if (jumping_ && clock_running()) {
         // The clock's quiet edges before this instant, whatever the instant brings (at
         // impulse level each was an instant of its own).
-        for (const auto& a : attachments_) {
+        for (Attachment* a : clocks_) {
             a->clock_edges_before(*this, t);
         }
     }
@@ -225,7 +231,7 @@ void ControlCabinet::advance(double t, bool follows_motion) {
         }
     }
     if (clock_running()) {
-        for (const auto& a : attachments_) {
+        for (Attachment* a : clocks_) {
             a->clock_edges_at(*this, t);
         }
     }
@@ -299,7 +305,7 @@ bool ControlCabinet::idle() const {
             return false;
         }
     }
-    for (const auto& a : attachments_) {
+    for (const Attachment* a : clocks_) {
         if (a->waited_on(*this)) {
             return false;
         }

@@ -179,7 +179,11 @@ private:
     void second_bank();
     void read_complete();
     // control_cabinet_comparers.cpp: impulses, comparers, speed switch 236, fast-forward
-    bool live(const AxisCircuit& c) const;
+    bool live(const AxisCircuit& c) const {
+        return balancing_.master_switch_closed() && reading_complete_ && !c.stopped &&
+               !c.speed_switch.off() && c.sequence_switch.closed(shaft_.position()) &&
+               !attachment_holds();
+    }
     // Returns true if the impulse only counted (nothing scheduled, no other axis touched).
     bool on_impulse(AxisCircuit& c, const axes::Impulse& impulse);
     bool evaluate(AxisCircuit& c);
@@ -255,6 +259,8 @@ private:
     Attachment* own_card_ = nullptr;
     Attachment* supplier_ = nullptr;
     bool has_clock_ = false;
+    std::vector<Attachment*> clocks_; // those with a clock, and those with plants, in order
+    std::vector<Attachment*> plants_;
     std::vector<const CounterWatch*> counter_watches_;
 
     SignalId reader_card_;

@@ -62,8 +62,8 @@ void ControlCabinet::plan_quiet_stretches() {
             quiet_end_.at(i) = after != axes::kNever ? after : c.plant.phase_end_time();
         }
     }
-    for (const auto& a : attachments_) {
-        a->plan_quiet(*this); // e.g. the press's detector edges that only count
+    for (Attachment* a : clocks_) {
+        a->plan_quiet(*this); // the press's detector edges that only count
     }
 }
 
@@ -92,7 +92,7 @@ void ControlCabinet::catch_up(double t) {
 void ControlCabinet::run_impulses() {
     double queued = queue_.empty() ? axes::kNever : queue_.top().t;
     if (clock_running()) {
-        for (const auto& a : attachments_) {
+        for (const Attachment* a : clocks_) {
             queued = std::min(queued, a->next_clock_event(*this)); // the press's edge first
         }
     }
@@ -139,12 +139,6 @@ void ControlCabinet::run_impulses() {
             return; // a speed change ends, or a relay event is due: the main loop
         }
     }
-}
-
-bool ControlCabinet::live(const AxisCircuit& c) const {
-    return balancing_.master_switch_closed() && reading_complete_ && !c.stopped &&
-           !c.speed_switch.off() && c.sequence_switch.closed(shaft_.position()) &&
-           !attachment_holds();
 }
 
 bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
