@@ -28,7 +28,8 @@
 //
 // Gear unit 30 and head 31: the tool turns at ratio A x the motor (S x A, the seed's
 // expression); its angle is kept as tool revolutions, whatever heads were on before. Heads are
-// exchanged with the motor at rest (PC 130 does it, relaylogic/tapping/programmable_controller.hpp).
+// exchanged with the motor at rest (PC 130 does it,
+// relaylogic/tapping/programmable_controller.hpp).
 #pragma once
 
 #include "axes/machine_profile.hpp"

@@ -18,14 +18,15 @@
 //                       NC ready, data valid, NC received, tool ready (the seed's order)
 //   PC 130 ............ a bar per relay of its ladder while it is picked, CR1 to CR8
 //
-// How we record it: from the trace signals of scope "spindle" (relaylogic/tapping/tapping_units.cpp,
-// programmable_controller.cpp, gear_ratio_memory.cpp and interface 33's registers), through the
-// same observer as the panels. The speeds, the feed and the depth change at every sample of
-// interface 33 (20 a second by default) for as long as a tap runs, so each is kept as the press
-// keeps its crank (the M4 reduction, plot_reduce.hpp: memory stays bounded whatever the run's
-// length). Encoder 32's phases and interface 33's counters change at every encoder edge and
-// are not drawn (interface 33's stored count is, once a sample). The ratio, the head, the
-// phase, the bus lines and PC 130's relays change a few times a tap card and are kept whole.
+// How we record it: from the trace signals of scope "spindle"
+// (relaylogic/tapping/tapping_units.cpp, programmable_controller.cpp, gear_ratio_memory.cpp and
+// interface 33's registers), through the same observer as the panels. The speeds, the feed and the
+// depth change at every sample of interface 33 (20 a second by default) for as long as a tap runs,
+// so each is kept as the press keeps its crank (the M4 reduction, plot_reduce.hpp: memory stays
+// bounded whatever the run's length). Encoder 32's phases and interface 33's counters change at
+// every encoder edge and are not drawn (interface 33's stored count is, once a sample). The ratio,
+// the head, the phase, the bus lines and PC 130's relays change a few times a tap card and are kept
+// whole.
 #pragma once
 
 #include "cardreader/orders.hpp"
