@@ -23,6 +23,7 @@
 #include <memory>
 #include <optional>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace parsons::axes {
@@ -113,19 +114,17 @@ public:
     // One of its events came due (code: what schedule() was given).
     virtual void on_event(ControlCabinet& /*cab*/, int /*code*/) {}
     // A clock of its own that turns whatever the cabinet does (the press): its next event
-    // (axes::kNever: none), its quiet stretch planned for fast-forward, its edges before and
-    // at an instant, and whether the cabinet waits on it. The cabinet calls these only of an
-    // attachment that has a clock (and advance_plants only of one that has plants): they come
-    // at every instant of the event loop.
-    virtual bool has_clock() const { return false; }
+    // (axes::kNever: none); in fast-forward, its quiet stretch planned, returning its next
+    // event that matters (the one that ends the stretch); its edges before and at an instant;
+    // and whether the cabinet waits on it. An attachment has a clock when it overrides
+    // next_clock_event (see Hooks below); the cabinet turns one clock at most.
     virtual double next_clock_event(const ControlCabinet& /*cab*/) const { return axes::kNever; }
-    virtual void plan_quiet(ControlCabinet& /*cab*/) {}
+    virtual double plan_quiet(ControlCabinet& /*cab*/) { return axes::kNever; }
     virtual void clock_edges_before(ControlCabinet& /*cab*/, double /*t*/) {}
     virtual void clock_edges_at(ControlCabinet& /*cab*/, double /*t*/) {}
     virtual bool waited_on(const ControlCabinet& /*cab*/) const { return false; }
     // Plants of its own moved alongside the axes (the spindle): brought up to time t once the
     // axes' quiet impulses before t are taken.
-    virtual bool has_plants() const { return false; }
     virtual void advance_plants(ControlCabinet& /*cab*/, double /*t*/) {}
 
     // --- saved state and result ---
@@ -133,7 +132,44 @@ public:
     virtual void save(const ControlCabinet& /*cab*/, nlohmann::json& /*state*/) const {}
     virtual void load(ControlCabinet& /*cab*/, const nlohmann::json& /*state*/) {}
     virtual void add_to(RunResult& /*result*/) const {}
+
+    // The hooks that come at every impulse or every instant of the event loop: the cabinet
+    // calls each only of the attachments whose class overrides it. The registry records them
+    // from the class itself (hooks_of), so they cannot disagree with it.
+    struct Hooks {
+        bool holding = false;
+        bool before_count = false;
+        bool after_count = false;
+        bool before_jump = false;
+        bool holds_axis = false;
+        bool drive = false;
+        bool clock = false;  // next_clock_event and the clock's other hooks
+        bool plants = false; // advance_plants
+    };
+    const Hooks& hooks() const { return hooks_; }
+    void record_hooks(const Hooks& hooks) { hooks_ = hooks; }
+
+private:
+    Hooks hooks_;
 };
+
+// The hot hooks class A overrides: &A::f names Attachment's own f unless A declares one.
+template <class A>
+constexpr Attachment::Hooks hooks_of() {
+    auto overrides = [](auto of_a, auto of_base) {
+        return !std::is_same_v<decltype(of_a), decltype(of_base)>;
+    };
+    Attachment::Hooks h;
+    h.holding = overrides(&A::holding, &Attachment::holding);
+    h.before_count = overrides(&A::before_count, &Attachment::before_count);
+    h.after_count = overrides(&A::after_count, &Attachment::after_count);
+    h.before_jump = overrides(&A::before_jump, &Attachment::before_jump);
+    h.holds_axis = overrides(&A::holds_axis, &Attachment::holds_axis);
+    h.drive = overrides(&A::drive, &Attachment::drive);
+    h.clock = overrides(&A::next_clock_event, &Attachment::next_clock_event);
+    h.plants = overrides(&A::advance_plants, &Attachment::advance_plants);
+    return h;
+}
 
 using Attachments = std::vector<std::unique_ptr<Attachment>>;
 

@@ -26,6 +26,7 @@ template <class A>
 void keep_if_present(Attachments& list, Tracer& tracer, const axes::MachineProfile& profile) {
     auto a = std::make_unique<A>(tracer, profile);
     if (a->present()) {
+        a->record_hooks(hooks_of<A>());
         list.push_back(std::move(a));
     }
 }

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace parsons::relaylogic {
 
@@ -65,13 +66,25 @@ ControlCabinet::ControlCabinet(axes::MachineProfile profile, const cardreader::C
         if (a->supplies_cards()) {
             supplier_ = a.get();
         }
-        if (a->has_clock()) {
-            has_clock_ = true;
-            clocks_.push_back(a.get());
+        const Attachment::Hooks& hooks = a->hooks();
+        auto keep = [&a](bool has, auto& list) {
+            if (has) {
+                list.push_back(a.get());
+            }
+        };
+        keep(hooks.holding, holders_);
+        keep(hooks.before_count, before_count_);
+        keep(hooks.after_count, after_count_);
+        keep(hooks.before_jump, before_jump_);
+        keep(hooks.holds_axis, axis_holders_);
+        keep(hooks.drive, drivers_);
+        if (hooks.clock) {
+            if (clock_ != nullptr) {
+                throw std::logic_error("two attachments turn a clock; the cabinet turns one");
+            }
+            clock_ = a.get();
         }
-        if (a->has_plants()) {
-            plants_.push_back(a.get());
-        }
+        keep(hooks.plants, plants_);
         if (const CounterWatch* w = a->counter_watch()) {
             counter_watches_.push_back(w);
         }
@@ -168,7 +181,7 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
 
 // The next instant anything happens: a queued event, an axis's next event, the last release
 // after a stop, or an attachment's clock; axes::kNever when nothing will.
-double ControlCabinet::next_event_time() {
+inline double ControlCabinet::next_event_time() {
     while (standing_queued_ > 0 && !clock_running() && !queue_.empty() && queue_.top().standing) {
         queue_.pop(); // the deck is done: the clock's events end with it, taking no time
         --standing_queued_;
@@ -186,9 +199,7 @@ double ControlCabinet::next_event_time() {
         if (idle()) {
             return axes::kNever;
         }
-        for (const Attachment* a : clocks_) {
-            t = std::min(t, a->next_clock_event(*this));
-        }
+        t = std::min(t, jumping_ ? clock_quiet_end_ : clock_->next_clock_event(*this));
         if (unqueued_release_s_ > now_) {
             // The last release after a stop (release_after_stop) is an instant of its own
             // here too: a stall comes at it, whatever the clock's pace.
@@ -200,7 +211,7 @@ double ControlCabinet::next_event_time() {
 
 // Machine time comes to t: the quiet impulses before it, the attachments' plants and clocks,
 // then every axis's event due at t.
-void ControlCabinet::advance(double t, bool follows_motion) {
+inline void ControlCabinet::advance(double t, bool follows_motion) {
     now_ = t;
     tracer_.set_time(t);
     if (jumping_) {
@@ -215,9 +226,7 @@ void ControlCabinet::advance(double t, bool follows_motion) {
     if (jumping_ && clock_running()) {
         // The clock's quiet edges before this instant, whatever the instant brings (at
         // impulse level each was an instant of its own).
-        for (Attachment* a : clocks_) {
-            a->clock_edges_before(*this, t);
-        }
+        clock_->clock_edges_before(*this, t);
     }
     bool moved = false;
     for (std::size_t i = 0; i < circuits_.size(); ++i) {
@@ -231,9 +240,7 @@ void ControlCabinet::advance(double t, bool follows_motion) {
         }
     }
     if (clock_running()) {
-        for (Attachment* a : clocks_) {
-            a->clock_edges_at(*this, t);
-        }
+        clock_->clock_edges_at(*this, t);
     }
     if (moved && follows_motion) {
         std::array<double, 5> real{};
@@ -305,12 +312,7 @@ bool ControlCabinet::idle() const {
             return false;
         }
     }
-    for (const Attachment* a : clocks_) {
-        if (a->waited_on(*this)) {
-            return false;
-        }
-    }
-    return true;
+    return clock_ == nullptr || !clock_->waited_on(*this);
 }
 
 bool ControlCabinet::interrupted() {

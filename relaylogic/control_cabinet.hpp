@@ -116,10 +116,20 @@ public:
     // The axis's motor follows the circuits again; every comparer is read again.
     void update_motor(AxisCircuit& c);
     void update_motors();
-    void evaluate_all();
+    void evaluate_all() {
+        for (auto& c : circuits_) {
+            evaluate(*c);
+        }
+    }
     // An impulse of the axis due now is counted before anything else acts on it (true if one
     // was due).
-    bool count_due_impulse(AxisCircuit& c);
+    bool count_due_impulse(AxisCircuit& c) {
+        if (auto impulse = c.plant.advance_to(now_)) {
+            on_impulse(c, *impulse);
+            return true;
+        }
+        return false;
+    }
     // The card's last motion ended now (condition cards report it).
     void motion_ended() { motion_end_s_ = now_; }
     double motion_end_s() const { return motion_end_s_; }
@@ -155,11 +165,12 @@ private:
     // control_cabinet.cpp: the wiring and the event loop
     void schedule(double t, EventKind kind, int axis = -1);
     void handle(const Event& e);
-    double next_event_time();
-    void advance(double t, bool follows_motion);
-    bool clock_running() const { return has_clock_ && running(); }
+    // Called once a loop, only from run(): inlined into it, as when they were its own lines.
+    [[gnu::always_inline]] double next_event_time();
+    [[gnu::always_inline]] void advance(double t, bool follows_motion);
+    bool clock_running() const { return clock_ != nullptr && running(); }
     bool attachment_holds() const {
-        for (const auto& a : attachments_) {
+        for (const Attachment* a : holders_) {
             if (a->holding()) {
                 return true;
             }
@@ -191,7 +202,9 @@ private:
     [[gnu::cold]] void missed_impulse(AxisCircuit& c);
     [[gnu::cold]] void travel_limit(AxisCircuit& c);
     [[gnu::cold]] void soft_limit_watch(AxisCircuit& c);
-    double next_axis_event(std::size_t i) const;
+    double next_axis_event(std::size_t i) const {
+        return jumping_ ? quiet_end_[i] : circuits_[i]->plant.next_event_time();
+    }
     void plan_quiet_stretches();
     void catch_up(double t);
     void run_impulses();
@@ -254,12 +267,22 @@ private:
 
     // The later systems: their hooks are called in this order. own_card_: the attachment whose
     // kind of card is in the reader (none for a motion card); supplier_: the one the reader
-    // takes its cards through, if any; has_clock_: one turns a clock of its own (the press).
+    // takes its cards through, if any. The hot hooks (Attachment::Hooks) are called only of
+    // those that have them, from a list of their own, in the same order: those whose hold
+    // keeps every axis dead, that see an impulse before or after it is counted or a jump of them,
+    // that hold an axis's motor circuit open, that drive a motor, that turn a clock (the press) and
+    // that move plants of their own (the spindle).
     Attachments attachments_;
     Attachment* own_card_ = nullptr;
     Attachment* supplier_ = nullptr;
-    bool has_clock_ = false;
-    std::vector<Attachment*> clocks_; // those with a clock, and those with plants, in order
+    std::vector<const Attachment*> holders_;
+    std::vector<Attachment*> before_count_;
+    std::vector<Attachment*> after_count_;
+    std::vector<Attachment*> before_jump_;
+    std::vector<const Attachment*> axis_holders_;
+    std::vector<Attachment*> drivers_;
+    Attachment* clock_ = nullptr;           // at most one
+    double clock_quiet_end_ = axes::kNever; // fast-forward: the clock's next event that matters
     std::vector<Attachment*> plants_;
     std::vector<const CounterWatch*> counter_watches_;
 

@@ -17,10 +17,6 @@ namespace parsons::relaylogic {
 using cardreader::Axis;
 using cardreader::axis_name;
 
-double ControlCabinet::next_axis_event(std::size_t i) const {
-    return jumping_ ? quiet_end_.at(i) : circuits_[i]->plant.next_event_time();
-}
-
 // Fast-forward: how far each moving axis can go on quietly, and when its next event that
 // matters comes (the impulse that ends the stretch, or the end of its speed change).
 void ControlCabinet::plan_quiet_stretches() {
@@ -62,8 +58,8 @@ void ControlCabinet::plan_quiet_stretches() {
             quiet_end_.at(i) = after != axes::kNever ? after : c.plant.phase_end_time();
         }
     }
-    for (Attachment* a : clocks_) {
-        a->plan_quiet(*this); // the press's detector edges that only count
+    if (clock_ != nullptr) {
+        clock_quiet_end_ = clock_->plan_quiet(*this); // the press's detector edges that only count
     }
 }
 
@@ -76,7 +72,7 @@ void ControlCabinet::catch_up(double t) {
         AxisCircuit& c = *circuits_[i];
         const std::int64_t n = std::min(quiet_.at(i), c.plant.impulses_by(t));
         if (n > 0) {
-            for (const auto& a : attachments_) {
+            for (Attachment* a : before_jump_) {
                 a->before_jump(*this, c, t);
             }
             jump_quiet_impulses(c, n);
@@ -92,9 +88,7 @@ void ControlCabinet::catch_up(double t) {
 void ControlCabinet::run_impulses() {
     double queued = queue_.empty() ? axes::kNever : queue_.top().t;
     if (clock_running()) {
-        for (const Attachment* a : clocks_) {
-            queued = std::min(queued, a->next_clock_event(*this)); // the press's edge first
-        }
+        queued = std::min(queued, clock_->next_clock_event(*this)); // the press's edge first
     }
     const std::size_t n = circuits_.size();
     while (true) {
@@ -150,7 +144,7 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     c.show_contacts(); // the contacts, then the switches they step
     // The patent's answer to stepping-rate loss (col. 8), a profile option: while the speed
     // switch stands on speed 1, count only every hundredth until the first slow-down.
-    for (const auto& a : attachments_) {
+    for (Attachment* a : before_count_) {
         a->before_count(*this, c, impulse.direction);
     }
     const bool hundredths_only =
@@ -183,7 +177,7 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     }
     bool quiet = true;
     if (stepped) {
-        for (const auto& a : attachments_) {
+        for (Attachment* a : after_count_) {
             quiet = !a->after_count(*this, c) && quiet;
         }
     }
@@ -287,31 +281,17 @@ bool ControlCabinet::evaluate(AxisCircuit& c) {
 
 void ControlCabinet::update_motor(AxisCircuit& c) {
     bool on = live(c);
-    for (const auto& a : attachments_) {
+    for (const Attachment* a : axis_holders_) {
         on = on && !a->holds_axis(c.axis); // e.g. a dwell opens the hold relay
     }
     count_due_impulse(c); // never let an impulse due now go uncounted
-    for (const auto& a : attachments_) {
+    for (Attachment* a : drivers_) {
         if (a->drive(*this, c, on)) {
             return; // e.g. a tap's follower drive, or speed 1 following the press
         }
     }
     c.plant.command(c.direction, on ? c.speed_switch.position() : 0);
     c.set_powered(on);
-}
-
-bool ControlCabinet::count_due_impulse(AxisCircuit& c) {
-    if (auto impulse = c.plant.advance_to(now_)) {
-        on_impulse(c, *impulse);
-        return true;
-    }
-    return false;
-}
-
-void ControlCabinet::evaluate_all() {
-    for (auto& c : circuits_) {
-        evaluate(*c);
-    }
 }
 
 void ControlCabinet::update_motors() {

@@ -5,6 +5,7 @@
 
 #include "axes/machine_profile.hpp"
 #include "cardreader/layout.hpp"
+#include "relaylogic/attachment.hpp"
 #include "relaylogic/control_cabinet.hpp"
 
 #include <catch2/catch.hpp>
@@ -54,6 +55,51 @@ TEST_CASE("Attachments: parsons-1952 and parsons-safe build none, parsons-extend
     p.condition_cards = true;
     CHECK(names_of(relaylogic::ControlCabinet(p, layout)) ==
           std::vector<std::string>{"conditions"});
+}
+
+namespace {
+
+// A made-up attachment that sees impulses before they are counted, and nothing else.
+class CountingOnly : public relaylogic::Attachment {
+public:
+    std::string_view name() const override { return "counting"; }
+    void before_count(relaylogic::ControlCabinet& /*cab*/, relaylogic::AxisCircuit& /*c*/,
+                      int /*direction*/) override {}
+};
+
+} // namespace
+
+TEST_CASE("Attachments: the hot hooks the cabinet calls of an attachment are exactly those its "
+          "class overrides") {
+    using relaylogic::hooks_of;
+    constexpr auto none = hooks_of<relaylogic::Attachment>();
+    STATIC_REQUIRE(!none.holding);
+    STATIC_REQUIRE(!none.before_count);
+    STATIC_REQUIRE(!none.clock);
+    constexpr auto counting = hooks_of<CountingOnly>();
+    STATIC_REQUIRE(counting.before_count);
+    STATIC_REQUIRE(!counting.after_count);
+    STATIC_REQUIRE(!counting.before_jump);
+    STATIC_REQUIRE(!counting.holds_axis);
+    STATIC_REQUIRE(!counting.drive);
+    STATIC_REQUIRE(!counting.clock);
+    STATIC_REQUIRE(!counting.plants);
+    // The registry records them: the press turns a clock and holds a card's motion; the
+    // tapping head moves the spindle and sees every impulse; the condition units watch counts.
+    const relaylogic::ControlCabinet cabinet(axes::extended_profile(), cardreader::fig8_layout());
+    const auto& a = cabinet.attachments();
+    REQUIRE(a.size() == 3);
+    CHECK(a[0]->hooks().after_count);
+    CHECK(a[0]->hooks().holds_axis);
+    CHECK_FALSE(a[0]->hooks().clock);
+    CHECK(a[1]->hooks().clock);
+    CHECK(a[1]->hooks().holding);
+    CHECK(a[1]->hooks().drive);
+    CHECK_FALSE(a[1]->hooks().before_count);
+    CHECK(a[2]->hooks().plants);
+    CHECK(a[2]->hooks().before_count);
+    CHECK(a[2]->hooks().before_jump);
+    CHECK_FALSE(a[2]->hooks().clock);
 }
 
 TEST_CASE("Attachments: the report and the summary show the press, the tapping head and the "

@@ -43,6 +43,9 @@ PositionRegister::PositionRegister(Tracer& tracer, int device_16, int value, Pul
 }
 
 void PositionRegister::show() {
+    if (tracer_.observer() == nullptr) {
+        return; // nobody watches: the values need not be worked out (they change at every edge)
+    }
     const Digits d = digits();
     for (std::size_t i = 0; i < 4; ++i) {
         tracer_.set(switches_.at(i), static_cast<std::uint32_t>(d.at(i)));

@@ -202,19 +202,18 @@ void PressAttachment::on_event(ControlCabinet& cab, int code) {
     }
 }
 
-double PressAttachment::next_clock_event(const ControlCabinet& cab) const {
-    return cab.jumping() ? press_quiet_end_ : units_.press().next_event_time();
+double PressAttachment::next_clock_event(const ControlCabinet& /*cab*/) const {
+    return units_.press().next_event_time();
 }
 
 // Fast-forward: every edge of this segment of constant crank speed only counts, but the one
 // that brings register 14 onto a held card's angle R.
-void PressAttachment::plan_quiet(ControlCabinet& cab) {
+double PressAttachment::plan_quiet(ControlCabinet& cab) {
     press_quiet_ = 0;
     if (!cab.running()) {
-        return;
+        return axes::kNever;
     }
     const axes::Press& press = units_.press();
-    press_quiet_end_ = press.next_event_time();
     if (press.next_event_is_pulse()) {
         const std::int64_t in_segment = press.pulses_by(axes::kNever);
         const std::int64_t quiet = units_.quiet_edges(in_segment);
@@ -222,10 +221,10 @@ void PressAttachment::plan_quiet(ControlCabinet& cab) {
             press_quiet_ = quiet;
             // The edge after the stretch, or the stretch's last edge when the segment ends
             // with it (the segment's end then comes up as the press's next event).
-            press_quiet_end_ =
-                quiet < in_segment ? press.pulse_time(quiet + 1) : press.pulse_time(quiet);
+            return quiet < in_segment ? press.pulse_time(quiet + 1) : press.pulse_time(quiet);
         }
     }
+    return press.next_event_time();
 }
 
 void PressAttachment::clock_edges_before(ControlCabinet& cab, double t) {

@@ -39,9 +39,8 @@ public:
     bool drive(ControlCabinet& cab, AxisCircuit& c, bool on) override;
     void zeroized(ControlCabinet& cab) override;
     void on_event(ControlCabinet& cab, int code) override;
-    bool has_clock() const override { return true; }
     double next_clock_event(const ControlCabinet& cab) const override;
-    void plan_quiet(ControlCabinet& cab) override;
+    double plan_quiet(ControlCabinet& cab) override;
     void clock_edges_before(ControlCabinet& cab, double t) override;
     void clock_edges_at(ControlCabinet& cab, double t) override;
     bool waited_on(const ControlCabinet& cab) const override;
@@ -77,7 +76,6 @@ private:
     double waited_s_ = 0;
     std::int64_t block_ = 1;       // the reference block queued next: at block_ x speed_sample_s
     std::int64_t press_quiet_ = 0; // fast-forward: edges that only count, ahead of the press
-    double press_quiet_end_ = axes::kNever; // ... and when the press's next event that matters is
 };
 
 } // namespace parsons::relaylogic

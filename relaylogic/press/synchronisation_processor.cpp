@@ -122,6 +122,9 @@ bool SynchronisationProcessor::reference_block(int pulses, double max_in_per_s) 
 }
 
 void SynchronisationProcessor::show() {
+    if (tracer_.observer() == nullptr) {
+        return; // nobody watches: the values need not be worked out (they change at every edge)
+    }
     tracer_.set(angle_60_, static_cast<std::uint32_t>(target_.value_or(0)));
     tracer_.set(hold_60_, holding_ ? 1U : 0U);
     for (std::size_t i = 0; i < feed_.size(); ++i) {

@@ -29,7 +29,6 @@ public:
     bool drive(ControlCabinet& cab, AxisCircuit& c, bool on) override;
     void machine_stopped(ControlCabinet& cab) override;
     void on_event(ControlCabinet& cab, int code) override;
-    bool has_plants() const override { return true; }
     void advance_plants(ControlCabinet& cab, double t) override;
     void save(const ControlCabinet& cab, nlohmann::json& state) const override;
     void load(ControlCabinet& cab, const nlohmann::json& state) override;
