@@ -143,7 +143,11 @@ Deviation span_deviation(const Airfoil& airfoil, const TemplateOptions& o, const
     };
     constexpr double kJudgeStep = 0.05 / 256; // the densest: 256 points in the widest span
     const double length = (b.work - a.work).norm() / o.chord_in;
-    const int n = std::clamp(static_cast<int>(std::ceil(length / kJudgeStep)), 8, samples);
+    // Counted in double first: a span too long for an int (a chord of 1e300 in) is judged at
+    // the most points, where the cast itself would be undefined.
+    const double wanted = std::ceil(length / kJudgeStep);
+    const int n =
+        std::isnan(wanted) || wanted >= samples ? samples : std::max(8, static_cast<int>(wanted));
     Deviation d;
     for (int k = 0; k <= n; ++k) {
         const Station s = station_at(airfoil, o, track, wa + (wb - wa) * k / n);
