@@ -85,13 +85,11 @@ TEST_CASE("Manual: every option of every command is in the command's man page an
     int options = 0;
     for (const auto& [path, app] : paths) {
         INFO("command: parsons " << path);
-        const std::string name = path.empty() ? "parsons" : "parsons-" + [&] {
-            std::string n = path;
-            for (char& c : n) {
-                c = c == ' ' ? '-' : c;
-            }
-            return n;
-        }();
+        std::string name = path;
+        for (char& c : name) {
+            c = c == ' ' ? '-' : c;
+        }
+        name = path.empty() ? "parsons" : "parsons-" + name;
         REQUIRE(by_name.count(name) == 1);
         const std::string& page = by_name[name];
         const std::string b = case_line(bash, slashed(path));
