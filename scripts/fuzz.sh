@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (tests/fuzz/, the `fuzz` CMake preset: clang, ASan, UBSan) in
-# build-fuzz/ and runs each for a fixed time, two at a time, starting from its seed corpus
+# Builds the libFuzzer targets (tests/fuzz/; the `fuzz` CMake preset is the `sanitize` one:
+# clang, ASan, UBSan, in build-sanitize/) and runs each for a fixed time, two at a time, starting from its seed corpus
 # (tests/fuzz/corpus/TARGET/) and every kept regression input (tests/fuzz/regressions/TARGET/).
-# New interesting inputs collect in build-fuzz/corpus/TARGET/; a crash, a hang or a leak is
-# written to build-fuzz/findings/TARGET/ and the script fails. See docs/testing.md.
+# New interesting inputs collect in build-sanitize/corpus/TARGET/; a crash, a hang or a leak is
+# written to build-sanitize/findings/TARGET/ and the script fails. See docs/testing.md.
 #
 #   scripts/fuzz.sh                  every target for 20 s
 #   scripts/fuzz.sh 300              every target for five minutes
@@ -20,12 +20,12 @@ if [ ${#targets[@]} -eq 0 ]; then
     done
 fi
 jobs=${PARSONS_FUZZ_JOBS:-2}
-build=build-fuzz
+build=build-sanitize
 
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz --parallel "$(nproc 2>/dev/null || echo 2)"
 
-# One target: its log, its final statistics and its exit code go to build-fuzz/logs/.
+# One target: its log, its final statistics and its exit code go to build-sanitize/logs/.
 run_one() {
     local t=$1
     mkdir -p "$build/corpus/$t" "$build/findings/$t" "$build/logs"
