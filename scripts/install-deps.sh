@@ -3,7 +3,8 @@
 # missing. Safe to run again: with everything present it installs nothing and asks for nothing.
 set -euo pipefail
 
-# clang and libclang-rt-14-dev: libFuzzer and clang's sanitizer runtimes, for scripts/fuzz.sh.
+# clang and libclang-rt-14-dev: clang's sanitizer runtimes and libFuzzer, for
+# scripts/sanitize.sh and scripts/fuzz.sh (one build, build-sanitize/).
 # groff-base and zsh: the tests read the manual pages with groff and parse the zsh completion.
 # dpkg-dev and file: CPack works out the .deb's Depends with dpkg-shlibdeps.
 # emscripten and node-acorn (its JavaScript optimizer's parser): the exhibit page, the emulator
