@@ -16,19 +16,9 @@ int slot_column(int slot, int offset) {
     return 1 + slot * kConditionSlotColumns + offset;
 }
 
-bool passes(const ConditionOrder& c, const AxisOrder& o, Thousandths from) {
-    const bool sense = c.sense == PassingSense::either ||
-                       (c.sense == PassingSense::forward) == (o.motion == Motion::forward);
-    const Thousandths travel = travel_in_motion(from, o.stop, o.motion);
-    const Thousandths to_position = travel_in_motion(from, c.position, o.motion);
-    return sense && to_position >= 1 && to_position <= travel;
-}
-
 } // namespace
 
-std::vector<ConditionFinding>
-ConditionReview::card(std::int64_t index, const CardOrders& orders,
-                      const std::array<std::optional<Thousandths>, kAxisCount>& at) {
+std::vector<ConditionFinding> ConditionReview::card(std::int64_t index, const CardOrders& orders) {
     std::vector<ConditionFinding> found;
     if (orders.kind == CardKind::sync || orders.kind == CardKind::tap) {
         // A sync card moves nothing, and a tap card's feed is not a motion card's: the
@@ -102,22 +92,8 @@ ConditionReview::card(std::int64_t index, const CardOrders& orders,
                              true});
             continue;
         }
-        const auto from = at.at(axis_index(c.axis));
-        if (from && !passes(c, o, *from)) {
-            found.push_back(
-                {index, slot_column(p.slot, 4), c.axis,
-                 fmt::format("event {} (condition card {}): the {} axis moves from {} to {} {}, "
-                             "and its counter never steps onto {} {}: the machine stops with "
-                             "condition_not_met",
-                             c.event, p.card, axis_name(c.axis), format_inches(*from),
-                             format_inches(o.stop),
-                             o.motion == Motion::forward ? "forward" : "in reverse",
-                             format_inches(c.position),
-                             c.sense == PassingSense::either    ? "in either sense"
-                             : c.sense == PassingSense::forward ? "counting up (forward)"
-                                                                : "counting down (reverse)"),
-                 false});
-        }
+        // Whether the counter steps onto the position is the run's to find (monitoring unit
+        // PRG in relaylogic/conditions/): `check` runs the deck and says condition_not_met.
     }
     pending_.clear();
     return found;

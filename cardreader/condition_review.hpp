@@ -43,11 +43,8 @@ public:
     explicit ConditionReview(bool allowed = true, std::string profile = "parsons-extended",
                              std::vector<int> tools = {})
         : allowed_(allowed), profile_(std::move(profile)), tools_(std::move(tools)) {}
-    // The next card of the deck (index 1-based) and where each axis stood before it (unknown
-    // after an unreadable card).
-    std::vector<ConditionFinding>
-    card(std::int64_t index, const CardOrders& orders,
-         const std::array<std::optional<Thousandths>, kAxisCount>& at);
+    // The next card of the deck (index 1-based).
+    std::vector<ConditionFinding> card(std::int64_t index, const CardOrders& orders);
     // A card that could not be read: conditions before it are not judged against it.
     void skip() { pending_.clear(); }
     // The end of the deck.

@@ -8,6 +8,7 @@
 #include "cli/support/applied_profile.hpp"
 #include "cli/support/data_files.hpp"
 #include "cli/support/deck_files.hpp"
+#include "cli/support/deck_prediction.hpp"
 #include "cli/support/file_plan.hpp"
 #include "cli/support/job_files.hpp"
 #include "cli/support/progress_line.hpp"
@@ -335,18 +336,6 @@ void read_jobs(const RunRequest& f, FilePlan& plan, RunInputs& in) {
         in.job = read_job(job_file, f.input, f.deck);
         plan.read("the airfoil file of the job", airfoil_file_read(in.job->airfoil));
     }
-}
-
-std::vector<relaylogic::Fault> parse_faults(const std::vector<std::string>& specs) {
-    std::vector<relaylogic::Fault> faults;
-    for (const auto& spec : specs) {
-        try {
-            faults.push_back(relaylogic::parse_fault(spec));
-        } catch (const relaylogic::FaultSpecError& e) {
-            throw DeckError(e.what());
-        }
-    }
-    return faults;
 }
 
 // The cabinet before its first card: the faults injected, the state resumed, and what the run

@@ -4,6 +4,7 @@
 #include "cli/commands.hpp"
 #include "cli/support/applied_profile.hpp"
 #include "cli/support/deck_files.hpp"
+#include "cli/support/deck_prediction.hpp"
 #include "cli/support/json_output.hpp"
 #include "outputs/output_file.hpp"
 
@@ -11,11 +12,13 @@
 #include "cardreader/condition_card.hpp"
 #include "cardreader/deck_error.hpp"
 #include "cardreader/deck_review.hpp"
+#include "relaylogic/card_reader.hpp"
 
 #include <fmt/format.h>
 
 #include <array>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -339,6 +342,231 @@ bool card_picture_name(const std::string& name) {
     return digits.find_first_not_of("0123456789") == std::string::npos;
 }
 
+// One showing of a deck, card by card: each card as the profile's reader senses it, its notes
+// (advice, double punches, what the run observed) and the run's stop where it comes, printed as
+// they come (text) or gathered for --json; deck errors and bad punches refused at the end.
+class DeckShow {
+public:
+    DeckShow(const ShowFlags& f, const axes::MachineProfile& profile, const CardLayout& layout,
+             std::optional<Prediction> run)
+        : f_(f), profile_(profile), layout_(layout), reviewer_(deck_reviewer(profile)),
+          run_(std::move(run)), text_(!f.json) {
+        if (run_) {
+            for (const StoryNote& n : run_->notes) {
+                observed_.emplace(n.card, &n);
+            }
+            stop_ = run_->result.stop ? &*run_->result.stop : nullptr;
+        }
+    }
+
+    // Shows one card; returns its document entry.
+    Json card(const Card& card) {
+        ++index_;
+        // The reader as the profile has it: parsons-1952 senses a double punch as two relays.
+        const relaylogic::SensedCard sensed =
+            relaylogic::sense_card(card, layout_, profile_.refuse_double_punch);
+        const DecodeResult& decoded = sensed.decoded;
+        last_ = decoded;
+        if (text_) {
+            print_card(index_, decoded, layout_, profile_);
+        }
+        // A card with a bad punch is given by its index and the punch alone: its other
+        // fields were not all read.
+        Json doc = decoded ? card_json(index_, decoded.orders, layout_)
+                           : Json{{"index", index_},
+                                  {"bad_punch",
+                                   {{"column", decoded.bad_punch->column},
+                                    {"what", decoded.bad_punch->what}}}};
+        if (decoded) {
+            review(sensed, doc);
+        } else {
+            bad_punch(decoded);
+        }
+        const auto [first, last] = observed_.equal_range(index_);
+        for (auto it = first; it != last; ++it) {
+            note(doc, "observed in the run", it->second->axis, it->second->message);
+        }
+        show_stop(doc);
+        if (text_) {
+            fmt::print("\n");
+        }
+        return doc;
+    }
+
+    // After the last card: a condition or sync card with no motion card after it.
+    void finish(Json& cards) {
+        for (const ReviewNote& n : reviewer_.finish()) {
+            deck_error(n);
+            if (!cards.empty()) {
+                cards.back()["deck_errors"].push_back(
+                    {{"card", n.card}, {"column", n.column}, {"message", n.message}});
+            }
+        }
+    }
+
+    void summary(Json& doc) const {
+        if (text_) {
+            fmt::print("{} card{} read, {} note{}, {} with bad punches; {}\n", index_,
+                       index_ == 1 ? "" : "s", notes_, notes_ == 1 ? "" : "s", bad_cards_,
+                       !run_   ? std::string("run refuses the deck")
+                       : stop_ ? fmt::format("the machine stops at card {} ('parsons check' "
+                                             "tells why)",
+                                             stop_->card)
+                               : std::string("the machine runs it through"));
+            return;
+        }
+        doc["cards_read"] = index_;
+        doc["warning_count"] = notes_;
+        doc["runs_through"] = run_ ? Json(stop_ == nullptr) : Json(nullptr);
+        doc["bad_punch_cards"] = bad_cards_;
+    }
+
+    std::int64_t cards() const { return index_; }
+    // The last card shown, as the reader decoded it.
+    const DecodeResult& last() const { return last_; }
+
+    // A deck run refuses, or one with bad punches: refused as a DeckError (exit 2).
+    void refuse() const {
+        if (first_deck_error_ && !first_bad_) {
+            throw DeckError(*first_deck_error_ +
+                            (deck_errors_ > 1
+                                 ? fmt::format(" (and {} more deck errors)", deck_errors_ - 1)
+                                 : std::string{}));
+        }
+        if (first_bad_) {
+            throw DeckError(*first_bad_ +
+                            (bad_cards_ > 1 ? fmt::format(" (and {} more cards with bad punches)",
+                                                          bad_cards_ - 1)
+                                            : std::string{}));
+        }
+    }
+
+private:
+    void review(const relaylogic::SensedCard& sensed, Json& doc) {
+        for (int column : sensed.double_columns) {
+            note(doc, "double punch", std::nullopt,
+                 fmt::format("column {}: the reader closes two relays of the bank, as a 1952 "
+                             "reader would (profile {}; parsons-safe refuses the card)",
+                             column, profile_.name));
+        }
+        for (const ReviewNote& n : reviewer_.review(sensed.decoded.orders)) {
+            if (n.deck_error) {
+                deck_error(n);
+                doc["deck_errors"].push_back(
+                    {{"card", n.card}, {"column", n.column}, {"message", n.message}});
+                continue;
+            }
+            note(doc, "advice", n.axis, n.message);
+        }
+    }
+
+    void bad_punch(const DecodeResult& decoded) {
+        ++bad_cards_;
+        const std::string where =
+            DeckError::at_card_column(f_.input, index_, decoded.bad_punch->column,
+                                      decoded.bad_punch->what)
+                .what();
+        if (text_) {
+            fmt::print("  BAD PUNCH: column {}: {} (the reader stops the machine here)\n",
+                       decoded.bad_punch->column, decoded.bad_punch->what);
+        }
+        first_bad_ = first_bad_.value_or(where);
+        reviewer_.skip();
+    }
+
+    // The run's stop, on the card it comes on.
+    void show_stop(Json& doc) const {
+        if (stop_ == nullptr) {
+            return;
+        }
+        if (stop_->card == index_) {
+            if (text_) {
+                fmt::print("  the machine stops here: {}: {}\n",
+                           relaylogic::stop_reason_name(stop_->reason), stop_->message);
+            }
+            doc["stop"] = {
+                {"reason", std::string(relaylogic::stop_reason_name(stop_->reason))},
+                {"axis", stop_->axis ? Json(std::string(axis_name(*stop_->axis))) : Json(nullptr)},
+                {"message", stop_->message},
+                {"lamps", stop_->lamps}};
+        } else if (text_ && index_ == stop_->card + 1) {
+            fmt::print("  (the machine stops at card {} and reads no card after it)\n",
+                       stop_->card);
+        }
+    }
+
+    // A condition, sync or tap card's deck error (additions): printed where it is found,
+    // refused at the end.
+    void deck_error(const ReviewNote& n) {
+        ++deck_errors_;
+        const std::string where =
+            DeckError::at_card_column(f_.input, n.card, n.column, n.message).what();
+        first_deck_error_ = first_deck_error_.value_or(where);
+        if (text_) {
+            fmt::print("  DECK ERROR: card {}, column {}: {}\n", n.card, n.column, n.message);
+        }
+    }
+
+    void note(Json& doc, const char* kind, std::optional<Axis> axis, const std::string& message) {
+        ++notes_;
+        if (text_) {
+            fmt::print("  {}: {}{}\n", kind, axis ? fmt::format("{}: ", axis_name(*axis)) : "",
+                       message);
+        }
+        doc["warnings"].push_back(
+            {{"card", index_},
+             {"axis", axis ? Json(std::string(axis_name(*axis))) : Json(nullptr)},
+             {"message", message},
+             {"kind", kind}});
+    }
+
+    const ShowFlags& f_;
+    const axes::MachineProfile& profile_;
+    const CardLayout& layout_;
+    DeckReviewer reviewer_;
+    std::optional<Prediction> run_;
+    std::multimap<std::int64_t, const StoryNote*> observed_;
+    const relaylogic::StopInfo* stop_ = nullptr;
+    const bool text_;
+    std::int64_t index_ = 0;
+    std::int64_t notes_ = 0;
+    std::optional<std::string> first_deck_error_;
+    std::int64_t deck_errors_ = 0;
+    std::optional<std::string> first_bad_;
+    std::int64_t bad_cards_ = 0;
+    DecodeResult last_;
+};
+
+// --svg: the card's picture, DIR/card-0001.svg, captioned with what the reader read.
+void write_card_picture(const ShowFlags& f, const InputDeck& deck, const Card& card,
+                        const DecodeResult& decoded, std::int64_t index) {
+    const CardLayout& layout = *deck.options().layout;
+    CardPictureNotes pic;
+    const CardKind kind = decoded ? decoded.orders.kind : CardKind::motion;
+    pic.caption =
+        fmt::format("{} · card {} · card number {:04} · layout {}{}",
+                    std::filesystem::path(f.input).filename().string(), index,
+                    decoded.orders.number, layout.name,
+                    kind == CardKind::condition ? " · condition card (an addition after EP 0640901)"
+                    : kind == CardKind::sync    ? " · sync card (an addition after EP 0436887)"
+                    : kind == CardKind::tap     ? " · tap card (an addition after EP 0360190)"
+                                                : "");
+    pic.bad_punch = decoded.bad_punch;
+    write_file(file_in_folder(f.svg_dir, fmt::format("card-{:04}.svg", index)),
+               card_svg(card, layout, pic, deck.options().code));
+}
+
+// What the machine does with the deck comes from running it (cli/support/deck_prediction.hpp),
+// as `check` runs it; a deck `run` refuses has no run, and is shown, then refused.
+std::optional<Prediction> run_for_show(const ShowFlags& f, InputDeck& deck) {
+    try {
+        return predict_deck({f.input, f.deck, f.profile, {}, {}, ""}, deck);
+    } catch (const DeckError&) {
+        deck.rewind();
+        return std::nullopt;
+    }
+}
+
 ExitCode run_show(const ShowFlags& f) {
     FilePlan plan;
     plan.read("DECK", f.input);
@@ -351,135 +579,35 @@ ExitCode run_show(const ShowFlags& f) {
     if (!f.svg_dir.empty()) {
         make_folder(f.svg_dir);
     }
-    const bool text = !f.json;
     Json doc = json_document("show");
-    if (text) {
+    if (!f.json) {
         fmt::print("deck {} ({}, layout {})\n\n", f.input, format_name(deck.options().format),
                    layout.name);
     }
     doc["deck"] = f.input;
     doc["format"] = std::string(format_name(deck.options().format));
     doc["layout"] = layout.name;
+    DeckShow show(f, profile, layout, run_for_show(f, deck));
     Json cards = Json::array();
-
-    DeckReviewer reviewer = deck_reviewer(profile);
-    std::int64_t index = 0;
-    std::int64_t notes = 0;
-    std::optional<std::string> first_deck_error;
-    std::int64_t deck_errors = 0;
-    // A condition, sync or tap card's deck error (additions): printed where it is found, refused
-    // at the end.
-    auto deck_error = [&](const ReviewNote& n) {
-        ++deck_errors;
-        const std::string where =
-            DeckError::at_card_column(f.input, n.card, n.column, n.message).what();
-        first_deck_error = first_deck_error.value_or(where);
-        if (text) {
-            fmt::print("  DECK ERROR: card {}, column {}: {}\n", n.card, n.column, n.message);
-        }
-    };
-    std::optional<std::string> first_bad;
-    std::int64_t bad_cards = 0;
     while (auto card = deck.cards().next()) {
-        ++index;
-        DecodeResult decoded = decode(*card, layout);
-        if (text) {
-            print_card(index, decoded, layout, profile);
-        }
-        // A card with a bad punch is given by its index and the punch alone: its other
-        // fields were not all read.
-        Json card_doc = decoded ? card_json(index, decoded.orders, layout)
-                                : Json{{"index", index},
-                                       {"bad_punch",
-                                        {{"column", decoded.bad_punch->column},
-                                         {"what", decoded.bad_punch->what}}}};
-        if (!decoded) {
-            ++bad_cards;
-            const std::string where =
-                DeckError::at_card_column(f.input, index, decoded.bad_punch->column,
-                                          decoded.bad_punch->what)
-                    .what();
-            if (text) {
-                fmt::print("  BAD PUNCH: column {}: {} (the reader stops the machine here)\n",
-                           decoded.bad_punch->column, decoded.bad_punch->what);
-            }
-            first_bad = first_bad.value_or(where);
-            reviewer.skip();
-        } else {
-            for (const ReviewNote& n : reviewer.review(decoded.orders)) {
-                if (n.deck_error) {
-                    deck_error(n);
-                    card_doc["deck_errors"].push_back(
-                        {{"card", n.card}, {"column", n.column}, {"message", n.message}});
-                    continue;
-                }
-                ++notes;
-                if (text) {
-                    fmt::print("  warning: {}{}\n",
-                               n.axis ? fmt::format("{}: ", axis_name(*n.axis)) : "", n.message);
-                }
-                card_doc["warnings"].push_back(
-                    {{"card", index},
-                     {"axis", n.axis ? Json(std::string(axis_name(*n.axis))) : Json(nullptr)},
-                     {"message", n.message},
-                     {"stops", n.stops}});
-            }
-        }
-        if (text) {
-            fmt::print("\n");
+        Json card_doc = show.card(*card);
+        if (!f.svg_dir.empty()) {
+            write_card_picture(f, deck, *card, show.last(), show.cards());
         }
         cards.push_back(std::move(card_doc));
-        if (!f.svg_dir.empty()) {
-            CardPictureNotes pic;
-            const CardKind kind = decoded ? decoded.orders.kind : CardKind::motion;
-            pic.caption = fmt::format(
-                "{} · card {} · card number {:04} · layout {}{}",
-                std::filesystem::path(f.input).filename().string(), index, decoded.orders.number,
-                layout.name,
-                kind == CardKind::condition ? " · condition card (an addition after EP 0640901)"
-                : kind == CardKind::sync    ? " · sync card (an addition after EP 0436887)"
-                : kind == CardKind::tap     ? " · tap card (an addition after EP 0360190)"
-                                            : "");
-            pic.bad_punch = decoded.bad_punch;
-            write_file(file_in_folder(f.svg_dir, fmt::format("card-{:04}.svg", index)),
-                       card_svg(*card, layout, pic, deck.options().code));
-        }
     }
-    for (const ReviewNote& n : reviewer.finish()) {
-        deck_error(n);
-        if (!cards.empty()) {
-            cards.back()["deck_errors"].push_back(
-                {{"card", n.card}, {"column", n.column}, {"message", n.message}});
-        }
-    }
-    if (text) {
-        fmt::print("{} card{} read, {} warning{}, {} with bad punches\n", index,
-                   index == 1 ? "" : "s", notes, notes == 1 ? "" : "s", bad_cards);
-        if (!f.svg_dir.empty()) {
-            fmt::print("card pictures: {} .. card-{:04}.svg\n",
-                       (std::filesystem::path(f.svg_dir) / "card-0001.svg").string(), index);
-        }
-    } else {
+    show.finish(cards);
+    show.summary(doc);
+    if (f.json) {
         doc["cards"] = std::move(cards);
-        doc["cards_read"] = index;
-        doc["warning_count"] = notes;
-        doc["bad_punch_cards"] = bad_cards;
         doc["svg_dir"] = f.svg_dir.empty() ? Json(nullptr) : Json(f.svg_dir);
         // A deck with bad punches is still shown whole, then refused (exit 2), as the text is.
         print_json_document(doc);
+    } else if (!f.svg_dir.empty()) {
+        fmt::print("card pictures: {} .. card-{:04}.svg\n",
+                   (std::filesystem::path(f.svg_dir) / "card-0001.svg").string(), show.cards());
     }
-    if (first_deck_error && !first_bad) {
-        throw DeckError(*first_deck_error +
-                        (deck_errors > 1
-                             ? fmt::format(" (and {} more deck errors)", deck_errors - 1)
-                             : std::string{}));
-    }
-    if (first_bad) {
-        throw DeckError(*first_bad + (bad_cards > 1 ? fmt::format(" (and {} more cards with bad "
-                                                                  "punches)",
-                                                                  bad_cards - 1)
-                                                    : std::string{}));
-    }
+    show.refuse();
     return ExitCode::ok;
 }
 

@@ -62,7 +62,7 @@ TEST_CASE("CLI: show prints every field of every card of the sample deck", "[cli
           "  cross     20-33    + forward    2      2.300        (no field)   2.500  2.500  1,2",
           "  tilt      62-75    + forward    3      -            (no field)   0.125  0.125  5",
           "  table     2-19     - reverse    1      8.585        8.485        8.385  0.600  1,2",
-          "4 cards read, 0 warnings, 0 with bad punches"}) {
+          "4 cards read, 0 notes, 0 with bad punches; the machine runs it through"}) {
         INFO(expected);
         CHECK(out.find(expected) != std::string::npos);
     }
@@ -73,7 +73,8 @@ TEST_CASE("CLI: show prints every field of every card of the sample deck", "[cli
     }
 }
 
-TEST_CASE("CLI: show warns about a wrong check and the shared-bank hazard", "[cli]") {
+TEST_CASE("CLI: show tells, from a run, the shared-bank equality and the stop it leads to",
+          "[cli]") {
     TempDir dir;
     write_bytes(dir.path("hazard.csv"),
                 "card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq\n"
@@ -84,10 +85,15 @@ TEST_CASE("CLI: show warns about a wrong check and the shared-bank hazard", "[cl
                 "1,0,tilt,+,3,,,0.000,0.000,5\n");
     auto shown = run_parsons("show " + q(dir.str("hazard.csv")));
     CHECK(shown.exit_code == 0);
-    CHECK(shown.output.find("warning: table: check 9.000 but the stop 9.050 is 9.050 from") !=
-          std::string::npos);
-    CHECK(shown.output.find("warning: table: shared-bank hazard: the absolute banks 350-356 also "
-                            "compare equal at 8.050") != std::string::npos);
+    CHECK(shown.output.find("observed in the run: table: the absolute comparer 122' met 8.050, "
+                            "which no field of the card punches (the banks 350-356 that "
+                            "slow-downs and stop share compare equal there)") != std::string::npos);
+    CHECK(shown.output.find("the machine stops here: check_mismatch: card 1 (number 0001), table: "
+                            "at the stop only the absolute comparer 122' conducted: absolute "
+                            "counter 8.950 (stop 9.050)") != std::string::npos);
+    CHECK(
+        shown.output.find("1 card read, 1 note, 0 with bad punches; the machine stops at card 1") !=
+        std::string::npos);
 }
 
 TEST_CASE("CLI: a bad punch in a deck is named by card and column, exit 2", "[cli][bad-input]") {
@@ -100,11 +106,18 @@ TEST_CASE("CLI: a bad punch in a deck is named by card and column, exit 2", "[cl
     const std::size_t i = 160 + 2 * 12 + 1;
     bytes[i] = static_cast<char>(bytes[i] | 0x01); // word bit 4 = row 5
     write_bytes(dir.path("bad.bin"), bytes);
-    auto shown = run_parsons("show " + q(dir.str("bad.bin")));
+    // parsons-safe's reader refuses a double punch: show names it, exit 2.
+    auto shown = run_parsons("show " + q(dir.str("bad.bin")) + " --profile parsons-safe");
     CHECK(shown.exit_code == 2);
     CHECK(shown.output.find("parsons: error: " + dir.str("bad.bin") +
                             ": card 2, column 13: double punch (rows 3 and 5) in table stop") !=
           std::string::npos);
+    // parsons-1952's reader closes two relays, as run does (rule 12): no bad punch.
+    auto read = run_parsons("show " + q(dir.str("bad.bin")));
+    CHECK(read.exit_code == 0);
+    CHECK(read.output.find("double punch: column 13: the reader closes two relays of the bank") !=
+          std::string::npos);
+    CHECK(read.output.find("BAD PUNCH") == std::string::npos);
     auto converted = run_parsons("convert " + q(dir.str("bad.bin")) + " -o " + q(dir.str("x.csv")));
     CHECK(converted.exit_code == 2);
     CHECK(converted.output.find(": card 2, column 13: double punch (rows 3 and 5) in table stop") !=
@@ -211,9 +224,12 @@ TEST_CASE("CLI: show judges the card after a bad one against the bad card's numb
     const std::size_t i = 160 + 2 * 12 + 1; // card 2, column 13: double punch
     bytes[i] = static_cast<char>(bytes[i] | 0x01);
     write_bytes(dir.path("bad.bin"), bytes);
-    auto shown = run_parsons("show " + q(dir.str("bad.bin")));
+    // parsons-safe's reader refuses the card: the run stops there, and card 3's advice is not
+    // judged from numbers nobody read.
+    auto shown = run_parsons("show " + q(dir.str("bad.bin")) + " --profile parsons-safe");
     CHECK(shown.exit_code == 2);
-    CHECK(shown.output.find("4 cards read, 0 warnings, 1 with bad punches") != std::string::npos);
+    CHECK(shown.output.find("4 cards read, 0 notes, 1 with bad punches; the machine stops at card "
+                            "2") != std::string::npos);
 }
 
 TEST_CASE("Suite: no test name holds a semicolon (ctest would split it and run no test)",

@@ -174,7 +174,7 @@ TEST_CASE("Exit codes: demo returns 130 on Ctrl-C and 143 on SIGTERM, even while
 }
 
 TEST_CASE("Exit codes: check exits 3 exactly when the machine will stop on the deck, and 0 "
-          "with only warnings of risks",
+          "with only what it observed",
           "[cli][exit-codes][check]") {
     TempDir dir;
     struct Case {
@@ -186,23 +186,26 @@ TEST_CASE("Exit codes: check exits 3 exactly when the machine will stop on the d
     const std::vector<Case> cases = {
         {"good", std::string(kHeader) + "1,0,table,+,3,,,0.100,0.100,1\n" + idle_rest(1), 0, ""},
         {"wrong check", std::string(kHeader) + "1,0,table,+,3,,,0.100,0.110,1\n" + idle_rest(1), 3,
-         "STOP: table: check 0.110 but the stop 0.100"},
+         "the machine stops at card 1 (number 0001), table: check_mismatch"},
         {"card number",
          std::string(kHeader) + "1,0,table,+,3,,,0.100,0.100,1\n" + idle_rest(1) +
              "3,0,table,+,3,,,0.200,0.100,1\n" + idle_rest(3),
-         3, "STOP: card number 0003 follows 0001"},
+         3,
+         "the machine stops at card 2 (number 0003): out_of_order_card: card 2 (number 0003): card "
+         "number 0003 follows 0001"},
         {"stall",
          std::string(kHeader) + "1,0,table,+,3,,,0.100,0.100,1\n1,0,cross,+,3,,,0.200,0.200,1\n"
                                 "1,0,vertical,+,3,,,0.000,0.000,3\n1,0,swivel,+,3,,,0.000,0.000,4\n"
                                 "1,0,tilt,+,3,,,0.000,0.000,5\n",
-         3, "STOP: sequence stall: after table stops"},
-        {"coast",
+         3, "the machine stops at card 1 (number 0001): sequence_stall"},
+        {"slow-downs a thousandth apart",
          std::string(kHeader) + "1,0,table,+,1,8.983,8.984,8.985,8.985,1\n" + idle_rest(1) +
              "2,0,table,+,3,,,9.085,0.100,1\n" + idle_rest(2),
-         3, "STOP: table: the previous card's stop coasts about 0.0"},
-        {"coast on the last card, a risk only",
+         3, "the machine stops at card 1 (number 0001), table: soft_limit"},
+        {"a stop met on speed 2: observed, and the deck runs through",
          std::string(kHeader) + "1,0,table,+,2,,,0.300,0.300,1\n" + idle_rest(1), 0,
-         "warning: table: slow-down too close to the stop"},
+         "observed: table: it met its stop 0.300 on speed 2: relay 256 only stepped 236 on to "
+         "speed 3"},
     };
     for (const Case& c : cases) {
         const std::string file = dir.str(std::string(c.name) + ".csv");

@@ -16,6 +16,7 @@
 using nlohmann::json;
 using parsons::test::idle_rest;
 using parsons::test::kHeader;
+using parsons::test::lines_of;
 using parsons::test::q;
 using parsons::test::read_bytes;
 using parsons::test::run_parsons;
@@ -169,11 +170,12 @@ TEST_CASE("Show --json: the sample deck's cards, field by field, pretty-printed 
     CHECK(cards[3]["axes"]["table"]["check"] == 8.885);
 }
 
-TEST_CASE("Show --json: each warning of the text is in the document, on its card, with its axis",
+TEST_CASE("Show --json: each note of the text is in the document, on its card, with its kind "
+          "and axis, and the run's stop on its card",
           "[cli][json][show]") {
     TempDir dir;
-    // A sequence stall on card 1; slow-downs too close to the stop on card 1 of the other deck,
-    // whose coast the next card's check will count.
+    // A sequence stall on card 1; slow-downs so close to the stop that the table runs on to its
+    // limit switch and coasts there, on card 1 of the other deck.
     const std::string stall = stall_deck(dir);
     write_bytes(dir.path("close.csv"), std::string(kHeader) +
                                            "1,0,table,+,1,8.983,8.984,8.985,"
@@ -187,44 +189,49 @@ TEST_CASE("Show --json: each warning of the text is in the document, on its card
         INFO(text.output << r.out << r.err);
         REQUIRE(r.exit_code == text.exit_code);
         const json doc = r.doc();
-        // The text's warning lines, in order, from every card.
+        // The text's note lines, in order, from every card: "  KIND: [AXIS: ]MESSAGE".
         std::vector<std::string> from_text;
-        for (const std::string& line : lines_with(text.output, "  warning: ")) {
-            from_text.push_back(line.substr(line.find("warning: ") + 9));
+        for (const std::string& line : lines_of(text.output)) {
+            for (const char* kind : {"advice", "observed in the run", "double punch"}) {
+                const std::string head = std::string("  ") + kind + ": ";
+                if (line.rfind(head, 0) == 0) {
+                    from_text.push_back(std::string(kind) + ": " + line.substr(head.size()));
+                }
+            }
         }
         std::vector<std::string> from_json;
         for (const auto& card : doc["cards"]) {
             for (const auto& w : card["warnings"]) {
                 CHECK(w["card"] == card["index"]);
-                CHECK(w["stops"].is_boolean());
                 from_json.push_back(
+                    w["kind"].get<std::string>() + ": " +
                     (w["axis"].is_null() ? "" : w["axis"].get<std::string>() + ": ") +
                     w["message"].get<std::string>());
             }
         }
-        CHECK_FALSE(from_text.empty());
+        CHECK(from_text.empty() == (deck == stall)); // the stall deck has nothing to note
         CHECK(from_json == from_text);
         CHECK(doc["warning_count"] == from_text.size());
+        // The run stops on card 1 of both decks: the stop is on that card, as the text says.
+        CHECK(doc["runs_through"] == false);
+        REQUIRE(doc["cards"][0].contains("stop"));
+        const json& stop = doc["cards"][0]["stop"];
+        CHECK(text.output.find("  the machine stops here: " + stop["reason"].get<std::string>() +
+                               ": " + stop["message"].get<std::string>()) != std::string::npos);
+        CHECK_FALSE(doc["cards"][1].contains("stop"));
     }
-    // The stall deck: the first warning is on card 1, names the table, and is no certain stop
-    // alone; the stall itself is.
     const auto r = run_split(dir, "show " + q(stall) + " --json");
-    const json warnings = r.doc()["cards"][0]["warnings"];
-    REQUIRE(warnings.size() >= 2);
-    bool stall_stops = false;
-    for (const auto& w : warnings) {
-        if (w["message"].get<std::string>().find("sequence stall") != std::string::npos) {
-            stall_stops = w["stops"].get<bool>();
-        }
-    }
-    CHECK(stall_stops);
+    CHECK(r.doc()["cards"][0]["stop"]["reason"] == "sequence_stall");
+    const auto close = run_split(dir, "show " + q(dir.str("close.csv")) + " --json");
+    CHECK(close.doc()["cards"][0]["stop"]["axis"] == "table");
+    CHECK(close.doc()["cards"][0]["warnings"][0]["kind"] == "observed in the run");
 }
 
 TEST_CASE("Show --json: a card with a bad punch is given by its column, then the error, exit 2",
           "[cli][json][show][bad-punch]") {
     TempDir dir;
     const std::string bad = sample_with_row5(dir, 2, 13); // table stop: rows 3 and 5
-    const auto r = run_split(dir, "show " + q(bad) + " --json");
+    const auto r = run_split(dir, "show " + q(bad) + " --json --profile parsons-safe");
     INFO(r.out << r.err);
     CHECK(r.exit_code == 2); // as the text: shown whole, then refused
     CHECK(r.err.find("parsons: error: " + bad + ": card 2, column 13: double punch") !=
@@ -257,9 +264,15 @@ TEST_CASE("Check --json: a move past a soft limit is a finding of kind limit, wi
     CHECK(doc["will_run_through"] == false);
     // The table passes 8.9 twice: card 1 (0 -> 8.985) and card 3 (8.385 -> 8.985).
     CHECK(doc["past_limit"] == 2);
-    CHECK(doc["bad_punches"] == 0);
-    CHECK(doc["stops"] == 0);
-    CHECK(doc["warnings"] == 0);
+    CHECK(doc["observed"] == 0);
+    CHECK(doc["advice"] == 0);
+    CHECK(doc["double_punches"] == 0);
+    // The machine's verdict, from the run: it stops on card 1 at the soft limit.
+    CHECK(doc["verdict"]["runs_through"] == false);
+    CHECK(doc["verdict"]["cards_run"] == 1);
+    CHECK(doc["verdict"]["stop"]["card"] == 1);
+    CHECK(doc["verdict"]["stop"]["reason"] == "soft_limit");
+    CHECK(doc["verdict"]["stop"]["axis"] == "table");
     const json& findings = doc["findings"];
     REQUIRE(findings.size() == 2);
     const json& first = findings[0];
@@ -281,8 +294,8 @@ TEST_CASE("Check --json: a move past a soft limit is a finding of kind limit, wi
     // The text says the same.
     const auto text = run_parsons("check " + q(source_path(kSample)) + " --limit table=0:8.9");
     CHECK(text.exit_code == 3);
-    CHECK(text.output.find("card 3 (number 0003): " + second["message"].get<std::string>()) !=
-          std::string::npos);
+    CHECK(text.output.find("card 3 (number 0003): past a limit: " +
+                           second["message"].get<std::string>()) != std::string::npos);
 
     // Positions summed in binary floating point (0.1 + 0.2) still read as the counters would.
     write_bytes(dir.path("steps.csv"), std::string(kHeader) + "1,0,table,+,3,,,0.100,0.100,1\n" +
@@ -311,34 +324,39 @@ TEST_CASE("Check --json: a deck that runs through has no findings and exit 0",
     CHECK(doc["will_run_through"] == true);
     CHECK(doc["findings"] == json::array());
     CHECK(doc["cards_checked"] == 4);
-    for (const char* count : {"past_limit", "bad_punches", "stops", "warnings"}) {
+    for (const char* count : {"past_limit", "observed", "double_punches", "advice"}) {
         CHECK(doc[count] == 0);
     }
+    CHECK(doc["verdict"]["runs_through"] == true);
+    CHECK(doc["verdict"]["cards_run"] == 4);
+    CHECK(doc["verdict"]["machine_seconds"] == 841.871222);
+    CHECK(doc["verdict"]["stop"].is_null());
+    CHECK(doc["verdict"]["chain"] == json::array());
 }
 
-TEST_CASE("Check --json: a bad punch, a double punch and a certain stop are findings of their "
-          "kind, counted as the text counts them",
+TEST_CASE("Check --json: a bad punch and a sequence stall are the run's stop, a double punch a "
+          "finding of its kind, counted as the text counts them",
           "[cli][json][check][bad-punch]") {
     TempDir dir;
-    SECTION("a stray hole in column 76 is a bad punch: exit 3") {
+    SECTION("a stray hole in column 76: the reader stops the machine, exit 3") {
         const auto r = run_split(dir, "check " + q(sample_with_row5(dir, 2, 76)) + " --json");
         INFO(r.out << r.err);
         CHECK(r.exit_code == 3);
         const json doc = r.doc();
-        CHECK(doc["bad_punches"] == 1);
         CHECK(doc["will_run_through"] == false);
-        REQUIRE(count_kind(doc["findings"], "bad_punch") == 1);
-        const json& f = doc["findings"][0];
-        CHECK(f["kind"] == "bad_punch");
-        CHECK(f["card"] == 2);
-        CHECK(f["column"] == 76);
-        CHECK(f["number"].is_null());
-        CHECK(f["axis"].is_null());
-        CHECK(f["message"].get<std::string>().find("column 76: ") == 0);
+        const json& stop = doc["verdict"]["stop"];
+        CHECK(stop["reason"] == "bad_punch");
+        CHECK(stop["card"] == 2);
+        CHECK(stop["number"].is_null()); // the card was not read
+        CHECK(stop["axis"].is_null());
+        CHECK(stop["message"].get<std::string>().find("card 2, column 76: ") == 0);
+        CHECK(doc["verdict"]["chain"].back().get<std::string>().find(
+                  "the machine stopped: bad_punch: card 2, column 76") == 0);
     }
-    SECTION("a double punch in parsons-1952 is a warning of kind double_punch") {
+    SECTION("a double punch in parsons-1952 is a finding of kind double_punch") {
         const std::string twice = sample_with_row5(dir, 2, 13);
         const auto r = run_split(dir, "check " + q(twice) + " --json");
+        const auto text = run_parsons("check " + q(twice));
         INFO(r.out << r.err);
         const json doc = r.doc();
         REQUIRE(count_kind(doc["findings"], "double_punch") == 1);
@@ -349,19 +367,20 @@ TEST_CASE("Check --json: a bad punch, a double punch and a certain stop are find
                 CHECK(f["column"] == 13);
             }
         }
-        CHECK(doc["bad_punches"] == 0);
-        CHECK(doc["warnings"] == count_kind(doc["findings"], "warning") + 1);
-        CHECK(doc["stops"] == count_kind(doc["findings"], "stop"));
+        CHECK(doc["double_punches"] == 1);
+        CHECK(doc["double_punches"].get<std::size_t>() ==
+              lines_with(text.output, ": double punch: ").size());
+        CHECK(doc["observed"] == count_kind(doc["findings"], "observed"));
         CHECK(doc["past_limit"] == count_kind(doc["findings"], "limit"));
         CHECK(doc["will_run_through"] == (r.exit_code == 0));
-        // parsons-safe refuses the card: a bad punch.
+        // parsons-safe refuses the card: the reader stops the machine there.
         const auto safe = run_split(dir, "check " + q(twice) + " --profile parsons-safe --json");
         CHECK(safe.exit_code == 3);
         CHECK(safe.doc()["profile"] == "parsons-safe");
-        CHECK(count_kind(safe.doc()["findings"], "bad_punch") == 1);
-        CHECK(safe.doc()["bad_punches"] == 1);
+        CHECK(safe.doc()["verdict"]["stop"]["reason"] == "bad_punch");
+        CHECK(count_kind(safe.doc()["findings"], "double_punch") == 0);
     }
-    SECTION("a certain sequence stall is a finding of kind stop: exit 3") {
+    SECTION("a sequence stall is the run's stop: exit 3, with the relay events before it") {
         const std::string stall = stall_deck(dir);
         const auto r = run_split(dir, "check " + q(stall) + " --json");
         const auto text = run_parsons("check " + q(stall));
@@ -369,20 +388,16 @@ TEST_CASE("Check --json: a bad punch, a double punch and a certain stop are find
         CHECK(r.exit_code == 3);
         const json doc = r.doc();
         CHECK(doc["will_run_through"] == false);
-        CHECK(doc["stops"].get<std::size_t>() == lines_with(text.output, ": STOP: ").size());
-        CHECK(doc["warnings"].get<std::size_t>() == lines_with(text.output, ": warning: ").size());
-        CHECK(doc["stops"] == count_kind(doc["findings"], "stop"));
-        CHECK(doc["warnings"] == count_kind(doc["findings"], "warning"));
-        bool found = false;
-        for (const auto& f : doc["findings"]) {
-            if (f["kind"] == "stop" &&
-                f["message"].get<std::string>().find("sequence stall") != std::string::npos) {
-                found = true;
-                CHECK(f["card"] == 1);
-                CHECK(f["number"] == 1);
-            }
+        CHECK(doc["verdict"]["stop"]["reason"] == "sequence_stall");
+        CHECK(doc["verdict"]["stop"]["card"] == 1);
+        CHECK(doc["verdict"]["stop"]["number"] == 1);
+        // Every line of the chain is in the text, in order.
+        std::size_t at = 0;
+        for (const auto& line : doc["verdict"]["chain"]) {
+            at = text.output.find("    " + line.get<std::string>(), at);
+            CHECK(at != std::string::npos);
         }
-        CHECK(found);
+        CHECK(doc["verdict"]["chain"].size() >= 3); // table, cross, the stop
     }
 }
 
@@ -574,6 +589,7 @@ TEST_CASE("CLI --json: docs/json-output.md names every field the commands emit",
         "show " + sample + " --json",
         "show " + stall + " --json",
         "show " + bad + " --json --svg " + q(dir.str("svg")),
+        "show " + bad + " --json --profile parsons-safe",
         "check " + sample + " --limit table=0:8.9 --json",
         "check " + bad + " --json",
         "check " + bad + " --profile parsons-safe --json",
@@ -589,9 +605,9 @@ TEST_CASE("CLI --json: docs/json-output.md names every field the commands emit",
         REQUIRE_FALSE(r.out.empty());
         collect_keys(r.doc(), keys);
     }
-    for (const char* key :
-         {"from_in", "limit_in", "bad_punch", "column", "stops", "zero_in", "work_zero_in",
-          "slow_down_2", "will_run_through", "profile_file", "feed_in_per_min"}) {
+    for (const char* key : {"from_in", "limit_in", "bad_punch", "column", "verdict", "chain",
+                            "lamps", "kind", "runs_through", "zero_in", "work_zero_in",
+                            "slow_down_2", "will_run_through", "profile_file", "feed_in_per_min"}) {
         CHECK(keys.count(key) == 1); // the runs above do reach every kind of field
     }
     const std::string doc = read_bytes(source_path("docs/json-output.md"));

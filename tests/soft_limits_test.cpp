@@ -71,10 +71,14 @@ TEST_CASE("Soft limits: parsons check lists every card that would pass a limit, 
     const std::string sample = source_path("decks/samples/patent-example.csv");
     auto r = run_parsons("check " + q(sample) + " --limit table=0:8.9");
     CHECK(r.exit_code == 3);
-    CHECK_THAT(r.output, Catch::Contains("card 1 (number 0001): table moves +8.985 in, from 0.000 "
-                                         "to 8.985 in, past its soft limit 8.900 in"));
-    CHECK_THAT(r.output, Catch::Contains("card 3 (number 0003): table moves +0.600 in, from 8.385 "
-                                         "to 8.985 in"));
+    CHECK_THAT(
+        r.output,
+        Catch::Contains("card 1 (number 0001): past a limit: table moves +8.985 in, from 0.000 "
+                        "to 8.985 in, past its soft limit 8.900 in"));
+    CHECK_THAT(
+        r.output,
+        Catch::Contains("card 3 (number 0003): past a limit: table moves +0.600 in, from 8.385 "
+                        "to 8.985 in"));
     CHECK_THAT(r.output, Catch::Contains("4 cards checked: 2 moves past a limit"));
 
     auto clean = run_parsons("check " + q(sample) + " --limit table=0:9.5");

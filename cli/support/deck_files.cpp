@@ -86,20 +86,6 @@ cardreader::DeckOptions deck_options(const std::string& path, const std::string&
     return options;
 }
 
-std::array<cardreader::AxisDynamics, cardreader::kAxisCount>
-review_dynamics(const axes::MachineProfile& profile) {
-    std::array<cardreader::AxisDynamics, cardreader::kAxisCount> out{};
-    for (std::size_t i = 0; i < out.size(); ++i) {
-        const axes::AxisProfile& a = profile.axes.at(i);
-        for (std::size_t k = 0; k < 3; ++k) {
-            out.at(i).speed_in_per_s.at(k) = a.speed_in_per_min.at(k) / 60.0;
-        }
-        out.at(i).acceleration_in_per_s2 = a.acceleration_in_per_s2;
-        out.at(i).braking_in_per_s2 = a.braking_in_per_s2;
-    }
-    return out;
-}
-
 void apply_feed(axes::MachineProfile& profile, const std::string& feed,
                 const cardreader::DeckOptions& deck) {
     if (cardreader::format_is_continuous(deck.format)) {
@@ -214,7 +200,7 @@ cardreader::SpindleLimits spindle_limits(const axes::MachineProfile& profile) {
 }
 
 cardreader::DeckReviewer deck_reviewer(const axes::MachineProfile& profile) {
-    cardreader::DeckReviewer reviewer(review_dynamics(profile));
+    cardreader::DeckReviewer reviewer;
     reviewer.allow_conditions(profile.condition_cards, profile.name, tool_numbers(profile));
     reviewer.allow_sync(profile.press_sync, profile.name, press_limits(profile));
     reviewer.allow_tap(profile.spindle_sync, profile.name, spindle_limits(profile));

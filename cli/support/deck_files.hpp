@@ -42,10 +42,6 @@ axes::MachineProfile load_profile(const std::string& file);
 std::vector<cardreader::Axis> apply_limits(axes::MachineProfile& profile,
                                            const std::vector<std::string>& limits);
 
-// The motor figures the deck review needs to estimate each stop's coast.
-std::array<cardreader::AxisDynamics, cardreader::kAxisCount>
-review_dynamics(const axes::MachineProfile& profile);
-
 // --feed cards|ribbon over the profile's ribbon_feed; a continuous format (tape) always feeds as
 // a ribbon, and --feed cards on one is refused (DeckError).
 void apply_feed(axes::MachineProfile& profile, const std::string& feed,
@@ -88,8 +84,7 @@ inline void refuse_condition_errors(InputDeck& deck, const axes::MachineProfile&
 cardreader::PressLimits press_limits(const axes::MachineProfile& profile);
 // The review's view of the profile's spindle heads, motor 27 and follower drive (tap cards).
 cardreader::SpindleLimits spindle_limits(const axes::MachineProfile& profile);
-// A DeckReviewer for `profile`: its motors' dynamics, condition units, press sync and spindle
-// sync.
+// A DeckReviewer for `profile`: its condition units, press sync and spindle sync.
 cardreader::DeckReviewer deck_reviewer(const axes::MachineProfile& profile);
 // The numbers of the tools the profile's changer holds (for the condition cards' review).
 std::vector<int> tool_numbers(const axes::MachineProfile& profile);

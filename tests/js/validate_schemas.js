@@ -553,6 +553,9 @@ async function runAll() {
                           '1,0,table,+,1,8.785,8.885,8.985,8.985,2');
   stall = replaceLine(stall, '1,0,cross,+,2,2.300,,2.500,2.500,12', '1,0,cross,+,2,2.300,,2.500,2.500,2');
   writeWork('stall.csv', stall);
+  // Advice: card 1's cross starts on speed 2 with its slow-down left blank.
+  writeWork('advice.csv', replaceLine(sampleText, '1,0,cross,+,2,2.300,,2.500,2.500,12',
+                                      '1,0,cross,+,2,,,2.500,2.500,12'));
   run(['run', 'stall.csv', '-q', '--report', 'stall.report.json', '--events', 'stall.events.jsonl',
        '--save-state', 'stall.state.json'], { codes: [3] });
   expect('stall.report.json', 'report');
@@ -760,6 +763,7 @@ async function runAll() {
     ['show-press-sync.json', [pressSync, ...X], [0]],
     ['show-plate.json', ['plate.csv', ...X], [0]],
     ['show-stray-hole.json', ['stray-hole.txt'], [2]],
+    ['show-double-punch.json', ['double-punch.txt'], [0]],
     ['show-deck-errors.json', [conditions], [2]],
   ];
   for (const [out, args, codes] of shows) {
@@ -767,17 +771,17 @@ async function runAll() {
     expect(out, 'json-output');
   }
   // check --json: a soft limit and a limit switch, a double punch read as two relays
-  // (parsons-1952) and refused (parsons-safe), a stall (warning and stop), a condition never
-  // met, deck errors (exit 2).
+  // (parsons-1952) and refused (parsons-safe), a stall, a condition never met, advice. (A deck
+  // with deck errors is refused with exit 2 and no document, as run refuses it.)
   const checks = [
     ['check-clean.json', [sample], [0]],
     ['check-soft-limit.json', [sample, '--limit', 'table=0:8.9'], [3]],
     ['check-limit-switch.json', [sample, '--profile', 'short-vertical.json'], [3]],
-    ['check-double-punch.json', ['double-punch.txt'], [0]],
+    ['check-double-punch.json', ['double-punch.txt'], [3]],
+    ['check-advice.json', ['advice.csv'], [0, 3]],
     ['check-double-punch-safe.json', ['double-punch.txt', '--profile', 'parsons-safe'], [3]],
     ['check-stall.json', ['stall.csv'], [3]],
     ['check-condition-not-met.json', ['condition-not-met.csv', ...X], [3]],
-    ['check-deck-errors.json', [conditions], [2]],
     ['check-plate.json', ['plate.csv', ...X], [0]],
   ];
   for (const [out, args, codes] of checks) {

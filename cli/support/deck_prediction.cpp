@@ -1,0 +1,49 @@
+#include "cli/support/deck_prediction.hpp"
+
+#include "cli/support/applied_profile.hpp"
+
+#include "cardreader/deck_error.hpp"
+#include "relaylogic/control_cabinet.hpp"
+
+namespace parsons::cli {
+
+std::vector<relaylogic::Fault> parse_faults(const std::vector<std::string>& specs) {
+    std::vector<relaylogic::Fault> faults;
+    for (const auto& spec : specs) {
+        try {
+            faults.push_back(relaylogic::parse_fault(spec));
+        } catch (const relaylogic::FaultSpecError& e) {
+            throw cardreader::DeckError(e.what());
+        }
+    }
+    return faults;
+}
+
+Prediction predict_deck(const PredictionRequest& request, InputDeck& deck) {
+    AppliedProfile applied = AppliedProfile::load(request.profile);
+    applied.apply_limits(request.limits);
+    const std::vector<relaylogic::Fault> faults = parse_faults(request.faults);
+    axes::MachineProfile& profile = applied.profile();
+    apply_feed(profile, request.feed, deck.options());
+    refuse_deck_errors(deck, profile); // what run refuses before any motion, refused alike
+
+    relaylogic::ControlCabinet cabinet(profile, *deck.options().layout);
+    for (const auto& fault : faults) {
+        cabinet.add_fault(fault);
+    }
+    cabinet.set_pace(relaylogic::Pace::fast_forward);
+    cabinet.record_card_times(true);
+    MachineStory story;
+    cabinet.attach(&story);
+    Prediction p;
+    p.result = cabinet.run(deck.cards());
+    p.profile = profile;
+    p.format = std::string(cardreader::format_name(deck.options().format));
+    p.layout = deck.options().layout->name;
+    p.chain = story.stop_chain();
+    p.notes = story.notes();
+    deck.rewind();
+    return p;
+}
+
+} // namespace parsons::cli
