@@ -237,7 +237,7 @@ void ControlCabinet::soft_limit_watch(AxisCircuit& c) {
 
 void ControlCabinet::travel_limit(AxisCircuit& c) {
     const auto& p = c.plant.profile();
-    machine_stop(StopReason::soft_limit, c.axis,
+    machine_stop(StopReason::limit_switch, c.axis,
                  fmt::format("{}, {}: the part reached its travel limit at {:.4f} in (limit "
                              "switches at {:.3f} .. {:.3f} in; travel-limit switches are an "
                              "addition of this emulator: the patent shows none)",

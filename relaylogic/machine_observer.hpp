@@ -34,7 +34,9 @@ enum class StopReason : std::uint8_t {
     missed_impulse,
     sequence_stall,
     bad_punch,
-    soft_limit,
+    soft_limit,        // the job's movement range (soft limits, after EP 0360190; an addition)
+    limit_switch,      // a part reached a travel-limit switch (travel_min_in / travel_max_in; an
+                       // addition)
     condition_not_met, // a condition card's condition was not met by the end of its motion card
     condition_refused, // the cabinet cannot take a condition card (profile, deck, buffer)
     sync_timeout,      // press synchronisation: the crank never came, or stood (an addition)

@@ -16,6 +16,8 @@ std::string_view stop_reason_name(StopReason r) {
         return "bad_punch";
     case StopReason::soft_limit:
         return "soft_limit";
+    case StopReason::limit_switch:
+        return "limit_switch";
     case StopReason::condition_not_met:
         return "condition_not_met";
     case StopReason::condition_refused:

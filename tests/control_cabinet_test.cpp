@@ -308,8 +308,35 @@ TEST_CASE("Travel limits: an axis that runs past its limit stops the machine", "
     c.axis(Axis::table).check = 9900;             // what the counters would count
     RunResult r = run_orders({c});
     REQUIRE(r.stop);
-    CHECK(r.stop->reason == StopReason::soft_limit);
+    CHECK(r.stop->reason == StopReason::limit_switch);
     CHECK(r.axes.at(0).real_in <= -0.5);
+}
+
+TEST_CASE("Travel limits: a part at its limit switch stops with limit_switch and the limit-switch "
+          "lamp, and the movement range keeps soft_limit",
+          "[cabinet][limits]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 100, 3, {}, {}, 1);
+    c.axis(Axis::table).motion = Motion::reverse; // counts down from 0.000 through 9.999
+    c.axis(Axis::table).check = 9900;
+    const RunResult r = run_orders({c});
+    REQUIRE(r.stop);
+    CHECK(std::string(stop_reason_name(r.stop->reason)) == "limit_switch");
+    CHECK(r.stop->lamps ==
+          std::vector<std::string>{"indicator 268", "limit-switch lamp (table; an addition)"});
+    // A movement range the same card would pass: soft_limit, before anything moves.
+    auto p = parsons::axes::default_profile();
+    p.axes.at(0).soft_limits = true;
+    p.axes.at(0).soft_min_in = -0.05;
+    p.axes.at(0).soft_max_in = 5.0;
+    const RunResult soft = run_orders({c}, p);
+    REQUIRE(soft.stop);
+    CHECK(std::string(stop_reason_name(soft.stop->reason)) == "soft_limit");
+    CHECK(soft.axes.at(0).impulses == 0);
+    // The stop codes page gives each a row of its own.
+    const std::string codes = read_bytes(source_path("docs/stop-codes.md"));
+    CHECK(codes.find("| `limit_switch` |") != std::string::npos);
+    CHECK(codes.find("| `soft_limit` |") != std::string::npos);
 }
 
 TEST_CASE("Bad punch: in parsons-safe a double punch stops the machine naming card and column, "

@@ -127,7 +127,8 @@ std::vector<Example> page_commands(const std::string& markdown) {
         const std::string line = raw.substr(4);
         if (!pending.empty()) {
             pending += " " + trim(line);
-        } else if (line.rfind("build/cli/parsons ", 0) == 0 || line.rfind("mkdir ", 0) == 0) {
+        } else if (line.rfind("build/cli/parsons ", 0) == 0 || line.rfind("mkdir ", 0) == 0 ||
+                   line.rfind("awk ", 0) == 0) {
             pending = line;
             in_block = true;
         } else if (in_block && !out.empty()) {

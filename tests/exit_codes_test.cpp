@@ -201,7 +201,7 @@ TEST_CASE("Exit codes: check exits 3 exactly when the machine will stop on the d
         {"slow-downs a thousandth apart",
          std::string(kHeader) + "1,0,table,+,1,8.983,8.984,8.985,8.985,1\n" + idle_rest(1) +
              "2,0,table,+,3,,,9.085,0.100,1\n" + idle_rest(2),
-         3, "the machine stops at card 1 (number 0001), table: soft_limit"},
+         3, "the machine stops at card 1 (number 0001), table: limit_switch"},
         {"a stop met on speed 2: observed, and the deck runs through",
          std::string(kHeader) + "1,0,table,+,2,,,0.300,0.300,1\n" + idle_rest(1), 0,
          "observed: table: it met its stop 0.300 on speed 2: relay 256 only stepped 236 on to "

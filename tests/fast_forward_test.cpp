@@ -405,7 +405,7 @@ TEST_CASE("Fast-forward: decks that run into the lower limit switch stop on the 
         const RunResult reference = run_at(c, Pace::impulse_level, nullptr);
         const RunResult jumped = run_at(c, Pace::fast_forward, nullptr);
         require_same(reference, jumped);
-        if (reference.stop && reference.stop->reason == StopReason::soft_limit) {
+        if (reference.stop && reference.stop->reason == StopReason::limit_switch) {
             ++at_limit;
             CHECK_THAT(reference.stop->message, Catch::Contains("travel limit"));
         }

@@ -104,7 +104,7 @@ TEST_CASE("Check: slow-downs a thousandth before the stop are told as the relays
     auto close = run_parsons("check " + q(dir.str("close.csv")));
     INFO(close.output);
     CHECK(close.exit_code == 3);
-    CHECK(close.output.find("the machine stops at card 1 (number 0001), table: soft_limit") !=
+    CHECK(close.output.find("the machine stops at card 1 (number 0001), table: limit_switch") !=
           std::string::npos);
     CHECK(close.output.find("at 8.983 the absolute comparer 122' met slow-down 1 at 8.983: relay "
                             "256 stepped 236 from speed 1 to speed 2; at 8.985 the increment "
@@ -118,7 +118,7 @@ TEST_CASE("Check: slow-downs a thousandth before the stop are told as the relays
     // The machine agrees: the close deck stops on card 1, the far one completes.
     auto ran = run_parsons("run -q " + q(dir.str("close.csv")));
     CHECK(ran.exit_code == 3);
-    CHECK(ran.output.find("soft_limit: card 1 (number 0001), table") != std::string::npos);
+    CHECK(ran.output.find("limit_switch: card 1 (number 0001), table") != std::string::npos);
     CHECK(run_parsons("run -q " + q(dir.str("far.csv"))).exit_code == 0);
     // A profile that brakes hard does not help: the stop is never met.
     write_bytes(dir.path("hard.json"), R"({"axes": {"table": {"braking_in_per_s2": 10.0}}})");

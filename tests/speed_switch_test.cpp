@@ -153,7 +153,7 @@ TEST_CASE("Delay 258: numbers passed while it holds channel 257 open are missed:
     const CardOrders c = table_card(1, 2983, 2984, 2985, 2985);
     RunResult r = run_orders({c});
     REQUIRE(r.stop);
-    CHECK(r.stop->reason == StopReason::soft_limit);
+    CHECK(r.stop->reason == StopReason::limit_switch);
     CHECK(r.axes.at(0).real_in > 10.0);
 }
 

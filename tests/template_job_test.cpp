@@ -179,7 +179,11 @@ TEST_CASE("Template: the same deck with its slow-downs stripped stops with check
     // and it runs on past its stop: the machine stops, somewhere it should not have gone.
     const auto run = run_orders(deck.cards);
     REQUIRE(run.stop);
-    CHECK(run.stop->reason != relaylogic::StopReason::out_of_order_card);
+    // The tutorial's words (docs/tutorial.md, step 4): card 2's table goes round its counters
+    // twice and reaches its limit switch.
+    CHECK(run.stop->reason == relaylogic::StopReason::limit_switch);
+    CHECK(run.stop->card == 2);
+    CHECK(run.stop->axis == cardreader::Axis::table);
     // The earlier reading (an incremental equality stops at any speed) stops it at speed 1:
     // it coasts past the stop and a later card's check fails.
     auto earlier = axes::default_profile();
