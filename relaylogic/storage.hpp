@@ -1,4 +1,7 @@
-// Storage: banks of holding relays (Fig. 13) set by the card reader, one bank per digit.
+// Storage: banks of holding relays (Fig. 13) set by the card reader, one bank per digit: the
+// patent's "card number storage unit 136", the "storage and comparer unit 136" of Figs. 2, 11
+// and 12 ("In the card storage unit 136 there are provided a number of banks of relay switches
+// indicated in Fig. 12 at 350, 352, 354 and 356").
 //
 // A holding relay (coil 368) closes on an impulse from the reader's brushes and holds until
 // the zeroizing circuit's clearing channel 294 momentarily de-energizes the coils.

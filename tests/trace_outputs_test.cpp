@@ -620,3 +620,53 @@ TEST_CASE("Patent map: every numeral a trace signal carries is listed in docs/pa
         }
     }
 }
+
+TEST_CASE("Patent map: numerals 28, 114 to 120 and 136 are on rows of US 2,820,187's own "
+          "sections that name their files, and 268 is there as circuit and as indicator",
+          "[docs][trace]") {
+    std::ifstream map(std::string(PARSONS_SOURCE_DIR) + "/docs/patent-map.md");
+    REQUIRE(map);
+    const std::regex row(R"(^\|([^|]*)\|([^|]*)\|.*\|\s*$)");
+    const std::regex source_file(R"(`[a-z_0-9/]+\.(hpp|cpp)`)");
+    const std::regex number(R"(\d+)");
+    const std::regex range("(\\d+)\\s*(?:–|-)\\s*(\\d+)");
+    std::set<int> listed;
+    std::string parts_268;
+    std::string section;
+    std::string line;
+    while (std::getline(map, line)) {
+        if (line.rfind("## ", 0) == 0) {
+            section = line;
+            continue;
+        }
+        // The patent's own sections: not EP 0640901, 0436887, 0360190, nor the additions.
+        const bool us = section.find("EP 0") == std::string::npos &&
+                        section.find("additions") == std::string::npos;
+        std::smatch m;
+        if (!us || !std::regex_match(line, m, row) || !std::regex_search(line, source_file)) {
+            continue;
+        }
+        const std::string first = m[1];
+        std::set<int> here;
+        for (std::sregex_iterator it(first.begin(), first.end(), number), end; it != end; ++it) {
+            here.insert(std::stoi(it->str()));
+        }
+        for (std::sregex_iterator it(first.begin(), first.end(), range), end; it != end; ++it) {
+            for (int n = std::stoi((*it)[1]); n <= std::stoi((*it)[2]); ++n) {
+                here.insert(n);
+            }
+        }
+        listed.insert(here.begin(), here.end());
+        if (here.count(268) == 1) {
+            parts_268 += m[1].str() + m[2].str() + "\n";
+        }
+    }
+    for (int n : {28, 114, 116, 118, 120, 136, 268}) {
+        INFO("numeral " << n);
+        CHECK(listed.count(n) == 1);
+    }
+    // The patent gives 268 to circuit 268 (contact 238 and comparers 122', 122'' to balancing
+    // circuit 266 and channel 274) and to the indicator of circuit 262-264.
+    INFO(parts_268);
+    CHECK_THAT(parts_268, Catch::Contains("circuit 268") && Catch::Contains("indicator"));
+}
