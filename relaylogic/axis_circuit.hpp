@@ -39,10 +39,12 @@ struct AxisCircuit {
     // comparer conducts (col. 11). With the interpretation lamps_only_on_trip they light only
     // once balancing circuit 266 has tripped (tripped = true).
     void show_lamps() {
-        const bool lit = speed_switch.off() && (!lamps_only_on_trip_ || tripped);
-        tracer.set(lamp_270_, lit && absolute_conducting ? 1 : 0);
-        tracer.set(lamp_272_, lit && incremental_conducting ? 1 : 0);
+        tracer.set(lamp_270_, lamp_270_lit() ? 1 : 0);
+        tracer.set(lamp_272_, lamp_272_lit() ? 1 : 0);
     }
+    bool lamp_270_lit() const { return lamps_live() && absolute_conducting; }
+    bool lamp_272_lit() const { return lamps_live() && incremental_conducting; }
+    bool lamps_live() const { return speed_switch.off() && (!lamps_only_on_trip_ || tripped); }
     void set_powered(bool on);
     // Commutators 96, 98, 100, 102 (gear train 82-92), each with two contact sets A and B: a
     // set's contact changes over at each impulse it sends (segments alternate round the

@@ -42,8 +42,6 @@ bool BalancingCircuit::check_at_stop(bool absolute, bool incremental) {
     }
     tracer_.set(circuit_266_, 1); // the cause, then its effects: 265, 204, 268
     trip();
-    lamps_.push_back(absolute ? "lamp 270 (absolute comparer 122' conducting)"
-                              : "lamp 272 (incremental comparer 122'' conducting)");
     return false;
 }
 

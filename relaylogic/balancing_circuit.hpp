@@ -31,7 +31,9 @@ public:
     // The operator opened master switch 204 by hand (Ctrl-C, SIGTERM): no check fired, so
     // electromagnet 265 stays still, indicator 268 silent and no lamp of the stop lights.
     void open_by_operator();
-    // The lamps lit now, as an operator would read them off the panel.
+    // Indicator 268 sounding (a check tripped the circuit), then the check lamps the additions
+    // lit (light()); lamps 270 and 272 are each axis's (AxisCircuit::lamp_270_lit), and the
+    // cabinet reads the whole panel (ControlCabinet::panel_lamps).
     std::vector<std::string> lamps() const { return lamps_; }
     void light(const std::string& lamp) { lamps_.push_back(lamp); }
 

@@ -222,6 +222,10 @@ private:
     SteppingSwitch& switch_numbered(AxisCircuit& c, int numeral);
     // control_cabinet_state.cpp
     RunResult result() const;
+    // The panel as an operator reads it now, as the trace shows it: indicator 268 if it sounds,
+    // lamps 270 and 272 of each axis whose switch 236 stands on off while its comparer conducts
+    // (col. 11), then the check lamps of the additions.
+    std::vector<std::string> panel_lamps() const;
     nlohmann::json capture() const;
 
     axes::MachineProfile profile_;

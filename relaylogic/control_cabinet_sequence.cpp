@@ -120,7 +120,7 @@ void ControlCabinet::machine_stop(StopReason reason, std::optional<Axis> axis,
     info.card_number = orders_.number;
     info.axis = axis;
     info.message = message;
-    info.lamps = balancing_.lamps();
+    info.lamps = panel_lamps();
     stop_ = info;
     if (record_times_ && !timings_.empty()) {
         timings_.back().end_s = now_;

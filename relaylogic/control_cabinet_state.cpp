@@ -84,12 +84,38 @@ void ControlCabinet::resume(const nlohmann::json& j) {
     resuming_ = true;
 }
 
+std::vector<std::string> ControlCabinet::panel_lamps() const {
+    std::vector<std::string> lamps;
+    const std::vector<std::string> lit = balancing_.lamps();
+    auto check_lamps = lit.begin();
+    if (check_lamps != lit.end() && *check_lamps == "indicator 268") {
+        lamps.push_back(*check_lamps++);
+    }
+    for (const auto& c : circuits_) {
+        const std::string_view axis = cardreader::axis_name(c->axis);
+        if (c->lamp_270_lit()) {
+            lamps.push_back(fmt::format("{} lamp 270 (absolute comparer 122' conducting)", axis));
+        }
+        if (c->lamp_272_lit()) {
+            lamps.push_back(
+                fmt::format("{} lamp 272 (incremental comparer 122'' conducting)", axis));
+        }
+    }
+    lamps.insert(lamps.end(), check_lamps, lit.end());
+    return lamps;
+}
+
 RunResult ControlCabinet::result() const {
     RunResult r;
     r.completed = deck_finished_ && !stop_;
     r.cards_read = cards_read_;
     r.machine_seconds = now_;
     r.stop = stop_;
+    if (r.stop) {
+        // The report's lamps are the panel at the end, every axis at rest: a lamp whose
+        // comparer stopped conducting as its axis coasted off the number is dark by then.
+        r.stop->lamps = panel_lamps();
+    }
     r.cards = timings_;
     r.faults = effects_;
     for (const auto& a : attachments_) {

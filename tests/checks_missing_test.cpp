@@ -51,7 +51,7 @@ TEST_CASE("Fault stuck-relay: the relay holds through zeroizing and makes its sp
     CHECK(r.stop->reason == StopReason::check_mismatch);
     CHECK(r.stop->card == 2);
     CHECK(r.axes.at(0).counter_in == Approx(0.500));
-    CHECK(r.stop->lamps.back() == "lamp 270 (absolute comparer 122' conducting)");
+    CHECK(r.stop->lamps.back() == "table lamp 270 (absolute comparer 122' conducting)");
 }
 
 TEST_CASE("Card order: 0000 follows 9999 and is accepted, 0001 after 9999 stops the machine",

@@ -173,7 +173,7 @@ TEST_CASE("Checks: a check too large stops with only the absolute comparer condu
     REQUIRE(r.stop);
     CHECK(r.stop->reason == StopReason::check_mismatch);
     CHECK(r.stop->axis == Axis::table);
-    CHECK(r.stop->lamps == std::vector<std::string>{"indicator 268", "lamp 270 (absolute "
+    CHECK(r.stop->lamps == std::vector<std::string>{"indicator 268", "table lamp 270 (absolute "
                                                                      "comparer 122' conducting)"});
     CHECK(r.axes.at(0).counter_in == Approx(0.100));
 }
@@ -187,8 +187,8 @@ TEST_CASE("Checks: a check too small stops early with only the incremental compa
     REQUIRE(r.stop);
     CHECK(r.stop->reason == StopReason::check_mismatch);
     CHECK(r.stop->lamps == std::vector<std::string>{"indicator 268",
-                                                    "lamp 272 (incremental comparer 122'' "
-                                                    "conducting)"});
+                                                    "table lamp 272 (incremental comparer "
+                                                    "122'' conducting)"});
     CHECK(r.axes.at(0).counter_in == Approx(0.090));
 }
 
@@ -386,7 +386,7 @@ TEST_CASE("Bad punch: in parsons-1952 a double punch in a digit column closes tw
         RunResult rr = c2.run(d2);
         REQUIRE(rr.stop); // at 0.100 comparer 122'' alone conducts: speed 3 steps to off
         CHECK(rr.stop->reason == StopReason::check_mismatch);
-        CHECK(rr.stop->lamps.back() == "lamp 272 (incremental comparer 122'' conducting)");
+        CHECK(rr.stop->lamps.back() == "table lamp 272 (incremental comparer 122'' conducting)");
         CHECK(rr.axes.at(0).counter_in == Approx(0.100));
         CHECK(r2.value.at("table.incremental_storage_322.relay_1") == 1);
         CHECK(r2.value.at("table.incremental_storage_322.relay_3") == 1);
@@ -551,11 +551,9 @@ TEST_CASE("Balancing circuit 266: when it trips, indicator 268 is listed first a
         tracer.attach(&rec);
         CHECK_FALSE(b.check_at_stop(absolute, !absolute));
         CHECK_FALSE(b.master_switch_closed());
-        CHECK(b.lamps() ==
-              std::vector<std::string>{"indicator 268",
-                                       absolute ? "lamp 270 (absolute comparer 122' conducting)"
-                                                : "lamp 272 (incremental comparer 122'' "
-                                                  "conducting)"});
+        // The circuit sounds indicator 268; the comparer's lamp is its axis's (270 or 272,
+        // AxisCircuit::lamp_270_lit), which the cabinet's panel lists after the indicator.
+        CHECK(b.lamps() == std::vector<std::string>{"indicator 268"});
         std::vector<std::string> order;
         for (const auto& ch : rec.changes) {
             order.push_back(ch.signal);
@@ -628,4 +626,47 @@ TEST_CASE("Profile: limit switches at one place (travel_min_in equal to travel_m
         Catch::Contains("travel_min_in must be below travel_max_in"));
     CHECK_NOTHROW(profile_from_json(
         R"({"axes": {"tilt": {"travel_min_in": 2, "travel_max_in": 2.001}}})", default_profile()));
+}
+
+TEST_CASE("Lamps: the report's lamps are the panel at the end, as the trace shows it: every "
+          "axis's lamps 270 and 272, and a lamp gone dark as its axis coasted off the number",
+          "[cabinet][lamps][mutation]") {
+    // The table trips at its stop 0.100 (check 0.200: only 122' conducts); the other axes
+    // stand still (check 0).
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 100, 3, {}, {}, 1);
+    c.axis(Axis::table).check = 200;
+    auto coasting = parsons::axes::default_profile();
+    coasting.axes.at(0).braking_in_per_s2 = 0.002; // a heavy table: it coasts off 0.100
+    for (const auto& profile : {parsons::axes::default_profile(), coasting}) {
+        Recorder rec;
+        const RunResult r = run_orders({c}, profile, &rec);
+        REQUIRE(r.stop);
+        REQUIRE(r.stop->reason == StopReason::check_mismatch);
+        // The lamps the trace shows lit at the end, in the report's words.
+        std::vector<std::string> lit;
+        if (rec.value.at("cabinet.indicator_268") == 1) {
+            lit.emplace_back("indicator 268");
+        }
+        for (Axis a : kAxes) {
+            const std::string axis(axis_name(a));
+            if (rec.value.at(axis + ".lamp_270") == 1) {
+                lit.push_back(axis + " lamp 270 (absolute comparer 122' conducting)");
+            }
+            if (rec.value.at(axis + ".lamp_272") == 1) {
+                lit.push_back(axis + " lamp 272 (incremental comparer 122'' conducting)");
+            }
+        }
+        CHECK(r.stop->lamps == lit);
+        const bool coasted = profile.axes.at(0).braking_in_per_s2 < 0.01;
+        INFO("coasting " << coasted);
+        CHECK(r.axes.at(0).counter_in > (coasted ? 0.11 : 0.0995));
+        // The table's lamp 270: lit where it stopped on 0.100, dark once it coasted off.
+        const bool table_270 =
+            std::find(lit.begin(), lit.end(),
+                      "table lamp 270 (absolute comparer 122' conducting)") != lit.end();
+        CHECK(table_270 == !coasted);
+        // The same lamps without an observer (the cabinet reads its panel, not the trace).
+        CHECK(run_orders({c}, profile).stop->lamps == lit);
+    }
 }

@@ -67,7 +67,7 @@ TEST_CASE("Run: a wrong check exits 3 with a summary naming card, axis, reason a
     CHECK(r.output.find("status         STOPPED: check_mismatch") != std::string::npos);
     CHECK(r.output.find("card           2 (number 0002)") != std::string::npos);
     CHECK(r.output.find("axis           table") != std::string::npos);
-    CHECK(r.output.find("lamps lit      indicator 268, lamp 270 (absolute comparer 122' "
+    CHECK(r.output.find("lamps lit      indicator 268, table lamp 270 (absolute comparer 122' "
                         "conducting)") != std::string::npos);
     const auto report = nlohmann::json::parse(read_bytes(dir.path("r.json")));
     CHECK(report["status"] == "stopped");

@@ -49,8 +49,8 @@ CardOrders table_card(int speed, std::optional<int> slow1, std::optional<int> sl
     return c;
 }
 
-const std::string kLamp270 = "lamp 270 (absolute comparer 122' conducting)";
-const std::string kLamp272 = "lamp 272 (incremental comparer 122'' conducting)";
+const std::string kLamp270 = "table lamp 270 (absolute comparer 122' conducting)";
+const std::string kLamp272 = "table lamp 272 (incremental comparer 122'' conducting)";
 
 } // namespace
 
@@ -79,8 +79,12 @@ TEST_CASE("Interpretation incremental_equality_stops_at_any_speed: the earlier r
     CHECK(comparer_steps(rec, 1) == Steps{{1000, 0}});
     REQUIRE(r.stop);
     CHECK(r.stop->reason == StopReason::check_mismatch);
-    CHECK(r.stop->lamps == std::vector<std::string>{"indicator 268", kLamp272});
     CHECK(r.axes.at(0).counter_in == Approx(1.020).margin(0.002)); // it coasts from speed 1
+    // Lamp 272 lit at the stop, and went dark as the table coasted off 1.000: the report
+    // gives the panel at the end, as the trace shows it.
+    CHECK(rec.of("table.lamp_272").size() == 2);
+    CHECK(rec.value.at("table.lamp_272") == 0);
+    CHECK(r.stop->lamps == std::vector<std::string>{"indicator 268"});
 }
 
 TEST_CASE("Check: a check equal to the travel to a slow-down is caught on its own card, lamp 270 "
@@ -128,7 +132,9 @@ TEST_CASE("Delay 258: a hold too short for the equality steps the switch twice o
     CHECK(steps[3].t - steps[2].t == Approx(0.005));
     REQUIRE(r.stop);
     CHECK(r.stop->reason == StopReason::check_mismatch);
-    CHECK(r.stop->lamps == std::vector<std::string>{"indicator 268", kLamp270});
+    // Lamp 270 lit at the stop and went dark as the table coasted off 2.885 from speed 2.
+    CHECK(rec.value.at("table.lamp_270") == 0);
+    CHECK(r.stop->lamps == std::vector<std::string>{"indicator 268"});
 
     SECTION("the default hold outlasts an equality at the slowest speed, and the card completes") {
         const MachineProfile p = default_profile();
