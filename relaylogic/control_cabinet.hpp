@@ -210,6 +210,9 @@ private:
     void run_impulses();
     // control_cabinet_sequence.cpp: stops, stepping shaft 280, the sequence
     void stop_axis(AxisCircuit& c);
+    // Balancing circuit 266 through contact 238: an axis whose switch 236 stands on off with
+    // one comparer conducting trips it (`when`: what the cabinet was doing). True if it tripped.
+    bool watch_balance(AxisCircuit& c, std::string_view when);
     void release_after_stop(const AxisCircuit& c);
     void shaft_step();
     void shaft_home();

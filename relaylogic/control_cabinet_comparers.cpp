@@ -184,6 +184,8 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     c.compare();
     if (!c.absolute_conducting && !c.incremental_conducting) {
         c.speed_switch.equality_left(now_);
+    } else if (watch_balance(c, "while it stood on off and its counters counted")) {
+        return false; // balancing circuit 266 through contact 238 (a coast, a second match)
     } else {
         quiet = evaluate(c) && quiet;
     }

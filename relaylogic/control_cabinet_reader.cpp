@@ -211,6 +211,13 @@ void ControlCabinet::relays_pick() {
         }
         c->compare();
     }
+    // Every relay has picked: balancing circuit 266 sees each axis through contact 238 (236
+    // stands on off until the second bank), before any motor starts.
+    for (auto& c : circuits_) {
+        if (watch_balance(*c, "as the card was read, before any motor started")) {
+            break;
+        }
+    }
     for (const auto& a : attachments_) {
         a->relays_picked(*this);
     }

@@ -59,6 +59,34 @@ void ControlCabinet::stop_axis(AxisCircuit& c) {
     }
 }
 
+// "The latter [balancing circuit 266] is also connected by circuit 268 with the absolute and
+// incremental comparers 122' and 122'' and the contact 238 at the "off" position of the speed
+// switch contactor 236. If the absolute and incremental comparers are out of comparison, the
+// resulting unbalance causes the vacuum tube circuit 266 to activate the error checking circuit
+// and energize the electromagnet 265 and open the master switch" (col. 13). Contact 238 is
+// closed whenever 236 stands on off: from zeroizing until the second bank steps the switch
+// (the card being read), and from an axis's stop until zeroizing (docs/design-rules.md rule 6).
+bool ControlCabinet::watch_balance(AxisCircuit& c, std::string_view when) {
+    if (stop_ || !c.speed_switch.off() || c.absolute_conducting == c.incremental_conducting ||
+        !balancing_.master_switch_closed()) {
+        return false;
+    }
+    const bool absolute = c.absolute_conducting;
+    balancing_.check_at_stop(absolute, c.incremental_conducting);
+    c.tripped = true;
+    c.show_lamps();
+    machine_stop(StopReason::check_mismatch, c.axis,
+                 fmt::format("{}, {}: {}, with speed switch 236 on off (contact 238), only the {} "
+                             "conducted: absolute counter {} (stop {}), increment counter {} "
+                             "(check {}); balancing circuit 266 opened master switch 204",
+                             card_name(), axis_name(c.axis), when,
+                             absolute ? "absolute comparer 122'" : "incremental comparer 122''",
+                             inches(c.absolute_counter.value()), inches(c.order.stop),
+                             inches(c.increment_counter.value()), inches(c.order.check)),
+                 "");
+    return true;
+}
+
 // Delay 258 holds channel 257 after the stop too. Its release drops relay 256 and the hold
 // (trace signals), reads the comparers again and, if neither conducts, notes that the equality
 // has left; none of it can act on the axis, which is not live (stopped) until zeroizing resets

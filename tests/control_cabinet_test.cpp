@@ -670,3 +670,35 @@ TEST_CASE("Lamps: the report's lamps are the panel at the end, as the trace show
         CHECK(run_orders({c}, profile).stop->lamps == lit);
     }
 }
+
+TEST_CASE("Balancing circuit 266 through contact 238: a card whose numbers make one comparer "
+          "conduct where its axis stands trips the machine as it is read, before any motor "
+          "starts",
+          "[cabinet][check][fig10][mutation]") {
+    // The table stands at 0.000, its stop 0.000 but its check 0.100: comparer 122' conducts
+    // as the relays pick, 122'' does not. The cross would move 0.100 (each axis at its own
+    // position, as idle_card punches them).
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table).check = 100;
+    c.axis(Axis::cross) = order(0, 100, 3, {}, {}, idle_card(1, {}).axis(Axis::cross).sequence);
+    Recorder rec;
+    const auto profile = parsons::axes::default_profile();
+    const RunResult r = run_orders({c}, profile, &rec);
+    REQUIRE(r.stop);
+    CHECK(r.stop->reason == StopReason::check_mismatch);
+    CHECK(r.stop->axis == Axis::table);
+    CHECK(r.stop->card == 1);
+    CHECK_THAT(r.stop->message, Catch::Contains("as the card was read, before any motor started, "
+                                                "with speed switch 236 on off (contact 238), only "
+                                                "the absolute comparer 122' conducted"));
+    const auto tripped = rec.of("cabinet.balancing_circuit_266");
+    REQUIRE(tripped.size() == 1);
+    CHECK(tripped.front().t == Approx(profile.first_bank_s + profile.relay_operate_s));
+    CHECK(r.axes.at(1).impulses == 0); // the cross never ran
+    for (const char* motor : {"table.motor_38", "cross.motor_50"}) {
+        CHECK(rec.of(motor).empty());
+    }
+    // A card in balance (check 0 where the table stands) runs through.
+    c.axis(Axis::table).check = 0;
+    CHECK(run_orders({c}).completed);
+}
