@@ -377,7 +377,7 @@ TEST_CASE("Ribbon: run --feed ribbon and a tape deck save the feed gaps, a .five
 
 TEST_CASE("Five cards: each card of a step takes a card cycle of the reader and the motors start "
           "after the fifth (col. 6: one card a step is preferred 'from the standpoint of economy "
-          "and speed'); on a ribbon each card saves its gap",
+          "and speed'), and on a ribbon each card saves its gap",
           "[five][media][ribbon][cabinet]") {
     auto profile = axes::default_profile();
     profile.ribbon_feed = GENERATE(false, true);
