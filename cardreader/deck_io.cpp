@@ -35,6 +35,7 @@ public:
         any_ = true;
         return card;
     }
+    int cards_a_step() const override { return inner_->cards_a_step(); }
 
 private:
     std::unique_ptr<CardSource> inner_;

@@ -60,6 +60,9 @@ public:
     virtual ~CardSource() = default;
     // The next card, or nothing at the end of the deck. Throws DeckError naming where.
     virtual std::optional<Card> next() = 0;
+    // How many physical cards pass the reader for each card next() returns: one, or five for
+    // five separate cards a step (col. 6), each of which takes a card cycle of its own.
+    virtual int cards_a_step() const { return 1; }
 };
 
 class CardSink {

@@ -101,6 +101,8 @@ public:
         return assemble(step, where);
     }
 
+    int cards_a_step() const override { return kAxisCount; }
+
 private:
     std::size_t axis_of(const Card& card) const {
         const ColumnWord m = card.column(kAxisMarkColumn);

@@ -10,9 +10,10 @@
 //
 // The file is column binary (.cbn encoding), five cards a step, in any order within the
 // step. The reader reassembles the five into the one card of the layout, so the cabinet
-// senses the same holes either way; the writer splits a card into five.
-// Emulation note: the five cards of a step reach the cabinet as one card, in one card cycle;
-// the patent's remark that one card a step is faster ("economy and speed") is not modelled.
+// senses the same holes either way; the writer splits a card into five. The source says it
+// passes five cards a step (cards_a_step()), and the cabinet gives each a card cycle, so the
+// motors start after the fifth: why the patent prefers one card "from the standpoint of
+// economy and speed" (ControlCabinet::feed, relaylogic/control_cabinet_reader.cpp).
 #pragma once
 
 #include "cardreader/deck_io.hpp"

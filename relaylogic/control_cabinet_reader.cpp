@@ -51,11 +51,25 @@ void ControlCabinet::feed() {
     orders_.number = -1;
     tracer_.set(reader_card_, static_cast<std::uint32_t>(cards_read_));
     tracer_.set(reader_feeding_, 1);
+    // Col. 6: "Five separate cards, one for each lead screw, may be employed if desired.
+    // However, it is desirable from the standpoint of economy and speed to condense the punched
+    // information into a single card for a given position of the parts controlled by the five
+    // lead screws." Each card of such a step passes the brushes in a card cycle of its own, and
+    // the motors may run only once the fifth is read ("when all five axes speed switches 236
+    // are thus set", col. 12): the banks are timed in the step's last cycle.
+    // Emulation note: the brushes sense the five cards of a step together, as the one card they
+    // reassemble into, in the fifth card's cycle (the holding relays of Fig. 13 would keep each
+    // axis's orders from its own card's cycle): the checks of the first bank (card number, bad
+    // punch, movement range) are made once a step, that late. The motors run the same.
+    const int cards = std::max(1, deck_->cards_a_step());
+    const double earlier = (cards - 1) * profile_.reader_cycle_s;
     // Fig. 9: on a ribbon (or tape) the next card follows with no gap; it is sensed sooner.
-    const double gap = profile_.ribbon_feed && cards_read_ > 1 ? profile_.feed_gap_s : 0.0;
-    schedule(now_ + (profile_.first_bank_s - gap), EventKind::first_bank);
-    schedule(now_ + (profile_.second_bank_s - gap), EventKind::second_bank);
-    schedule(now_ + (profile_.reader_cycle_s - gap), EventKind::read_complete);
+    // Every physical card but the deck's first saves the gap (so four in a first step of five).
+    const int gaps = !profile_.ribbon_feed ? 0 : cards_read_ > 1 ? cards : cards - 1;
+    const double gap = gaps * profile_.feed_gap_s;
+    schedule(now_ + (earlier + profile_.first_bank_s - gap), EventKind::first_bank);
+    schedule(now_ + (earlier + profile_.second_bank_s - gap), EventKind::second_bank);
+    schedule(now_ + (earlier + profile_.reader_cycle_s - gap), EventKind::read_complete);
 }
 
 void ControlCabinet::first_bank() {

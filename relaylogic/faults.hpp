@@ -80,6 +80,7 @@ public:
     FaultyFeed(cardreader::CardSource& deck, std::vector<Fault> faults,
                std::vector<FaultEffect*> effects);
     std::optional<cardreader::Card> next() override;
+    int cards_a_step() const override { return deck_.cards_a_step(); }
 
 private:
     std::optional<cardreader::Card> pull();

@@ -67,6 +67,30 @@ relaylogic::RunResult run_sample(axes::MachineProfile profile, relaylogic::Pace 
     return cabinet.run(*deck);
 }
 
+// The same sample, punched on cards (.cbn) or five cards a step (.five), from the file's bytes.
+relaylogic::RunResult run_sample_on(DeckFormat format, axes::MachineProfile profile,
+                                    relaylogic::Pace pace) {
+    const auto cards =
+        read_deck(read_bytes(source_path("decks/samples/patent-example.csv")), DeckFormat::listing);
+    std::istringstream in(write_deck(cards, format));
+    DeckOptions options;
+    options.format = format;
+    auto deck = open_card_source(in, options);
+    relaylogic::ControlCabinet cabinet(std::move(profile), fig8_layout());
+    cabinet.set_pace(pace);
+    cabinet.record_card_times(true);
+    return cabinet.run(*deck);
+}
+
+void check_same_end(const relaylogic::RunResult& a, const relaylogic::RunResult& b) {
+    for (std::size_t i = 0; i < 5; ++i) {
+        INFO(axis_name(kAxes.at(i)));
+        CHECK(a.axes.at(i).counter_in == b.axes.at(i).counter_in);
+        CHECK(a.axes.at(i).real_in == Approx(b.axes.at(i).real_in).margin(1e-12));
+        CHECK(a.axes.at(i).impulses == b.axes.at(i).impulses);
+    }
+}
+
 } // namespace
 
 TEST_CASE("Tape: a column is two frames, rows 12-3 then 4-9 in channels 6..1, odd parity in "
@@ -311,14 +335,16 @@ TEST_CASE("Ribbon: a deck fed as a ribbon (Fig. 9) takes exactly the feed gaps l
     }
 }
 
-TEST_CASE("Ribbon: run --feed ribbon and a tape deck save the feed gaps, --feed cards on tape is "
-          "refused",
+TEST_CASE("Ribbon: run --feed ribbon and a tape deck save the feed gaps, a .five deck takes four "
+          "card cycles more a step, --feed cards on tape is refused",
           "[media][ribbon][cli]") {
     TempDir dir;
     REQUIRE(run_parsons("punch " + q(source_path("decks/samples/patent-example.csv")) + " -o " +
                         q(dir.str("deck.cbn")))
                 .exit_code == 0);
     REQUIRE(run_parsons("convert " + q(dir.str("deck.cbn")) + " -o " + q(dir.str("deck.tape")))
+                .exit_code == 0);
+    REQUIRE(run_parsons("convert " + q(dir.str("deck.cbn")) + " -o " + q(dir.str("deck.five")))
                 .exit_code == 0);
     auto seconds = [&](const std::string& args) {
         auto r = run_parsons("run -q " + args + " --report " + q(dir.str("r.json")));
@@ -336,10 +362,79 @@ TEST_CASE("Ribbon: run --feed ribbon and a tape deck save the feed gaps, --feed 
     CHECK(cards - ribbon == Approx(3 * gap).margin(1e-6));
     CHECK(tape == Approx(ribbon).margin(1e-9));
     CHECK(seconds(q(dir.str("deck.cbn")) + " --feed cards") == Approx(cards).margin(1e-9));
+    // Five cards a step (col. 6): four more card cycles a step; on a ribbon 19 gaps fewer (4 in
+    // the first step, 5 in each of the 3 others).
+    const double cycle = axes::default_profile().reader_cycle_s;
+    const double five = seconds(q(dir.str("deck.five")));
+    CHECK(five - cards == Approx(4 * 4 * cycle).margin(2e-6));
+    CHECK(five - seconds(q(dir.str("deck.five")) + " --feed ribbon") ==
+          Approx(19 * gap).margin(2e-6));
     auto refused = run_parsons("run " + q(dir.str("deck.tape")) + " --feed cards");
     CHECK(refused.exit_code == 2);
     CHECK(refused.output.find("deck.tape: --feed cards: a tape deck has no separate cards") !=
           std::string::npos);
+}
+
+TEST_CASE("Five cards: each card of a step takes a card cycle of the reader and the motors start "
+          "after the fifth (col. 6: one card a step is preferred 'from the standpoint of economy "
+          "and speed'), and on a ribbon each card saves its gap",
+          "[five][media][ribbon][cabinet]") {
+    auto profile = axes::default_profile();
+    profile.ribbon_feed = GENERATE(false, true);
+    const double cycle = profile.reader_cycle_s;
+    const double gap = profile.feed_gap_s;
+    const auto one = run_sample_on(DeckFormat::cbn, profile, relaylogic::Pace::fast_forward);
+    const auto five = run_sample_on(DeckFormat::five, profile, relaylogic::Pace::fast_forward);
+    REQUIRE(one.completed);
+    REQUIRE(five.completed);
+    REQUIRE(one.cards_read == 4);
+    REQUIRE(five.cards_read == 4);
+    REQUIRE(five.cards.size() == one.cards.size());
+    // Four more cards pass the brushes each step; on a ribbon none of them has a gap.
+    const double longer = 4 * (cycle - (profile.ribbon_feed ? gap : 0.0));
+    CHECK(five.cards.at(0).end_s - one.cards.at(0).end_s == Approx(longer).margin(1e-9));
+    for (std::size_t i = 0; i < one.cards.size(); ++i) {
+        INFO("card " << i + 1);
+        const double one_card = one.cards.at(i).end_s - one.cards.at(i).start_s;
+        const double five_cards = five.cards.at(i).end_s - five.cards.at(i).start_s;
+        CHECK(five_cards - one_card == Approx(longer).margin(1e-9));
+    }
+    CHECK(five.machine_seconds - one.machine_seconds == Approx(4 * longer).margin(1e-9));
+    if (!profile.ribbon_feed) {
+        CHECK(five.cards.at(0).end_s - one.cards.at(0).end_s == Approx(2.4).margin(1e-9));
+        CHECK(five.machine_seconds - one.machine_seconds == Approx(9.6).margin(1e-9));
+    }
+    check_same_end(five, one);
+    // Impulse level agrees with fast-forward to the last bit.
+    const auto slow = run_sample_on(DeckFormat::five, profile, relaylogic::Pace::impulse_level);
+    REQUIRE(slow.completed);
+    CHECK(slow.machine_seconds == five.machine_seconds);
+    for (std::size_t i = 0; i < 5; ++i) {
+        CHECK(slow.axes.at(i).real_in == five.axes.at(i).real_in);
+        CHECK(slow.axes.at(i).impulses == five.axes.at(i).impulses);
+    }
+}
+
+TEST_CASE("Five cards: on a ribbon the first step saves four feed gaps, every later step five",
+          "[five][media][ribbon][cabinet]") {
+    auto profile = axes::default_profile();
+    profile.feed_gap_s = GENERATE(0.10, 0.037);
+    const auto cards = run_sample_on(DeckFormat::five, profile, relaylogic::Pace::fast_forward);
+    profile.ribbon_feed = true;
+    const auto ribbon = run_sample_on(DeckFormat::five, profile, relaylogic::Pace::fast_forward);
+    REQUIRE(cards.completed);
+    REQUIRE(ribbon.completed);
+    REQUIRE(ribbon.cards.size() == 4);
+    REQUIRE(cards.cards.size() == 4);
+    for (std::size_t i = 0; i < 4; ++i) {
+        INFO("step " << i + 1);
+        const double long_step = cards.cards.at(i).end_s - cards.cards.at(i).start_s;
+        const double short_step = ribbon.cards.at(i).end_s - ribbon.cards.at(i).start_s;
+        CHECK(long_step - short_step == Approx((i == 0 ? 4 : 5) * profile.feed_gap_s).margin(1e-9));
+    }
+    CHECK(cards.machine_seconds - ribbon.machine_seconds ==
+          Approx(19 * profile.feed_gap_s).margin(1e-9));
+    check_same_end(ribbon, cards);
 }
 
 TEST_CASE("Five cards: every axis card's card number and spindle columns are compared with the "

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <csignal>
 #include <fstream>
+#include <sstream>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -87,6 +88,18 @@ std::vector<Card> punched(const std::vector<CardOrders>& cards) {
     return out;
 }
 
+// A deck read from the bytes of its file: cards as they are (.cbn), or five a step (.five).
+struct FileDeck {
+    FileDeck(const std::vector<CardOrders>& cards, DeckFormat format)
+        : in(deck_bytes(punched(cards), format)) {
+        DeckOptions options;
+        options.format = format;
+        source = open_card_source(in, options);
+    }
+    std::istringstream in;
+    std::unique_ptr<CardSource> source;
+};
+
 } // namespace
 
 TEST_CASE("Resume: after a soft-limit stop, resumed with wider limits, the run ends with the "
@@ -117,7 +130,8 @@ TEST_CASE("Resume: after a soft-limit stop, resumed with wider limits, the run e
 }
 
 TEST_CASE("Resume: a machine stopped part way through a deck goes on from the stopped card "
-          "exactly: the same result and, from the card's feed, the same trace",
+          "exactly: the same result and, from the card's feed, the same trace (cards or five "
+          "cards a step, separate or on a ribbon)",
           "[resume]") {
     // Card 3 is punched wrong (its check one short): the machine stops there. The corrected
     // deck, resumed from the saved state, must run as the corrected deck run straight.
@@ -137,40 +151,44 @@ TEST_CASE("Resume: a machine stopped part way through a deck goes on from the st
     std::vector<CardOrders> bad = good;
     bad.at(2).axis(Axis::table).check =
         static_cast<Thousandths>(bad.at(2).axis(Axis::table).check - 1);
+    const DeckFormat format = GENERATE(DeckFormat::cbn, DeckFormat::five);
+    auto profile = axes::default_profile();
+    profile.ribbon_feed = GENERATE(false, true);
+    INFO(format_name(format) << (profile.ribbon_feed ? " on a ribbon" : ""));
 
     for (Pace pace : {Pace::fast_forward, Pace::impulse_level}) {
         // The faulty run, saving its resume point.
-        test::VectorDeck faulty(punched(bad));
-        ControlCabinet first(axes::default_profile(), fig8_layout());
+        FileDeck faulty(bad, format);
+        ControlCabinet first(profile, fig8_layout());
         first.set_pace(pace);
         first.record_card_times(true);
         Events first_events; // keeps the signal values, as run --save-state does
         first.keep_resume_point(true);
         first.attach(&first_events);
-        const RunResult stopped = first.run(faulty);
+        const RunResult stopped = first.run(*faulty.source);
         REQUIRE(stopped.stop);
         CHECK(stopped.stop->card == 3);
         const json saved = json::parse(first.resume_point().dump()); // through the text
 
         // Straight through the corrected deck.
-        test::VectorDeck corrected(punched(good));
-        ControlCabinet straight(axes::default_profile(), fig8_layout());
+        FileDeck corrected(good, format);
+        ControlCabinet straight(profile, fig8_layout());
         straight.set_pace(pace);
         straight.record_card_times(true);
         Events straight_events;
         straight.attach(&straight_events);
-        const RunResult whole = straight.run(corrected);
+        const RunResult whole = straight.run(*corrected.source);
         REQUIRE(whole.completed);
 
         // Resumed with the corrected deck.
-        test::VectorDeck again(punched(good));
-        ControlCabinet resumed(axes::default_profile(), fig8_layout());
+        FileDeck again(good, format);
+        ControlCabinet resumed(profile, fig8_layout());
         resumed.set_pace(pace);
         resumed.record_card_times(true);
         resumed.resume(saved);
         Events resumed_events;
         resumed.attach(&resumed_events);
-        const RunResult rest = resumed.run(again);
+        const RunResult rest = resumed.run(*again.source);
         REQUIRE(rest.completed);
 
         CHECK(rest.cards_read == whole.cards_read);
