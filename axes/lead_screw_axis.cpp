@@ -13,25 +13,39 @@ constexpr double kPi = 3.14159265358979323846;
 } // namespace
 
 LeadScrewAxis::LeadScrewAxis(const AxisProfile& profile)
-    : profile_(profile), shaft_(profile),
-      nut_(profile.backlash_in, ScrewErrorTable(profile.lead_error_in)) {
-    measure_by(MeasuringChain::instrument_shaft_74);
+    : profile_(profile), nut_(profile.backlash_in, ScrewErrorTable(profile.lead_error_in)) {
+    measure_by(MeasuringChain::instrument_shaft_74, false);
 }
 
-void LeadScrewAxis::measure_by(MeasuringChain chain) {
+// Compensating cam 160, as the patent draws it: "a conventional compensating cam and nut
+// arrangement may be provided for correcting the action of each screw so that the actual lead
+// per revolution or fraction thereof is constant throughout its entire length. Such
+// compensating means is schematically illustrated herein at 160 for the table lead screw 22.
+// It is understood that the remaining lead screws may have similar provisions" (US 2,820,187,
+// margin lines 54-61). So cam 160 corrects the main screw's lead: the part stands at
+// G(sigma) = sigma + lead_error_in - cam_160_in, whichever chain counts. Through instrument
+// shaft 74 that changes how far the screw turns for a count, not where the part stops.
+// Under the interpretation cam_160_on_instrument_shaft the cam corrects shaft 74's screw
+// instead (axes/instrument_shaft.hpp) and the main screw keeps its whole lead error.
+void LeadScrewAxis::measure_by(MeasuringChain chain, bool cam_160_on_instrument_shaft) {
     chain_ = chain;
     const AxisProfile& p = profile_;
+    const bool cam_on_shaft = cam_160_on_instrument_shaft && chain != MeasuringChain::screw_turns;
+    shaft_ = InstrumentShaft(p, cam_on_shaft);
     if (chain == MeasuringChain::screw_turns) {
-        // The counters read screw turns: cam 160 corrects the main screw, and the part stands
-        // off the screw by everything the screw gets wrong.
+        // The counters read screw turns: the part stands off the screw by everything the
+        // screw gets wrong, less what cam 160 corrects.
         nut_.set_part_table(ScrewErrorTable::sum(
             {{&p.screw_error_in, 1}, {&p.lead_error_in, 1}, {&p.cam_160_in, -1}}));
         linear_ = true;
         least_screw_per_impulse_ = kInchesPerImpulse;
         s_ = 0;
     } else {
-        nut_.set_part_table(ScrewErrorTable(p.lead_error_in));
-        linear_ = shaft_.exact() && p.lead_error_in.empty();
+        const ScrewErrorTable lead =
+            cam_on_shaft ? ScrewErrorTable(p.lead_error_in)
+                         : ScrewErrorTable::sum({{&p.lead_error_in, 1}, {&p.cam_160_in, -1}});
+        linear_ = shaft_.exact() && lead.empty();
+        nut_.set_part_table(lead);
         least_screw_per_impulse_ =
             kInchesPerImpulse * shaft_.least_part_per_reading() / nut_.greatest_part_per_screw();
         // The reference zero: where the counters read 0, the part stands at r(0).

@@ -27,8 +27,9 @@
 // measuring chain (MachineProfile::measuring_chain): in the patent's (Fig. 3) they are turned
 // by instrument shaft 74 from the part itself, so the half-thousandth crossings are those of
 // the counters' reading q, tied to the part by the instrument's residual error
-// (axes/instrument_shaft.hpp), and the part to the screw through nut 78 (lead error, backlash,
-// slip: axes/lead_screw_nut.hpp). The screw position of crossing h is then
+// (axes/instrument_shaft.hpp), and the part to the screw through nut 78 (lead error less what
+// compensating cam 160 corrects, backlash, slip: axes/lead_screw_nut.hpp). The screw
+// position of crossing h is then
 //     s_h = o_end + G^-1(q_h + r(q_h)),   q_h = h x 0.0005 in,
 // a pure function of h within a stretch of the nut. Counting screw turns instead (a departure)
 // the crossings are the screw's own, s_h = q_h, and the part lags by whatever nut 78 and the
@@ -102,8 +103,10 @@ class LeadScrewAxis {
 public:
     explicit LeadScrewAxis(const AxisProfile& profile);
     // What the commutators count (before any motion): the part through instrument shaft 74
-    // (the default, the patent), or the main screw's turns (a departure).
-    void measure_by(MeasuringChain chain);
+    // (the default, the patent), or the main screw's turns (a departure). Cam 160 corrects
+    // the main screw's lead (the patent), or, with cam_160_on_instrument_shaft (an
+    // interpretation, instrument chain only), instrument shaft 74's screw.
+    void measure_by(MeasuringChain chain, bool cam_160_on_instrument_shaft);
     MeasuringChain measuring_chain() const { return chain_; }
 
     // The motor: direction +1 / -1 and one of the three speeds (1..3), or switched off (0).
@@ -293,8 +296,8 @@ private:
 
     AxisProfile profile_;
     MeasuringChain chain_ = MeasuringChain::instrument_shaft_74;
-    InstrumentShaft shaft_; // instrument shaft 74, cam 160
-    LeadScrewNut nut_;      // lead screw 22, nut 78, the drive's slip
+    InstrumentShaft shaft_; // instrument shaft 74
+    LeadScrewNut nut_;      // lead screw 22 and its cam 160, nut 78, the drive's slip
     bool linear_ = true;    // crossing_screw(h) = crossing_in(h) + offset (no error tables)
     double least_screw_per_impulse_ = kInchesPerImpulse;
     // The current phase: from time t0_ at screw position s0_ and speed u0_ (>= 0), moving in

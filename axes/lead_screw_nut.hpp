@@ -5,7 +5,9 @@
 //   motor 38 -> lead screw 22 --(backlash b)--> nut 78 = the part      s: screw travel, inches
 //                                                                      (turns x lead)
 //   * lead error: with the nut engaged, the part stands at G(sigma) = sigma + L(sigma), L the
-//     screw's error table (profile key lead_error_in);
+//     screw's error table (profile key lead_error_in) less the correction of compensating cam
+//     160, which the patent draws "for the table lead screw 22" (cam_160_in; none under the
+//     interpretation cam_160_on_instrument_shaft);
 //   * backlash in nut 78: the screw drives the nut on one flank going forward and on the
 //     other going back; between them it turns b inches with the part standing still;
 //   * slip (the fault slip:AXIS:N:M): for M thousandths of screw travel the drive slips and

@@ -37,8 +37,8 @@ struct AxisProfile {
     double soft_max_in = 0;
     // Lead of the screw; 1000 commutator impulses an inch whatever the lead (gear train 82-92).
     double screw_lead_in_per_rev = 0.2;
-    // Residual screw error after compensating cam 160: (screw position, error) in inches,
-    // interpolated linearly; empty = a perfect screw.
+    // Residual error of the screw the counters read, left after any correction: (screw position,
+    // error) in inches, interpolated linearly; empty = a perfect screw.
     std::vector<std::pair<double, double>> screw_error_in;
     // Swivel and tilt: distance from the fixture's pivot to its screw (sine-plate geometry),
     // and the screw position at which the fixture stands level (angle 0), so that it can be
@@ -53,8 +53,11 @@ struct AxisProfile {
     std::vector<std::pair<double, double>> lead_error_in;
     // Backlash in nut 78: screw travel with the part standing when the motion reverses.
     double backlash_in = 0.0;
-    // The error of instrument shaft 74's own screw, and the correction cam 160 gives it.
+    // The error of instrument shaft 74's own screw.
     std::vector<std::pair<double, double>> instrument_error_in;
+    // The correction compensating cam 160 gives lead screw 22 (the patent: "illustrated herein
+    // at 160 for the table lead screw 22"), subtracted from lead_error_in; under the
+    // interpretation cam_160_on_instrument_shaft, from instrument_error_in instead.
     std::vector<std::pair<double, double>> cam_160_in;
 };
 
@@ -233,7 +236,7 @@ struct MachineProfile {
     // The built-in profiles parsons-1952 (the default) and parsons-safe differ only here;
     // docs/machine-profile.md tells each option's story.
     //
-    // Interpretations: earlier readings of columns 10-11, off in both built-in profiles.
+    // Interpretations: earlier readings of the patent, off in every built-in profile.
     // "An incremental equality stops at any speed": an equality of comparer 122'' sends speed
     // switch 236 straight to off, whatever speed it stands on.
     bool incremental_equality_stops_at_any_speed = false;
@@ -242,6 +245,9 @@ struct MachineProfile {
     bool delay_258_waits_for_equality_to_leave = false;
     // Lamps 270 and 272 light only when balancing circuit 266 trips (not on a good stop).
     bool lamps_only_on_trip = false;
+    // Compensating cam 160 corrects instrument shaft 74's screw (the screw the counters read),
+    // not lead screw 22 as the patent draws it. Matters only with the instrument chain.
+    bool cam_160_on_instrument_shaft = false;
     // Additions (not in the patent), named as such in messages. The card reader refuses a card
     // with two punches in one digit column (stop bad_punch) instead of closing two relays of
     // the bank as a 1952 reader would. On in parsons-safe.

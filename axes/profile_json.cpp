@@ -179,10 +179,15 @@ void apply_axis(const json& j, AxisProfile& a, const std::string& where) {
     }
     // The part's position must grow with the screw's (1 + the error's slope > 0), or a limit
     // could be passed and found again further on: for each table, and for what the measuring
-    // chain makes of them together, whichever chain counts.
-    const std::array<std::pair<const char*, ScrewErrorTable>, 4> tables = {{
+    // chain makes of them together, whichever chain counts and whichever screw cam 160
+    // corrects (lead screw 22, or shaft 74 under cam_160_on_instrument_shaft).
+    const std::array<std::pair<const char*, ScrewErrorTable>, 6> tables = {{
         {"screw_error_in", ScrewErrorTable(a.screw_error_in)},
         {"lead_error_in", ScrewErrorTable(a.lead_error_in)},
+        {"lead_error_in - cam_160_in",
+         ScrewErrorTable::sum({{&a.lead_error_in, 1}, {&a.cam_160_in, -1}})},
+        {"screw_error_in + instrument_error_in",
+         ScrewErrorTable::sum({{&a.screw_error_in, 1}, {&a.instrument_error_in, 1}})},
         {"screw_error_in + instrument_error_in - cam_160_in",
          ScrewErrorTable::sum(
              {{&a.screw_error_in, 1}, {&a.instrument_error_in, 1}, {&a.cam_160_in, -1}})},
@@ -273,6 +278,8 @@ bool apply_reading(MachineProfile& p, const std::string& key, const json& value)
         p.delay_258_waits_for_equality_to_leave = flag(value, key);
     } else if (key == "lamps_only_on_trip") {
         p.lamps_only_on_trip = flag(value, key);
+    } else if (key == "cam_160_on_instrument_shaft") {
+        p.cam_160_on_instrument_shaft = flag(value, key);
     } else if (key == "refuse_double_punch") {
         p.refuse_double_punch = flag(value, key);
     } else if (key == "condition_cards") {
@@ -297,6 +304,7 @@ void put_readings(json& j, const MachineProfile& p) {
     j["incremental_equality_stops_at_any_speed"] = p.incremental_equality_stops_at_any_speed;
     j["delay_258_waits_for_equality_to_leave"] = p.delay_258_waits_for_equality_to_leave;
     j["lamps_only_on_trip"] = p.lamps_only_on_trip;
+    j["cam_160_on_instrument_shaft"] = p.cam_160_on_instrument_shaft;
     j["refuse_double_punch"] = p.refuse_double_punch;
     j["condition_cards"] = p.condition_cards;
     j["actions"] = {{"spindle_run_up_s", p.actions.spindle_run_up_s},

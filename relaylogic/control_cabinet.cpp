@@ -57,7 +57,8 @@ ControlCabinet::ControlCabinet(axes::MachineProfile profile, const cardreader::C
                        "zeroizing: channel 304 (reader indexes the next card)", "304", 1);
     for (Axis a : cardreader::kAxes) {
         circuits_.push_back(std::make_unique<AxisCircuit>(tracer_, profile_, a));
-        circuits_.back()->plant.measure_by(profile_.measuring_chain); // Fig. 3
+        circuits_.back()->plant.measure_by(profile_.measuring_chain, // Fig. 3
+                                           profile_.cam_160_on_instrument_shaft);
     }
     // The later systems the profile asks for (relaylogic/attachments.cpp), each defining its
     // signals after the cabinet's.

@@ -150,21 +150,99 @@ TEST_CASE("Measuring chain: lead screw 22's lead error is measured, counting its
     }
 }
 
-TEST_CASE("Measuring chain: cam 160 corrects instrument shaft 74's own error, which the counters "
-          "cannot see",
-          "[cabinet][chain]") {
+namespace {
+
+// The probe of issue 29 (item 3): the table out to 4.985 at speed 1, slowing at 4.785 and
+// 4.885; a lead screw 22 a thousandth an inch long.
+CardOrders table_to_4985() {
     CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
-    c.axis(Axis::table) = order(0, 2500, 3);
+    c.axis(Axis::table) = order(0, 4985, 1, 4785, 4885);
+    return c;
+}
+const axes::ErrorPoints kLongLead = {{0.0, 0.0}, {10.0, 0.010}};
+
+} // namespace
+
+TEST_CASE("Measuring chain: cam 160 corrects lead screw 22 (\"illustrated herein at 160 for the "
+          "table lead screw 22\"): a cam cut to its lead error leaves the part where the "
+          "counters say and the screw turning as a perfect one",
+          "[cabinet][chain][cam-160]") {
+    const RunResult perfect = run_orders({table_to_4985()}, axes::default_profile());
+    REQUIRE(perfect.completed);
+    // The stop impulse as the counters pass 4.9845, the coast 0.00025 on.
+    CHECK(perfect.axes.at(0).real_in == Approx(4.98475).margin(1e-12));
+    CHECK(perfect.axes.at(0).screw_in - perfect.axes.at(0).counter_in ==
+          Approx(-0.00025).margin(1e-12));
+
     auto profile = axes::default_profile();
+    profile.axes.at(0).lead_error_in = kLongLead;
+    const RunResult worn = run_orders({table_to_4985()}, profile);
+    REQUIRE(worn.completed);
+    // Instrument shaft 74 measures the lead error: the part stops where the counters say,
+    // the screw short of it by the error.
+    CHECK(worn.axes.at(0).real_in == Approx(4.9845 + 1.001 * 0.00025).margin(1e-12));
+    CHECK(worn.axes.at(0).screw_in == Approx(4.9845 / 1.001 + 0.00025).margin(1e-12));
+
+    profile.axes.at(0).cam_160_in = kLongLead; // the cam cut to that error
+    const RunResult cam = run_orders({table_to_4985()}, profile);
+    REQUIRE(cam.completed);
+    CHECK(cam.axes.at(0).real_in == Approx(perfect.axes.at(0).real_in).margin(1e-9));
+    CHECK(cam.axes.at(0).error_in == Approx(-0.00025).margin(1e-9));
+    CHECK(cam.axes.at(0).screw_in - cam.axes.at(0).counter_in == Approx(-0.00025).margin(1e-9));
+    CHECK(cam.machine_seconds == Approx(perfect.machine_seconds).margin(1e-9));
+
+    // With instrument shaft 74's own error the cam on screw 22 changes nothing the counters
+    // read: that error stays, unseen.
+    auto shaft = axes::default_profile();
+    shaft.axes.at(0).instrument_error_in = {{0.0, 0.0}, {10.0, 0.004}};
+    const RunResult uncorrected = run_orders({table_to_4985()}, shaft);
+    shaft.axes.at(0).cam_160_in = {{0.0, 0.0}, {10.0, 0.004}};
+    const RunResult on_screw_22 = run_orders({table_to_4985()}, shaft);
+    CHECK(uncorrected.axes.at(0).error_in == Approx(0.004 * 4.9845 / 10 - 0.00025).margin(1e-12));
+    CHECK(on_screw_22.axes.at(0).real_in == Approx(uncorrected.axes.at(0).real_in).margin(1e-12));
+}
+
+TEST_CASE("Interpretation cam_160_on_instrument_shaft: cam 160 corrects instrument shaft 74's "
+          "own error, which the counters cannot see, and a cam cut to lead screw 22 puts the "
+          "part off its number",
+          "[cabinet][chain][cam-160]") {
+    auto profile = axes::default_profile();
+    CHECK_FALSE(profile.cam_160_on_instrument_shaft);
+    profile.cam_160_on_instrument_shaft = true;
     profile.axes.at(0).instrument_error_in = {{0.0, 0.0}, {10.0, 0.004}};
-    const RunResult uncorrected = run_orders({c}, profile);
-    // The stop impulse as the counters pass 2.4995, the part 0.004 x 2.4995 / 10 beyond; the
-    // coast 0.00025 on: the error against the counters' 2.500.
-    CHECK(uncorrected.axes.at(0).error_in == Approx(0.004 * 2.4995 / 10 - 0.00025).margin(1e-12));
+    const RunResult uncorrected = run_orders({table_to_4985()}, profile);
+    // The stop impulse as the counters pass 4.9845, the part 0.004 x 4.9845 / 10 beyond; the
+    // coast 0.00025 on: the error against the counters' 4.985.
+    CHECK(uncorrected.axes.at(0).error_in == Approx(0.004 * 4.9845 / 10 - 0.00025).margin(1e-12));
     profile.axes.at(0).cam_160_in = {{0.0, 0.0}, {10.0, 0.004}};
-    const RunResult corrected = run_orders({c}, profile);
+    const RunResult corrected = run_orders({table_to_4985()}, profile);
     CHECK(corrected.axes.at(0).error_in == Approx(-0.00025).margin(1e-12));
-    CHECK(corrected.axes.at(0).real_in == Approx(2.49975).margin(1e-12));
+    CHECK(corrected.axes.at(0).real_in == Approx(4.98475).margin(1e-12));
+
+    // The cam cut to lead screw 22's error, read as a correction of shaft 74: the part ends
+    // 0.005 in short (the stop at 0.999 x 4.9845, the coast 1.001 x 0.00025 on) and the
+    // screw twice that.
+    auto cam = axes::default_profile();
+    cam.cam_160_on_instrument_shaft = true;
+    cam.axes.at(0).lead_error_in = kLongLead;
+    cam.axes.at(0).cam_160_in = kLongLead;
+    const RunResult r = run_orders({table_to_4985()}, cam);
+    REQUIRE(r.completed);
+    CHECK(r.axes.at(0).real_in == Approx(0.999 * 4.9845 + 1.001 * 0.00025).margin(1e-12));
+    CHECK(r.axes.at(0).screw_in - r.axes.at(0).counter_in ==
+          Approx(0.999 * 4.9845 / 1.001 + 0.00025 - 4.985).margin(1e-12));
+    // The screw turns less than the part moves: 0.133 s sooner than the perfect machine.
+    const RunResult perfect = run_orders({table_to_4985()}, axes::default_profile());
+    CHECK(r.machine_seconds - perfect.machine_seconds ==
+          Approx(67.236588 - 67.369444).margin(1e-6));
+
+    // Counting screw turns, the screw the counters read is the main screw either way.
+    cam.measuring_chain = MeasuringChain::screw_turns;
+    const RunResult turns = run_orders({table_to_4985()}, cam);
+    cam.cam_160_on_instrument_shaft = false;
+    const RunResult turns_patent = run_orders({table_to_4985()}, cam);
+    CHECK(turns.axes.at(0).real_in == turns_patent.axes.at(0).real_in);
+    CHECK(turns.axes.at(0).real_in == Approx(4.98475).margin(1e-12));
 }
 
 TEST_CASE("Measuring chain: a slip of the drive makes the axis run on to its real stop with the "
@@ -202,6 +280,16 @@ TEST_CASE("Profile: the measuring chain's keys round-trip and bad values are ref
     CHECK(again.axes.at(4).lead_error_in == p.axes.at(4).lead_error_in);
     CHECK(again.axes.at(4).cam_160_in == p.axes.at(4).cam_160_in);
     CHECK(again.axes.at(4).instrument_error_in == p.axes.at(4).instrument_error_in);
+    CHECK_FALSE(again.cam_160_on_instrument_shaft);
+    for (const char* name : axes::kBuiltinProfiles) {
+        INFO(name);
+        CHECK_FALSE(axes::builtin_profile(name)->cam_160_on_instrument_shaft);
+    }
+    const auto reading = axes::profile_from_json(R"({"cam_160_on_instrument_shaft": true})",
+                                                 axes::default_profile());
+    CHECK(reading.cam_160_on_instrument_shaft);
+    CHECK(axes::profile_from_json(axes::profile_to_json(reading), axes::default_profile())
+              .cam_160_on_instrument_shaft);
     CHECK(axes::profile_from_json("{}", axes::default_profile()).measuring_chain ==
           MeasuringChain::instrument_shaft_74);
     for (const char* bad :
@@ -209,7 +297,10 @@ TEST_CASE("Profile: the measuring chain's keys round-trip and bad values are ref
           R"({"axes": {"table": {"backlash_in": 0.2}}})",
           R"({"axes": {"table": {"cam_160_in": [[0, 0], [1, 1.5]]}}})",
           R"({"axes": {"table": {"instrument_error_in": [[0, 0], [1, -0.6]],
-                                 "cam_160_in": [[0, 0], [1, 0.6]]}}})"}) {
+                                 "cam_160_in": [[0, 0], [1, 0.6]]}}})",
+          R"({"axes": {"table": {"screw_error_in": [[0, 0], [1, 0.6]],
+                                 "cam_160_in": [[0, 0], [1, 1.5]]}}})",
+          R"({"cam_160_on_instrument_shaft": 1})"}) {
         INFO(bad);
         CHECK_THROWS_AS(axes::profile_from_json(bad, axes::default_profile()), axes::ProfileError);
     }
@@ -243,6 +334,6 @@ TEST_CASE("Measuring chain: error tables bring the impulses closer than 0.001 in
     // The bound holds, and it is reached where both tables are at their steepest.
     CHECK(least >= axis.least_screw_per_impulse() * (1 - 1e-9));
     CHECK(least == Approx(axis.least_screw_per_impulse()).epsilon(1e-6));
-    axis.measure_by(MeasuringChain::screw_turns);
+    axis.measure_by(MeasuringChain::screw_turns, false);
     CHECK(axis.least_screw_per_impulse() == axes::kInchesPerImpulse);
 }
