@@ -218,7 +218,9 @@ TEST_CASE("Show --json: each note of the text is in the document, on its card, w
         const json& stop = doc["cards"][0]["stop"];
         CHECK(text.output.find("  the machine stops here: " + stop["reason"].get<std::string>() +
                                ": " + stop["message"].get<std::string>()) != std::string::npos);
-        CHECK_FALSE(doc["cards"][1].contains("stop"));
+        for (std::size_t i = 1; i < doc["cards"].size(); ++i) {
+            CHECK_FALSE(doc["cards"][i].contains("stop")); // only the stop's card has one
+        }
     }
     const auto r = run_split(dir, "show " + q(stall) + " --json");
     CHECK(r.doc()["cards"][0]["stop"]["reason"] == "sequence_stall");
