@@ -107,19 +107,9 @@ private:
 };
 
 RunResult run_at(const Case& c, Pace pace, MachineObserver* observer) {
-    std::vector<Card> punched;
-    for (const auto& o : c.cards) {
-        const EncodeResult e = encode(o, fig8_layout());
-        if (o.kind == CardKind::sync || o.kind == CardKind::tap) { // (a motion card may hold
-                                                                   // what its fields cannot)
-            INFO((e.error ? *e.error : std::string()));
-            REQUIRE(e);
-        }
-        punched.push_back(e.card);
-    }
-    for (const auto& [card, column, digit] : c.extra_punches) {
-        punched.at(card).punch(column, digit_row(digit));
-    }
+    // The cards as punched, double punches made (a sync or tap card its layout cannot hold
+    // throws: the generator's own mistake).
+    const std::vector<Card> punched = test::punched_cards(c);
     std::ostringstream medium;
     DeckOptions options;
     options.format = c.medium;
