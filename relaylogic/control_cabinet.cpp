@@ -141,6 +141,9 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     for (const auto& a : attachments_) {
         a->start(*this);
     }
+    if (resuming_) {
+        resume_holds();
+    }
     schedule(now_, EventKind::feed);
     while (true) {
         if (interrupted()) {
@@ -261,6 +264,12 @@ void ControlCabinet::handle(const Event& e) {
         attachments_.at(e.owner)->on_event(*this, e.axis); // on whatever card is in the reader
         return;
     }
+    if (e.kind == EventKind::delay_258_release && e.card != cards_read_) {
+        // Delay 258's hold after a stop runs out on a later card: zeroizing does not touch it.
+        // It drops relay 256; what the new card's comparers do is that card's own event's.
+        circuits_.at(static_cast<std::size_t>(e.axis))->speed_switch.hold_expired(now_);
+        return;
+    }
     if (e.kind != EventKind::feed && e.card != cards_read_) {
         return; // an action of a card the zeroizing circuit has already cleared
     }
@@ -314,6 +323,25 @@ bool ControlCabinet::idle() const {
         }
     }
     return clock_ == nullptr || !clock_->waited_on(*this);
+}
+
+// A saved machine keeps no queue: a delay 258 still holding after its axis's stop (it outlasts
+// zeroizing, release_after_stop) is queued again as it was, before anything scheduled since
+// the save (its sequence number is the axis's place, below every later one; seq_ does not
+// move: the stop took its number already), or noted as the last unqueued release.
+void ControlCabinet::resume_holds() {
+    for (std::size_t i = 0; i < circuits_.size(); ++i) {
+        const SpeedSwitch& s = circuits_[i]->speed_switch;
+        if (!s.held() || s.hold_until() <= now_) {
+            continue;
+        }
+        if (tracer_.observer() != nullptr) {
+            queue_.push(Event{s.hold_until(), i, EventKind::delay_258_release, 0, false,
+                              static_cast<int>(i), -1});
+        } else {
+            unqueued_release_s_ = std::max(unqueued_release_s_, s.hold_until());
+        }
+    }
 }
 
 bool ControlCabinet::interrupted() {

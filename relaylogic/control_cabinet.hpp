@@ -165,6 +165,7 @@ private:
     // control_cabinet.cpp: the wiring and the event loop
     void schedule(double t, EventKind kind, int axis = -1);
     void handle(const Event& e);
+    void resume_holds();
     // Called once a loop, only from run(): inlined into it, as when they were its own lines.
     [[gnu::always_inline]] double next_event_time();
     [[gnu::always_inline]] void advance(double t, bool follows_motion);

@@ -89,8 +89,9 @@ bool ControlCabinet::watch_balance(AxisCircuit& c, std::string_view when) {
 
 // Delay 258 holds channel 257 after the stop too. Its release drops relay 256 and the hold
 // (trace signals), reads the comparers again and, if neither conducts, notes that the equality
-// has left; none of it can act on the axis, which is not live (stopped) until zeroizing resets
-// switch 236 and delay 258 (channel 300). So with no observer to see the relays drop the
+// has left; none of it can act on the axis, which is not live (stopped) until channel 302, and
+// on a later card a standing equality is that card's own evaluate's (it schedules its own
+// release while 258 still holds 257). So with no observer to see the relays drop the
 // release is not queued: its sequence number is taken all the same (every other event keeps
 // its order, the saved event_sequence its value), and the main loop still comes to its
 // instant if nothing else is left to do, so the run ends at the same machine time.

@@ -55,7 +55,7 @@ SteppingShaft::SteppingShaft(Tracer& tracer)
                               "284", 1)),
       device_288_(tracer.define("cabinet", "device_288",
                                 "device 288: circuit 276 broken after "
-                                "an impulse",
+                                "delivering an impulse (until channel 302)",
                                 "288", 1)),
       contact_290_(tracer.define("cabinet", "zeroizing_contact_290",
                                  "contact 290: zeroizing "
@@ -78,7 +78,6 @@ void SteppingShaft::begin_step() {
     busy_ = true;
     tracer_.set(circuit_276_, 1);
     tracer_.set(motor_278_, 1);
-    tracer_.set(device_288_, 1);
 }
 
 bool SteppingShaft::finish_step() {
@@ -88,7 +87,7 @@ bool SteppingShaft::finish_step() {
     tracer_.set(shaft_signal_, static_cast<std::uint32_t>(position_));
     tracer_.set(motor_278_, 0);
     tracer_.set(circuit_276_, 0);
-    tracer_.set(device_288_, 0);
+    tracer_.set(device_288_, 1); // 276 has delivered its impulse: 288 breaks it until channel 302
     if (pending_ == 0) {
         tracer_.set(unit_284_, 0);
     }

@@ -9,9 +9,15 @@
 // Each axis that stops sends one impulse through contact 238, circuit 268, channel 274 and
 // circuit 276 to motor 278 (traced: channel_274 carries the impulse, circuit_276 conducts and
 // motor_278 runs while the shaft takes its step). Unit 284 senses two impulses arriving together
-// and adds one, so simultaneous stops count as separate impulses; device 288 breaks circuit 276
-// after each impulse, so each stop steps the shaft exactly once. After the fifth impulse the
-// members return to position 1, engaging contact 290: the zeroizing circuit 292-304 fires.
+// and adds one, so simultaneous stops count as separate impulses. "At the time the circuit 276 is
+// delivering current to operate the sequence switch mechanisms a device indicated at 288 breaks
+// the circuit 276 so that the circuit discontinues conducting after delivering its impulse"
+// (col. 13): contact 238 of a stopped axis stays closed, so 288 breaks its path behind the
+// impulse and each stop steps the shaft exactly once. The break holds until zeroizing "actuates
+// device 288 through channel 302 to close circuit 274" (traced: device_288 rises when a step is
+// done and falls only at channel 302; per axis the break is AxisCircuit::stopped, which only
+// channel 302 clears). After the fifth impulse the members return to position 1, engaging
+// contact 290: the zeroizing circuit 292-304 fires.
 #pragma once
 
 #include "cardreader/orders.hpp"
@@ -51,12 +57,13 @@ public:
     // An axis stopped: one impulse to motor 278. Returns true if unit 284 had to count it as
     // an extra impulse (it arrived together with another).
     bool impulse(double t);
-    // Motor 278 begins one step (device 288 makes it a single one).
+    // Motor 278 begins one step.
     void begin_step();
-    // The step is done. Returns true when the members came round to position 1 past contact
+    // The step is done: circuit 276 has delivered its impulse and device 288 breaks it. Returns
+    // true when the members came round to position 1 past contact
     // 290 (the fifth impulse): the zeroizing circuit fires.
     bool finish_step();
-    // Zeroizing: device 288 reset (channel 302).
+    // Zeroizing, channel 302: device 288 closes circuit 274 again.
     void reset();
     // The state a saved machine keeps (relaylogic/machine_state.cpp).
     nlohmann::json save() const;

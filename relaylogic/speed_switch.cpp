@@ -51,15 +51,4 @@ void SpeedSwitch::to_off(double t, double hold_s) {
     hold(t, hold_s);
 }
 
-void SpeedSwitch::reset() {
-    position_ = 0;
-    hold_until_ = 0;
-    left_equality_ = true;
-    held_ = false;
-    show_position();
-    tracer_.set(channel_257_, 0);
-    tracer_.set(relay_256_, 0);
-    tracer_.set(delay_258_, 0);
-}
-
 } // namespace parsons::relaylogic

@@ -53,6 +53,8 @@ public:
         return t >= hold_until_ && (!waits_for_leave_ || left_equality_);
     }
     double hold_until() const { return hold_until_; }
+    // Delay 258 holds channel 257 open and has not been seen to release yet.
+    bool held() const { return held_; }
     // The comparer has been out of equality since the last step (the counter stepped).
     void equality_left(double t) {
         left_equality_ = true;
@@ -60,8 +62,6 @@ public:
     }
     // The hold time of delay 258 has run out (the equality may still stand).
     void hold_expired(double t) { release_if_due(t); }
-    // Zeroizing: the delay device and the stepping relay reset for the next card.
-    void reset();
     // The state a saved machine keeps (relaylogic/machine_state.cpp).
     nlohmann::json save() const;
     void load(const nlohmann::json& j);

@@ -243,3 +243,102 @@ TEST_CASE("VCD: in each timestamp stepping relay 256 is written before speed swi
     CHECK(steps_checked == 3); // two slow-downs and the stop
     CHECK(stops_checked >= 1);
 }
+
+TEST_CASE("Zeroizing: channel 300 opens the sequence contacts and nothing else, delay 258 of the "
+          "last stop runs out in its own time, and device 288 breaks circuit 276 after its "
+          "impulse until channel 302",
+          "[trace][order][fig10][rule5][rule8]") {
+    Recorder rec;
+    const axes::MachineProfile profile = axes::default_profile();
+    // A second card, so that the reader has indexed it (channel 304) before 258 lets go.
+    REQUIRE(
+        run_orders({slowing_card(), idle_card(2, {2985, 0, 0, 0, 0})}, profile, &rec).completed);
+    const long opened = find(rec, "cabinet.channel_300", 1);
+    REQUIRE(opened >= 0);
+    const double t300 = rec.changes.at(static_cast<std::size_t>(opened)).t;
+    // "…opens all the contacts of the sequence switch mechanisms 224 through channel 300…"
+    // (col. 13): no speed switch, stepping relay or delay device changes at that instant.
+    for (const Change& ch : rec.changes) {
+        if (ch.t != t300) {
+            continue;
+        }
+        INFO(ch.signal);
+        CHECK(ch.signal.find("speed_switch_236") == std::string::npos);
+        CHECK(ch.signal.find("stepping_relay_256") == std::string::npos);
+        CHECK(ch.signal.find("delay_device_258") == std::string::npos);
+    }
+    // The last axis to stop (the tilt, position 5) stops one shaft step before zeroizing; its
+    // delay 258 (0.150 s) outlasts that step (0.100 s) and lets go at its stop + its hold time.
+    const long stop = find(rec, "tilt.speed_switch_236", 0, find(rec, "tilt.speed_switch_236", 3));
+    REQUIRE(stop >= 0);
+    const double stopped = rec.changes.at(static_cast<std::size_t>(stop)).t;
+    REQUIRE(stopped + profile.delay_258_s > t300);
+    const long released = find(rec, "tilt.delay_device_258", 0, stop);
+    REQUIRE(released > opened);
+    CHECK(rec.changes.at(static_cast<std::size_t>(released)).t ==
+          Approx(stopped + profile.delay_258_s));
+    CHECK(find(rec, "tilt.stepping_relay_256", 0, stop) == released + 1);
+    CHECK(find(rec, "cabinet.card_reader_134.card", 2) < released);
+
+    // Device 288: closed while circuit 276 delivers the first impulse, broken once it has.
+    const long first_276 = find(rec, "cabinet.circuit_276", 1);
+    const long first_288 = find(rec, "cabinet.device_288", 1);
+    REQUIRE(first_276 >= 0);
+    REQUIRE(first_288 > first_276);
+    const long end_276 = find(rec, "cabinet.circuit_276", 0, first_276);
+    CHECK(rec.changes.at(static_cast<std::size_t>(first_288)).t ==
+          rec.changes.at(static_cast<std::size_t>(end_276)).t);
+    CHECK(first_288 > end_276);
+    // It falls once, at channel 302, and nothing before channel 302 closes it.
+    const auto falls = [&rec] {
+        std::vector<Change> f;
+        for (const Change& ch : rec.of("cabinet.device_288")) {
+            if (ch.new_value == 0) {
+                f.push_back(ch);
+            }
+        }
+        return f;
+    }();
+    REQUIRE(falls.size() == 2); // once a card
+    const long ch302 = find(rec, "cabinet.channel_302", 1);
+    const long fell = find(rec, "cabinet.device_288", 0);
+    REQUIRE(ch302 >= 0);
+    CHECK(fell > ch302);
+    CHECK(falls.front().t == rec.changes.at(static_cast<std::size_t>(ch302)).t);
+}
+
+TEST_CASE("Zeroizing: a delay 258 that outlasts the card cycle still holds channel 257 open on the "
+          "next card: an equality standing when that card is read is not passed, and the axis runs "
+          "on past its stop",
+          "[machine][rule5][rule8]") {
+    // Card 1 moves the tilt 0.010 in at position 5 (the last stop, one shaft step before
+    // zeroizing). Card 2 leaves it there (stop 0.010, check 0) on every position, so its stop
+    // equality stands when card 2's reading is complete. With delay 258 at 1.5 s the hold of
+    // card 1's stop still runs then: zeroizing does not reset it (col. 13 names what channels
+    // 294-304 do, and a timed delay is not among them).
+    axes::MachineProfile profile = axes::default_profile();
+    CardOrders one = idle_card(1, {0, 0, 0, 0, 0});
+    one.axis(Axis::tilt) = order(0, 10, 3, {}, {}, 16);
+    CardOrders two = idle_card(2, {0, 0, 0, 0, 10});
+    two.axis(Axis::tilt).sequence = 31;
+
+    Recorder held_rec;
+    profile.delay_258_s = 1.5;
+    const RunResult held = run_orders({one, two}, profile, &held_rec);
+    // The hold lets go when its time is up, on card 2.
+    const long stop =
+        find(held_rec, "tilt.speed_switch_236", 0, find(held_rec, "tilt.speed_switch_236", 3));
+    const long released = find(held_rec, "tilt.delay_device_258", 0, stop);
+    REQUIRE(released >= 0);
+    CHECK(held_rec.changes.at(static_cast<std::size_t>(released)).t ==
+          Approx(held_rec.changes.at(static_cast<std::size_t>(stop)).t + 1.5));
+    CHECK(find(held_rec, "cabinet.card_reader_134.card", 2) < released);
+    // The tilt left its stop before the hold ran out, so the next time its counters read
+    // 0.010 is a whole turn of them later (10.000 in).
+    CHECK(held.axes.at(axis_index(Axis::tilt)).impulses == 10010);
+
+    // With the default hold (0.150 s, over by card 2) the same deck stops the tilt at once.
+    const RunResult short_hold = run_orders({one, two}, axes::default_profile());
+    REQUIRE(short_hold.completed);
+    CHECK(short_hold.axes.at(axis_index(Axis::tilt)).impulses == 10);
+}
