@@ -37,6 +37,10 @@ ControlCabinet::ControlCabinet(axes::MachineProfile profile, const cardreader::C
                                   "spindle (0 off, 1 forward, 2 "
                                   "reverse)",
                                   "165", 2);
+    spindle_motor_signal_ = tracer_.define("cabinet", "spindle_motor",
+                                           "spindle motor (0 at rest, 1 forward at speed, 2 "
+                                           "reverse at speed, 3 running up, down or reversing)",
+                                           "", 2);
     cutting_ = tracer_.define("cabinet", "spindle_control_165.cutting",
                               "cutting: last axis of the "
                               "sequence running",
@@ -197,6 +201,11 @@ inline double ControlCabinet::next_event_time() {
     if (t == axes::kNever && unqueued_release_s_ > now_) {
         t = unqueued_release_s_; // the last release after a stop (release_after_stop)
     }
+    if (spindle_changing_ && t != axes::kNever && spindle_motor_.ready_s() < t) {
+        // The spindle motor comes to speed (or to rest): an instant of its own while the deck
+        // goes on; it never keeps a finished run going.
+        t = spindle_motor_.ready_s();
+    }
     if (clock_running()) {
         // The press turns on whatever the cabinet does; when nothing else can happen and
         // nothing waits on it, the cabinet itself is idle (a sequence stall).
@@ -218,6 +227,9 @@ inline double ControlCabinet::next_event_time() {
 inline void ControlCabinet::advance(double t, bool follows_motion) {
     now_ = t;
     tracer_.set_time(t);
+    if (spindle_changing_ && spindle_motor_.ready_s() <= t) {
+        show_spindle();
+    }
     if (jumping_) {
         // The axes' quiet impulses first: a tap's reversal of control 214 is reported at the
         // first impulse of its jump, before this instant, so it must come before anything

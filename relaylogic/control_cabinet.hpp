@@ -32,6 +32,7 @@
 #pragma once
 
 #include "axes/machine_profile.hpp"
+#include "axes/spindle_motor.hpp"
 #include "cardreader/deck_io.hpp"
 #include "cardreader/layout.hpp"
 #include "relaylogic/attachment.hpp"
@@ -116,6 +117,9 @@ public:
     // The axis's motor follows the circuits again; every comparer is read again.
     void update_motor(AxisCircuit& c);
     void update_motors();
+    // Spindle control 165 commands the spindle motor (column 1 of the card); the trace shows it.
+    void command_spindle();
+    void show_spindle();
     void evaluate_all() {
         for (auto& c : circuits_) {
             evaluate(*c);
@@ -299,6 +303,11 @@ private:
     SignalId card_number_check_;
     SignalId spindle_165_;
     SignalId cutting_;
+    // The spindle motor that column 1 commands through spindle control 165: it runs down and up
+    // in the profile's times (actions.spindle_run_down_s, spindle_run_up_s), not at once.
+    axes::SpindleMotor spindle_motor_;
+    SignalId spindle_motor_signal_;
+    bool spindle_changing_ = false; // the trace shows it between speeds
     SignalId zeroizing_;
     SignalId channel_294_;
     SignalId channel_298_;

@@ -302,7 +302,35 @@ void ControlCabinet::update_motors() {
         update_motor(*c);
         cutting = cutting || (c->powered && shaft_.position() == last_sequence_position_);
     }
-    tracer_.set(cutting_, cutting && orders_.spindle != cardreader::Spindle::off ? 1 : 0);
+    cutting = cutting && orders_.spindle != cardreader::Spindle::off;
+    tracer_.set(cutting_, cutting ? 1 : 0);
+    if (cutting && spindle_motor_.ready_s() > now_ && record_times_ && !timings_.empty() &&
+        timings_.back().cut_unready_s < 0) {
+        // Nothing in the patent holds the axes for the spindle (no interlock is shown): the
+        // cutter cuts while its motor is still coming to speed, and the report says so.
+        timings_.back().cut_unready_s = now_;
+        timings_.back().spindle_ready_s = spindle_motor_.ready_s();
+    }
+}
+
+// "The signal will cause the spindle to rotate in one direction if a "0" is punched and will
+// cause the opposite direction of rotation if a "1" is punched" (col. 10). The patent gives the
+// motor no time; a motor cannot change speed in an instant (rule 7), so it runs down and up
+// again in the profile's times (rule 11).
+void ControlCabinet::command_spindle() {
+    using axes::SpindleTurning;
+    const SpindleTurning want =
+        orders_.spindle == cardreader::Spindle::forward   ? SpindleTurning::forward
+        : orders_.spindle == cardreader::Spindle::reverse ? SpindleTurning::reverse
+                                                          : SpindleTurning::off;
+    spindle_motor_.command(want, now_, profile_.actions);
+    show_spindle();
+}
+
+void ControlCabinet::show_spindle() {
+    spindle_changing_ = spindle_motor_.ready_s() > now_;
+    tracer_.set(spindle_motor_signal_,
+                spindle_changing_ ? 3U : static_cast<std::uint32_t>(spindle_motor_.turning()));
 }
 
 } // namespace parsons::relaylogic

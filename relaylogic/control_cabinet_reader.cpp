@@ -184,6 +184,7 @@ bool ControlCabinet::move_within_soft_limits() {
 
 void ControlCabinet::relays_pick() {
     tracer_.set(spindle_165_, static_cast<std::uint32_t>(orders_.spindle));
+    command_spindle();
     last_sequence_position_ = 0;
     for (auto& c : circuits_) {
         c->order = orders_.axis(c->axis);

@@ -19,7 +19,12 @@ nlohmann::json ControlCabinet::capture() const {
     }
     nlohmann::json times = nlohmann::json::array();
     for (const CardTiming& ct : timings_) {
-        times.push_back({ct.index, ct.number, exact(ct.start_s), exact(ct.end_s)});
+        nlohmann::json row{ct.index, ct.number, exact(ct.start_s), exact(ct.end_s)};
+        if (ct.cut_unready_s >= 0) {
+            row.push_back(exact(ct.cut_unready_s));
+            row.push_back(exact(ct.spindle_ready_s));
+        }
+        times.push_back(row);
     }
     nlohmann::json faults = nlohmann::json::array();
     for (const FaultEffect& e : effects_) {
@@ -32,6 +37,9 @@ nlohmann::json ControlCabinet::capture() const {
                                                                 : nlohmann::json(nullptr)},
                          {"last_card_number", orders_.number},
                          {"spindle", static_cast<int>(orders_.spindle)},
+                         {"spindle_motor",
+                          {{"turning", static_cast<int>(spindle_motor_.turning())},
+                           {"ready_s", exact(spindle_motor_.ready_s())}}},
                          {"last_sequence_position", last_sequence_position_},
                          {"axes", axes},
                          {"stepping_shaft_280", shaft_.save()},
@@ -58,6 +66,16 @@ void ControlCabinet::resume(const nlohmann::json& j) {
     orders_.number = read<int>(j, "last_card_number");
     orders_.spindle = static_cast<cardreader::Spindle>(read<int>(j, "spindle"));
     last_sequence_position_ = read<int>(j, "last_sequence_position");
+    if (j.contains("spindle_motor")) { // states saved before the spindle motor had a time
+        const auto& m = member(j, "spindle_motor");
+        const int turning = read<int>(m, "turning");
+        if (turning < 0 || turning > 2) {
+            throw axes::StateError("spindle_motor.turning: expected 0, 1 or 2");
+        }
+        spindle_motor_.restore(static_cast<axes::SpindleTurning>(turning),
+                               exact(member(m, "ready_s")));
+        spindle_changing_ = spindle_motor_.ready_s() > now_;
+    }
     const auto& axes = member(j, "axes");
     for (auto& c : circuits_) {
         c->load(member(axes, std::string(axis_name(c->axis)).c_str()));
@@ -66,8 +84,13 @@ void ControlCabinet::resume(const nlohmann::json& j) {
     tracer_.load(member(j, "signals"));
     timings_.clear();
     for (const auto& t : member(j, "card_times")) {
-        timings_.push_back(CardTiming{t.at(0).get<std::int64_t>(), t.at(1).get<int>(),
-                                      exact(t.at(2)), exact(t.at(3))});
+        CardTiming ct{t.at(0).get<std::int64_t>(), t.at(1).get<int>(), exact(t.at(2)),
+                      exact(t.at(3))};
+        if (t.size() >= 6) {
+            ct.cut_unready_s = exact(t.at(4));
+            ct.spindle_ready_s = exact(t.at(5));
+        }
+        timings_.push_back(ct);
     }
     load_all(*this, attachments_, j); // and those it does not have: the state must agree
     effects_.clear();

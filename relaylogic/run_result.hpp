@@ -35,6 +35,11 @@ struct CardTiming {
     int number = -1;
     double start_s = 0;
     double end_s = 0;
+    // The card's cut began while the spindle motor was still running up, down or reversing
+    // (column 1 changed at this card): when the cut began, and when the motor was at speed.
+    // Negative: it did not.
+    double cut_unready_s = -1;
+    double spindle_ready_s = -1;
 };
 
 struct RunResult {

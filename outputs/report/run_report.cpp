@@ -130,10 +130,15 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachinePr
     j["faults"] = faults;
     json cards = json::array();
     for (const auto& c : r.cards) {
-        cards.push_back(json{{"index", c.index},
-                             {"number", c.number >= 0 ? json(c.number) : json(nullptr)},
-                             {"start_seconds", time_s(c.start_s)},
-                             {"machine_seconds", time_s(c.end_s - c.start_s)}});
+        json card{{"index", c.index},
+                  {"number", c.number >= 0 ? json(c.number) : json(nullptr)},
+                  {"start_seconds", time_s(c.start_s)},
+                  {"machine_seconds", time_s(c.end_s - c.start_s)}};
+        if (c.cut_unready_s >= 0) {
+            card["spindle_not_at_speed"] = json{{"cut_began_seconds", time_s(c.cut_unready_s)},
+                                                {"at_speed_seconds", time_s(c.spindle_ready_s)}};
+        }
+        cards.push_back(card);
     }
     j["cards"] = cards;
     // Condition cards (an addition after EP 0640901): only when the deck used them (the profile
@@ -216,6 +221,15 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
     }
     for (const auto& f : r.faults) {
         line(fmt::format("  fault          {}: {}", f.spec, f.effect));
+    }
+    for (const auto& c : r.cards) {
+        if (c.cut_unready_s >= 0) {
+            line(fmt::format("  warning: card {}{} began its cut at {:.3f} s with the spindle "
+                             "motor still coming to speed (it was at speed at {:.3f} s): nothing "
+                             "in the 1952 control waits for the spindle",
+                             c.index, c.number >= 0 ? fmt::format(" (number {:04})", c.number) : "",
+                             c.cut_unready_s, c.spindle_ready_s));
+        }
     }
     for (const auto& a : r.actions) {
         line(fmt::format("  action         event {} ({} at {}, card {}): {} at {:.3f} s, "
