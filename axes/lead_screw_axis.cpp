@@ -31,6 +31,7 @@ void LeadScrewAxis::measure_by(MeasuringChain chain, bool cam_160_on_instrument_
     chain_ = chain;
     const AxisProfile& p = profile_;
     const bool cam_on_shaft = cam_160_on_instrument_shaft && chain != MeasuringChain::screw_turns;
+    cam_on_shaft_ = cam_on_shaft;
     shaft_ = InstrumentShaft(p, cam_on_shaft);
     if (chain == MeasuringChain::screw_turns) {
         // The counters read screw turns: the part stands off the screw by everything the
@@ -252,6 +253,34 @@ double LeadScrewAxis::speed_in_per_s() const {
         return phase_end_speed();
     }
     return std::max(0.0, u0_ + a_ * (t_ - t0_));
+}
+
+// Through instrument shaft 74 the part stands at q + r(q) for the reading q, r the instrument's
+// residual (axes/instrument_shaft.hpp); counting screw turns it stands at sigma + E(sigma), E
+// everything screw 22 gets wrong, and sigma - s is the slip and the backlash taken up
+// (axes/lead_screw_nut.hpp). The tables' figures add up to their sum exactly
+// (ScrewErrorTable::sum interpolates on the union of the positions).
+ChainFigures LeadScrewAxis::chain_figures() const {
+    const AxisProfile& p = profile_;
+    auto at = [](const ErrorPoints& t, double x) { return ScrewErrorTable(t).error_at(x); };
+    ChainFigures f;
+    f.counts_screw_turns = chain_ == MeasuringChain::screw_turns;
+    if (f.counts_screw_turns) {
+        const double sigma = nut_.sigma_at(s_);
+        f.at_in = sigma;
+        f.slip_in = nut_.slip_now_in(s_);
+        f.backlash_in = (sigma - s_) - f.slip_in;
+        f.lead_in = at(p.lead_error_in, sigma);
+        f.cam_160_in = -at(p.cam_160_in, sigma);
+    } else {
+        f.at_in = shaft_.reading_at_part(real_in());
+        f.instrument_in = at(p.instrument_error_in, f.at_in);
+        if (cam_on_shaft_) {
+            f.cam_160_in = -at(p.cam_160_in, f.at_in);
+        }
+    }
+    f.screw_error_in = at(p.screw_error_in, f.at_in);
+    return f;
 }
 
 double LeadScrewAxis::real_in() const {

@@ -40,6 +40,7 @@
 // relaylogic/; here an impulse is one event seen by both.
 #pragma once
 
+#include "axes/chain_figures.hpp"
 #include "axes/instrument_shaft.hpp"
 #include "axes/lead_screw_nut.hpp"
 #include "axes/machine_profile.hpp"
@@ -187,6 +188,8 @@ public:
     bool slipping_ahead() const { return slip_len_in_ > 0 && slip_from_ > impulses_; }
     std::int64_t impulses_to_slip() const { return slipping_ahead() ? slip_from_ - impulses_ : 0; }
     double slip_in() const { return nut_.slip_in(); } // how far the part lags the screw
+    // The part against the reading, cause by cause, where the axis stands now.
+    ChainFigures chain_figures() const;
     // The first coming impulse (1-based) whose crossing puts the part where trips(x) holds,
     // for a trips that, once true, stays true further along the motion; 0 if none ever does.
     template <typename Trips>
@@ -296,9 +299,10 @@ private:
 
     AxisProfile profile_;
     MeasuringChain chain_ = MeasuringChain::instrument_shaft_74;
-    InstrumentShaft shaft_; // instrument shaft 74
-    LeadScrewNut nut_;      // lead screw 22 and its cam 160, nut 78, the drive's slip
-    bool linear_ = true;    // crossing_screw(h) = crossing_in(h) + offset (no error tables)
+    InstrumentShaft shaft_;     // instrument shaft 74
+    LeadScrewNut nut_;          // lead screw 22 and its cam 160, nut 78, the drive's slip
+    bool cam_on_shaft_ = false; // the interpretation cam_160_on_instrument_shaft
+    bool linear_ = true;        // crossing_screw(h) = crossing_in(h) + offset (no error tables)
     double least_screw_per_impulse_ = kInchesPerImpulse;
     // The current phase: from time t0_ at screw position s0_ and speed u0_ (>= 0), moving in
     // direction d_ with acceleration a_ (signed along d_) until phase_end_.

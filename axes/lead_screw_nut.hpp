@@ -81,6 +81,17 @@ public:
     // How far the part lags the screw through slipping so far (negative going forward), and
     // the slip still to come.
     double slip_in() const { return slipped_; }
+    // The slip so far at screw position s, this stretch's share included (slip_in() books it
+    // only at the next stretch): the same booking rebase() makes, changing nothing.
+    double slip_now_in(double s) const {
+        const double travel = d_ * (s - s0_);
+        if (travel <= 0) {
+            return slipped_;
+        }
+        const double used =
+            travel >= dead_ ? slip_left_ : std::clamp(travel - gap_, 0.0, slip_left_);
+        return slipped_ - d_ * used;
+    }
     double slip_left_in() const { return slip_left_; }
 
     nlohmann::json save() const {

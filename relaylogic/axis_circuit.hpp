@@ -77,6 +77,12 @@ struct AxisCircuit {
     bool tripped = false;                // balancing circuit 266 tripped at this axis's stop
     std::int64_t contact_set_a = 0;      // impulses seen by each contact set of commutator 102
     std::int64_t contact_set_b = 0;
+    // What the counters miscounted, as tallies for the summary (nothing reads them in the run):
+    // impulses counted against the way the screw turned (coast that ran on after reversing
+    // control 214 was set for the next card), and impulses switch 110 stood for
+    // (count_hundredths_at_speed_1).
+    std::int64_t wrong_way = 0;
+    std::int64_t thousandths_uncounted = 0;
     cardreader::AxisOrder order;
 
 private:

@@ -152,6 +152,8 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     // The counters count up or down as reversing control 214 set them (the motion column),
     // whichever way the screw really turns: coast that runs on after the next card has set the
     // other sense is counted the wrong way, as on the 1952 machine.
+    c.wrong_way += impulse.direction != c.direction ? 1 : 0;
+    c.thousandths_uncounted += hundredths_only ? 1 : 0;
     const bool stepped =
         c.absolute_counter.impulse(c.direction, impulse.hundredths, impulse.tenths, impulse.inches,
                                    now_, min_interval_s_, !hundredths_only);

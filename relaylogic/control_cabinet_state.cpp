@@ -159,6 +159,10 @@ RunResult ControlCabinet::result() const {
         }
         a.slip_in = c.plant.slip_in();
         a.screw_in = c.plant.screw_in();
+        a.commutator_in = static_cast<double>(c.plant.commutator_index()) / 1000.0;
+        a.chain = c.plant.chain_figures();
+        a.wrong_way = c.wrong_way;
+        a.thousandths_uncounted = c.thousandths_uncounted;
         for (std::size_t k = 0; k < 4; ++k) {
             a.skipped_steps += c.absolute_counter.stepping_switch(k).skipped() ? 1 : 0;
             a.skipped_steps += c.increment_counter.stepping_switch(k).skipped() ? 1 : 0;

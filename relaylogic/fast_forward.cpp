@@ -241,6 +241,7 @@ void jump_quiet_impulses(AxisCircuit& c, std::int64_t n) {
     plant.skip_impulses(n);
     c.contact_set_a += n;
     c.contact_set_b += n;
+    c.wrong_way += d != c.direction ? n : 0; // (hundredths-only counting is never jumped)
     c.show_contacts();
     c.compare();
     c.speed_switch.equality_left(t_last);

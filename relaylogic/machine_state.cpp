@@ -186,6 +186,8 @@ json AxisCircuit::save() const {
                 {"stopped", stopped},
                 {"contact_set_a", contact_set_a},
                 {"contact_set_b", contact_set_b},
+                {"wrong_way", wrong_way},
+                {"thousandths_uncounted", thousandths_uncounted},
                 {"order", o}};
 }
 
@@ -204,6 +206,10 @@ void AxisCircuit::load(const json& j) {
     stopped = read<bool>(j, "stopped");
     contact_set_a = read<std::int64_t>(j, "contact_set_a");
     contact_set_b = read<std::int64_t>(j, "contact_set_b");
+    // States saved before the tallies were kept have none.
+    wrong_way = j.contains("wrong_way") ? read<std::int64_t>(j, "wrong_way") : 0;
+    thousandths_uncounted =
+        j.contains("thousandths_uncounted") ? read<std::int64_t>(j, "thousandths_uncounted") : 0;
     const json& o = member(j, "order");
     order.motion = read<std::string>(o, "motion") == "-" ? cardreader::Motion::reverse
                                                          : cardreader::Motion::forward;

@@ -3,6 +3,7 @@
 // only when the machine has that attachment.
 #pragma once
 
+#include "axes/chain_figures.hpp"
 #include "cardreader/layout.hpp"
 #include "relaylogic/conditions/condition_units.hpp"
 #include "relaylogic/faults.hpp"
@@ -28,6 +29,13 @@ struct AxisResult {
     double slip_in = 0;                      // a slip fault: how far the part lags the screw
     double screw_in = 0;                     // the main screw's travel (turns x lead)
     int skipped_steps = 0;                   // skip faults that acted on its switches
+    // Why the part is not where the counters say: the reading commutators 96-102 gave (net
+    // crossings x 0.001 in), the part against that reading cause by cause, and what the
+    // counters miscounted (relaylogic/axis_circuit.hpp).
+    double commutator_in = 0;
+    axes::ChainFigures chain;
+    std::int64_t wrong_way = 0;
+    std::int64_t thousandths_uncounted = 0;
 };
 
 struct CardTiming {

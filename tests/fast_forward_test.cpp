@@ -157,6 +157,10 @@ void require_same(const RunResult& a, const RunResult& b) {
         REQUIRE(a.axes.at(i).lost_steps == b.axes.at(i).lost_steps);
         REQUIRE(a.axes.at(i).slip_in == b.axes.at(i).slip_in);
         REQUIRE(a.axes.at(i).screw_in == b.axes.at(i).screw_in);
+        REQUIRE(a.axes.at(i).commutator_in == b.axes.at(i).commutator_in);
+        REQUIRE(a.axes.at(i).wrong_way == b.axes.at(i).wrong_way);
+        REQUIRE(a.axes.at(i).thousandths_uncounted == b.axes.at(i).thousandths_uncounted);
+        REQUIRE(a.axes.at(i).chain.sum() == Approx(b.axes.at(i).chain.sum()).margin(1e-12));
     }
     REQUIRE(a.faults.size() == b.faults.size());
     for (std::size_t i = 0; i < a.faults.size(); ++i) {

@@ -84,7 +84,8 @@ TEST_CASE("Fault skip-step: a skipping switch of the increment counter stops at 
     CHECK(abs.report["axes"]["table"]["position"].get<double>() == Approx(8.985));
     CHECK(abs.report["axes"]["table"]["position_error"].get<double>() ==
           Approx(-0.00125).margin(1e-6));
-    CHECK_THAT(abs.output, Catch::Contains("a stepping switch skipped a position"));
+    CHECK_THAT(abs.output, Catch::Contains("1 stepping switch skipped a position (fault "
+                                           "skip-step): -0.0010 in"));
 
     const Outcome inc = run_with("skip-step:table:310:300");
     CHECK(inc.exit_code == 3);
@@ -161,7 +162,9 @@ TEST_CASE("Fault slip: counting screw turns (a departure) the counters count the
     CHECK_THAT(report["faults"][0]["effect"].get<std::string>(),
                Catch::Contains("counted 25 impulses of screw turns the part never made") &&
                    Catch::Contains("no 1952 check can see"));
-    CHECK_THAT(r.output, Catch::Contains("warning: table lead screw slipped"));
+    CHECK_THAT(r.output, Catch::Contains("warning: table ends -0.0247 in from where its counters "
+                                         "say (the lead screw's drive slipped -0.0250 in (fault "
+                                         "slip)"));
 }
 
 TEST_CASE("Faults: a bad spec is a usage error naming it, faults combine", "[faults][cli]") {

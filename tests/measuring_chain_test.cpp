@@ -8,8 +8,10 @@
 #include "axes/lead_screw_nut.hpp"
 #include "axes/profile_json.hpp"
 #include "axes/screw_error_table.hpp"
+#include "outputs/report/run_report.hpp"
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include <optional>
 #include <random>
@@ -336,4 +338,73 @@ TEST_CASE("Measuring chain: error tables bring the impulses closer than 0.001 in
     CHECK(least == Approx(axis.least_screw_per_impulse()).epsilon(1e-6));
     axis.measure_by(MeasuringChain::screw_turns, false);
     CHECK(axis.least_screw_per_impulse() == axes::kInchesPerImpulse);
+}
+
+TEST_CASE("Measuring chain: the summary names the real cause of a silent position error from the "
+          "chain's own figures (backlash, lead error, instrument error, slip, coast counted the "
+          "other way)",
+          "[cabinet][chain][summary]") {
+    auto summary = [](const RunResult& r) { return cli::summary_text(r, "d.cbn", "p"); };
+    SECTION("counting screw turns: backlash taken up at the reversal, its figure") {
+        auto profile = chain_profile(MeasuringChain::screw_turns);
+        profile.axes.at(0).backlash_in = 0.003;
+        const RunResult r = run_orders(out_and_back(), profile);
+        REQUIRE(r.completed);
+        CHECK(r.axes.at(0).chain.backlash_in == Approx(0.003).margin(1e-12));
+        CHECK(r.axes.at(0).wrong_way == 0);
+        const std::string s = summary(r);
+        CHECK_THAT(s, Catch::Contains("table ends +0.0033 in from where its counters say (backlash "
+                                      "in nut 78 +0.0030 in, taken up when the motion reversed"));
+        CHECK_THAT(s, !Catch::Contains("coast counted"));
+    }
+    SECTION("counting screw turns: lead error and a slip, both named, the larger first") {
+        auto profile = chain_profile(MeasuringChain::screw_turns);
+        profile.axes.at(0).lead_error_in = {{0, 0}, {1, 0.004}};
+        const RunResult r =
+            run_orders(out_and_back(), profile, nullptr, {parse_fault("slip:table:100:6")});
+        REQUIRE(r.completed);
+        const std::string s = summary(r);
+        INFO(s);
+        const auto slip = s.find("the lead screw's drive slipped -0.0060 in (fault slip)");
+        const auto lead = s.find("lead error of lead screw 22 +0.0020 in at 0.494 in");
+        REQUIRE(slip != std::string::npos);
+        REQUIRE(lead != std::string::npos);
+        CHECK(slip < lead);
+    }
+    SECTION("through instrument shaft 74: its own error, and nothing of what it measures") {
+        auto profile = chain_profile(MeasuringChain::instrument_shaft_74);
+        profile.axes.at(0).instrument_error_in = {{0, 0}, {1, 0.004}};
+        profile.axes.at(0).backlash_in = 0.003; // measured: not a cause
+        const RunResult r = run_orders(out_and_back(), profile);
+        REQUIRE(r.completed);
+        const std::string s = summary(r);
+        INFO(s);
+        CHECK_THAT(s, Catch::Contains("(instrument shaft 74's own screw error +0.0020 in at 0.500 "
+                                      "in (instrument_error_in)"));
+        CHECK_THAT(s, !Catch::Contains("backlash in nut 78 +"));
+        CHECK(r.axes.at(0).chain.backlash_in == 0);
+    }
+    SECTION("coast that runs on after the next card set the other sense, counted the wrong way") {
+        // Card 1: the table at speed 1 with no slow-downs, last in the sequence, so it coasts
+        // on; card 2 sets reverse while it still coasts.
+        CardOrders one = idle_card(1, {0, 0, 0, 0, 0});
+        one.axis(Axis::table) = order(0, 1000, 1, {}, {}, 16);
+        one.axis(Axis::tilt).sequence = 1;
+        CardOrders two = idle_card(2, {1000, 0, 0, 0, 0});
+        two.axis(Axis::table) = order(1000, 900, 3, {}, {}, 1);
+        auto profile = axes::default_profile();
+        profile.incremental_equality_stops_at_any_speed = true;
+        const RunResult r = run_orders({one, two}, profile);
+        REQUIRE(r.axes.at(0).wrong_way > 0);
+        const std::string s = summary(r);
+        INFO(s);
+        CHECK_THAT(s, Catch::Contains(fmt::format("({} impulses of coast counted in the other "
+                                                  "direction",
+                                                  r.axes.at(0).wrong_way)));
+        CHECK_THAT(s, !Catch::Contains("not accounted for"));
+    }
+    SECTION("a perfect machine: no warning") {
+        const RunResult r = run_orders(out_and_back(), axes::default_profile());
+        CHECK_THAT(summary(r), !Catch::Contains("warning"));
+    }
 }

@@ -410,21 +410,69 @@ TEST_CASE("Progress: a line on standard error for bench, run and gen on a termin
 }
 
 TEST_CASE("Summary: an axis that ends half a thousandth or more from where its counters say is "
-          "warned about as counted the other way while coasting, and less is no warning",
+          "warned about with the cause the chain's figures give, and less is no warning",
           "[report][summary][mutation]") {
-    const std::string warning = "counted in the other direction while coasting";
+    // A cross slide whose commutators read 1.000 and whose part stands 1.00125: instrument
+    // shaft 74's own error +0.0015 at the reading, the rest where it came to rest.
     auto summary_with = [](double error_in) {
         relaylogic::RunResult r;
         r.completed = true;
-        r.axes.at(1).error_in = error_in; // the cross slide
+        auto& x = r.axes.at(1); // the cross slide
+        x.commutator_in = 1.0;
+        x.real_in = 1.0 + error_in;
+        x.error_in = error_in;
+        x.chain.at_in = 1.0;
+        x.chain.instrument_in = error_in;
         return cli::summary_text(r, "d.cbn", "parsons-safe");
     };
-    CHECK_THAT(summary_with(0.0005), Catch::Contains("cross ends +0.0005 in from where its "
-                                                     "counters say (counted in the other "
-                                                     "direction while coasting)"));
+    CHECK_THAT(summary_with(0.0005),
+               Catch::Contains("cross ends +0.0005 in from where its counters say (instrument "
+                               "shaft 74's own screw error +0.0005 in at 1.000 in "
+                               "(instrument_error_in)"));
     CHECK_THAT(summary_with(-0.0005), Catch::Contains("cross ends -0.0005 in"));
-    CHECK_THAT(summary_with(-0.0123), Catch::Contains(warning));
-    CHECK_THAT(summary_with(0.00049), !Catch::Contains(warning));
-    CHECK_THAT(summary_with(-0.00049), !Catch::Contains(warning));
+    CHECK_THAT(summary_with(-0.0123), Catch::Contains("own screw error -0.0123 in"));
+    CHECK_THAT(summary_with(0.00049), !Catch::Contains("warning"));
+    CHECK_THAT(summary_with(-0.00049), !Catch::Contains("warning"));
     CHECK_THAT(summary_with(0.0), !Catch::Contains("warning"));
+    // Nothing in the chain, nothing the counters did: a figure no mechanism gives is said to be
+    // unaccounted for, never put on a cause.
+    relaylogic::RunResult odd;
+    odd.completed = true;
+    odd.axes.at(1).real_in = 1.002;
+    odd.axes.at(1).commutator_in = 1.002;
+    odd.axes.at(1).error_in = 0.002;
+    CHECK_THAT(cli::summary_text(odd, "d.cbn", "parsons-safe"),
+               Catch::Contains("+0.0020 in between the commutators and the counters not "
+                               "accounted for"));
+}
+
+TEST_CASE("Summary: the causes of a silent position error come from the measuring chain's own "
+          "figures, largest first, each with its share",
+          "[report][summary][measuring-chain]") {
+    relaylogic::RunResult r;
+    r.completed = true;
+    auto& x = r.axes.at(0); // the table, counting screw turns
+    x.chain.counts_screw_turns = true;
+    x.chain.at_in = 2.389;
+    x.chain.backlash_in = 0.004;
+    x.chain.lead_in = 0.001;
+    x.chain.slip_in = -0.00004; // under the last decimal printed: left out
+    x.commutator_in = 2.385;
+    x.real_in = 2.385 + 0.005 - 0.00004 + 0.00025;
+    x.wrong_way = 3;
+    x.error_in = x.real_in - 2.385 + 0.006; // the counters three impulses short of the reading
+    const std::string s = cli::summary_text(r, "d.cbn", "parsons-1952");
+    INFO(s);
+    const auto backlash = s.find("backlash in nut 78 +0.0040 in");
+    const auto wrong = s.find("3 impulses of coast counted in the other direction");
+    const auto lead = s.find("lead error of lead screw 22 +0.0010 in at 2.389 in");
+    REQUIRE(backlash != std::string::npos);
+    REQUIRE(wrong != std::string::npos);
+    REQUIRE(lead != std::string::npos);
+    CHECK(wrong < backlash); // +0.0060 first, then +0.0040, then +0.0010
+    CHECK(backlash < lead);
+    CHECK_THAT(s, Catch::Contains("(reversing control 214 was already set for the next card): "
+                                  "+0.0060 in"));
+    CHECK_THAT(s, !Catch::Contains("slipped"));
+    CHECK_THAT(s, !Catch::Contains("not accounted for"));
 }

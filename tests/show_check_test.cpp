@@ -148,7 +148,9 @@ TEST_CASE("Report: a 10-inch slip across the counters' wrap is not hidden in the
     const auto key = report.find("\"position_error\"", table);
     REQUIRE(key != std::string::npos);
     CHECK(std::stod(report.substr(report.find(':', key) + 1)) == Approx(-10.0).margin(0.0005));
-    CHECK(run.output.find("table lead screw slipped: the part is -10.000") != std::string::npos);
+    CHECK_THAT(run.output, Catch::Contains("warning: table ends -10.0003 in from where its "
+                                           "counters say (the lead screw's drive slipped -10.0000 "
+                                           "in (fault slip)"));
 }
 
 TEST_CASE("Report: a correct move below zero wraps the counter and leaves no position error",

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
+#include <vector>
 
 namespace parsons::cli {
 
@@ -61,6 +63,104 @@ nlohmann::json tapping_json(const relaylogic::TappingResult& t) {
         {"tool_on_spindle", t.tool_on_spindle}, {"ratio_in_memory", decimals(t.ratio_in_memory, 6)},
         {"head_exchanges", t.head_exchanges},   {"transfers", t.transfers},
         {"ratios_received", t.ratios_received}, {"holes", holes}};
+}
+
+std::string join(const std::vector<std::string>& parts, std::string_view sep) {
+    std::string out;
+    for (const auto& p : parts) {
+        out += (out.empty() ? "" : std::string(sep)) + p;
+    }
+    return out;
+}
+
+// Why the part is not where the counters say, from the measuring chain's own figures: what the
+// chain does not measure (the part against the reading commutators 96-102 gave) and what the
+// counters miscounted (that reading against theirs). Each share with its figure, part minus
+// counters, largest first; a share under 0.00005 in (the last decimal printed) is left out,
+// and so is where the part came to rest between two crossings (under half a thousandth).
+std::vector<std::string> error_causes(const relaylogic::AxisResult& x) {
+    struct Share {
+        double in;
+        std::string words;
+    };
+    std::vector<Share> shares;
+    auto add = [&shares](double in, std::string words) {
+        if (std::abs(in) >= 0.00005) {
+            shares.push_back({in, std::move(words)});
+        }
+    };
+    const axes::ChainFigures& f = x.chain;
+    add(f.instrument_in,
+        fmt::format("instrument shaft 74's own screw error {:+.4f} in at {:.3f} in "
+                    "(instrument_error_in): the counters measure with that screw and cannot see "
+                    "its error",
+                    f.instrument_in, f.at_in));
+    add(f.cam_160_in, fmt::format("compensating cam 160's correction {:+.4f} in at {:.3f} in "
+                                  "(cam_160_in)",
+                                  f.cam_160_in, f.at_in));
+    add(f.screw_error_in, fmt::format("residual screw error {:+.4f} in at {:.3f} in "
+                                      "(screw_error_in)",
+                                      f.screw_error_in, f.at_in));
+    add(f.lead_in, fmt::format("lead error of lead screw 22 {:+.4f} in at {:.3f} in "
+                               "(lead_error_in), which counting screw turns does not measure",
+                               f.lead_in, f.at_in));
+    add(f.backlash_in, fmt::format("backlash in nut 78 {:+.4f} in, taken up when the motion "
+                                   "reversed (backlash_in), which counting screw turns does not "
+                                   "measure",
+                                   f.backlash_in));
+    add(f.slip_in, fmt::format("the lead screw's drive slipped {:+.4f} in (fault slip): the "
+                               "counters counted screw turns the part never made",
+                               f.slip_in));
+    // The counters' share: the reading the commutators gave against what the counters read.
+    const double counting = x.error_in - (x.real_in - x.commutator_in);
+    std::vector<std::string> how;
+    if (x.wrong_way > 0) {
+        how.push_back(fmt::format("{} impulse{} of coast counted in the other direction, "
+                                  "with the carries of commutators 96-100 "
+                                  "(reversing control 214 was already set for the next card)",
+                                  x.wrong_way, x.wrong_way == 1 ? "" : "s"));
+    }
+    if (x.thousandths_uncounted > 0) {
+        how.push_back("thousandths not counted while speed switch 236 stood on speed 1 "
+                      "(count_hundredths_at_speed_1)");
+    }
+    if (x.lost_steps > 0) {
+        how.push_back(fmt::format("{} stepping-switch step{} lost (impulses came faster than the "
+                                  "switches can step)",
+                                  x.lost_steps, x.lost_steps == 1 ? "" : "s"));
+    }
+    if (x.skipped_steps > 0) {
+        how.push_back(fmt::format("{} stepping switch{} skipped a position (fault skip-step)",
+                                  x.skipped_steps, x.skipped_steps == 1 ? "" : "es"));
+    }
+    if (how.size() == 1) {
+        add(counting, fmt::format("{}: {:+.4f} in", how.front(), counting));
+    } else if (how.size() > 1) {
+        add(counting,
+            fmt::format("the counters miscounted {:+.4f} in: {}", counting, join(how, ", ")));
+    } else if (std::abs(counting) >= 0.0005) {
+        add(counting, fmt::format("{:+.4f} in between the commutators and the counters not "
+                                  "accounted for",
+                                  counting));
+    }
+    const double rest = x.real_in - x.commutator_in - f.sum();
+    if (std::abs(rest) >= 0.001) {
+        add(rest,
+            fmt::format("{:+.4f} in between the part and the commutators not accounted for", rest));
+    }
+    std::stable_sort(shares.begin(), shares.end(), [](const Share& p, const Share& q) {
+        return std::abs(p.in) > std::abs(q.in);
+    });
+    std::vector<std::string> words;
+    for (auto& sh : shares) {
+        words.push_back(std::move(sh.words));
+    }
+    if (words.empty()) {
+        words.push_back(fmt::format("the part came to rest {:+.4f} in past the last crossing of "
+                                    "commutator 102",
+                                    rest));
+    }
+    return words;
 }
 
 } // namespace
@@ -279,32 +379,16 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
                              "measured through instrument shaft 74",
                              axis_name(a), x.screw_in, x.counter_in, screw_vs_counters(x)));
         }
-        if (x.slip_in != 0 && std::abs(x.error_in) >= 0.0005) {
-            line(fmt::format("  warning: {} lead screw slipped: the part is {:+.4f} in from where "
-                             "its counters say, and the 1952 checks could not see it",
-                             axis_name(a), x.error_in));
-        } else if (x.skipped_steps > 0 && std::abs(x.error_in) >= 0.0005) {
-            line(
-                fmt::format("  warning: {} ends {:+.4f} in from where its counters say (a stepping "
-                            "switch skipped a position): the 1952 checks could not see it",
-                            axis_name(a), x.error_in));
-        } else if (x.lost_steps == 0 && std::abs(x.error_in) >= 0.0005) {
-            line(fmt::format("  warning: {} ends {:+.4f} in from where its counters say (counted "
-                             "in the other direction while coasting): the 1952 checks could not "
-                             "see it",
-                             axis_name(a), x.error_in));
+        if (std::abs(x.error_in) >= 0.0005) {
+            line(fmt::format("  warning: {} ends {:+.4f} in from where its counters say ({}): "
+                             "the 1952 checks could not see it",
+                             axis_name(a), x.error_in, join(error_causes(x), "; ")));
         }
         if (r.completed && x.last_stop_in && std::abs(x.counter_in - *x.last_stop_in) >= 0.001) {
             line(fmt::format("  warning: {} ends at {:.3f} in, not on its last stop {:.3f} in: it "
                              "coasted past (reached the stop too fast) and no later card's check "
                              "was left to catch it",
                              axis_name(a), x.counter_in, *x.last_stop_in));
-        }
-        if (x.lost_steps > 0) {
-            line(fmt::format("  warning: {} lost {} stepping-switch steps (impulses came faster "
-                             "than {} can step): its counters read {:+.4f} in from where the "
-                             "part really is",
-                             axis_name(a), x.lost_steps, "the switches", -x.error_in));
         }
     }
     return out;
