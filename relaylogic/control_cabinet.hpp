@@ -118,8 +118,10 @@ public:
     void update_motor(AxisCircuit& c);
     void update_motors();
     // Spindle control 165 commands the spindle motor (column 1 of the card); the trace shows it.
+    // The condition cards' spindle actions drive the same motor, then show it.
     void command_spindle();
     void show_spindle();
+    axes::SpindleMotor& spindle_motor() { return spindle_motor_; }
     void evaluate_all() {
         for (auto& c : circuits_) {
             evaluate(*c);

@@ -538,6 +538,15 @@ TEST_CASE("Condition cards: the actions act on the plant — dwell holds its axi
     const ActionRecord& reversal = r.actions.at(0);
     REQUIRE(reversal.action == ActionKind::spindle_reverse);
     CHECK(reversal.acknowledged_s - reversal.tripped_s >= profile.actions.spindle_run_up_s);
+    // The machine has one spindle motor: the action drives the motor column 1 commands, and
+    // the cabinet's signal shows it changing from the trip until the acknowledgement.
+    const auto one = watch.of("cabinet.spindle_motor");
+    auto at = [&one](double t, std::uint32_t v) {
+        return std::any_of(one.begin(), one.end(),
+                           [&](const test::Change& c) { return c.t == t && c.new_value == v; });
+    };
+    CHECK(at(reversal.tripped_s, 3));
+    CHECK(at(reversal.acknowledged_s, 2));
     CHECK(watch.of("conditions.coolant_valve").back().new_value == 1);
     // The lamp (bit 2 for lamp 3) lit at the trip and went out with zeroizing.
     const auto lamps = watch.of("conditions.output_lamps");

@@ -87,6 +87,11 @@ public:
     // The zeroizing circuit: PFR and PRG cleared, output lamps out.
     void zeroize();
     bool held(cardreader::Axis axis) const { return ale_ && ale_->held(axis); }
+    void drive_spindle(axes::SpindleMotor& motor) {
+        if (ale_) {
+            ale_->drive_spindle(motor);
+        }
+    }
     void spindle_from_card(cardreader::Spindle s, double t) {
         if (ale_) {
             ale_->spindle_from_card(s, t);

@@ -51,6 +51,12 @@ void ConditionsAttachment::check_motion_card(ControlCabinet& cab) {
     }
 }
 
+// One spindle motor: the actions spindle-forward, -reverse and -stop drive the motor column 1
+// commands, so its time and the cabinet's signal cabinet.spindle_motor follow them too.
+void ConditionsAttachment::start(ControlCabinet& cab) {
+    units_.drive_spindle(cab.spindle_motor());
+}
+
 void ConditionsAttachment::relays_picked(ControlCabinet& cab) {
     units_.spindle_from_card(cab.orders().spindle, cab.now());
     units_.arm(cab.cards_read()); // PFR supplies each stored condition to PRG
@@ -68,6 +74,7 @@ bool ConditionsAttachment::after_count(ControlCabinet& cab, AxisCircuit& c) {
             continue;
         }
         const double done = units_.trip(k, cab.now());
+        cab.show_spindle(); // a spindle action changes the one motor
         tell(cab, k, ConditionEventKind::met);
         tell(cab, k, ConditionEventKind::action_started);
         cab.schedule(*this, done, k); // the acknowledgement, when the action is done

@@ -21,6 +21,7 @@ public:
     std::optional<cardreader::CardKind> card_kind() const override {
         return cardreader::CardKind::condition;
     }
+    void start(ControlCabinet& cab) override;
     void deck_ended(ControlCabinet& cab) override;
     void read_card(ControlCabinet& cab) override;
     void check_motion_card(ControlCabinet& cab) override;

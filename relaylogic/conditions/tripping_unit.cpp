@@ -47,13 +47,13 @@ double TrippingUnit::initiate(int k, const ActionEntry& a, double t) {
     double done = t;
     switch (a.action) {
     case ActionKind::spindle_forward:
-        done = spindle_.command(SpindleTurning::forward, t, times);
+        done = spindle_->command(SpindleTurning::forward, t, times);
         break;
     case ActionKind::spindle_reverse:
-        done = spindle_.command(SpindleTurning::reverse, t, times);
+        done = spindle_->command(SpindleTurning::reverse, t, times);
         break;
     case ActionKind::spindle_stop:
-        done = spindle_.command(SpindleTurning::off, t, times);
+        done = spindle_->command(SpindleTurning::off, t, times);
         break;
     case ActionKind::coolant_on:
     case ActionKind::coolant_off:
@@ -89,11 +89,14 @@ void TrippingUnit::acknowledge(int k, const ActionEntry& a) {
     show();
 }
 
+// On the machine the cabinet has commanded the one motor already (ControlCabinet::
+// command_spindle): the same order again changes nothing. The units alone (tests) command their
+// own.
 void TrippingUnit::spindle_from_card(cardreader::Spindle spindle, double t) {
-    spindle_.command(spindle == cardreader::Spindle::forward   ? SpindleTurning::forward
-                     : spindle == cardreader::Spindle::reverse ? SpindleTurning::reverse
-                                                               : SpindleTurning::off,
-                     t, profile_.actions);
+    spindle_->command(spindle == cardreader::Spindle::forward   ? SpindleTurning::forward
+                      : spindle == cardreader::Spindle::reverse ? SpindleTurning::reverse
+                                                                : SpindleTurning::off,
+                      t, profile_.actions);
     show();
 }
 
@@ -103,7 +106,7 @@ void TrippingUnit::zeroize() {
 }
 
 void TrippingUnit::show() {
-    tracer_.set(spindle_motor_, static_cast<std::uint32_t>(spindle_.turning()));
+    tracer_.set(spindle_motor_, static_cast<std::uint32_t>(spindle_->turning()));
     tracer_.set(coolant_valve_, coolant_ ? 1 : 0);
     tracer_.set(tool_in_spindle_, static_cast<std::uint32_t>(changer_.in_spindle()));
     tracer_.set(tool_changing_, static_cast<std::uint32_t>(changer_.changing_to()));
@@ -114,8 +117,8 @@ void TrippingUnit::show() {
 }
 
 nlohmann::json TrippingUnit::save() const {
-    return nlohmann::json{{"spindle", static_cast<int>(spindle_.turning())},
-                          {"spindle_ready_s", axes::exact(spindle_.ready_s())},
+    return nlohmann::json{{"spindle", static_cast<int>(spindle_->turning())},
+                          {"spindle_ready_s", axes::exact(spindle_->ready_s())},
                           {"tool_in_spindle", changer_.in_spindle()},
                           {"tool_changing_to", changer_.changing_to()},
                           {"coolant", coolant_},
@@ -130,8 +133,8 @@ void TrippingUnit::load(const nlohmann::json& j) {
     if (spindle < 0 || spindle > 2) {
         throw axes::StateError("tripping_ale.spindle: expected 0, 1 or 2");
     }
-    spindle_.restore(static_cast<SpindleTurning>(spindle),
-                     axes::exact(axes::member(j, "spindle_ready_s")));
+    spindle_->restore(static_cast<SpindleTurning>(spindle),
+                      axes::exact(axes::member(j, "spindle_ready_s")));
     changer_.restore(read<int>(j, "tool_in_spindle"), read<int>(j, "tool_changing_to"));
     coolant_ = read<bool>(j, "coolant");
     held_ = read<unsigned>(j, "held") & 0x1FU;

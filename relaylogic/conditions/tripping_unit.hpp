@@ -42,7 +42,11 @@ public:
         return (held_ >> cardreader::axis_index(axis) & 1U) != 0;
     }
     int tool_in_spindle() const { return changer_.in_spindle(); }
-    axes::SpindleTurning spindle() const { return spindle_.turning(); }
+    axes::SpindleTurning spindle() const { return spindle_->turning(); }
+    // The machine's one spindle motor, which column 1 commands through spindle control 165
+    // (ControlCabinet::spindle_motor): the actions drive it too. Until then, a motor of the
+    // unit's own (the units alone, in tests).
+    void drive_spindle(axes::SpindleMotor& motor) { spindle_ = &motor; }
     bool coolant() const { return coolant_; }
     unsigned lamps() const { return lamps_; } // bit n-1 for lamp n
     nlohmann::json save() const;
@@ -53,7 +57,8 @@ private:
 
     Tracer& tracer_;
     const axes::MachineProfile& profile_;
-    axes::SpindleMotor spindle_;
+    axes::SpindleMotor own_spindle_;
+    axes::SpindleMotor* spindle_ = &own_spindle_;
     axes::ToolChanger changer_;
     bool coolant_ = false;
     unsigned held_ = 0;    // bit per axis: its hold relay is open (a dwell)
