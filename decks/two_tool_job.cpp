@@ -84,13 +84,14 @@ struct Punch {
         c.number = static_cast<int>((cards.size() + 1) % 10000);
         return c;
     }
-    // A card that would move nothing is left out.
-    void move(const Move& m) {
+    // A card that would move nothing is left out. `spindle`: column 1 (the return to the change
+    // position orders it off: the changer takes no turning cutter).
+    void move(const Move& m, cardreader::Spindle spindle = cardreader::Spindle::forward) {
         if (m.x == x && m.y == y) {
             return;
         }
         CardOrders c = next_card();
-        c.spindle = cardreader::Spindle::forward;
+        c.spindle = spindle;
         for (Axis a : cardreader::kAxes) {
             c.axis(a).start_speed = 3; // idle: stop at once where they stand (0), check 0
         }
@@ -287,7 +288,9 @@ TwoToolDeck make_two_tool_deck(const Airfoil& airfoil, const TwoToolOptions& o,
     job.condition_card = job.cards.size();
     punch.condition({}); // its position is set below, from the return move's own card
     job.return_card = job.cards.size();
-    punch.move({0, job.clearance, false, false}); // the table last: its stop ends the card
+    // The table last: its stop ends the card. The spindle runs down on the way (column 1 blank):
+    // the change begins once it stands.
+    punch.move({0, job.clearance, false, false}, cardreader::Spindle::off);
 
     const cardreader::AxisOrder& back = job.cards.at(job.return_card).axis(Axis::table);
     const std::vector<double> t_at = pass_times(back, job.return_from, profile.axes.at(0));

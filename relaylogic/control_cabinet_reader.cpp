@@ -19,6 +19,12 @@ void ControlCabinet::feed() {
     if (stop_) {
         return;
     }
+    // A card of a later system that moved no axis by the 1952 columns (a condition or a sync
+    // card) took the reader's cycle: its time ends as the reader feeds the next card.
+    if (own_card_ != nullptr && record_times_ && !timings_.empty() &&
+        timings_.back().end_s <= timings_.back().start_s) {
+        timings_.back().end_s = now_;
+    }
     if (keep_resume_point_) {
         resume_point_ = capture();
     }

@@ -39,11 +39,12 @@ enum class StopReason : std::uint8_t {
                        // addition)
     condition_not_met, // a condition card's condition was not met by the end of its motion card
     condition_refused, // the cabinet cannot take a condition card (profile, deck, buffer)
-    sync_timeout,      // press synchronisation: the crank never came, or stood (an addition)
-    sync_refused,      // the cabinet cannot take a sync card (profile, deck)
-    transfer_timeout,  // spindle sync: PC 130's gear ratio transfer never completed (an addition)
-    tap_refused,       // the cabinet cannot take a tap card (profile, tool, speed)
-    interrupted,       // not a check: the operator stopped the run (SIGINT, SIGTERM)
+    tool_change_interlock, // a tool change tripped while the spindle is commanded to turn
+    sync_timeout,          // press synchronisation: the crank never came, or stood (an addition)
+    sync_refused,          // the cabinet cannot take a sync card (profile, deck)
+    transfer_timeout, // spindle sync: PC 130's gear ratio transfer never completed (an addition)
+    tap_refused,      // the cabinet cannot take a tap card (profile, tool, speed)
+    interrupted,      // not a check: the operator stopped the run (SIGINT, SIGTERM)
 };
 
 std::string_view stop_reason_name(StopReason r);

@@ -22,6 +22,8 @@ std::string_view stop_reason_name(StopReason r) {
         return "condition_not_met";
     case StopReason::condition_refused:
         return "condition_refused";
+    case StopReason::tool_change_interlock:
+        return "tool_change_interlock";
     case StopReason::sync_timeout:
         return "sync_timeout";
     case StopReason::sync_refused:

@@ -33,9 +33,11 @@ using parsons::test::punched;
 
 namespace {
 
-// A motion card: the table from `from` to `to` at speed 3, the other axes idle at 0.
+// A motion card: the table from `from` to `to` at speed 3, the other axes idle at 0, the
+// spindle at rest (column 1 blank: a tool change may trip on it).
 CardOrders table_move(int number, int from, int to) {
     CardOrders c = idle_card(number, {from, 0, 0, 0, 0});
+    c.spindle = Spindle::off;
     c.axis(Axis::table) = order(from, to, 3, {}, {}, 1);
     return c;
 }

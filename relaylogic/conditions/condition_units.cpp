@@ -88,6 +88,7 @@ std::optional<std::string> ConditionUnits::refuse_unmoved(const cardreader::Card
 }
 
 void ConditionUnits::arm(std::int64_t motion_card) {
+    buffer_->set_motion(MotionEntry::supplied, buffer_->motion_card_number());
     for (int k = 0; k < InternalBuffer::kChannels; ++k) {
         BufferPair& p = buffer_->pair(k);
         if (p.state == PairState::stored) {
@@ -131,6 +132,7 @@ void ConditionUnits::zeroize() {
             buffer_->pair(k) = BufferPair{};
         }
     }
+    buffer_->set_motion(MotionEntry::empty, -1);
     prg_->clear();
     ale_->zeroize();
 }
@@ -157,9 +159,11 @@ nlohmann::json ConditionUnits::save() const {
     if (!buffer_) {
         return nullptr;
     }
-    return nlohmann::json{{"buffer_pfr", buffer_->save()},
-                          {"monitoring_prg", prg_->save()},
-                          {"tripping_ale", ale_->save()}};
+    return nlohmann::json{
+        {"buffer_pfr", buffer_->save()},
+        {"motion_pfr", {static_cast<int>(buffer_->motion()), buffer_->motion_card_number()}},
+        {"monitoring_prg", prg_->save()},
+        {"tripping_ale", ale_->save()}};
 }
 
 void ConditionUnits::load(const nlohmann::json& j) {
@@ -174,6 +178,15 @@ void ConditionUnits::load(const nlohmann::json& j) {
         return; // saved before any condition card: the units stand as built
     }
     buffer_->load(axes::member(j, "buffer_pfr"));
+    if (j.contains("motion_pfr")) { // absent from states saved before it was kept: empty
+        const nlohmann::json& m = j.at("motion_pfr");
+        if (!m.is_array() || m.size() != 2 || !m.at(0).is_number_integer() ||
+            !m.at(1).is_number_integer() || m.at(0).get<int>() < 0 || m.at(0).get<int>() > 2 ||
+            m.at(1).get<int>() < -1 || m.at(1).get<int>() > 9999) {
+            throw axes::StateError("conditions.motion_pfr: expected [state 0-2, card number]");
+        }
+        buffer_->set_motion(static_cast<MotionEntry>(m.at(0).get<int>()), m.at(1).get<int>());
+    }
     prg_->load(axes::member(j, "monitoring_prg"));
     ale_->load(axes::member(j, "tripping_ale"));
 }

@@ -70,7 +70,10 @@ public:
     // (check 0) cannot be met. Returns the message naming cards, event and axis.
     std::optional<std::string> refuse_unmoved(const cardreader::CardOrders& motion,
                                               std::int64_t index) const;
-    // The motion card's relays pick: every stored condition is armed on PRG.
+    // A motion card is sensed: converter UMS enters its statement into PFR (claim 1).
+    void enter_motion(int card_number) { buffer_->set_motion(MotionEntry::entered, card_number); }
+    // The motion card's relays pick: PFR supplies its statement to the axes, and every stored
+    // condition is armed on PRG.
     void arm(std::int64_t motion_card);
     bool watching(cardreader::Axis axis) const { return prg_ && prg_->watching(axis); }
     // The counter of `axis` stepped to `counter`, counting in `direction`: the channels PRG

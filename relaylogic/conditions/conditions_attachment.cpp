@@ -45,6 +45,7 @@ void ConditionsAttachment::read_card(ControlCabinet& cab) {
 }
 
 void ConditionsAttachment::check_motion_card(ControlCabinet& cab) {
+    units_.enter_motion(cab.orders().number); // converter UMS: the motion statement into PFR
     if (auto refusal = units_.refuse_unmoved(cab.orders(), cab.cards_read())) {
         cab.machine_stop(StopReason::condition_refused, std::nullopt, *refusal,
                          "condition lamp (an addition)");
@@ -73,6 +74,10 @@ bool ConditionsAttachment::after_count(ControlCabinet& cab, AxisCircuit& c) {
         if ((met >> k & 1U) == 0) {
             continue;
         }
+        if (units_.ale().refuses_now(units_.buffer().pair(k).action)) {
+            interlock(cab, k);
+            return true;
+        }
         const double done = units_.trip(k, cab.now());
         cab.show_spindle(); // a spindle action changes the one motor
         tell(cab, k, ConditionEventKind::met);
@@ -81,6 +86,30 @@ bool ConditionsAttachment::after_count(ControlCabinet& cab, AxisCircuit& c) {
         dwell_follows(cab, k);
     }
     return met != 0;
+}
+
+// A tool change tripped while the spindle motor is commanded to turn. The seed's tool change is
+// made while the tool travels to the change position (claims 5 and 6), not while it cuts, and a
+// changer cannot take a turning cutter: the machine stops before the changer moves, naming the
+// condition card's action column and the column 1 that turns the spindle.
+void ConditionsAttachment::interlock(ControlCabinet& cab, int channel) {
+    const BufferPair& p = units_.buffer().pair(channel);
+    const bool by_card = cab.orders().spindle != cardreader::Spindle::off;
+    cab.machine_stop(
+        StopReason::tool_change_interlock, std::nullopt,
+        fmt::format("{}: event {} (card {}, column {}: tool change to tool {}) tripped as the {} "
+                    "axis passed {}, but the spindle is commanded to turn ({}): the tool changer "
+                    "takes no turning cutter, so it does not start and the machine stops (order "
+                    "the spindle off, column 1 blank, on the card that takes the tool to the "
+                    "change position; condition cards are an addition after EP 0640901, claims 5 "
+                    "and 6)",
+                    cab.card_name(), p.condition.event, p.card, slot_column(p, 8),
+                    p.action.parameter, axis_name(p.condition.axis),
+                    format_inches(p.condition.position),
+                    by_card ? fmt::format("column 1 of card {} orders it {}", cab.cards_read(),
+                                          cardreader::spindle_name(cab.orders().spindle))
+                            : std::string("a spindle action of a condition card started it")),
+        "tool changer interlock lamp (an addition)");
 }
 
 void ConditionsAttachment::on_event(ControlCabinet& cab, int channel) {

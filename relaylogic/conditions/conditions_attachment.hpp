@@ -43,6 +43,7 @@ private:
         units_.prg().each_watched(axis, direction, f);
     }
     void acknowledge(ControlCabinet& cab, int channel);
+    void interlock(ControlCabinet& cab, int channel);
     void tell(ControlCabinet& cab, int channel, ConditionEventKind kind);
     void dwell_follows(ControlCabinet& cab, int channel);
 

@@ -23,6 +23,21 @@ InternalBuffer::InternalBuffer(Tracer& tracer) : tracer_(tracer) {
                                       k),
                           "PFR", 3);
     }
+    motion_state_ = tracer.define("conditions", "buffer_pfr.motion.state",
+                                  "internal buffer PFR, motion entry: 0 empty, 1 entered by "
+                                  "converter UMS, 2 supplied to the axes (EP 0640901 claim 1)",
+                                  "PFR", 2);
+    motion_card_ = tracer.define("conditions", "buffer_pfr.motion.card",
+                                 "internal buffer PFR, motion entry: the number of the motion "
+                                 "card whose statement it holds",
+                                 "PFR", 14);
+}
+
+void InternalBuffer::set_motion(MotionEntry state, int card_number) {
+    motion_ = state;
+    motion_number_ = card_number;
+    tracer_.set(motion_state_, static_cast<std::uint32_t>(state));
+    tracer_.set(motion_card_, card_number < 0 ? 0U : static_cast<std::uint32_t>(card_number));
 }
 
 void InternalBuffer::set_state(int k, PairState s) {
@@ -77,6 +92,7 @@ nlohmann::json InternalBuffer::save() const {
                         {"parameter", p.action.parameter},
                         {"card", p.card},
                         {"card_number", p.card_number},
+                        {"slot", p.slot},
                         {"motion_card", p.motion_card},
                         {"tripped_s", exact(p.tripped_s)},
                         {"acknowledged_s", exact(p.acknowledged_s)}});
@@ -110,6 +126,10 @@ void InternalBuffer::load(const nlohmann::json& j) {
         p.action.parameter = read<int>(e, "parameter");
         p.card = read<std::int64_t>(e, "card");
         p.card_number = read<int>(e, "card_number");
+        p.slot = e.contains("slot") ? read<int>(e, "slot") : 0; // absent from older states
+        if (p.slot < 0 || p.slot >= cardreader::kConditionsPerCard) {
+            throw axes::StateError(fmt::format("buffer_pfr[{}]: slot out of range", k));
+        }
         p.motion_card = read<std::int64_t>(e, "motion_card");
         p.tripped_s = exact(axes::member(e, "tripped_s"));
         p.acknowledged_s = exact(axes::member(e, "acknowledged_s"));
@@ -145,6 +165,7 @@ std::optional<std::string> convert_condition_card(const cardreader::CardOrders& 
         p.action = ActionEntry{c.event, c.action, c.parameter};
         p.card = index;
         p.card_number = card.number;
+        p.slot = i;
         buffer.set_state(k, PairState::stored);
     }
     return std::nullopt;

@@ -18,6 +18,7 @@
 // holding relays (one per pair), so that every entry is a signal in the trace.
 #pragma once
 
+#include "cardreader/condition_card.hpp"
 #include "cardreader/orders.hpp"
 #include "relaylogic/tracer.hpp"
 
@@ -27,6 +28,12 @@
 namespace parsons::relaylogic {
 
 enum class PairState : std::uint8_t { empty, stored, armed, tripped, acknowledged };
+
+// The motion entry of PFR (claim 1: "the converter (UMS) enters the motion statement of the
+// motion record into an internal buffer (PFR)", which "supplies the motion statement to an
+// interpolator (ITP)"): entered as the motion card is sensed, supplied as its relays pick (the
+// 1952 storage banks and counters are the interpolator: none of its own), empty at zeroizing.
+enum class MotionEntry : std::uint8_t { empty, entered, supplied };
 
 struct ConditionEntry {
     int event = 0;
@@ -47,10 +54,16 @@ struct BufferPair {
     PairState state = PairState::empty;
     std::int64_t card = 0;        // deck position of the condition card it came from
     int card_number = -1;         // and its number
+    int slot = 0;                 // its slot on that card (0-4): columns 1 + 15 slot on
     std::int64_t motion_card = 0; // the motion card it watches (once armed)
     double tripped_s = -1;        // when PRG reported it
     double acknowledged_s = -1;
 };
+
+// The card column of a field of the pair's condition (offset 0 the event, 8 the action digit).
+inline int slot_column(const BufferPair& p, int offset) {
+    return 1 + p.slot * cardreader::kConditionSlotColumns + offset;
+}
 
 class InternalBuffer {
 public:
@@ -69,6 +82,11 @@ public:
     int first(PairState s) const;
     bool any(PairState s) const { return first(s) >= 0; }
     void clear(); // zeroizing: every pair back to empty
+    MotionEntry motion() const { return motion_; }
+    int motion_card_number() const { return motion_number_; }
+    // Converter UMS enters a motion card's statement (its number), or PFR supplies it, or
+    // zeroizing clears it.
+    void set_motion(MotionEntry state, int card_number);
     nlohmann::json save() const;
     void load(const nlohmann::json& j);
 
@@ -77,6 +95,10 @@ private:
     std::array<BufferPair, kChannels> pairs_{};
     std::array<SignalId, kChannels> event_signal_{};
     std::array<SignalId, kChannels> state_signal_{};
+    MotionEntry motion_ = MotionEntry::empty;
+    int motion_number_ = -1;
+    SignalId motion_state_;
+    SignalId motion_card_;
 };
 
 // Converter UMS (claim 1): takes a condition card's records and enters each as a condition

@@ -34,9 +34,13 @@ TrippingUnit::TrippingUnit(Tracer& tracer, const axes::MachineProfile& profile)
     tool_in_spindle_ = tracer.define("conditions", "tool_changer.in_spindle",
                                      "tool changer: the tool in the spindle", "", 7,
                                      static_cast<std::uint32_t>(profile.first_tool));
-    tool_changing_ =
-        tracer.define("conditions", "tool_changer.changing",
-                      "tool changer: the tool being put in (0 when no change is under way)", "", 7);
+    tool_changing_ = tracer.define(
+        "conditions", "tool_changer.changing",
+        "tool changer: the tool being put in, or next to be (0 when no change is ordered)", "", 7);
+    tool_waiting_ = tracer.define("conditions", "tool_changer.waiting",
+                                  "tool changer: changes ordered behind the one under way "
+                                  "(each waits for the changer)",
+                                  "", 4);
     lamps_signal_ =
         tracer.define("conditions", "output_lamps",
                       "output lamps 1-9 lit by lamp actions (bit n-1 for lamp n)", "", 9);
@@ -61,7 +65,9 @@ double TrippingUnit::initiate(int k, const ActionEntry& a, double t) {
         done = t + times.coolant_valve_s;
         break;
     case ActionKind::tool_change:
-        done = changer_.change(a.parameter, t, times);
+        // The changer takes no turning cutter: a change ordered while the spindle runs down
+        // begins when it stands (one ordered while it turns never trips: refuses_now).
+        done = changer_.change(a.parameter, t, spindle_->ready_s(), times);
         break;
     case ActionKind::dwell:
         held_ |= 1U << (a.parameter - 1);
@@ -80,7 +86,7 @@ double TrippingUnit::initiate(int k, const ActionEntry& a, double t) {
 
 void TrippingUnit::acknowledge(int k, const ActionEntry& a) {
     if (a.action == ActionKind::tool_change) {
-        changer_.complete();
+        changer_.complete(a.parameter);
     } else if (a.action == ActionKind::dwell) {
         held_ &= ~(1U << (a.parameter - 1));
     }
@@ -110,6 +116,7 @@ void TrippingUnit::show() {
     tracer_.set(coolant_valve_, coolant_ ? 1 : 0);
     tracer_.set(tool_in_spindle_, static_cast<std::uint32_t>(changer_.in_spindle()));
     tracer_.set(tool_changing_, static_cast<std::uint32_t>(changer_.changing_to()));
+    tracer_.set(tool_waiting_, static_cast<std::uint32_t>(changer_.waiting()));
     tracer_.set(lamps_signal_, lamps_);
     for (std::size_t a = 0; a < hold_relay_.size(); ++a) {
         tracer_.set(hold_relay_.at(a), held_ >> a & 1U);
@@ -117,10 +124,15 @@ void TrippingUnit::show() {
 }
 
 nlohmann::json TrippingUnit::save() const {
+    nlohmann::json changes = nlohmann::json::array();
+    for (const axes::ToolChange& c : changer_.changes()) {
+        changes.push_back({c.tool, axes::exact(c.start_s), axes::exact(c.done_s)});
+    }
     return nlohmann::json{{"spindle", static_cast<int>(spindle_->turning())},
                           {"spindle_ready_s", axes::exact(spindle_->ready_s())},
                           {"tool_in_spindle", changer_.in_spindle()},
                           {"tool_changing_to", changer_.changing_to()},
+                          {"tool_changes", changes},
                           {"coolant", coolant_},
                           {"held", held_},
                           {"lamps", lamps_},
@@ -135,7 +147,21 @@ void TrippingUnit::load(const nlohmann::json& j) {
     }
     spindle_->restore(static_cast<SpindleTurning>(spindle),
                       axes::exact(axes::member(j, "spindle_ready_s")));
-    changer_.restore(read<int>(j, "tool_in_spindle"), read<int>(j, "tool_changing_to"));
+    std::deque<axes::ToolChange> changes;
+    if (j.contains("tool_changes")) {
+        for (const nlohmann::json& c : axes::member(j, "tool_changes")) {
+            if (!c.is_array() || c.size() != 3 || !c.at(0).is_number_integer() ||
+                c.at(0).get<int>() < 1 || c.at(0).get<int>() > 99) {
+                throw axes::StateError(
+                    "tripping_ale.tool_changes: expected [tool 1-99, start, done]");
+            }
+            changes.push_back(
+                axes::ToolChange{c.at(0).get<int>(), axes::exact(c.at(1)), axes::exact(c.at(2))});
+        }
+    } else if (const int to = read<int>(j, "tool_changing_to"); to != 0) {
+        changes.push_back(axes::ToolChange{to, -1, -1}); // a state saved before the queue
+    }
+    changer_.restore(read<int>(j, "tool_in_spindle"), std::move(changes));
     coolant_ = read<bool>(j, "coolant");
     held_ = read<unsigned>(j, "held") & 0x1FU;
     lamps_ = read<unsigned>(j, "lamps") & 0x1FFU;

@@ -47,6 +47,13 @@ public:
     // (ControlCabinet::spindle_motor): the actions drive it too. Until then, a motor of the
     // unit's own (the units alone, in tests).
     void drive_spindle(axes::SpindleMotor& motor) { spindle_ = &motor; }
+    // The action may not begin now: a tool change while the spindle motor is commanded to turn
+    // (the changer takes no turning cutter; the cabinet stops the machine).
+    bool refuses_now(const ActionEntry& action) const {
+        return action.action == cardreader::ActionKind::tool_change &&
+               spindle_->turning() != axes::SpindleTurning::off;
+    }
+    const axes::ToolChanger& changer() const { return changer_; }
     bool coolant() const { return coolant_; }
     unsigned lamps() const { return lamps_; } // bit n-1 for lamp n
     nlohmann::json save() const;
@@ -70,6 +77,7 @@ private:
     SignalId coolant_valve_;
     SignalId tool_in_spindle_;
     SignalId tool_changing_;
+    SignalId tool_waiting_;
     SignalId lamps_signal_;
 };
 

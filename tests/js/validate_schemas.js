@@ -601,13 +601,21 @@ async function runAll() {
   expect('conditions-stored.state.json', 'state');
   const motionCard1 = AXES.map((a) => `1,0,${a},+,3,,,0.000,0.000,1`).join('\n');
   let refused = conditionText.split('\n').filter((l) => !l.startsWith('1,if')).join('\n');
-  refused = replaceLine(refused, '2,0,table,+,1,', `${motionCard1}\n2,0,table,+,1,`);
-  refused = replaceLine(refused, '2,0,cross,+,2,2.300,,2.500,2.500,12', '2,0,cross,+,3,,,0.000,0.000,12');
+  refused = replaceLine(refused, '2,,table,+,1,', `${motionCard1}\n2,,table,+,1,`);
+  refused = replaceLine(refused, '2,,cross,+,2,2.300,,2.500,2.500,12', '2,,cross,+,3,,,0.000,0.000,12');
   writeWork('condition-refused.csv', refused);
   run(['run', 'condition-refused.csv', '-q', '--resume', 'conditions-stored.state.json', '--report',
        'condition-refused.report.json', '--events', 'condition-refused.events.jsonl'], { codes: [3] });
   expect('condition-refused.report.json', 'report');
   expect('condition-refused.events.jsonl', 'events');
+  // tool_change_interlock: the sample with its card 2 turning the spindle forward (column 1 0)
+  // while event 8's tool change trips.
+  writeWork('tool-change-interlock.csv',
+            conditionText.split('\n').map((l) => l.replace(/^2,,/, '2,0,')).join('\n'));
+  run(['run', 'tool-change-interlock.csv', ...X, '-q', '--report', 'tool-change-interlock.report.json',
+       '--events', 'tool-change-interlock.events.jsonl'], { codes: [3] });
+  expect('tool-change-interlock.report.json', 'report');
+  expect('tool-change-interlock.events.jsonl', 'events');
 
   // Press synchronisation (EP 0436887): the sample, a press that stops (the card waits for an
   // angle it never reaches; the crank stops under a speed-synchronised axis), and a sync card
