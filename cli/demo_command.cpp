@@ -267,6 +267,8 @@ ExitCode run_demo(const std::string& dir) {
                "{0}/tapping-transferred.csv and {0}/tapping-stored.csv (each + .job.json, "
                ".profile.json, .report.json) and {0}/tapping-stale-ratio.report.json\n",
                dir);
+    fmt::print("\nevery claim of the five patents, with a command that shows it at work and what "
+               "to look for: docs/claims.md (installed under share/doc/parsons/docs/)\n");
     return code;
 }
 

@@ -378,3 +378,116 @@ TEST_CASE("Docs: every command of the README and the tutorial runs as written, a
     }
     CHECK(pictures >= 5);
 }
+
+namespace {
+
+// The cells of a Markdown table row (`| a | b |`), trimmed. A code span may not hold `|`.
+std::vector<std::string> table_cells(const std::string& row) {
+    std::vector<std::string> cells;
+    std::size_t from = 1;
+    while (from < row.size()) {
+        const auto bar = row.find('|', from);
+        if (bar == std::string::npos) {
+            break;
+        }
+        cells.push_back(trim(row.substr(from, bar - from)));
+        from = bar + 1;
+    }
+    return cells;
+}
+
+// The first code span of a cell, or "" when it has none.
+std::string first_code_span(const std::string& cell) {
+    const auto open = cell.find('`');
+    if (open == std::string::npos) {
+        return "";
+    }
+    const auto close = cell.find('`', open + 1);
+    return close == std::string::npos ? "" : cell.substr(open + 1, close - open - 1);
+}
+
+struct ClaimRow {
+    std::string section;
+    int claim = 0;
+    std::string command;  // empty: the emulator does not show the claim
+    std::string look_for; // the whole cell
+    std::string test;     // the whole cell
+};
+
+std::vector<ClaimRow> claim_rows(const std::string& markdown) {
+    std::vector<ClaimRow> rows;
+    std::string section;
+    for (const std::string& line : lines_of(markdown)) {
+        if (line.rfind("## ", 0) == 0) {
+            section = line.substr(3);
+            continue;
+        }
+        if (line.rfind("| ", 0) != 0 || line.rfind("| claim |", 0) == 0 ||
+            line.rfind("|---", 0) == 0) {
+            continue;
+        }
+        const auto cells = table_cells(line);
+        REQUIRE(cells.size() == 5);
+        ClaimRow r;
+        r.section = section;
+        r.claim = std::stoi(cells.at(0));
+        r.command = cells.at(2) == "—" ? "" : first_code_span(cells.at(2));
+        r.look_for = cells.at(3);
+        r.test = cells.at(4);
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+} // namespace
+
+TEST_CASE("Docs: the claims table lists every claim of the five seed patents, runs every command "
+          "in it and finds what each row says to look for, and names tests that exist",
+          "[docs][cli][claims]") {
+    const std::vector<ClaimRow> rows = claim_rows(read_bytes(source_path("docs/claims.md")));
+    // Each patent's claims, numbered 1 to N in order: US 2,820,187 has 23 ("23 Claims"),
+    // EP 0640901 six, EP 0436887 nine, EP 0360190 three, EP 0636958 sixteen.
+    const std::vector<std::pair<std::string, int>> patents = {{"US 2,820,187", 23},
+                                                              {"EP 0640901", 6},
+                                                              {"EP 0436887", 9},
+                                                              {"EP 0360190", 3},
+                                                              {"EP 0636958", 16}};
+    std::size_t at = 0;
+    for (const auto& [patent, claims] : patents) {
+        for (int n = 1; n <= claims; ++n, ++at) {
+            INFO(patent << " claim " << n);
+            REQUIRE(at < rows.size());
+            CHECK(rows.at(at).section.rfind(patent, 0) == 0);
+            CHECK(rows.at(at).claim == n);
+        }
+    }
+    CHECK(at == rows.size());
+    Scratch scratch;
+    int shown = 0;
+    for (const ClaimRow& row : rows) {
+        INFO(row.section << ", claim " << row.claim);
+        // The test cell: `tests/FILE.cpp` "part of a TEST_CASE name", or a dash.
+        std::smatch m;
+        if (row.test != "—") {
+            REQUIRE(std::regex_search(row.test, m, std::regex(R"re(`(tests/[^`]+)` "([^"]+)")re")));
+            const std::string file = read_bytes(source_path(m[1]));
+            CHECK(file.find(std::string(m[2])) != std::string::npos);
+        }
+        if (row.command.empty()) {
+            CHECK(row.look_for.size() > 40); // the sentence on why the emulator does not show it
+            continue;
+        }
+        const bool runs_parsons = row.command.rfind("build/cli/parsons ", 0) == 0 ||
+                                  row.command.rfind("mkdir -p out/claims && ", 0) == 0 ||
+                                  row.command.rfind("printf ", 0) == 0;
+        REQUIRE(runs_parsons);
+        const std::string literal = first_code_span(row.look_for);
+        REQUIRE_FALSE(literal.empty());
+        const ProcessResult r = scratch.run(row.command);
+        INFO(row.command << "\n" << r.output.substr(0, 4000));
+        CHECK(r.exit_code == documented_exit(row.look_for));
+        CHECK(r.output.find(literal) != std::string::npos);
+        ++shown;
+    }
+    CHECK(shown >= 40);
+}

@@ -98,6 +98,9 @@ TEST_CASE("Demo: the default job writes its deck, cards, report, trace, plot and
     CHECK(demo.exit_code == 0);
     CHECK(demo.output.find("status         completed") != std::string::npos);
     CHECK(demo.output.find("cut            deepest gouge") != std::string::npos);
+    // Where to find every claim shown at work (issue 30, item 4), and that the page is there.
+    CHECK(demo.output.find("docs/claims.md") != std::string::npos);
+    CHECK(std::filesystem::exists(source_path("docs/claims.md")));
     for (const char* f : {"naca2412.cbn", "naca2412.cbn.job.json", "cards/card-0001.svg",
                           "report.json", "trace.vcd", "plot.svg", "cut.svg", "centres.csv"}) {
         INFO(f);
