@@ -79,6 +79,12 @@ std::vector<TapFinding> TapReview::card(std::int64_t index, const CardOrders& or
                          fmt::format("tap tool {}: no spindle head 31 of profile {} holds it "
                                      "(its heads hold tools {}): PC 130 has nothing to put on",
                                      t.tool, profile_, held_tools(limits_))});
+    } else if (!head->tap) {
+        found.push_back({index, column_of(FieldKind::tap_tool), t.axis,
+                         fmt::format("tap tool {}: its spindle head 31 holds a cutter, not a tap "
+                                     "(profile {}): a tap card feeds the axis one pitch a turn of "
+                                     "the tool, which only a tap may be fed",
+                                     t.tool, profile_)});
     }
     if (t.rpm > limits_.max_rpm + 1e-9) {
         found.push_back({index, column_of(FieldKind::tap_rpm), t.axis,

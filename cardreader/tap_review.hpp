@@ -5,6 +5,7 @@
 //   - a tap card under a profile without spindle synchronisation (parsons-1952, parsons-safe):
 //     column 76;
 //   - a tool no spindle head 31 of the profile holds (PC 130 has nothing to put on): column 2;
+//   - a tool whose head holds a cutter, not a tap (it would be fed as a tap): column 2;
 //   - a speed S above spindle motor 27's fastest: column 15;
 //   - a feed the follower drive cannot follow: the tool turns S x A rev/min (A: the ratio of
 //     gear unit 30 with that tool's head, the figure memory 12a holds, claim 1), so the axis
@@ -35,8 +36,9 @@ struct SpindleLimits {
     struct Head {
         int tool = 0;
         double ratio = 1.0; // tool revolutions per motor revolution (A)
+        bool tap = true;    // it holds a tap (false: a cutter, which a tap card may not call)
     };
-    std::vector<Head> heads = {{1, 0.25}, {2, 1.0 / 3.0}, {3, 0.5}};
+    std::vector<Head> heads = {{1, 0.25, true}, {2, 1.0 / 3.0, true}, {3, 0.5, false}};
     double max_rpm = 240.0;            // motor 27's fastest
     double drive_max_in_per_min = 5.4; // the fastest the follower drive follows
 

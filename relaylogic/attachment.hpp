@@ -37,6 +37,8 @@ class Tracer;
 class CounterWatch;
 struct AxisCircuit;
 struct RunResult;
+struct Fault;
+struct FaultEffect;
 
 class Attachment {
 public:
@@ -132,6 +134,10 @@ public:
     virtual void save(const ControlCabinet& /*cab*/, nlohmann::json& /*state*/) const {}
     virtual void load(ControlCabinet& /*cab*/, const nlohmann::json& /*state*/) {}
     virtual void add_to(RunResult& /*result*/) const {}
+    // After the run: what an injected fault that acts on its units did (`e` as the cabinet left
+    // it; an attachment sets acted and the effect for the faults it carries out).
+    virtual void fault_effect(const ControlCabinet& /*cab*/, const Fault& /*f*/,
+                              FaultEffect& /*e*/) const {}
 
     // The hooks that come at every impulse or every instant of the event loop: the cabinet
     // calls each only of the attachments whose class overrides it. The registry records them

@@ -108,6 +108,7 @@ public:
     const std::vector<std::unique_ptr<AxisCircuit>>& circuits() const { return circuits_; }
     // The machine stopped (master switch open), or the deck is not done and no stop came.
     bool stopped() const { return stop_.has_value(); }
+    const std::optional<StopInfo>& stop_info() const { return stop_; }
     bool running() const { return !deck_finished_ && !stop_; }
     // One of the attachment's events at time t, passed back to its on_event(code). A standing
     // event outlives the card (the zeroizing circuit does not clear it).

@@ -106,6 +106,9 @@ void ControlCabinet::report_faults() {
             e.acted = true;
             e.effect = slip_effect(f, c);
         }
+        for (const auto& a : attachments_) {
+            a->fault_effect(*this, f, e); // stale-ratio, transfer-hang: PC 130's
+        }
         if (!e.acted && e.effect.empty()) {
             e.effect = "never came into play in this run";
         }

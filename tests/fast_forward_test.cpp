@@ -229,9 +229,10 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
     int lost = 0;
     int sensed_two_relays = 0; // parsons-1952 reading a double punch into two relays
     int interpretations = 0;
-    long trips = 0;  // condition cards' actions acknowledged
-    int not_met = 0; // runs that stopped on condition_not_met
-    int refused = 0; // ... on condition_refused
+    long trips = 0;     // condition cards' actions acknowledged
+    int not_met = 0;    // runs that stopped on condition_not_met
+    int refused = 0;    // ... on condition_refused
+    int interlocks = 0; // ... on tool_change_interlock
     for (int n = 0; n < 240; ++n) {
         const Case c = random_case(rng, crng, srng, trng);
         INFO("deck " << n);
@@ -253,6 +254,7 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
         trips += static_cast<long>(reference.actions.size());
         not_met += reference.stop && reference.stop->reason == StopReason::condition_not_met;
         refused += reference.stop && reference.stop->reason == StopReason::condition_refused;
+        interlocks += reference.stop && reference.stop->reason == StopReason::tool_change_interlock;
         if (reference.tapping) {
             for (const HoleRecord& h : reference.tapping->holes) {
                 holes += h.completed ? 1 : 0;
@@ -290,6 +292,7 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
     CHECK(trips >= 40);
     CHECK(not_met >= 5);
     CHECK(refused >= 3);
+    CHECK(interlocks >= 2);
     CHECK(synced >= 40);
     CHECK(loop_backs >= 5);
     CHECK(timeouts >= 2);

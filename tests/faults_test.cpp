@@ -200,3 +200,41 @@ TEST_CASE("Faults: a count runs from 1 to 999999999, on every build (long is 32 
         CHECK(r.output.find("must be a count from 1 to 999999999") != std::string::npos);
     }
 }
+
+TEST_CASE("Faults: acted is whether the fault's moment came, for every kind, and one whose moment "
+          "never comes is acted false and says so",
+          "[faults]") {
+    // The sample's table counts 8985 impulses out and back on card 1 and later cards; the deck
+    // has 5 cards. Each spec below names a moment past the run (stuck-relay acts from the start
+    // and is held by its own test above).
+    const std::vector<std::pair<std::string, bool>> cases = {
+        {"drop-impulse:table:120", true},
+        {"drop-impulse:table:999999", false},
+        {"dead-relay:table:350:8", true},
+        {"dead-relay:table:350:7", false},
+        {"skip-step:table:110:100", true},
+        {"skip-step:table:110:999999", false},
+        {"feed-twice:2", true},
+        {"feed-twice:99", false},
+        {"swap-cards:2", true},
+        {"swap-cards:99", false},
+        {"short-card:2", true},
+        {"short-card:99", false},
+        {"slip:table:2000:25", true},
+        {"slip:table:999999:25", false},
+        {"stale-ratio:1", false}, /* no tap card: PC 130 never exchanges a head */
+        {"transfer-hang:1", false}};
+    for (const auto& [spec, acts] : cases) {
+        INFO(spec);
+        TempDir dir;
+        const auto r = run_parsons("run " + q(source_path("decks/samples/patent-example.csv")) +
+                                   " --profile parsons-extended -q --fault " + spec + " --report " +
+                                   q(dir.str("r.json")));
+        REQUIRE((r.exit_code == 0 || r.exit_code == 3));
+        const auto report = nlohmann::json::parse(read_bytes(dir.path("r.json")));
+        REQUIRE(report["faults"].size() == 1);
+        CHECK(report["faults"][0]["acted"] == acts);
+        const std::string effect = report["faults"][0]["effect"];
+        CHECK((effect == "never came into play in this run") == !acts);
+    }
+}

@@ -190,6 +190,9 @@ Case random_case(std::mt19937& rng, std::mt19937& crng, std::mt19937& srng, std:
             t.kind = CardKind::tap;
             t.number = number++;
             t.tap.tool = tchance(0.95) ? tpick(1, 3) : tpick(4, 99);
+            if (t.tap.tool == 3 && t.number % 4 != 0) {
+                t.tap.tool = 1; // tool 3's head holds a cutter: a tap card calling it is refused
+            }
             t.tap.axis = kAxes.at(static_cast<std::size_t>(tpick(0, 4)));
             t.tap.motion = tchance(0.5) ? Motion::forward : Motion::reverse;
             t.tap.depth = static_cast<Thousandths>(tpick(1, tchance(0.8) ? 300 : 2000));
@@ -307,6 +310,17 @@ Case random_case(std::mt19937& rng, std::mt19937& crng, std::mt19937& srng, std:
                 cond.conditions.at(0).event = cond.conditions.at(cond.condition_count - 1).event;
             }
             c.cards.push_back(cond);
+        }
+        // A tool change may not trip while the spindle turns (tool_change_interlock): most motion
+        // cards a tool change waits on order it off, the others show the interlock.
+        if (conditions && o.number % 6 != 0) {
+            const CardOrders& cond = c.cards.back();
+            for (int k = 0; k < cond.condition_count; ++k) {
+                if (cond.conditions.at(static_cast<std::size_t>(k)).action ==
+                    ActionKind::tool_change) {
+                    o.spindle = Spindle::off;
+                }
+            }
         }
         c.cards.push_back(o);
         if (mistake == 7 && n == bad_card) {

@@ -646,6 +646,10 @@ TEST_CASE("Tap card: check, show and run exit 2 on a tap card the profile cannot
     const std::vector<Refusal> refusals = {
         {"2,tap,7,vertical,reverse,0.600,0.05000,240\n",
          "card 2, column 2: tap tool 7: no spindle head 31 of profile parsons-extended holds it"},
+        // Tool 3's head holds a cutter (radius 0.25 in): a tap card may not feed it as a tap.
+        {"2,tap,3,vertical,reverse,0.600,0.02000,240\n",
+         "card 2, column 2: tap tool 3: its spindle head 31 holds a cutter, not a tap (profile "
+         "parsons-extended)"},
         {"2,tap,1,vertical,reverse,0.600,0.01000,300\n",
          "card 2, column 15: tap speed S 300 rev/min is above spindle motor 27's fastest, 240 "
          "rev/min"},

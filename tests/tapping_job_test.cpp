@@ -478,3 +478,50 @@ TEST_CASE("Tapping job: a spacing, clearance or thread depth far past the counte
     CHECK_THROWS_WITH(decks::make_tapping_deck(o, profile),
                       Contains("the hole's bottom would lie below the vertical's zero"));
 }
+
+TEST_CASE("Tapping job: faults[].acted of stale-ratio and transfer-hang is the fact the thread "
+          "proof and the stop use: the holes cut with a ratio not their head's, the transfer "
+          "that stopped the machine",
+          "[tapping_job][faults][cli]") {
+    TempDir dir;
+    const std::string deck = dir.str("plate.csv");
+    REQUIRE(run_parsons("gen tapping -o " + q(deck)).exit_code == 0);
+    const std::string job = q(deck + ".job.json");
+    const auto fault = [&](const std::string& spec) {
+        const auto r = run_parsons("run " + q(deck) + " -q --thread-proof " + job + " --fault " +
+                                   spec + " --report " + q(dir.str("r.json")));
+        INFO(spec << "\n" << r.output);
+        CHECK(r.exit_code == 3);
+        return nlohmann::json::parse(test::read_bytes(dir.path("r.json")));
+    };
+    const auto stale = fault("stale-ratio:1");
+    REQUIRE(stale["faults"].size() == 1);
+    CHECK(stale["faults"][0]["acted"] == true);
+    std::string flagged; // the cards of the holes the proof flags, as the effect lists them
+    for (const auto& h : stale["tapping"]["holes"]) {
+        if (h["flagged"] == true) {
+            flagged += (flagged.empty() ? "" : ", ") + fmt::format("{:04}", h["number"].get<int>());
+        }
+    }
+    CHECK(stale["tapping"]["holes_flagged"] == 3);
+    CHECK_THAT(stale["faults"][0]["effect"].get<std::string>(),
+               Catch::Contains("head exchange 1 transferred no gear ratio to memory 12a: 3 holes "
+                               "tapped with a ratio not its head's (cards " +
+                               flagged + ")"));
+    const auto hang = fault("transfer-hang:1");
+    CHECK(hang["stop"]["reason"] == "transfer_timeout");
+    CHECK(hang["faults"][0]["acted"] == true);
+    CHECK_THAT(hang["faults"][0]["effect"].get<std::string>(),
+               Catch::Contains("gear ratio transfer 1 never completed") &&
+                   Catch::Contains("(transfer_timeout)"));
+    // A second exchange or transfer the plate never makes: not acted.
+    for (const char* spec : {"stale-ratio:2", "transfer-hang:2"}) {
+        const auto r = run_parsons("run " + q(deck) + " -q --thread-proof " + job + " --fault " +
+                                   spec + " --report " + q(dir.str("n.json")));
+        INFO(spec << "\n" << r.output);
+        CHECK(r.exit_code == 0);
+        const auto n = nlohmann::json::parse(test::read_bytes(dir.path("n.json")));
+        CHECK(n["faults"][0]["acted"] == false);
+        CHECK(n["faults"][0]["effect"] == "never came into play in this run");
+    }
+}

@@ -312,7 +312,7 @@ TEST_CASE("Tapping: transfer_timeout fires at the first scan at or after transfe
 }
 
 TEST_CASE("Tapping: the cabinet refuses a tap card under a profile without spindle "
-          "synchronisation, and a tool no head holds",
+          "synchronisation, a tool no head holds, and a head that holds a cutter",
           "[tapping]") {
     const std::vector<CardOrders> deck = {idle_card(1, kHome), tap(2, 1, 400, 5000, 240)};
     const RunResult plain = run_taps(deck, axes::default_profile(), Pace::fast_forward);
@@ -325,6 +325,14 @@ TEST_CASE("Tapping: the cabinet refuses a tap card under a profile without spind
     REQUIRE(unknown.stop);
     CHECK(unknown.stop->reason == StopReason::tap_refused);
     CHECK_THAT(unknown.stop->message, Catch::Contains("tool 7"));
+    // Tool 3's head holds a cutter: the cabinet does not feed it as a tap (issue 30, item 3).
+    const RunResult cutter = run_taps({idle_card(1, kHome), tap(2, 3, 400, 2000, 240)},
+                                      tap_profile(), Pace::fast_forward);
+    REQUIRE(cutter.stop);
+    CHECK(cutter.stop->reason == StopReason::tap_refused);
+    CHECK_THAT(cutter.stop->message, Catch::Contains("tool 3: its spindle head holds a cutter"));
+    REQUIRE(cutter.tapping);
+    CHECK(cutter.tapping->holes.empty()); // nothing was tapped
 }
 
 TEST_CASE("Tapping: the cabinet refuses a speed that turns motor 27 half a revolution a sample, "

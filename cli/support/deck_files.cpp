@@ -192,7 +192,7 @@ cardreader::SpindleLimits spindle_limits(const axes::MachineProfile& profile) {
     cardreader::SpindleLimits limits;
     limits.heads.clear();
     for (const axes::SpindleHead& h : profile.spindle.heads) {
-        limits.heads.push_back({h.tool, h.ratio});
+        limits.heads.push_back({h.tool, h.ratio, h.pitch_in.has_value()});
     }
     limits.max_rpm = profile.spindle.max_rpm;
     limits.drive_max_in_per_min = profile.sync_drive.max_in_per_min;

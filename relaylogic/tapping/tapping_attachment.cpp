@@ -179,3 +179,45 @@ void TappingAttachment::add_to(RunResult& result) const {
 }
 
 } // namespace parsons::relaylogic
+
+namespace parsons::relaylogic {
+
+// PC 130's faults came into play when their exchange or transfer came: stale-ratio:N when head
+// exchange N was made (and S2 answered that no ratio need change, so none was transferred),
+// transfer-hang:N when transfer N began. The holes the effect names are those the thread proof
+// judges by the same fact: tapped with a ratio in memory 12a that is not their head's.
+void TappingAttachment::fault_effect(const ControlCabinet& cab, const Fault& f,
+                                     FaultEffect& e) const {
+    const ProgrammableController& pc = units_.pc();
+    if (f.kind == FaultKind::stale_ratio &&
+        cab.profile().spindle.ratio_source == axes::RatioSource::transferred &&
+        pc.exchanges() >= f.n) {
+        std::string cards;
+        int stale = 0;
+        for (const HoleRecord& h : units_.holes()) {
+            if (h.tool != 0 && h.ratio_used != h.head_ratio) {
+                cards += fmt::format("{}{:04}", stale++ == 0 ? "" : ", ", h.number);
+            }
+        }
+        e.acted = true;
+        e.effect =
+            stale == 0
+                ? fmt::format("head exchange {} transferred no gear ratio to memory 12a; no hole "
+                              "was tapped with the stale ratio",
+                              f.n)
+                : fmt::format("head exchange {} transferred no gear ratio to memory 12a: {} "
+                              "hole{} tapped with a ratio not its head's (card{} {})",
+                              f.n, stale, stale == 1 ? "" : "s", stale == 1 ? "" : "s", cards);
+    } else if (f.kind == FaultKind::transfer_hang && pc.transfers() >= f.n) {
+        e.acted = true;
+        e.effect =
+            fmt::format("gear ratio transfer {} never completed: the ratio never reached "
+                        "memory 12a{}",
+                        f.n,
+                        cab.stop_info() && cab.stop_info()->reason == StopReason::transfer_timeout
+                            ? ", and the NC stopped the machine (transfer_timeout)"
+                            : "");
+    }
+}
+
+} // namespace parsons::relaylogic

@@ -33,6 +33,7 @@ public:
     void save(const ControlCabinet& cab, nlohmann::json& state) const override;
     void load(ControlCabinet& cab, const nlohmann::json& state) override;
     void add_to(RunResult& result) const override;
+    void fault_effect(const ControlCabinet& cab, const Fault& f, FaultEffect& e) const override;
 
 private:
     enum Code : int { pc_scan_event = 0, spindle_sample_event = 1 };

@@ -142,6 +142,11 @@ std::optional<std::string> TappingUnits::refusal(const cardreader::TapOrder& o,
     if (head == nullptr) {
         return fmt::format("tool {} is on no spindle head of profile {}", o.tool, profile.name);
     }
+    if (!head->pitch_in) {
+        return fmt::format("tool {}: its spindle head holds a cutter, not a tap (profile {}): a "
+                           "tap card feeds one pitch a turn of the tool, which only a tap may be",
+                           o.tool, profile.name);
+    }
     if (o.rpm < 1 || o.rpm > p.max_rpm) {
         return fmt::format("spindle speed {} rev/min: motor 27 turns at most {:g} rev/min", o.rpm,
                            p.max_rpm);
