@@ -98,6 +98,9 @@ bool TappingAttachment::card_read(ControlCabinet& cab) {
 void TappingAttachment::on_event(ControlCabinet& cab, int code) {
     if (code == pc_scan_event) {
         pc_scan(cab);
+    } else if (code == reversal_event) {
+        advance_plants(cab, cab.now());
+        units_.reverse(cab.now());
     } else {
         spindle_sample(cab);
     }
@@ -140,6 +143,9 @@ void TappingAttachment::spindle_sample(ControlCabinet& cab) {
     }
     const bool done =
         units_.sample(cab.now(), c.absolute_counter.value(), c.plant.real_in(), c.plant.at_rest());
+    if (const auto at = units_.take_reversal()) {
+        cab.schedule(*this, *at, reversal_event);
+    }
     cab.update_motor(c);
     if (!done) {
         cab.schedule(*this, cab.now() + cab.profile().spindle.sample_s, spindle_sample_event);

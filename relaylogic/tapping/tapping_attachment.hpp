@@ -36,7 +36,7 @@ public:
     void fault_effect(const ControlCabinet& cab, const Fault& f, FaultEffect& e) const override;
 
 private:
-    enum Code : int { pc_scan_event = 0, spindle_sample_event = 1 };
+    enum Code : int { pc_scan_event = 0, spindle_sample_event = 1, reversal_event = 2 };
     void pc_scan(ControlCabinet& cab);
     void spindle_sample(ControlCabinet& cab);
     static void counting_sense(AxisCircuit& c, int direction);

@@ -74,11 +74,12 @@ void TappingUnits::inject(const std::vector<Fault>& faults) {
     }
 }
 
-void TappingUnits::on_edge(const axes::DetectorEdge& edge) {
+void TappingUnits::on_edge(const axes::DetectorEdge& edge, double t) {
     const int sense = device_13_->judge(edge);
     if (sense != 0) {
         counter_33_->count(sense);
         speed_33_->pulse();
+        last_edge_s_ = t;
     }
 }
 
@@ -88,7 +89,7 @@ void TappingUnits::catch_up(double t) {
         const double at = spindle_->next_event_time();
         if (auto edge = spindle_->advance_to(at)) {
             tracer_->set_time(at);
-            on_edge(*edge);
+            on_edge(*edge, at);
             moved = true;
         }
     }
@@ -100,6 +101,8 @@ void TappingUnits::catch_up(double t) {
 
 void TappingUnits::halt() {
     phase_ = Phase::idle;
+    reverse_at_s_.reset();
+    reversal_scheduled_ = false;
     feed_.speed_in_per_s = 0;
     spindle_->command_rpm(0);
     show();
@@ -118,7 +121,9 @@ void TappingUnits::jump_to(double t) {
         const std::int64_t n = spindle_->pulses_by(t);
         if (n > 0) {
             const std::int64_t before = spindle_->count();
+            const double last_s = spindle_->pulse_time(n);
             const axes::DetectorEdge last = spindle_->skip_pulses(n);
+            last_edge_s_ = last_s;
             const int way = last.count >= before ? +1 : -1;
             device_13_->jump_to(last.count, way);
             counter_33_->count_many(n, way);
@@ -129,8 +134,9 @@ void TappingUnits::jump_to(double t) {
             return;
         }
         // A segment boundary (or, never with an exact pulses_by, an edge left over).
-        if (auto edge = spindle_->advance_to(spindle_->next_event_time())) {
-            on_edge(*edge);
+        const double at = spindle_->next_event_time();
+        if (auto edge = spindle_->advance_to(at)) {
+            on_edge(*edge, at);
         }
     }
 }
@@ -236,6 +242,13 @@ void TappingUnits::start(double t, int counter, double real_in) {
     z_cmd_in_ = 0;
     last_counter_33_ = counter_33_->value();
     speed_33_->sample(); // the first sample counts from here
+    prev_edge_s_ = last_edge_s_;
+    rate_ = 0;
+    accel_ = 0;
+    mid_s_ = t;
+    measured_ = false;
+    reverse_at_s_.reset();
+    reversal_scheduled_ = false;
     const axes::SpindleHead* head = profile_.spindle.head(spindle_->tool());
     HoleRecord& h = holes_.back();
     h.tool = spindle_->tool();
@@ -290,15 +303,14 @@ bool TappingUnits::sample(double t, int counter, double real_in, bool feed_at_re
     const double z_counted = sense * moved / 1000.0;
     const double per_edge = travel_per_edge();
     z_cmd_in_ += d * per_edge;
+    measure_speed(t, d);
     const double depth = order_.depth / 1000.0;
     record(t, real_in);
     HoleRecord& h = holes_.back();
     switch (phase_) {
     case Phase::run_in:
-        if (depth - z_cmd_in_ <= run_down_travel(edges)) {
-            spindle_->command_rpm(-order_.rpm); // reverse: run down at the depth, then out
-            h.reverse_s = t;
-            phase_ = Phase::run_out;
+        if (!reverse_at_s_) {
+            plan_reversal(t, depth, per_edge);
         }
         break;
     case Phase::run_out:
@@ -336,12 +348,86 @@ bool TappingUnits::sample(double t, int counter, double real_in, bool feed_at_re
         }
         v = p.feed_gain_per_s * (0.0 - z_counted);
     } else {
-        v = d * per_edge / p.sample_s + p.feed_gain_per_s * (z_cmd_in_ - z_counted);
+        // The tool's speed as measured, carried to the middle of the coming sample.
+        // Once motor 27 is commanded to rest and a sample passes with no edge, it stands: no
+        // feed for a speed measured before.
+        const double ahead = phase_ == Phase::stopping && d == 0
+                                 ? 0.0
+                                 : rate_ + accel_ * (t + 0.5 * p.sample_s - mid_s_);
+        v = ahead * per_edge + p.feed_gain_per_s * (z_cmd_in_ - z_counted);
     }
     const double speed = std::min(std::abs(v), max_feed_in_per_s_);
     feed_ = FeedCommand{v < 0 ? -sense : sense, speed};
     show();
     return false;
+}
+
+// The reversal at the depth is judged on the tool's position and its actual speed, both from
+// encoder 32 (claim 1: "calculating actual speed of rotation of said tool through operation using
+// said gear ratio data and a feedback signal of said spindle motor"). The speed is the edges of
+// the last sample over the time between their first and last (interface 33 notes when each edge
+// comes), not the edges a sample holds, which at S 180 are 3 or 4 of a 24-edge encoder; the
+// position is the net edges counted, carried on at that speed since the last edge. When the
+// depth left, less what motor 27 covers running down from that speed, comes within the next
+// sample's travel, the NC times the reversal for the instant it is due (a timer, not the next
+// sample), so the tap bottoms within an edge of its depth at every S the profile allows.
+void TappingUnits::measure_speed(double t, int d) {
+    if (d != 0 && last_edge_s_ > prev_edge_s_) {
+        const double r = d / (last_edge_s_ - prev_edge_s_);
+        const double m = 0.5 * (last_edge_s_ + prev_edge_s_);
+        accel_ = measured_ && m > mid_s_ ? (r - rate_) / (m - mid_s_) : 0.0;
+        rate_ = r;
+        mid_s_ = m;
+        measured_ = true;
+        prev_edge_s_ = last_edge_s_;
+        return;
+    }
+    // No edge this sample: the motor turns slower than one edge in the time since the last.
+    const double bound = 1.0 / std::max(t - last_edge_s_, 1e-9);
+    if (std::abs(rate_) > bound) {
+        rate_ = rate_ > 0 ? bound : -bound;
+        accel_ = 0;
+        mid_s_ = t;
+    }
+}
+
+void TappingUnits::plan_reversal(double t, double depth, double per_edge) {
+    const auto& p = profile_.spindle;
+    const double rate = rate_ + accel_ * (t - mid_s_); // edges a second, into the work
+    if (!measured_ || rate <= 0) {
+        return; // not turning into the work yet
+    }
+    const double revs_per_s = rate / p.encoder_pulses_per_rev;
+    const double a = p.run_down_rpm_per_s / 60.0;
+    const double stop_travel =
+        revs_per_s * revs_per_s / (2 * a) * memory_->ratio() * (order_.pitch / 100000.0);
+    const double since_edge = std::min(t - last_edge_s_, 1.0 / rate);
+    const double z_now = z_cmd_in_ + rate * since_edge * per_edge;
+    const double left = depth - z_now - stop_travel;
+    const double feed = rate * per_edge; // inches a second
+    if (left <= feed * p.sample_s) {
+        reverse_at_s_ = t + std::max(0.0, left / feed);
+    }
+}
+
+std::optional<double> TappingUnits::take_reversal() {
+    if (!reverse_at_s_ || reversal_scheduled_) {
+        return std::nullopt;
+    }
+    reversal_scheduled_ = true;
+    return reverse_at_s_;
+}
+
+void TappingUnits::reverse(double t) {
+    if (phase_ != Phase::run_in || !reverse_at_s_) {
+        return; // the card ended or the machine stopped first
+    }
+    spindle_->command_rpm(-order_.rpm); // reverse: run down at the depth, then out
+    holes_.back().reverse_s = t;
+    phase_ = Phase::run_out;
+    reverse_at_s_.reset();
+    reversal_scheduled_ = false;
+    show();
 }
 
 void TappingUnits::show() {

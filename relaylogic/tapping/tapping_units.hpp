@@ -20,10 +20,11 @@
 //                         v = d / ppr x A x pitch / sample_s  +  gain x (z_cmd - z_counted)
 //                     where z_cmd, the depth the tool's turns call for, grows by d / ppr x A x
 //                     pitch each sample (S x A: A is the ratio in 12a, right or stale)
-//   near the depth .. when the depth left is what motor 27 covers running down from the speed
-//                     S = n / (ppr x sample_s) (plus half a sample's travel), the NC reverses the
-//                     motor (-S): it runs down, stops about at the depth and runs up backwards;
-//                     the feed follows it out
+//   near the depth .. the speed measured from the times of the last sample's edges; when the
+//                     depth left, less what motor 27 covers running down from that speed, comes
+//                     within a sample's travel, the NC times the reversal (-S) for the instant it
+//                     is due: the motor runs down, stops at the depth (within an edge) and runs
+//                     up backwards; the feed follows it out
 //   near the top .... the same, commanding the motor to rest; once it stands, the feed creeps
 //                     to the counter reading it started from and stops (the card ends there)
 //   end ............. the NC drops the tool call; the zeroizing circuit indexes the next card
@@ -118,7 +119,7 @@ public:
 
     // Encoder 32's edges, counted by interface 33: one, or (fast-forward) n in one sense, the
     // last of them `last`.
-    void on_edge(const axes::DetectorEdge& edge);
+    void on_edge(const axes::DetectorEdge& edge, double t);
     // Takes every event of the spindle due by time t (edges counted), one by one; with a
     // tracer, each edge at its own time (the tracer is left at t).
     void catch_up(double t);
@@ -139,6 +140,11 @@ public:
     // A sample of interface 33 at time t. Returns true when the tap is done (the feed stands
     // on its starting count, or the settle gave up).
     bool sample(double t, int counter, double real_in, bool feed_at_rest);
+
+    // The reversal at the depth the last sample timed, once (the cabinet schedules it), and
+    // the reversal itself at that instant.
+    std::optional<double> take_reversal();
+    void reverse(double t);
 
     // The machine stopped: motor 27 is commanded to rest, the tap is over.
     void halt();
@@ -165,6 +171,8 @@ private:
     void record(double t, double real_in);
     double travel_per_edge() const; // inches of feed per encoder edge, with the ratio in 12a
     double run_down_travel(double edges_per_sample) const;
+    void measure_speed(double t, int d);
+    void plan_reversal(double t, double depth, double per_edge);
 
     axes::MachineProfile profile_;
     double max_feed_in_per_s_ = 0;
@@ -188,6 +196,14 @@ private:
     int start_counter_ = 0;   // the feed axis's absolute counter where the tap started
     double z_cmd_in_ = 0;     // the depth the tool's turns call for
     double settle_since_s_ = 0;
+    double last_edge_s_ = 0; // when interface 33 counted its last edge
+    double prev_edge_s_ = 0; // the last edge of the last sample that saw one
+    double rate_ = 0;        // the measured speed, edges a second (signed)
+    double accel_ = 0;       // and its change, edges a second a second
+    double mid_s_ = 0;       // the instant the measured speed belongs to
+    bool measured_ = false;
+    std::optional<double> reverse_at_s_; // the reversal at the depth, timed
+    bool reversal_scheduled_ = false;
     FeedCommand feed_{};
 
     SignalId motor_rpm_ = 0;
