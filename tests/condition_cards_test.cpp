@@ -30,17 +30,9 @@ using parsons::test::condition_card;
 using parsons::test::idle_card;
 using parsons::test::order;
 using parsons::test::punched;
+using parsons::test::table_move;
 
 namespace {
-
-// A motion card: the table from `from` to `to` at speed 3, the other axes idle at 0, the
-// spindle at rest (column 1 blank: a tool change may trip on it).
-CardOrders table_move(int number, int from, int to) {
-    CardOrders c = idle_card(number, {from, 0, 0, 0, 0});
-    c.spindle = Spindle::off;
-    c.axis(Axis::table) = order(from, to, 3, {}, {}, 1);
-    return c;
-}
 
 // Every signal by name, and what the counter of the watched axis read at each condition met.
 class Watch : public test::Recorder {
@@ -60,15 +52,8 @@ public:
 };
 
 RunResult run(const std::vector<CardOrders>& cards, Pace pace, MachineObserver* observer = nullptr,
-              axes::MachineProfile profile = axes::extended_profile()) {
-    test::VectorDeck deck(punched(cards));
-    ControlCabinet cabinet(profile, fig8_layout());
-    cabinet.set_pace(pace);
-    cabinet.record_card_times(true);
-    if (observer != nullptr) {
-        cabinet.attach(observer);
-    }
-    return cabinet.run(deck);
+              const axes::MachineProfile& profile = axes::extended_profile()) {
+    return test::run_conditions(cards, pace, observer, profile);
 }
 
 } // namespace

@@ -2,6 +2,8 @@
 // card of them, and a deck punched from orders.
 #pragma once
 
+#include "tests/machine_support.hpp"
+
 #include "cardreader/layout.hpp"
 #include "cardreader/orders.hpp"
 
@@ -38,6 +40,32 @@ inline std::vector<cardreader::Card> punched(const std::vector<cardreader::CardO
         out.push_back(e.card);
     }
     return out;
+}
+
+// A motion card: the table from `from` to `to` at speed 3, the other axes idle at 0; column 1
+// as given (blank by default: a tool change may trip on it).
+inline cardreader::CardOrders table_move(int number, int from, int to,
+                                         cardreader::Spindle spindle = cardreader::Spindle::off) {
+    cardreader::CardOrders c = idle_card(number, {from, 0, 0, 0, 0});
+    c.spindle = spindle;
+    c.axis(cardreader::Axis::table) = order(from, to, 3, {}, {}, 1);
+    return c;
+}
+
+// Runs orders on the cabinet with each card's times recorded (profile parsons-extended unless
+// given).
+inline relaylogic::RunResult
+run_conditions(const std::vector<cardreader::CardOrders>& cards, relaylogic::Pace pace,
+               relaylogic::MachineObserver* observer = nullptr,
+               const axes::MachineProfile& profile = axes::extended_profile()) {
+    VectorDeck deck(punched(cards));
+    relaylogic::ControlCabinet cabinet(profile, cardreader::fig8_layout());
+    cabinet.set_pace(pace);
+    cabinet.record_card_times(true);
+    if (observer != nullptr) {
+        cabinet.attach(observer);
+    }
+    return cabinet.run(deck);
 }
 
 } // namespace parsons::test

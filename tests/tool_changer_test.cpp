@@ -17,19 +17,9 @@ using namespace parsons::relaylogic;
 using parsons::test::cond;
 using parsons::test::condition_card;
 using parsons::test::idle_card;
-using parsons::test::order;
-using parsons::test::punched;
+using parsons::test::table_move;
 
 namespace {
-
-// A motion card: the table from `from` to `to` at speed 3, the other axes idle at 0; column 1
-// as given.
-CardOrders table_move(int number, int from, int to, Spindle spindle = Spindle::off) {
-    CardOrders c = idle_card(number, {from, 0, 0, 0, 0});
-    c.spindle = spindle;
-    c.axis(Axis::table) = order(from, to, 3, {}, {}, 1);
-    return c;
-}
 
 class Watch : public test::Recorder {
 public:
@@ -52,14 +42,7 @@ public:
 
 RunResult run(const std::vector<CardOrders>& cards, Pace pace,
               MachineObserver* observer = nullptr) {
-    test::VectorDeck deck(punched(cards));
-    ControlCabinet cabinet(axes::extended_profile(), fig8_layout());
-    cabinet.set_pace(pace);
-    cabinet.record_card_times(true);
-    if (observer != nullptr) {
-        cabinet.attach(observer);
-    }
-    return cabinet.run(deck);
+    return test::run_conditions(cards, pace, observer);
 }
 
 const ActionRecord& action_of(const RunResult& r, int event) {
