@@ -86,6 +86,10 @@ TEST_CASE("Fault skip-step: a skipping switch of the increment counter stops at 
           Approx(-0.00125).margin(1e-6));
     CHECK_THAT(abs.output, Catch::Contains("1 stepping switch skipped a position (fault "
                                            "skip-step): -0.0010 in"));
+    // The check caught it: the warning says so, not that the checks could not see it.
+    CHECK_THAT(abs.output, Catch::Contains("-0.0010 in): the check_mismatch stop on this axis "
+                                           "caught the difference"));
+    CHECK(abs.output.find("could not see it") == std::string::npos);
 
     const Outcome inc = run_with("skip-step:table:310:300");
     CHECK(inc.exit_code == 3);

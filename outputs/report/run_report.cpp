@@ -380,9 +380,16 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
                              axis_name(a), x.screw_in, x.counter_in, screw_vs_counters(x)));
         }
         if (std::abs(x.error_in) >= 0.0005) {
-            line(fmt::format("  warning: {} ends {:+.4f} in from where its counters say ({}): "
-                             "the 1952 checks could not see it",
-                             axis_name(a), x.error_in, join(error_causes(x), "; ")));
+            // Silent only if no check stopped the machine on this axis: a skip the balancing
+            // circuit caught is named, not called unseen.
+            const std::string seen =
+                r.stop && r.stop->axis == a
+                    ? fmt::format("the {} stop on this axis caught the difference",
+                                  relaylogic::stop_reason_name(r.stop->reason))
+                : r.stop ? std::string("no 1952 check had caught it when the machine stopped")
+                         : std::string("the 1952 checks could not see it");
+            line(fmt::format("  warning: {} ends {:+.4f} in from where its counters say ({}): {}",
+                             axis_name(a), x.error_in, join(error_causes(x), "; "), seen));
         }
         if (r.completed && x.last_stop_in && std::abs(x.counter_in - *x.last_stop_in) >= 0.001) {
             line(fmt::format("  warning: {} ends at {:.3f} in, not on its last stop {:.3f} in: it "
