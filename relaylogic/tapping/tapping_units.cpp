@@ -362,15 +362,8 @@ bool TappingUnits::sample(double t, int counter, double real_in, bool feed_at_re
     return false;
 }
 
-// The reversal at the depth is judged on the tool's position and its actual speed, both from
-// encoder 32 (claim 1: "calculating actual speed of rotation of said tool through operation using
-// said gear ratio data and a feedback signal of said spindle motor"). The speed is the edges of
-// the last sample over the time between their first and last (interface 33 notes when each edge
-// comes), not the edges a sample holds, which at S 180 are 3 or 4 of a 24-edge encoder; the
-// position is the net edges counted, carried on at that speed since the last edge. When the
-// depth left, less what motor 27 covers running down from that speed, comes within the next
-// sample's travel, the NC times the reversal for the instant it is due (a timer, not the next
-// sample), so the tap bottoms within an edge of its depth at every S the profile allows.
+// The tool's actual speed from interface 33: the last sample's net edges over the time from the
+// edge before them to the last of them, and its change from the sample before.
 void TappingUnits::measure_speed(double t, int d) {
     if (d != 0 && last_edge_s_ > prev_edge_s_) {
         const double r = d / (last_edge_s_ - prev_edge_s_);
@@ -391,6 +384,15 @@ void TappingUnits::measure_speed(double t, int d) {
     }
 }
 
+// The reversal at the depth is judged on the tool's position and its actual speed, both from
+// encoder 32 (claim 1: "calculating actual speed of rotation of said tool through operation using
+// said gear ratio data and a feedback signal of said spindle motor"). The speed is the edges of
+// the last sample over the time between their first and last (interface 33 notes when each edge
+// comes), not the edges a sample holds, which at S 180 are 3 or 4 of a 24-edge encoder; the
+// position is the net edges counted, carried on at that speed since the last edge. When the
+// depth left, less what motor 27 covers running down from that speed, comes within the next
+// sample's travel, the NC times the reversal for the instant it is due (a timer, not the next
+// sample), so the tap bottoms within an edge of its depth at every S the profile allows.
 void TappingUnits::plan_reversal(double t, double depth, double per_edge) {
     const auto& p = profile_.spindle;
     const double rate = rate_ + accel_ * (t - mid_s_); // edges a second, into the work

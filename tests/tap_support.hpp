@@ -1,0 +1,31 @@
+// Listing rows for the tap-card tests (an addition after EP 0360190): a motion card of the
+// vertical axis, and a deck that taps after it.
+#pragma once
+
+#include "cardreader/listing_format.hpp"
+
+#include <fmt/format.h>
+
+#include <string>
+
+namespace parsons::test {
+
+// One motion card's five listing rows: the vertical axis forward to `stop` with check `check`,
+// the others idle, each axis at its own sequence position.
+inline std::string motion_rows(int card, const char* stop, const char* check) {
+    std::string rows;
+    rows += fmt::format("{},0,table,+,3,,,0.000,0.000,1\n", card);
+    rows += fmt::format("{},0,cross,+,3,,,0.000,0.000,2\n", card);
+    rows += fmt::format("{},0,vertical,+,3,,,{},{},3\n", card, stop, check);
+    rows += fmt::format("{},0,swivel,+,3,,,0.000,0.000,4\n", card);
+    rows += fmt::format("{},0,tilt,+,3,,,0.000,0.000,5\n", card);
+    return rows;
+}
+
+// A deck: the vertical axis up to 1.000 in, then the tap row given.
+inline std::string deck_with(const std::string& tap_row_text) {
+    return std::string(cardreader::kListingHeader) + "\n" + motion_rows(1, "1.000", "1.000") +
+           tap_row_text;
+}
+
+} // namespace parsons::test
