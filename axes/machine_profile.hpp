@@ -119,6 +119,9 @@ struct PressProfile {
 struct SyncDrive {
     double max_in_per_min = 5.4;         // the fastest it follows (the counters' 100 steps/s)
     double acceleration_in_per_s2 = 0.5; // its rate limit, both ways
+    // Processor 63's position loop on a card with position sync (G101 with G95): the speed
+    // added per inch the axis is behind the crank's reference travel (at most half the speed).
+    double position_gain_per_s = 4.0;
 };
 
 // Spindle synchronisation (an addition after EP 0360190, Mitsubishi): spindle motor
@@ -266,7 +269,9 @@ struct MachineProfile {
     bool press_sync = false;
     PressProfile press;
     SyncDrive sync_drive;
-    double speed_sample_s = 0.5; // speed register 11 counts pulses this long, then is read
+    // The reference block of Fig. 6 (the seed: "generally less than 20ms"): speed register 11
+    // is read and processor 63 computes every block, its result going out at the next.
+    double speed_sample_s = 0.01;
     // How long the synchronisation control processor 17 waits for the crank (position sync) or
     // for a pulse (speed sync) before it stops the machine: sync_timeout.
     double sync_timeout_s = 90.0;

@@ -60,6 +60,8 @@ double variation_u(unsigned seed, std::int64_t rev) {
     return static_cast<double>(x >> 11U) * 0x1.0p-52 - 1.0;
 }
 
+constexpr double kMostDrift = 0.5; // the drift's reach: half the nominal speed either way
+
 // Revolution r starts at 360 (r - 1) degrees (exact for any r a run reaches).
 double rev_start(std::int64_t r) {
     return kDegPerRev * static_cast<double>(r - 1);
@@ -116,7 +118,12 @@ double Press::speed_at(double theta) const {
     }
     const std::int64_t r = revolution_of(theta);
     double w = p.strokes_per_min * kDegPerRev / 60.0;
-    w *= std::pow(1.0 + p.drift_per_cycle, static_cast<double>(r - 1));
+    // Drift per revolution turned, whichever the sense: turning backwards from revolution 1 the
+    // crank enters 0, -1, ... (an exponent r - 1 there would make a slowing press race).
+    // The drift accumulates up to half the nominal speed either way, where motor 22's governor
+    // holds it (unbounded, a press would race to speeds no detector or register could follow).
+    w *= std::clamp(std::pow(1.0 + p.drift_per_cycle, static_cast<double>(std::llabs(r - 1))),
+                    1.0 - kMostDrift, 1.0 + kMostDrift);
     w *= 1.0 + p.variation * variation_u(p.seed, r);
     if (theta >= rev_start(r) + p.pressing_from_deg && theta < rev_start(r) + p.pressing_to_deg) {
         w *= 1.0 - p.pressing_slowdown;

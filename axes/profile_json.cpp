@@ -420,6 +420,8 @@ void apply_sync_drive(SyncDrive& d, const json& j) {
             d.max_in_per_min = within(value, k, kMinSpeedInPerMin, kMaxSpeedInPerMin);
         } else if (key == "acceleration_in_per_s2") {
             d.acceleration_in_per_s2 = within(value, k, kMinAccelerationInPerS2, HUGE_VAL);
+        } else if (key == "position_gain_per_s") {
+            d.position_gain_per_s = within(value, k, 0, 100);
         } else {
             throw ProfileError(fmt::format("{}: unknown key", k));
         }
@@ -438,7 +440,8 @@ bool apply_press_sync(MachineProfile& p, const std::string& key, const json& val
     } else if (key == "sync_drive") {
         apply_sync_drive(p.sync_drive, value);
     } else if (key == "speed_sample_s") {
-        p.speed_sample_s = duration(value, key);
+        // A reference block from a millisecond (the relays' own time) to a second.
+        p.speed_sample_s = within(value, key, 0.001, 1.0);
     } else if (key == "sync_timeout_s") {
         p.sync_timeout_s = within(value, key, 0, kMostSyncTimeoutS);
     } else {
@@ -451,7 +454,8 @@ void put_press_sync(json& j, const MachineProfile& p) {
     j["press_sync"] = p.press_sync;
     j["press"] = press_json(p.press);
     j["sync_drive"] = {{"max_in_per_min", p.sync_drive.max_in_per_min},
-                       {"acceleration_in_per_s2", p.sync_drive.acceleration_in_per_s2}};
+                       {"acceleration_in_per_s2", p.sync_drive.acceleration_in_per_s2},
+                       {"position_gain_per_s", p.sync_drive.position_gain_per_s}};
     j["speed_sample_s"] = p.speed_sample_s;
     j["sync_timeout_s"] = p.sync_timeout_s;
 }

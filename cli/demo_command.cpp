@@ -91,7 +91,9 @@ ExitCode run_two_tool_demo(const std::string& dir) {
 // with the press slowing 25 % in the second cycle: the proof's figures side by side.
 ExitCode run_press_demo(const std::string& dir) {
     fmt::print("\npress feeder (press synchronisation, an addition after EP 0436887; profile "
-               "parsons-extended): 3 cycles, the press slowing 25 % in cycle 2 at 180 deg\n");
+               "parsons-extended): 3 cycles, the press slowing 25 % from its second revolution "
+               "at 180 deg; every move follows the press, the speed-only deck without the crank's "
+               "position\n");
     for (bool speed_only : {false, true}) {
         decks::PressFeederOptions o;
         o.cycles = 3;
@@ -113,9 +115,14 @@ ExitCode run_press_demo(const std::string& dir) {
         const ExitCode code = run_deck(run, &result);
         const auto report = nlohmann::json::parse(read_text_file(run.report));
         const auto& p = report.at("press");
-        fmt::print("  {} ({}): smallest clearance {:.4f} in, least time margin {} s, {}\n", deck,
-                   g.job.variant, p.at("min_clearance_in").get<double>(),
-                   p.at("min_time_margin_s").dump(),
+        const double with_position = p.at("max_lag_position_sync_in").get<double>();
+        const std::string behind =
+            speed_only ? fmt::format("{:.4f} in", p.at("max_lag_speed_only_in").get<double>())
+                       : fmt::format("{:.4f} in on its position-sync moves", with_position);
+        fmt::print("  {} ({}): smallest clearance {:.4f} in, least time margin {} s, behind the "
+                   "crank by at most {}, {}\n",
+                   deck, g.job.variant, p.at("min_clearance_in").get<double>(),
+                   p.at("min_time_margin_s").dump(), behind,
                    p.at("collision").is_null()
                        ? std::string("no collision")
                        : fmt::format("COLLISION in cycle {} at {:.2f} s, crank {:.1f} deg",

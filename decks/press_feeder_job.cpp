@@ -3,6 +3,7 @@
 
 #include "cardreader/sync_card.hpp"
 #include "cardreader/sync_review.hpp"
+#include "cardreader/tap_review.hpp"
 #include "decks/move_planner.hpp"
 #include "decks/template_job.hpp"
 
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 namespace parsons::decks {
@@ -182,6 +184,19 @@ private:
         return going_down ? lo : 360.0 - lo;
     }
 
+    // The sync drive follows no slower than it feeds a tap (cardreader::kLeastTapFeedInPerMin):
+    // a move given so many degrees that it would crawl is refused.
+    void check_follower(const std::string& name, int f, double distance_in, double degrees) const {
+        const double speed = f * 1e-5 * nominal_pulses_per_s(profile_.press) * 60.0;
+        if (speed < cardreader::kLeastTapFeedInPerMin - 1e-9) {
+            refuse(fmt::format("the {} ({:.3f} in over {:.1f} crank degrees at {:g} strokes a "
+                               "minute) would follow at {:.3f} in/min: the sync drive follows no "
+                               "slower than {:g} in/min; give it fewer degrees or a faster press",
+                               name, distance_in, degrees, profile_.press.strokes_per_min, speed,
+                               cardreader::kLeastTapFeedInPerMin));
+        }
+    }
+
     int travel_per_pulse(const std::string& name, double distance_in, double degrees) const {
         const axes::PressProfile& press = profile_.press;
         const double pulses = degrees * press.pulses_per_degree;
@@ -199,6 +214,7 @@ private:
                                "0.00001 in a detector pulse: give it fewer degrees",
                                name, distance_in, degrees));
         }
+        check_follower(name, f, distance_in, degrees);
         if (f > limits.max_travel_per_pulse() || speed > stepping) {
             refuse(fmt::format("the {} ({:.3f} in over {:g} crank degrees at {:g} strokes a "
                                "minute) needs {:.2f} in/min: the sync drive follows at most "
@@ -211,11 +227,11 @@ private:
         return f;
     }
 
-    // One motion card (with its sync card before it when `degrees` > 0): the table to x, the
-    // cross slide to y; the table speed-synchronised over `degrees` of the crank, from angle R
-    // if `angle` is given.
+    // One motion card and the sync card before it. The table's move is speed-synchronised
+    // over `degrees` of the crank (from angle R if `angle` is given); a move of the cross slide
+    // alone follows the press at the travel per pulse that runs it, at the press's rated speed,
+    // at the 1952 speed it starts on (its slow-downs then follow as on every synchronised move).
     void move(const std::string& name, int x, int y, std::optional<int> angle, double degrees) {
-        const bool synced = degrees > 0;
         const bool table_moves = x != x_;
         const bool cross_moves = y != y_;
         AxisOrder table = idle_at(x_, kFifth);
@@ -226,7 +242,9 @@ private:
         if (cross_moves) {
             cross = plan_move({y_, y, 1, false, kFourth}, profile_.axes.at(1), profile_);
         }
-        if (synced) {
+        CardOrders s = card();
+        s.kind = cardreader::CardKind::sync;
+        if (degrees > 0) {
             if (table.start_speed != 1) {
                 refuse(fmt::format("the {} ({:.3f} in) is too short to start on speed 1, the "
                                    "speed the sync drive follows on: lengthen it",
@@ -234,16 +252,41 @@ private:
             }
             const double distance = std::abs(x - x_) / 1000.0;
             const int f = travel_per_pulse(name, distance, degrees);
-            CardOrders s = card();
-            s.kind = cardreader::CardKind::sync;
             if (angle && !o_.speed_only) {
                 s.sync.position_sync = true;
                 s.sync.angle_deg = *angle;
             }
             s.sync.travel_per_pulse.at(cardreader::axis_index(Axis::table)) = f;
-            deck_.cards.push_back(s);
-            deck_.moves.push_back({name, deck_.cards.size(), degrees, f,
+            deck_.moves.push_back({name, deck_.cards.size() + 1, degrees, f,
                                    f * 1e-5 * nominal_pulses_per_s(profile_.press) * 60.0});
+        } else {
+            // Every other move follows the press at the 1952 speed it starts on.
+            for (const auto& [axis, from, to, order] :
+                 {std::tuple{Axis::table, x_, x, &table}, std::tuple{Axis::cross, y_, y, &cross}}) {
+                if (from == to) {
+                    continue;
+                }
+                const std::size_t i = cardreader::axis_index(axis);
+                const double speed = profile_.axes.at(i).speed_in_per_min.at(
+                    static_cast<std::size_t>(order->start_speed - 1));
+                const double pulses_per_s = nominal_pulses_per_s(profile_.press);
+                // Rounded down: never faster than the 1952 motor (the drive's cap is speed 1's).
+                const int f = std::max(
+                    1, static_cast<int>(std::floor(speed / 60.0 / pulses_per_s * 1e5 + 1e-9)));
+                const double distance = std::abs(to - from) / 1000.0;
+                const double degrees =
+                    distance / (f * 1e-5) / static_cast<double>(profile_.press.pulses_per_degree);
+                check_follower(name, f, distance, degrees);
+                s.sync.travel_per_pulse.at(i) = f;
+                deck_.moves.push_back({name + (table_moves && cross_moves
+                                                   ? std::string(axis == Axis::table ? " X" : " Y")
+                                                   : std::string()),
+                                       deck_.cards.size() + 1, degrees, f,
+                                       f * 1e-5 * pulses_per_s * 60.0});
+            }
+        }
+        if (s.sync.speed_sync()) {
+            deck_.cards.push_back(s);
         }
         CardOrders c = card();
         c.spindle = cardreader::Spindle::off;

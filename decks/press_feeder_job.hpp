@@ -9,19 +9,21 @@
 //                   v                               |            |
 //            carry-in conveyor   Y = carry_in_y     '------------'
 //
-//   card 1     HOME: table to the retracted X, cross slide to the press line (no sync)
-//   card 2     CARRY-IN (Fig. 3 N01): cross slide to the carry-in conveyor (fixed speed)
-//   card 3     cross slide back to the press line (the Y half of N03; fixed speed)
-//   cards 4, 5 SYNC position R = insert angle (30) + speed F; INSERT: table into the zone
-//   cards 6, 7 SYNC speed F only (N05); RETRACT: table back out of the zone
-//   cards 8, 9 SYNC position R = take-out angle (190) + speed F (N06); TAKE-OUT
-//   cards 10, 11 SYNC speed F only; CARRY-OUT: table out (the X half of N08)
-//   card 12    cross slide to the carry-out conveyor (the Y half of N08; fixed speed)
-//   card 13    RETURN (N10): cross slide back to the press line (fixed speed, no sync)
-//   card 14    LOOP (N11, M99): back to card 2, cycles - 1 times
+//   cards 1, 2   SYNC speed (both axes); HOME: table to the retracted X, cross slide to the
+//                press line
+//   cards 3, 4   SYNC speed (Y); CARRY-IN (Fig. 3 N01): cross slide to the carry-in conveyor
+//   cards 5, 6   SYNC speed (Y); cross slide back to the press line (the Y half of N03)
+//   cards 7, 8   SYNC position R = insert angle (30) + speed F; INSERT: table into the zone
+//   cards 9, 10  SYNC speed F only (N05); RETRACT: table back out of the zone
+//   cards 11, 12 SYNC position R = take-out angle (190) + speed F (N06); TAKE-OUT
+//   cards 13, 14 SYNC speed F only; CARRY-OUT: table out (the X half of N08)
+//   cards 15, 16 SYNC speed (Y); cross slide to the carry-out conveyor (the Y half of N08)
+//   cards 17, 18 SYNC speed (Y); RETURN (N10): cross slide back to the press line
+//   card 19      LOOP (N11, M99): back to card 3, cycles - 1 times
+// Every move follows the press: the moves other than the table's four at the 1952 speed they
+// start on, at the press's rated speed (docs/press-sync.md).
 // Fig. 3's joint X-Y travels are split: in a 1952 card two axes running together must be
-// punched so that the one that stops first is known (col. 11's sequence), and the cross slide
-// is never speed-synchronised (below).
+// punched so that the one that stops first is known (col. 11's sequence).
 // Clamp and unclamp (M15, M16) take no time of their own here: the card cycle between two
 // moves stands for them.
 //
@@ -58,9 +60,9 @@ struct PressFeederOptions {
     double carry_out_y_in = 0.400;
     // The press: die 20 is clear of the feeder at this height above bottom dead centre.
     double safe_height_in = 0.25;
-    double strokes_per_min = 1.0;
+    double strokes_per_min = 1.2; // at 1 the speed-only timing crawls under the drive's least speed
     double start_angle_deg = 0.0; // crank 21 when the run starts (the speed-only timing)
-    int cycles = 4;               // passes of the cycle (cards 2-11)
+    int cycles = 4;               // passes of the cycle (cards 3-19)
     // The crank degrees each speed-synchronised move is given.
     int insert_angle_deg = 30; // R of the insert's sync card
     double insert_deg = 50;

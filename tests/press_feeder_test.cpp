@@ -30,11 +30,12 @@ struct Proved {
 
 // Generates the job (variant), runs it under its profile changed by `change`, proves it.
 template <typename Change>
-Proved prove(bool speed_only, int cycles, Change change) {
+Proved prove(bool speed_only, int cycles, Change change,
+             const axes::MachineProfile& base = axes::extended_profile()) {
     decks::PressFeederOptions o;
     o.speed_only = speed_only;
     o.cycles = cycles;
-    const cli::GeneratedPressJob g = cli::generate_press_job(o, axes::extended_profile(), "", "");
+    const cli::GeneratedPressJob g = cli::generate_press_job(o, base, "", "");
     axes::MachineProfile p = g.profile;
     change(p.press);
     cli::PressProof proof(p.press, o.zone_edge_x_in, o.safe_height_in, g.deck.cycle_card);
@@ -45,6 +46,17 @@ Proved prove(bool speed_only, int cycles, Change change) {
     r.min_clearance = proof.closest().clearance_in;
     r.cycles = proof.cycles();
     return r;
+}
+
+// When the job's press (nominal, from the generated profile) reaches revolution 2 at 180 deg.
+double change_time() {
+    decks::PressFeederOptions o;
+    const cli::GeneratedPressJob g = cli::generate_press_job(o, axes::extended_profile(), "", "");
+    axes::Press press(g.profile.press);
+    while (press.theta_deg() < 360.0 + 180.0) {
+        press.advance_to(press.next_event_time());
+    }
+    return press.time_s();
 }
 
 void slow_mid_cycle(axes::PressProfile& press) {
@@ -71,7 +83,12 @@ TEST_CASE("Press feeder: with the press slowing 25 % mid-cycle, position + speed
     }
     CHECK_FALSE(both.collision);
     REQUIRE(speed.collision);
-    CHECK(speed.collision->cycle == 2); // the cycle the press slowed in
+    // Every move follows the press; what does not (the reader's card cycles, the relays' and
+    // the sequence shaft's times, the drive's least speed) keeps its seconds and puts the
+    // feeder ahead of the crank a little more each cycle once the press has slowed, until it
+    // enters the zone early. At the nominal speed it never does (below).
+    CHECK(speed.collision->cycle >= 1);
+    CHECK(speed.collision->t > change_time());
     CHECK(speed.collision->clearance_in < 0);
     CHECK(speed.collision->feeder_x_in > 0.700);
     CHECK(speed.collision->die_height_in < 0.25);
@@ -146,7 +163,7 @@ TEST_CASE("Press feeder: the generated deck passes check under the job's profile
     const auto slow = run_parsons("run " + q(conv) + " -q --profile " + q(dir.str("slow.json")) +
                                   " --press-proof " + q(conv + ".job.json"));
     CHECK(slow.exit_code == 3);
-    CHECK(slow.output.find("collision in cycle 2") != std::string::npos);
+    CHECK(slow.output.find("collision in cycle ") != std::string::npos);
 
     // The proof follows the press from the job's start: a resumed run is not proved.
     test::write_bytes(dir.path("s.json"), "{}");
@@ -196,4 +213,46 @@ TEST_CASE("Press feeder: the proof's least time margin is the smallest of the cy
     REQUIRE(proof.min_margin_s());
     CHECK(*proof.min_margin_s() == Approx(0.05).margin(1e-6));
     CHECK(proof.entries_s().size() == 2);
+}
+
+TEST_CASE("Press feeder: every move of both variants, the home and the Y moves too, is "
+          "speed-synchronised, none slower than the drive's 0.5 in/min, and at the nominal speed "
+          "the speed-only job keeps clear for all its cycles",
+          "[press_feeder]") {
+    const Proved nominal = prove(true, 4, [](axes::PressProfile&) {});
+    REQUIRE_FALSE(nominal.result.stop);
+    CHECK(nominal.cycles == 4);
+    CHECK_FALSE(nominal.collision);
+    CHECK(nominal.min_clearance > 0.05);
+    // And every synchronised move of the job follows no slower than the drive's 0.5 in/min.
+    for (bool speed_only : {false, true}) {
+        decks::PressFeederOptions o;
+        o.speed_only = speed_only;
+        const cli::GeneratedPressJob g =
+            cli::generate_press_job(o, axes::extended_profile(), "", "");
+        REQUIRE(g.deck.moves.size() == 10); // the home's X and Y, and the cycle's eight moves
+        for (const auto& m : g.deck.moves) {
+            INFO(m.name);
+            CHECK(m.speed_in_per_min >= 0.5);
+        }
+        // Every motion card of the deck has its sync card before it.
+        for (std::size_t i = 0; i < g.deck.cards.size(); ++i) {
+            if (g.deck.cards[i].kind == cardreader::CardKind::motion) {
+                REQUIRE(i > 0);
+                CHECK(g.deck.cards[i - 1].kind == cardreader::CardKind::sync);
+                CHECK(g.deck.cards[i - 1].sync.speed_sync());
+            }
+        }
+    }
+}
+
+TEST_CASE("Press feeder: a job whose timing would make a move crawl under the drive's 0.5 "
+          "in/min is refused, naming the move",
+          "[press_feeder][cli]") {
+    TempDir dir;
+    const auto r = run_parsons("gen press-feeder --strokes-per-min 1 --retract-deg 350 -o " +
+                               q(dir.str("slow.csv")));
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find("the retract") != std::string::npos);
+    CHECK(r.output.find("no slower than 0.5 in/min") != std::string::npos);
 }

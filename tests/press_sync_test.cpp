@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <csignal>
+#include <tuple>
 
 using namespace parsons;
 using namespace parsons::cardreader;
@@ -189,6 +190,7 @@ TEST_CASE("Press sync: speed register 11 stores the pulses of each sampling inte
     INFO("pace " << static_cast<int>(pace));
     axes::MachineProfile p = press_profile();
     p.press.pressing_slowdown = 0.3;
+    p.speed_sample_s = 0.5; // long blocks: whole counts of pulses to check (24 at the full speed)
     p.press.pressing_from_deg = 30;
     p.press.pressing_to_deg = 60;
     SparseRecorder rec;
@@ -312,12 +314,18 @@ TEST_CASE("Press sync (speed, G95): a synchronised axis travels F per detector p
         INFO((half.stop ? half.stop->message : std::string()));
         REQUIRE(full.completed);
         REQUIRE(half.completed);
-        // 0.850 in at the synchronised speed (0.048 or 0.024 in/s), the rest the same: the
-        // slower press takes 0.850 / 0.048 = 17.7 s longer, within the lag and the ramps.
+        // Every speed of switch 236 follows: 0.900 in on speed 1 at F a pulse (0.048 or 0.024
+        // in/s), 0.050 in on speed 2 at the 1952 1.8 in/min at the rated 48 pulses a second
+        // (0.030 or 0.015 in/s) and 0.050 in on speed 3 at its 0.6 in/min (0.010 in/s, or
+        // 0.005 raised to the drive's least, 0.5 in/min). Tails on the 1952 motor would make
+        // the slower press only 18.75 s longer.
+        const double least = 0.5 / 60;
         const double longer = half.machine_seconds - full.machine_seconds;
-        CHECK(longer == Approx(0.850 / 0.024 - 0.850 / 0.048).epsilon(0.06));
+        CHECK(longer == Approx(0.900 / 0.024 - 0.900 / 0.048 + 0.050 / 0.015 - 0.050 / 0.030 +
+                               0.050 / least - 0.050 / 0.010)
+                            .epsilon(0.03));
         // Not the three-speed motor: speed 1 would cover 0.850 in in 9.4 s.
-        CHECK(full.machine_seconds > 1.2 + 0.850 / 0.09 + 5);
+        CHECK(full.machine_seconds > 1.2 + 0.900 / 0.09 + 5);
         CHECK(full.axes.at(0).counter_in == Approx(1.0));
     }
 }
@@ -498,31 +506,32 @@ TEST_CASE("Press sync: the press's signals start where the crank stands when the
 }
 
 TEST_CASE("Press sync (speed): processor 63's speed goes to the drive one reference block after "
-          "the sample it comes from (Fig. 6), and the axis runs at it",
+          "the sample it comes from (Fig. 6), within 20 ms of the register's reading",
           "[press_sync][speed]") {
     const Pace pace = GENERATE(Pace::impulse_level, Pace::fast_forward);
-    const axes::MachineProfile p = press_profile();
+    axes::MachineProfile p = press_profile();
+    REQUIRE(p.speed_sample_s <= 0.020); // the seed: "generally less than 20ms"
+    p.press.change_cycle = 1;           // the press halves its speed at 60 deg (5 s)
+    p.press.change_angle_deg = 60;
+    p.press.change_factor = 0.5;
     SparseRecorder sparse;
     Recorder full;
     Recorder& rec = pace == Pace::fast_forward ? static_cast<Recorder&>(sparse) : full;
     const RunResult r = test::run_orders(
         {sync_card(1, speed_sync(Axis::table, 100)), table_move(2, 0, 1000)}, p, &rec, {}, pace);
     REQUIRE(r.completed);
-    // The motion card's relays pick at 0.76 s (card 2 fed at 0.6 s, first bank 0.15 s later, a
-    // relay's 10 ms): the block at 1.0 s samples 24 pulses and computes 0.001 x 24 / 0.5 s =
-    // 2.88 in/min; the block at 1.5 s sends it to the drive.
+    // Register 11 times its pulses: 48 a second exactly once two have come, 24 after the change.
+    CHECK(first_time(rec, "press.speed_register_11.speed", 4800) <= 2.5 / 48 + p.speed_sample_s);
+    const double read = first_time(rec, "press.speed_register_11.speed", 2400);
+    REQUIRE(read > 5.0);
+    CHECK(read <= 5.0 + 2.0 / 24 + p.speed_sample_s); // two pulses at the new speed and a block
+    // 63 sends F x 24 pulses a second (1440 thousandths of an inch a minute) one block later.
+    const double sent = first_time(rec, "press.processor_63.table", 1440);
+    CHECK(sent == Approx(read + p.speed_sample_s).margin(1e-9));
+    // Before the change the drive ran at F x 48 pulses a second.
     const std::vector<Change> out = rec.of("press.processor_63.table");
     REQUIRE_FALSE(out.empty());
-    CHECK(out.front().t == Approx(1.5).margin(1e-12));
     CHECK(out.front().new_value == 2880);
-    CHECK(first_time(rec, "press.speed_register_11.stored", 24) == Approx(0.5).margin(1e-12));
-    // Not before: the table stands until the drive has a speed.
-    if (pace == Pace::impulse_level) {
-        for (const Change& c : rec.of("table.absolute_counter_110")) {
-            CHECK(c.t > 1.5);
-            break;
-        }
-    }
 }
 
 TEST_CASE("Press sync (speed): processor 63 never asks more of the drive than its fastest speed, "
@@ -554,4 +563,98 @@ TEST_CASE("Press sync (speed): processor 63 never asks more of the drive than it
     CHECK(slow == 4320);
     // The 0.850 in followed at 5.4 rather than 4.32 in/min: about 2.4 s sooner, not 6.
     CHECK(slow_s - fast_s == Approx(0.850 / (4.32 / 60) - 0.850 / (5.4 / 60)).epsilon(0.15));
+}
+
+TEST_CASE("Press sync (speed): the cross slide follows the press too, on the speed its card "
+          "starts it on (speed 2) and its slow-down",
+          "[press_sync][speed]") {
+    const Pace pace = GENERATE(Pace::impulse_level, Pace::fast_forward);
+    INFO("pace " << static_cast<int>(pace));
+    axes::MachineProfile p = press_profile();
+    // 0.00060 in a pulse: 0.0288 in/s at 48 pulses a second (1.73 in/min, under speed 2's 1.8).
+    auto run = [&](double factor) {
+        axes::MachineProfile q = p;
+        if (factor != 1.0) {
+            q.press.change_cycle = 1;
+            q.press.change_angle_deg = 0.001;
+            q.press.change_factor = factor;
+        }
+        CardOrders c = idle_card(2, {0, 0, 0, 0, 0});
+        c.axis(Axis::cross) = order(0, 300, 2, 250, std::nullopt, 0b11111);
+        return test::run_orders({sync_card(1, speed_sync(Axis::cross, 60)), c}, q, nullptr, {},
+                                pace);
+    };
+    const RunResult full = run(1.0);
+    const RunResult half = run(0.5);
+    INFO((full.stop ? full.stop->message : std::string()));
+    INFO((half.stop ? half.stop->message : std::string()));
+    REQUIRE(full.completed);
+    REQUIRE(half.completed);
+    CHECK(full.axes.at(1).counter_in == Approx(0.300));
+    // 0.250 in on speed 2 at F a pulse (0.0288 or 0.0144 in/s), 0.050 in on speed 3 at the 1952
+    // 0.6 in/min at the rated speed (0.010 in/s, or 0.005 raised to the drive's 0.5 in/min).
+    // On the three-speed motor the half-speed press would change nothing.
+    const double longer = half.machine_seconds - full.machine_seconds;
+    CHECK(
+        longer ==
+        Approx(0.250 / 0.0144 - 0.250 / 0.0288 + 0.050 / (0.5 / 60) - 0.050 / 0.010).epsilon(0.04));
+}
+
+namespace {
+
+// How far behind its reference travel the table was at the last reference block before `t`
+// (processor 63's signal, ten-thousandths of an inch).
+std::uint32_t behind_at(const Recorder& r, double t) {
+    std::uint32_t v = 0;
+    for (const Change& c : r.of("press.processor_63.table.behind")) {
+        if (c.t > t) {
+            break;
+        }
+        v = c.new_value;
+    }
+    return v;
+}
+
+} // namespace
+
+TEST_CASE("Press sync (position data, claim 7): with position sync ordered, processor 63's "
+          "position loop takes out the offset the drive's start and a change of the press's "
+          "speed leave, which speed sync alone keeps",
+          "[press_sync][speed][position-loop]") {
+    const Pace pace = GENERATE(Pace::impulse_level, Pace::fast_forward);
+    INFO("pace " << static_cast<int>(pace));
+    axes::MachineProfile p = press_profile();
+    p.press.change_cycle = 1; // the press speeds up by half at 120 deg (10 s), mid-move
+    p.press.change_angle_deg = 120;
+    p.press.change_factor = 1.5;
+    auto run = [&](bool with_position) {
+        SyncOrder o = speed_sync(Axis::table, 100); // 2.88 in/min
+        if (with_position) {
+            o.position_sync = true;
+            o.angle_deg = 30;
+        }
+        SparseRecorder sparse;
+        Recorder full;
+        Recorder& rec = pace == Pace::fast_forward ? static_cast<Recorder&>(sparse) : full;
+        const RunResult r =
+            test::run_orders({sync_card(1, o), table_move(2, 0, 1000)}, p, &rec, {}, pace);
+        INFO((r.stop ? r.stop->message : std::string()));
+        REQUIRE(r.completed);
+        REQUIRE(r.press);
+        // Well after the change, before the slow-downs (0.900 in: 0.048 in/s, then 0.072).
+        return std::tuple{behind_at(rec, 14.0), r.press->max_lag_position_sync_in,
+                          r.press->max_lag_speed_only_in};
+    };
+    const auto [loop_behind, loop_max, loop_speed_only] = run(true);
+    const auto [speed_behind, speed_max, speed_speed_only] = run(false);
+    // Speed alone: the drive's start left the table 0.0023 in behind (0.048 in/s reached at
+    // 0.5 in/s^2), the change a little more (0.024 in/s more, reached a block and a pulse
+    // late), and nothing takes it out.
+    CHECK(speed_behind >= 20);
+    CHECK(speed_speed_only >= 0.0015);
+    CHECK(speed_max == 0.0);
+    // With position data the loop has it back within the counters' thousandth.
+    CHECK(loop_behind <= 10);
+    CHECK(loop_speed_only == 0.0);
+    CHECK(loop_max > 0.0);
 }

@@ -760,3 +760,21 @@ TEST_CASE("Press profile: a press whose pulses come faster than registers 14 and
         R"({"press": {"strokes_per_min": 5}, "max_stepping_rate_per_s": 130})", extended));
     CHECK_NOTHROW(profile_from_json(R"({"press": {"strokes_per_min": 5}})", default_profile()));
 }
+
+TEST_CASE("Press: drift compounds per revolution turned, either sense, and motor 22's governor "
+          "holds it within half the nominal speed",
+          "[press]") {
+    PressProfile p = steady(); // 12 deg/s
+    p.drift_per_cycle = -0.05;
+    const Press slowing(p);
+    CHECK(slowing.speed_at(10.0) == Approx(12.0));                         // revolution 1
+    CHECK(slowing.speed_at(360.0 * 2 + 10) == Approx(12.0 * 0.95 * 0.95)); // revolution 3
+    // Backwards from revolution 1 the crank turns revolutions 0, -1, ...: the same slowing.
+    CHECK(slowing.speed_at(-360.0 * 2 + 10) == Approx(12.0 * 0.95 * 0.95));
+    CHECK(slowing.speed_at(-360.0 * 200) == Approx(6.0)); // held at half, not racing
+    CHECK(slowing.speed_at(360.0 * 200) == Approx(6.0));
+    p.drift_per_cycle = 0.05;
+    const Press rising(p);
+    CHECK(rising.speed_at(360.0 * 5 + 10) == Approx(12.0 * std::pow(1.05, 5)));
+    CHECK(rising.speed_at(360.0 * 500) == Approx(18.0)); // held at one and a half
+}

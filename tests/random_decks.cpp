@@ -140,8 +140,12 @@ Case random_case(std::mt19937& rng, std::mt19937& crng, std::mt19937& srng, std:
             press.stop_cycle = spick(1, 2);
             press.stop_angle_deg = sreal(0, 359.9);
         }
-        p.speed_sample_s = sreal(0.1, 1.0);
-        p.sync_timeout_s = sreal(2, 60);
+        p.speed_sample_s = sreal(0.005, 0.5);
+        p.sync_drive.position_gain_per_s = schance(0.2) ? 0.0 : sreal(0.5, 10);
+        // Mostly longer than a revolution (a card may wait that long for its angle).
+        p.sync_timeout_s = schance(0.7)
+                               ? std::min(3600.0, 72.0 / press.strokes_per_min + sreal(0, 30))
+                               : sreal(2, 60);
         p.sync_drive.max_in_per_min = sreal(1, 8);
         p.sync_drive.acceleration_in_per_s2 = sreal(0.05, 3);
         c.medium = schance(0.5) ? DeckFormat::cbn : DeckFormat::tape; // .five has no column 76
@@ -263,8 +267,19 @@ Case random_case(std::mt19937& rng, std::mt19937& crng, std::mt19937& srng, std:
             }
             for (Axis a : kAxes) {
                 const bool moving = before.at(axis_index(a)) != at.at(axis_index(a));
-                if ((moving && schance(0.5)) || schance(0.03)) {
-                    sc.sync.travel_per_pulse.at(axis_index(a)) = spick(1, 400);
+                if (moving && schance(0.5)) {
+                    // Mostly as a careful programmer punches it: no faster, at the press's rated
+                    // speed, than the 1952 speed the card starts the axis on (its slow-downs are
+                    // planned for that); now and then up to twice as fast.
+                    const double rated = p.press.strokes_per_min * 6.0 * p.press.pulses_per_degree;
+                    const int k = o.axis(a).start_speed;
+                    const double most = p.axes.at(axis_index(a))
+                                            .speed_in_per_min.at(static_cast<std::size_t>(k - 1)) /
+                                        60.0 / rated * 1e5 * (schance(0.15) ? 2.0 : 1.0);
+                    const int top = std::max(1, static_cast<int>(most));
+                    sc.sync.travel_per_pulse.at(axis_index(a)) = spick(std::max(1, top / 4), top);
+                } else if (schance(0.03)) {
+                    sc.sync.travel_per_pulse.at(axis_index(a)) = spick(20, 400);
                 }
             }
             if (!sc.sync.position_sync && !sc.sync.speed_sync()) {
@@ -333,13 +348,13 @@ Case random_case(std::mt19937& rng, std::mt19937& crng, std::mt19937& srng, std:
             c.extra_punches.emplace_back(c.cards.size() - 1, pick(first, last), pick(0, 9));
         }
     }
-    if (p.press_sync && !c.cards.empty() && schance(0.6)) {
+    if (p.press_sync && !c.cards.empty() && schance(0.8)) {
         CardOrders loop;
         loop.kind = CardKind::sync;
         loop.number = number++;
         loop.sync.loop = true;
         loop.sync.loop_to = schance(0.9) ? c.cards.front().number : spick(0, 9999);
-        loop.sync.loop_count = spick(1, 3);
+        loop.sync.loop_count = spick(2, 4);
         c.cards.push_back(loop);
     }
     if (chance(0.1)) { // a slip of the drive, often while the chain has backlash too

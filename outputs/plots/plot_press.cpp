@@ -28,9 +28,9 @@ std::optional<std::size_t> PressTrace::define(const relaylogic::SignalInfo& info
     } else if (info.name == "position_register_14") {
         role = Role{Source::register_14};
         series_.at(static_cast<std::size_t>(Series::register_14_pulses)).add(Point{0, v});
-    } else if (info.name == "speed_register_11.stored") {
+    } else if (info.name == "speed_register_11.speed") {
         role = Role{Source::register_11};
-        series_.at(static_cast<std::size_t>(Series::register_11_stored)).add(Point{0, v});
+        series_.at(static_cast<std::size_t>(Series::register_11_speed)).add(Point{0, v / 100});
     } else if (info.name == "position_reader_60.hold") {
         role = Role{Source::hold_60};
         hold_.assign(1, Point{0, initial != 0 ? 1.0 : 0.0});
@@ -77,7 +77,8 @@ void PressTrace::change(std::size_t slot, double seconds, std::uint32_t old_valu
         series_.at(static_cast<std::size_t>(Series::register_14_pulses)).add(Point{seconds, v});
         break;
     case Source::register_11:
-        series_.at(static_cast<std::size_t>(Series::register_11_stored)).add(Point{seconds, v});
+        series_.at(static_cast<std::size_t>(Series::register_11_speed))
+            .add(Point{seconds, v / 100});
         break;
     case Source::hold_60:
         hold_.push_back(Point{seconds, new_value != 0 ? 1.0 : 0.0});

@@ -54,7 +54,7 @@ public:
         crank_21_deg,       // crank_21.angle / 10
         die_20_in,          // die_20.height / 1000
         register_14_pulses, // position_register_14
-        register_11_stored, // speed_register_11.stored, pulses a sampling interval
+        register_11_speed,  // speed_register_11.speed: the crank's speed it reads, pulses a second
     };
     struct SyncMark { // a sync card read (on_card)
         double t = 0;

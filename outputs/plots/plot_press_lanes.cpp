@@ -57,8 +57,9 @@ std::vector<LaneSpec> lanes_of(const PressTrace& press) {
                      "centre",
                      "pulses", kRegister14Colour, kLaneHeight});
     lanes.push_back({LaneKind::register_11, "speed_register_11", "speed register 11",
-                     "stored count: the pulses of the last sampling interval (Fig. 6)", "pulses",
-                     kRegister11Colour, kLaneHeight});
+                     "the crank's speed it reads at each reference block (Fig. 6), its pulses "
+                     "timed edge to edge",
+                     "pulses/s", kRegister11Colour, kLaneHeight});
     lanes.push_back({LaneKind::reader_60, "position_reader_60", "position reader 60",
                      "hold: a card's motion waits for its angle R; grey: a sync card's orders "
                      "wait",
@@ -227,7 +228,7 @@ void LaneWriter::lane(std::size_t index, const LaneSpec& spec, double top) {
         hi = max_of(series, 1);
         break;
     case LaneKind::register_11:
-        series = press_.series(PressTrace::Series::register_11_stored);
+        series = press_.series(PressTrace::Series::register_11_speed);
         hi = max_of(series, 1) * 1.1;
         break;
     case LaneKind::p63:

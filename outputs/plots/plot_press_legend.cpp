@@ -19,7 +19,7 @@ std::vector<LegendEntry> entries_of(const PressTrace& press) {
         {G::line, kCrankColour, "crank 21 angle, deg"},
         {G::line, kDieColour, "die 20 height, in"},
         {G::line, kRegister14Colour, "position register 14, pulses"},
-        {G::step, kRegister11Colour, "speed register 11 stored, pulses"},
+        {G::step, kRegister11Colour, "speed register 11, pulses a second"},
         {G::bar, kHoldColour, "reader 60 holds a card for its angle R", kHoldEdge},
         {G::mark, kHoldEdge, "detector 61: crank on R"},
     };

@@ -30,7 +30,8 @@ void PressProof::on_motion(double t, const std::array<double, 5>& real) {
 
 void PressProof::on_card(double t, std::int64_t /*index*/, const cardreader::CardOrders& orders) {
     advance(t);
-    if (orders.kind == cardreader::CardKind::motion && orders.number == cycle_card_) {
+    // The cycle's first card (a sync card since every move of the cycle is synchronised).
+    if (orders.number == cycle_card_) {
         ++cycle_;
     }
 }

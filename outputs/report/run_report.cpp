@@ -65,6 +65,23 @@ nlohmann::json tapping_json(const relaylogic::TappingResult& t) {
         {"ratios_received", t.ratios_received}, {"holes", holes}};
 }
 
+// The press line's lag: how far a synchronised axis fell behind the crank (position and
+// speed-only cards apart), when any axis followed.
+std::string lag_text(const relaylogic::PressResult& p) {
+    std::vector<std::string> parts;
+    if (p.max_lag_position_sync_in > 0) {
+        parts.push_back(fmt::format("{:.4f} in with position sync", p.max_lag_position_sync_in));
+    }
+    if (p.max_lag_speed_only_in > 0) {
+        parts.push_back(fmt::format("{:.4f} in speed only", p.max_lag_speed_only_in));
+    }
+    if (parts.empty()) {
+        return {};
+    }
+    return "; the axes behind the crank by at most " +
+           (parts.size() == 2 ? parts[0] + ", " + parts[1] : parts[0]);
+}
+
 std::string join(const std::vector<std::string>& parts, std::string_view sep) {
     std::string out;
     for (const auto& p : parts) {
@@ -270,16 +287,19 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachinePr
         auto seconds = [](const std::optional<double>& v) {
             return v ? json(time_s(*v)) : json(nullptr);
         };
-        j["press"] = json{{"revolution", p.revolution},
-                          {"crank_angle_deg", std::round(p.crank_angle_deg * 1000) / 1000},
-                          {"position_register_14", p.position_register},
-                          {"press_stopped", p.press_stopped},
-                          {"cycles", p.cycles},
-                          {"loop_backs", p.loop_backs},
-                          {"mean_cycle_seconds", seconds(p.mean_cycle_s)},
-                          {"shortest_cycle_seconds", seconds(p.shortest_cycle_s)},
-                          {"longest_cycle_seconds", seconds(p.longest_cycle_s)},
-                          {"waited_seconds", time_s(p.waited_s)}};
+        j["press"] =
+            json{{"revolution", p.revolution},
+                 {"crank_angle_deg", std::round(p.crank_angle_deg * 1000) / 1000},
+                 {"position_register_14", p.position_register},
+                 {"press_stopped", p.press_stopped},
+                 {"cycles", p.cycles},
+                 {"loop_backs", p.loop_backs},
+                 {"mean_cycle_seconds", seconds(p.mean_cycle_s)},
+                 {"shortest_cycle_seconds", seconds(p.shortest_cycle_s)},
+                 {"longest_cycle_seconds", seconds(p.longest_cycle_s)},
+                 {"waited_seconds", time_s(p.waited_s)},
+                 {"max_lag_position_sync_in", std::round(p.max_lag_position_sync_in * 1e5) / 1e5},
+                 {"max_lag_speed_only_in", std::round(p.max_lag_speed_only_in * 1e5) / 1e5}};
     }
     // Spindle synchronisation (an addition after EP 0360190): only when a tap card was read.
     if (r.tapping && r.tapping->used) {
@@ -345,7 +365,7 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
     if (r.press && r.press->used) {
         const relaylogic::PressResult& p = *r.press;
         line(fmt::format("  press          revolution {}, crank at {:.2f} deg{}; {} cycle{} of "
-                         "the job{}; cards held {:.3f} s for the crank",
+                         "the job{}; cards held {:.3f} s for the crank{}",
                          p.revolution, p.crank_angle_deg, p.press_stopped ? " (stopped)" : "",
                          p.cycles, p.cycles == 1 ? "" : "s",
                          p.mean_cycle_s
@@ -353,7 +373,7 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
                                            "longest {:.3f})",
                                            *p.mean_cycle_s, *p.shortest_cycle_s, *p.longest_cycle_s)
                              : "",
-                         p.waited_s));
+                         p.waited_s, lag_text(p)));
     }
     if (r.tapping && r.tapping->used) {
         const relaylogic::TappingResult& t = *r.tapping;

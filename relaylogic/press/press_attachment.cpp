@@ -179,13 +179,21 @@ bool PressAttachment::holds_motion(ControlCabinet& cab) {
     return units_.scp().hold_unless_at(units_.position_register().value(), cab.now());
 }
 
-// Speed synchronisation: speed 1 is the follower drive at processor 63's speed.
+// Speed synchronisation: on every position of speed switch 236 a synchronised axis runs on the
+// follower drive at processor 63's speed for that position (its travel per pulse times the
+// crank's speed, and the position loop's correction on a card with position sync).
 bool PressAttachment::drive(ControlCabinet& cab, AxisCircuit& c, bool on) {
-    if (!(on && c.speed_switch.position() == 1 && units_.scp().speed_synced(c.axis))) {
+    SynchronisationProcessor& scp = units_.scp();
+    const int k = c.speed_switch.position();
+    if (!(on && k >= 1 && k <= 3 && scp.speed_synced(c.axis))) {
         return false;
     }
-    c.plant.command_follow(c.direction, units_.scp().output(c.axis),
-                           cab.profile().sync_drive.acceleration_in_per_s2);
+    if (!scp.started(c.axis)) {
+        scp.start_axis(c.axis, k, c.contact_set_a, units_.position_register().value());
+    }
+    const double v = scp.drive_speed(c.axis, k);
+    c.plant.command_follow(c.direction, v, cab.profile().sync_drive.acceleration_in_per_s2);
+    scp.commanded(c.axis, v);
     c.set_powered(on);
     return true;
 }
@@ -241,9 +249,10 @@ void PressAttachment::press_edges(ControlCabinet& cab, double t) {
     if (cab.jumping() && press_quiet_ > 0) {
         const std::int64_t n = std::min(press_quiet_, press.pulses_by(t));
         if (n > 0) {
+            const double first = press.pulse_time(1);
             const double at = press.pulse_time(n);
             const axes::DetectorEdge last = press.skip_pulses(n);
-            units_.on_edges(n, last, at);
+            units_.on_edges(n, last, first, at);
             press_quiet_ -= n;
         }
     }
@@ -271,8 +280,21 @@ void PressAttachment::reference_block(ControlCabinet& cab) {
     const axes::MachineProfile& profile = cab.profile();
     const double now = cab.now();
     SynchronisationProcessor& scp = units_.scp();
-    const int pulses = units_.sample_speed();
-    if (scp.reference_block(pulses, profile.sync_drive.max_in_per_min / 60.0)) {
+    const double rate = units_.sample_speed(now);
+    std::array<std::optional<SynchronisationProcessor::Feedback>, cardreader::kAxisCount> fb{};
+    for (const auto& c : cab.circuits()) {
+        if (!scp.speed_synced(c->axis) || !scp.started(c->axis)) {
+            continue;
+        }
+        if (cab.count_due_impulse(*c) && cab.stopped()) {
+            return; // the impulse due now stopped the machine
+        }
+        if (c->powered && !c->stopped) {
+            fb.at(cardreader::axis_index(c->axis)) =
+                SynchronisationProcessor::Feedback{c->speed_switch.position(), c->contact_set_a};
+        }
+    }
+    if (scp.reference_block(rate, units_.turning(), units_.position_register().value(), fb)) {
         for (const auto& c : cab.circuits()) {
             if (scp.speed_synced(c->axis)) {
                 cab.update_motor(*c);
@@ -409,6 +431,8 @@ void PressAttachment::add_to(RunResult& result) const {
         p.longest_cycle_s = longest_cycle_s_;
     }
     p.waited_s = waited_s_;
+    p.max_lag_position_sync_in = units_.scp().worst_lag_in(true);
+    p.max_lag_speed_only_in = units_.scp().worst_lag_in(false);
     result.press = p;
 }
 

@@ -19,6 +19,11 @@ struct PressResult {
     std::optional<double> shortest_cycle_s;
     std::optional<double> longest_cycle_s;
     double waited_s = 0; // machine time cards spent held by position reader 60
+    // Processor 63's reference travel (F a pulse since the axis started) minus the axis's
+    // counted travel, the largest at any reference block: on cards with position sync (the
+    // loop takes it out) and on speed-only cards (nothing does).
+    double max_lag_position_sync_in = 0;
+    double max_lag_speed_only_in = 0;
     // The deck used it (a sync card was read): the report and the summary show the press only
     // then (it turns under parsons-extended whatever the deck).
     bool used = false;

@@ -2,6 +2,7 @@
 
 #include "axes/state_json.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace parsons::relaylogic {
@@ -31,8 +32,12 @@ void SyncUnits::install(Tracer& tracer, const axes::MachineProfile& profile) {
     register_14_ = std::make_unique<PositionRegister>(
         tracer, static_cast<int>(d16), static_cast<int>(((press_->count() % d16) + d16) % d16));
     register_11_ = std::make_unique<SpeedRegister>(tracer);
-    scp_ = std::make_unique<SynchronisationProcessor>(tracer, profile.press.pulses_per_degree,
-                                                      profile.speed_sample_s);
+    speed_11_ = tracer.define("press", "speed_register_11.speed",
+                              "speed register 11: the crank's speed it reads at each reference "
+                              "block, its pulses timed edge to edge, hundredths of a pulse a "
+                              "second",
+                              "11", 20);
+    scp_ = std::make_unique<SynchronisationProcessor>(tracer, profile);
 }
 
 std::uint32_t SyncUnits::crank_tenths() const {
@@ -49,6 +54,9 @@ bool SyncUnits::on_edge(const axes::DetectorEdge& edge, double t) {
     register_14_->count(sense);
     if (sense != 0) {
         register_11_->pulse();
+        if (first_edge_s_ < 0) {
+            first_edge_s_ = t;
+        }
     }
     if (tracer_->observer() != nullptr) {
         show_press();
@@ -56,11 +64,14 @@ bool SyncUnits::on_edge(const axes::DetectorEdge& edge, double t) {
     return scp_->detector_61(register_14_->value());
 }
 
-void SyncUnits::on_edges(std::int64_t n, const axes::DetectorEdge& last, double t) {
+void SyncUnits::on_edges(std::int64_t n, const axes::DetectorEdge& last, double first_t, double t) {
     if (n <= 0) {
         return;
     }
     last_edge_s_ = t;
+    if (first_edge_s_ < 0) {
+        first_edge_s_ = first_t;
+    }
     const int sense = press_->speed_deg_per_s() < 0 ? -1 : +1;
     device_13_->jump_to(last.count, sense);
     register_14_->count_many(n, sense);
@@ -68,6 +79,26 @@ void SyncUnits::on_edges(std::int64_t n, const axes::DetectorEdge& last, double 
     if (tracer_->observer() != nullptr) {
         show_press();
     }
+}
+
+double SyncUnits::sample_speed(double t) {
+    register_11_->sample();
+    const int n = register_11_->stored();
+    if (n > 0) {
+        if (sampled_edge_s_ >= 0 && last_edge_s_ > sampled_edge_s_) {
+            rate_ = n / (last_edge_s_ - sampled_edge_s_);
+            turning_ = true;
+        } else if (n >= 2 && last_edge_s_ > first_edge_s_) {
+            rate_ = (n - 1) / (last_edge_s_ - first_edge_s_); // the first pulses ever timed
+            turning_ = true;
+        }
+        sampled_edge_s_ = last_edge_s_;
+    } else if (sampled_edge_s_ >= 0 && t > last_edge_s_ && rate_ > 1.0 / (t - last_edge_s_)) {
+        rate_ = 1.0 / (t - last_edge_s_); // slower than one pulse since the last
+        turning_ = false;
+    }
+    tracer_->set(speed_11_, static_cast<std::uint32_t>(std::lround(rate_ * 100.0)));
+    return rate_;
 }
 
 std::int64_t SyncUnits::quiet_edges(std::int64_t limit) const {
@@ -96,7 +127,12 @@ nlohmann::json SyncUnits::save() const {
             {"position_register_14", register_14_->save()},
             {"speed_register_11", register_11_->save()},
             {"synchronisation_processor_17", scp_->save()},
-            {"last_edge_s", axes::exact(last_edge_s_)}};
+            {"last_edge_s", axes::exact(last_edge_s_)},
+            {"speed_timer",
+             {{"first_edge_s", axes::exact(first_edge_s_)},
+              {"sampled_edge_s", axes::exact(sampled_edge_s_)},
+              {"rate", axes::exact(rate_)},
+              {"turning", turning_}}}};
 }
 
 void SyncUnits::load(const nlohmann::json& j) {
@@ -106,6 +142,11 @@ void SyncUnits::load(const nlohmann::json& j) {
     register_11_->load(axes::member(j, "speed_register_11"));
     scp_->load(axes::member(j, "synchronisation_processor_17"));
     last_edge_s_ = axes::exact(axes::member(j, "last_edge_s"));
+    const nlohmann::json& timer = axes::member(j, "speed_timer");
+    first_edge_s_ = axes::exact(axes::member(timer, "first_edge_s"));
+    sampled_edge_s_ = axes::exact(axes::member(timer, "sampled_edge_s"));
+    rate_ = axes::exact(axes::member(timer, "rate"));
+    turning_ = axes::read<bool>(timer, "turning");
 }
 
 } // namespace parsons::relaylogic

@@ -41,18 +41,25 @@ public:
     SynchronisationProcessor& scp() { return *scp_; }
     const SynchronisationProcessor& scp() const { return *scp_; }
     const PositionRegister& position_register() const { return *register_14_; }
+    PositionRegister& position_register() { return *register_14_; }
     const SpeedRegister& speed_register() const { return *register_11_; }
 
     // A detector edge at time t: 13, 14, 11. Returns true when detector 61 conducts (the
     // card's motion is to start).
     bool on_edge(const axes::DetectorEdge& edge, double t);
-    // A reference block: speed register 11's count moves into its holding relays; returns it.
-    int sample_speed() {
-        register_11_->sample();
-        return register_11_->stored();
-    }
-    // Fast-forward: n edges in the press's sense, the last of them `last`, at time t.
-    void on_edges(std::int64_t n, const axes::DetectorEdge& last, double t);
+    // A reference block at time t: speed register 11's count moves into its holding relays,
+    // and the crank's speed is read from it: the sample's pulses over the time from the last
+    // pulse before them to the last of them (the register's timer notes when each pulse
+    // comes), so a speed is exact once two pulses have been timed, however few a block holds.
+    // A block with no pulse bounds the speed by one pulse in the time since the last.
+    // Returns pulses a second.
+    double sample_speed(double t);
+    // The last reading was timed between two pulses, not bounded by a block without one: the
+    // crank turns.
+    bool turning() const { return turning_; }
+    // Fast-forward: n edges in the press's sense, the first of them at `first_t`, the last of
+    // them `last`, at time t.
+    void on_edges(std::int64_t n, const axes::DetectorEdge& last, double first_t, double t);
     // Fast-forward: how many coming edges are only counts (the one that makes 61 conduct is
     // not), at most `limit`.
     std::int64_t quiet_edges(std::int64_t limit) const;
@@ -76,9 +83,14 @@ private:
     std::unique_ptr<SynchronisationProcessor> scp_;
     Tracer* tracer_ = nullptr;
     double last_edge_s_ = 0;
+    double first_edge_s_ = -1;   // the first pulse timed (-1: none yet)
+    double sampled_edge_s_ = -1; // the last pulse of the last sample that had one
+    double rate_ = 0;            // pulses a second, as last read
+    bool turning_ = false;       // the last read was timed between pulses (not a bound)
     SignalId crank_21_ = 0;
     SignalId die_20_ = 0;
     SignalId motor_22_ = 0;
+    SignalId speed_11_ = 0;
 };
 
 } // namespace parsons::relaylogic

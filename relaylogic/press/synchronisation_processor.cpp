@@ -1,6 +1,7 @@
 #include "relaylogic/press/synchronisation_processor.hpp"
 
 #include "axes/state_json.hpp"
+#include "cardreader/tap_review.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +10,18 @@ namespace parsons::relaylogic {
 
 using cardreader::axis_name;
 
-SynchronisationProcessor::SynchronisationProcessor(Tracer& tracer, int pulses_per_degree,
-                                                   double block_s)
-    : tracer_(tracer), ppd_(pulses_per_degree), block_s_(block_s) {
+SynchronisationProcessor::SynchronisationProcessor(Tracer& tracer,
+                                                   const axes::MachineProfile& profile)
+    : tracer_(tracer), ppd_(profile.press.pulses_per_degree) {
+    rated_pulses_per_s_ = profile.press.strokes_per_min * 6.0 * ppd_;
+    for (std::size_t i = 0; i < speeds_.size(); ++i) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            speeds_.at(i).at(k) = profile.axes.at(i).speed_in_per_min.at(k) / 60.0;
+        }
+    }
+    gain_per_s_ = profile.sync_drive.position_gain_per_s;
+    max_in_per_s_ = profile.sync_drive.max_in_per_min / 60.0;
+    device_16_ = 360 * ppd_;
     sync_card_ =
         tracer.define("press", "synchronisation_processor_17.sync_card",
                       "a sync card's orders wait for their motion card (EP 0436887)", "17", 1);
@@ -37,8 +47,14 @@ SynchronisationProcessor::SynchronisationProcessor(Tracer& tracer, int pulses_pe
         output_63_.at(cardreader::axis_index(a)) =
             tracer.define("press", "processor_63." + axis,
                           "processor 63: the " + axis +
-                              " speed sent to the drive, thousandths of an inch a minute",
+                              " speed last sent to the drive, thousandths of an inch a minute",
                           "63", 20);
+        behind_63_.at(cardreader::axis_index(a)) =
+            tracer.define("press", "processor_63." + axis + ".behind",
+                          "processor 63: how far the " + axis +
+                              " axis is behind its reference travel (F a pulse since it "
+                              "started), ten-thousandths of an inch (0 when on it or ahead)",
+                          "63", 16);
     }
 }
 
@@ -58,6 +74,7 @@ void SynchronisationProcessor::arm() {
         target_ = pending_->angle_deg * ppd_;
     }
     feed_ = pending_->travel_per_pulse;
+    loop_ = pending_->position_sync && pending_->speed_sync();
     pending_.reset();
     tracer_.set(sync_card_, 0);
     show();
@@ -67,8 +84,10 @@ void SynchronisationProcessor::clear() {
     target_.reset();
     holding_ = false;
     feed_ = {};
-    next_ = {};
-    output_ = {};
+    loop_ = false;
+    for (Follow& f : follow_) {
+        f = Follow{};
+    }
     tracer_.set(detector_61_, 0);
     show();
 }
@@ -104,21 +123,105 @@ void SynchronisationProcessor::release() {
     tracer_.set(hold_60_, 0);
 }
 
-bool SynchronisationProcessor::reference_block(int pulses, double max_in_per_s) {
-    bool changed = false;
-    for (std::size_t i = 0; i < feed_.size(); ++i) {
-        if (output_.at(i) != next_.at(i)) {
-            output_.at(i) = next_.at(i);
+void SynchronisationProcessor::start_axis(cardreader::Axis a, int speed_position,
+                                          std::int64_t impulses, int register_14) {
+    Follow& f = follow_.at(cardreader::axis_index(a));
+    f = Follow{};
+    f.started = true;
+    f.start_speed = std::clamp(speed_position, 1, 3);
+    f.impulses0 = impulses;
+    f.register_prev = register_14;
+}
+
+double SynchronisationProcessor::per_pulse_in(cardreader::Axis a, int speed_position) const {
+    const std::size_t i = cardreader::axis_index(a);
+    const Follow& f = follow_.at(i);
+    const int k = std::clamp(speed_position, 1, 3);
+    if (!feed_.at(i)) {
+        return 0.0;
+    }
+    if (!f.started || k == f.start_speed) {
+        return *feed_.at(i) * 1e-5;
+    }
+    // A slow-down: the 1952 motor's speed at the press's rated speed.
+    return speeds_.at(i).at(static_cast<std::size_t>(k - 1)) / rated_pulses_per_s_;
+}
+
+double SynchronisationProcessor::drive_speed(cardreader::Axis a, int speed_position) const {
+    double v =
+        per_pulse_in(a, speed_position) * rate_out_ + follow_.at(cardreader::axis_index(a)).out;
+    if (turning_out_) {
+        // No slower than the drive runs steadily (as for a tap's feed), which also lets each
+        // thousandth's equality leave the comparer within delay 258, as the 1952 speed 3 does.
+        v = std::max(v, cardreader::kLeastTapFeedInPerMin / 60.0);
+    }
+    return std::clamp(v, 0.0, max_in_per_s_);
+}
+
+void SynchronisationProcessor::commanded(cardreader::Axis a, double in_per_s) {
+    tracer_.set(output_63_.at(cardreader::axis_index(a)),
+                static_cast<std::uint32_t>(std::lround(in_per_s * 60000.0)));
+}
+
+// The pulses register 14 moved from `before` to `now`, the short way round device 16's ring.
+namespace {
+int ring_step(int before, int now, int ring) {
+    int d = (now - before) % ring;
+    if (d > ring / 2) {
+        d -= ring;
+    } else if (d < -ring / 2) {
+        d += ring;
+    }
+    return d;
+}
+} // namespace
+
+bool SynchronisationProcessor::reference_block(
+    double rate, bool turning, int register_14,
+    const std::array<std::optional<Feedback>, cardreader::kAxisCount>& axes) {
+    bool changed = rate_out_ != rate_next_ || turning_out_ != turning_next_;
+    rate_out_ = rate_next_;
+    rate_next_ = rate;
+    turning_out_ = turning_next_;
+    turning_next_ = turning;
+    for (std::size_t i = 0; i < follow_.size(); ++i) {
+        Follow& f = follow_.at(i);
+        if (f.out != f.next) {
+            f.out = f.next;
             changed = true;
         }
-        // F (1e-5 in a pulse) x pulses in the interval / the interval, at most the drive's.
-        next_.at(i) = feed_.at(i)
-                          ? std::min(max_in_per_s,
-                                     *feed_.at(i) * 1e-5 * static_cast<double>(pulses) / block_s_)
-                          : 0.0;
+        f.next = 0;
+        if (!f.started || !feed_.at(i)) {
+            continue;
+        }
+        // The pulses the crank turned, whichever way (the speed, not the velocity, as register
+        // 11 counts them).
+        const int step = std::abs(ring_step(f.register_prev, register_14, device_16_));
+        f.register_prev = register_14;
+        const auto& fb = axes.at(i);
+        if (!fb) {
+            continue; // stopped on its card, or held: the reference waits with it
+        }
+        const cardreader::Axis a = cardreader::kAxes.at(i);
+        f.ref_in += per_pulse_in(a, fb->speed_position) * step;
+        f.lag_in = f.ref_in - static_cast<double>(fb->impulses - f.impulses0) * 0.001;
+        tracer_.set(behind_63_.at(i), static_cast<std::uint32_t>(
+                                          std::clamp(std::lround(f.lag_in * 1e4), 0L, 65535L)));
+        double& worst = worst_lag_.at(loop_ ? 1 : 0);
+        worst = std::max(worst, std::abs(f.lag_in));
+        if (loop_) {
+            const double feed = per_pulse_in(a, fb->speed_position) * rate;
+            f.next = std::clamp(gain_per_s_ * f.lag_in, -0.5 * feed, 0.5 * feed);
+        }
     }
     show();
     return changed;
+}
+
+void SynchronisationProcessor::register_preset(int register_14) {
+    for (Follow& f : follow_) {
+        f.register_prev = register_14;
+    }
 }
 
 void SynchronisationProcessor::show() {
@@ -129,8 +232,6 @@ void SynchronisationProcessor::show() {
     tracer_.set(hold_60_, holding_ ? 1U : 0U);
     for (std::size_t i = 0; i < feed_.size(); ++i) {
         tracer_.set(feed_62_.at(i), static_cast<std::uint32_t>(feed_.at(i).value_or(0)));
-        tracer_.set(output_63_.at(i),
-                    static_cast<std::uint32_t>(std::lround(output_.at(i) * 60000.0)));
     }
 }
 
@@ -153,13 +254,20 @@ std::optional<int> read_optional(const nlohmann::json& j) {
 } // namespace
 
 nlohmann::json SynchronisationProcessor::save() const {
+    using axes::exact;
     nlohmann::json feeds = nlohmann::json::array();
-    nlohmann::json next = nlohmann::json::array();
-    nlohmann::json out = nlohmann::json::array();
+    nlohmann::json follow = nlohmann::json::array();
     for (std::size_t i = 0; i < feed_.size(); ++i) {
         feeds.push_back(optional_int(feed_.at(i)));
-        next.push_back(axes::exact(next_.at(i)));
-        out.push_back(axes::exact(output_.at(i)));
+        const Follow& f = follow_.at(i);
+        follow.push_back({{"started", f.started},
+                          {"start_speed", f.start_speed},
+                          {"impulses0", f.impulses0},
+                          {"register_prev", f.register_prev},
+                          {"ref_in", exact(f.ref_in)},
+                          {"lag_in", exact(f.lag_in)},
+                          {"next", exact(f.next)},
+                          {"out", exact(f.out)}});
     }
     nlohmann::json pending = nullptr;
     if (pending_) {
@@ -173,10 +281,18 @@ nlohmann::json SynchronisationProcessor::save() const {
                    {"card", pending_card_},
                    {"number", pending_number_}};
     }
-    return {{"pending", pending},  {"target", optional_int(target_)},
-            {"holding", holding_}, {"hold_since", axes::exact(hold_since_)},
-            {"feed", feeds},       {"next", next},
-            {"output", out}};
+    return {{"pending", pending},
+            {"target", optional_int(target_)},
+            {"holding", holding_},
+            {"hold_since", exact(hold_since_)},
+            {"feed", feeds},
+            {"position_loop", loop_},
+            {"follow", follow},
+            {"rate_next", exact(rate_next_)},
+            {"rate_out", exact(rate_out_)},
+            {"turning_next", turning_next_},
+            {"turning_out", turning_out_},
+            {"worst_lag_in", {exact(worst_lag_.at(0)), exact(worst_lag_.at(1))}}};
 }
 
 void SynchronisationProcessor::load(const nlohmann::json& j) {
@@ -198,17 +314,31 @@ void SynchronisationProcessor::load(const nlohmann::json& j) {
     holding_ = axes::read<bool>(j, "holding");
     hold_since_ = axes::exact(axes::member(j, "hold_since"));
     const auto& feeds = axes::member(j, "feed");
-    const auto& next = axes::member(j, "next");
-    const auto& out = axes::member(j, "output");
-    if (!feeds.is_array() || feeds.size() != feed_.size() || !next.is_array() ||
-        next.size() != feed_.size() || !out.is_array() || out.size() != feed_.size()) {
-        throw axes::StateError("synchronisation_processor_17: five feeds, next and output");
+    const auto& follow = axes::member(j, "follow");
+    const auto& worst = axes::member(j, "worst_lag_in");
+    if (!feeds.is_array() || feeds.size() != feed_.size() || !follow.is_array() ||
+        follow.size() != feed_.size() || !worst.is_array() || worst.size() != 2) {
+        throw axes::StateError("synchronisation_processor_17: five feeds and five follow entries");
     }
     for (std::size_t i = 0; i < feed_.size(); ++i) {
         feed_.at(i) = read_optional(feeds.at(i));
-        next_.at(i) = axes::exact(next.at(i));
-        output_.at(i) = axes::exact(out.at(i));
+        const nlohmann::json& e = follow.at(i);
+        Follow& f = follow_.at(i);
+        f.started = axes::read<bool>(e, "started");
+        f.start_speed = std::clamp(axes::read<int>(e, "start_speed"), 1, 3);
+        f.impulses0 = axes::read<std::int64_t>(e, "impulses0");
+        f.register_prev = axes::read<int>(e, "register_prev");
+        f.ref_in = axes::exact(axes::member(e, "ref_in"));
+        f.lag_in = axes::exact(axes::member(e, "lag_in"));
+        f.next = axes::exact(axes::member(e, "next"));
+        f.out = axes::exact(axes::member(e, "out"));
     }
+    loop_ = axes::read<bool>(j, "position_loop");
+    rate_next_ = axes::exact(axes::member(j, "rate_next"));
+    rate_out_ = axes::exact(axes::member(j, "rate_out"));
+    turning_next_ = axes::read<bool>(j, "turning_next");
+    turning_out_ = axes::read<bool>(j, "turning_out");
+    worst_lag_ = {axes::exact(worst.at(0)), axes::exact(worst.at(1))};
 }
 
 } // namespace parsons::relaylogic

@@ -12,29 +12,47 @@
 //                                  distributor 5 when the position read from register 14
 //                                  corresponds to the program-designated position value")
 //   programmed feed speed reader 62  holds each axis's travel per pulse F
-//   processor 63                   at each reference block (Fig. 6) multiplies the pulses
-//                                  speed register 11 counted in the last interval by F, over
-//                                  the interval: the speed the axis must run at; the result
-//                                  goes to the drive at the start of the next block
+//   processor 63                   at each reference block (Fig. 6, every speed_sample_s) reads
+//                                  the crank's speed from speed register 11 (pulses a second,
+//                                  timed edge to edge) and position register 14, and works out
+//                                  each synchronised axis's speed; the result goes to the drive
+//                                  at the start of the next block
+//
+// Every speed of speed switch 236 follows the press: each position of the switch is a travel
+// per detector pulse, F for the speed the card starts the axis on, and the 1952 motor's own
+// speed over the press's rated pulses a second for each slow-down after it, so at the rated
+// speed the slow-downs run exactly as the 1952 ones and a slower press slows them alike.
+//
+// Position data (claim 7: selected by the card's G101): on a card with position sync, 63 also
+// keeps each synchronised axis on the crank. From the instant the axis starts, the reference
+// travel grows by the travel per pulse of the switch's position for every pulse register 14
+// counts; the axis's travel is the impulses commutator 102 sent since; 63 adds the difference
+// times sync_drive.position_gain_per_s to the speed (at most half of it either way), so the
+// offset that the drive's lag leaves after a change of the press's speed, or its start, is
+// taken out (the seed: "the external position data and a numerically controlled coordinate
+// position may be overlapped with each other to enable more fine control"). A speed-only card
+// keeps what offset it gets, as Fig. 7's prior art does.
 //
 // Processing every block, both kinds of synchronisation in one pass (Fig. 5 left side): the
 // position check holds or starts the card, and the speed is computed while it is held too, so
 // the axis starts at the crank's own pace.
 #pragma once
 
+#include "axes/machine_profile.hpp"
 #include "cardreader/orders.hpp"
 #include "relaylogic/tracer.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cstdint>
 #include <optional>
 
 namespace parsons::relaylogic {
 
 class SynchronisationProcessor {
 public:
-    SynchronisationProcessor(Tracer& tracer, int pulses_per_degree, double block_s);
+    SynchronisationProcessor(Tracer& tracer, const axes::MachineProfile& profile);
 
     // ---- the sync card and the motion card it stands before ----
     // A sync card's orders, waiting for the next motion card (card: its deck position).
@@ -66,11 +84,36 @@ public:
         return feed_.at(cardreader::axis_index(a)).has_value();
     }
     bool any_speed_synced() const;
-    // The drive speed in force for the axis, in/s.
-    double output(cardreader::Axis a) const { return output_.at(cardreader::axis_index(a)); }
-    // A reference block: the speeds computed at the last block go to the drive (returns true if
-    // any changed), then 63 computes the next from `pulses` (speed register 11's stored data).
-    bool reference_block(int pulses, double max_in_per_s);
+    bool position_loop() const { return loop_; } // the card's G101 selects position data too
+    // A synchronised axis is powered for the first time on its card: the speed position it
+    // starts on, commutator 102's impulses so far and register 14 now.
+    bool started(cardreader::Axis a) const { return follow_.at(cardreader::axis_index(a)).started; }
+    void start_axis(cardreader::Axis a, int speed_position, std::int64_t impulses, int register_14);
+    // The travel per detector pulse of the axis at a position of speed switch 236, inches.
+    double per_pulse_in(cardreader::Axis a, int speed_position) const;
+    // The speed the drive runs the axis at on that position, in/s: the crank's speed in force
+    // times the travel per pulse, with the position correction in force; while the crank
+    // turns, no slower than the drive's least steady speed (cardreader::kLeastTapFeedInPerMin).
+    double drive_speed(cardreader::Axis a, int speed_position) const;
+    // What a reference block reads of a started, powered synchronised axis.
+    struct Feedback {
+        int speed_position = 0;
+        std::int64_t impulses = 0; // commutator 102's impulses so far
+    };
+    // A reference block: the crank's speed and the corrections computed at the last block go
+    // to the drive (returns true if any changed), then 63 computes the next from `rate`
+    // (register 11: pulses a second), register 14 and the axes' travel.
+    bool reference_block(double rate, bool turning, int register_14,
+                         const std::array<std::optional<Feedback>, cardreader::kAxisCount>& axes);
+    // Register 14 was preset by a card (claim 5): the loop's count goes on from the new value.
+    void register_preset(int register_14);
+    double rate_in_force() const { return rate_out_; }
+    // Reference minus counted travel at the last block (every started synchronised axis, the
+    // loop or not), and the largest since the run began.
+    double lag_in(cardreader::Axis a) const { return follow_.at(cardreader::axis_index(a)).lag_in; }
+    double worst_lag_in(bool with_loop) const { return worst_lag_.at(with_loop ? 1 : 0); }
+    // The speed last sent to the axis's drive (traced), in/s.
+    void commanded(cardreader::Axis a, double in_per_s);
 
     nlohmann::json save() const;
     void load(const nlohmann::json& j);
@@ -80,7 +123,6 @@ private:
 
     Tracer& tracer_;
     int ppd_;
-    double block_s_;
     std::optional<cardreader::SyncOrder> pending_;
     std::int64_t pending_card_ = 0;
     int pending_number_ = 0;
@@ -88,14 +130,35 @@ private:
     bool holding_ = false;
     double hold_since_ = 0;
     std::array<std::optional<int>, cardreader::kAxisCount> feed_{}; // 62: F, 1e-5 in per pulse
-    std::array<double, cardreader::kAxisCount> next_{};             // 63: computed, not yet out
-    std::array<double, cardreader::kAxisCount> output_{};           // 63: in force
+    struct Follow {
+        bool started = false;
+        int start_speed = 1;
+        std::int64_t impulses0 = 0; // commutator 102 when the axis started
+        int register_prev = 0;      // register 14 at the last block
+        double ref_in = 0;          // the reference travel since the start
+        double lag_in = 0;          // reference minus counted travel at the last block
+        double next = 0;            // 63: correction computed, in/s
+        double out = 0;             // 63: correction in force
+    };
+    std::array<Follow, cardreader::kAxisCount> follow_{};
+    bool loop_ = false;
+    std::array<double, 2> worst_lag_{}; // speed only, with the loop
+    double rate_next_ = 0;              // 63: the crank's speed computed, pulses a second
+    double rate_out_ = 0;               // 63: in force
+    bool turning_next_ = false;         // register 11 timed it between pulses (the crank turns)
+    bool turning_out_ = false;
+    double rated_pulses_per_s_ = 1;
+    std::array<std::array<double, 3>, cardreader::kAxisCount> speeds_{}; // the 1952 speeds, in/s
+    double gain_per_s_ = 0;
+    double max_in_per_s_ = 0;
+    int device_16_ = 1440;
     SignalId sync_card_;
     SignalId angle_60_;
     SignalId hold_60_;
     SignalId detector_61_;
     std::array<SignalId, cardreader::kAxisCount> feed_62_{};
     std::array<SignalId, cardreader::kAxisCount> output_63_{};
+    std::array<SignalId, cardreader::kAxisCount> behind_63_{};
 };
 
 } // namespace parsons::relaylogic
