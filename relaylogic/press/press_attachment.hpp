@@ -1,7 +1,7 @@
 // Press synchronisation (an addition after EP 0436887, Mitsubishi) as an attachment of control
 // cabinet 52 (relaylogic/attachment.hpp): the press turns on a clock of its own; a sync card's
 // orders wait in readers 60 and 62 for the motion card after it, whose motion position reader
-// 60 holds until crank 21 reaches the angle R, or whose speed 1 follows the press (processor
+// 60 holds until crank 21 reaches the angle R, or whose every speed follows the press (processor
 // 63, one reference block of Fig. 6 at a time); a loop card (the seed's M99) sends the reader
 // back among the cards it has taken, as round a ribbon made into an endless loop. The units
 // are relaylogic/press/sync_units.hpp's.

@@ -16,7 +16,7 @@
 //   motion card, relays pick .. the orders are armed on this card
 //   reading complete .......... position sync: 60's hold relay holds the card's motion unless
 //                               14 stands on R; 61 drops it when 14 reaches R
-//   speed 1 of a synced axis .. the follower drive runs the axis at 63's speed
+//   a synced axis, any speed . the follower drive runs the axis at 63's speed
 //   zeroizing ................. 60 and 62 cleared
 #pragma once
 
