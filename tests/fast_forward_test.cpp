@@ -285,7 +285,10 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
     // The decks did what they are for: long runs, stops of several kinds, lost steps.
     CHECK(impulses > 1'000'000);
     CHECK(stopped > 40);
-    CHECK(stopped < 200);
+    // At most seven in eight stop (a synchronised axis now follows a stopping press on every
+    // speed, so more press decks end in sync_timeout than when its tails ran on the 1952 motor;
+    // the sanitizer build's libm gives one more stop than the plain build's 200).
+    CHECK(stopped < 210);
     CHECK(lost >= 2); // fewer since presses stop some of the long runs early (sync_timeout)
     CHECK(sensed_two_relays >= 3);
     CHECK(interpretations >= 40);
