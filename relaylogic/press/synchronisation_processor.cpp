@@ -218,12 +218,6 @@ bool SynchronisationProcessor::reference_block(
     return changed;
 }
 
-void SynchronisationProcessor::register_preset(int register_14) {
-    for (Follow& f : follow_) {
-        f.register_prev = register_14;
-    }
-}
-
 void SynchronisationProcessor::show() {
     if (tracer_.observer() == nullptr) {
         return; // nobody watches: the values need not be worked out (they change at every edge)

@@ -84,7 +84,6 @@ public:
         return feed_.at(cardreader::axis_index(a)).has_value();
     }
     bool any_speed_synced() const;
-    bool position_loop() const { return loop_; } // the card's G101 selects position data too
     // A synchronised axis is powered for the first time on its card: the speed position it
     // starts on, commutator 102's impulses so far and register 14 now.
     bool started(cardreader::Axis a) const { return follow_.at(cardreader::axis_index(a)).started; }
@@ -105,12 +104,8 @@ public:
     // (register 11: pulses a second), register 14 and the axes' travel.
     bool reference_block(double rate, bool turning, int register_14,
                          const std::array<std::optional<Feedback>, cardreader::kAxisCount>& axes);
-    // Register 14 was preset by a card (claim 5): the loop's count goes on from the new value.
-    void register_preset(int register_14);
-    double rate_in_force() const { return rate_out_; }
-    // Reference minus counted travel at the last block (every started synchronised axis, the
-    // loop or not), and the largest since the run began.
-    double lag_in(cardreader::Axis a) const { return follow_.at(cardreader::axis_index(a)).lag_in; }
+    // The most a started synchronised axis was behind its reference travel at any block, on
+    // cards with position sync (the loop) or on speed-only cards.
     double worst_lag_in(bool with_loop) const { return worst_lag_.at(with_loop ? 1 : 0); }
     // The speed last sent to the axis's drive (traced), in/s.
     void commanded(cardreader::Axis a, double in_per_s);
