@@ -72,8 +72,8 @@ bool starts_section(const LayoutField& f) {
     return f.kind == FieldKind::spindle || f.kind == FieldKind::motion ||
            f.kind == FieldKind::card_number || f.kind == FieldKind::event ||
            f.kind == FieldKind::extension || f.kind == FieldKind::position_sync ||
-           f.kind == FieldKind::loop_mark || f.kind == FieldKind::travel_per_pulse ||
-           f.kind == FieldKind::tap_tool;
+           f.kind == FieldKind::loop_mark || f.kind == FieldKind::register_reset ||
+           f.kind == FieldKind::travel_per_pulse || f.kind == FieldKind::tap_tool;
 }
 
 // A section name in bold over columns first..last.

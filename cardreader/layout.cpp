@@ -37,6 +37,7 @@ ColumnWord rows_allowed(FieldKind k) {
         return r0 | r1;
     case FieldKind::position_sync:
     case FieldKind::loop_mark:
+    case FieldKind::register_reset:
         return r0;
     default:
         return kDigitRows;
@@ -210,6 +211,7 @@ std::string_view field_short_label(FieldKind kind) {
     case FieldKind::loop_mark:
     case FieldKind::loop_target:
     case FieldKind::loop_count:
+    case FieldKind::register_reset:
     case FieldKind::travel_per_pulse:
         return sync_field_short_label(kind);
     case FieldKind::tap_tool:
@@ -244,6 +246,7 @@ std::string field_label(const LayoutField& field) {
     case FieldKind::loop_mark:
     case FieldKind::loop_target:
     case FieldKind::loop_count:
+    case FieldKind::register_reset:
     case FieldKind::travel_per_pulse:
         return sync_field_label(field);
     case FieldKind::tap_tool:

@@ -42,13 +42,15 @@ enum class FieldKind : std::uint8_t {
     parameter,
     // The fields of a sync card (an addition after EP 0436887; docs/card-layout.md): the
     // position-sync mark (G101, row 0), the crank angle R (three digits, degrees), the loop
-    // mark (M99, row 0), the card number the loop goes back to, how many times, and per axis
-    // the travel per detector pulse (G95 F, five digits read 0.ddddd in; blank = none).
+    // mark (M99, row 0), the card number the loop goes back to, how many times, the reset of
+    // register 14 (switch 16A, row 0), and per axis the travel per detector pulse (G95 F, five
+    // digits read 0.ddddd in; blank = none).
     position_sync,
     sync_angle,
     loop_mark,
     loop_target,
     loop_count,
+    register_reset,
     travel_per_pulse,
     // The fields of a tap card (an addition after EP 0360190; docs/card-layout.md): the tool T
     // (two digits, 01-99), the feed axis (one digit 1-5), the sense into the work (row 0

@@ -117,6 +117,10 @@ std::optional<std::string> parameter_error(ActionKind a, int parameter);
 // (its G101 with R: hold the card's motion until the press's crank 21 reaches the angle) and
 // speed synchronisation (its G95 with F: an axis travels F per pulse of detector 10), or
 // both; or, alone on its card, the seed's M99: the reader goes back to a card, so many times.
+// Any card but a loop card may also order reset switch 16A (claim 5: register 14 "selectively
+// resettable at a reference position"): register 14 clears as the card is read, so the crank's
+// angle there is the reference every R after it counts from. A card that orders only the reset
+// synchronises nothing and needs no motion card after it.
 inline constexpr int kMaxTravelPerPulse = 99999; // 0.99999 in per pulse
 
 struct SyncOrder {
@@ -125,9 +129,10 @@ struct SyncOrder {
     // G95: per axis, the travel per detector pulse in hundred-thousandths of an inch
     // (1..99999, read 0.ddddd in); none = this axis is not speed-synchronised.
     std::array<std::optional<int>, kAxisCount> travel_per_pulse{};
-    bool loop = false;  // M99
-    int loop_to = 0;    // the card number the reader goes back to
-    int loop_count = 0; // how many times it goes back (1..9999)
+    bool loop = false;           // M99
+    int loop_to = 0;             // the card number the reader goes back to
+    int loop_count = 0;          // how many times it goes back (1..9999)
+    bool register_reset = false; // switch 16A: register 14 clears as the card is read
 
     bool speed_sync() const {
         for (const auto& f : travel_per_pulse) {
@@ -137,6 +142,8 @@ struct SyncOrder {
         }
         return false;
     }
+    // Orders for the motion card after it (a card of the reset alone, or a loop, has none).
+    bool synchronises() const { return position_sync || speed_sync(); }
     bool operator==(const SyncOrder&) const = default;
 };
 

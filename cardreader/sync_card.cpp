@@ -137,6 +137,7 @@ void add_sync_fields(CardLayout& layout) {
     layout.sync_fields.push_back({FieldKind::loop_mark, std::nullopt, 6, 1});
     layout.sync_fields.push_back({FieldKind::loop_target, std::nullopt, 7, 4});
     layout.sync_fields.push_back({FieldKind::loop_count, std::nullopt, 11, 4});
+    layout.sync_fields.push_back({FieldKind::register_reset, std::nullopt, 15, 1});
     for (Axis a : kAxes) {
         const int first = kTravelFirstColumn + static_cast<int>(axis_index(a)) * kTravelColumns;
         layout.sync_fields.push_back({FieldKind::travel_per_pulse, a, first, kTravelColumns});
@@ -155,6 +156,8 @@ std::string sync_field_label(const LayoutField& field) {
         return "loop target";
     case FieldKind::loop_count:
         return "loop count";
+    case FieldKind::register_reset:
+        return "register 14 reset";
     case FieldKind::travel_per_pulse:
         return fmt::format("{} travel per pulse", axis_name(field.axis.value_or(Axis::table)));
     default:
@@ -174,6 +177,8 @@ std::string_view sync_field_short_label(FieldKind kind) {
         return "LOOP TO";
     case FieldKind::loop_count:
         return "COUNT";
+    case FieldKind::register_reset:
+        return "16A";
     case FieldKind::travel_per_pulse:
         return "F/PULSE";
     default:
@@ -198,14 +203,19 @@ DecodeResult decode_sync_card(const Card& card, const CardLayout& layout) {
     read_position_sync(card, layout, s, problems);
     read_loop(card, layout, s, problems);
     read_speed_sync(card, layout, s, problems);
+    const LayoutField& reset = sync_field(layout, FieldKind::register_reset);
+    s.register_reset = (card.column(reset.first_column) & r0) != 0;
     const LayoutField& loop_mark = sync_field(layout, FieldKind::loop_mark);
-    if (s.loop && (s.position_sync || s.speed_sync())) {
+    if (s.loop && (s.synchronises() || s.register_reset)) {
         problems.add(loop_mark.first_column,
                      fmt::format("a loop card (column {}) stands alone, but this one also carries "
-                                 "{}: punch the synchronisation on a card of its own (the seed's "
-                                 "M99 is a block of its own)",
+                                 "{}: punch {} on a card of its own (the seed's M99 is a block of "
+                                 "its own)",
                                  loop_mark.first_column,
-                                 s.position_sync ? "position sync" : "speed sync"));
+                                 s.position_sync  ? "position sync"
+                                 : s.speed_sync() ? "speed sync"
+                                                  : "the reset of register 14 (switch 16A)",
+                                 s.synchronises() ? "the synchronisation" : "the reset"));
     }
     bool anything = false;
     for (const LayoutField& f : layout.sync_fields) {
@@ -215,8 +225,8 @@ DecodeResult decode_sync_card(const Card& card, const CardLayout& layout) {
     }
     if (!anything) {
         problems.add(layout.extension_column,
-                     fmt::format("column {} marks a sync card (row 2), but no synchronisation or "
-                                 "loop is punched in columns 1-75",
+                     fmt::format("column {} marks a sync card (row 2), but no synchronisation, "
+                                 "register reset or loop is punched in columns 1-75",
                                  layout.extension_column));
     }
     result.bad_punch = problems.first();
@@ -245,13 +255,14 @@ std::optional<std::string> sync_order_error(const SyncOrder& s) {
         if (s.loop_count < 1 || s.loop_count > kMaxLoopCount) {
             return fmt::format("loop count {} is not 1..9999", s.loop_count);
         }
-        if (s.position_sync || s.speed_sync()) {
-            return "a loop card stands alone: no position or speed sync on it";
+        if (s.synchronises() || s.register_reset) {
+            return "a loop card stands alone: no position or speed sync or register reset on it";
         }
     } else if (s.loop_to != 0 || s.loop_count != 0) {
         return "a loop target or count without the loop";
-    } else if (!s.position_sync && !s.speed_sync()) {
-        return "a sync card with nothing on it (no position sync, speed sync or loop)";
+    } else if (!s.synchronises() && !s.register_reset) {
+        return "a sync card with nothing on it (no position sync, speed sync, register reset or "
+               "loop)";
     }
     return std::nullopt;
 }
@@ -274,6 +285,9 @@ std::optional<std::string> encode_sync_card(const SyncOrder& s, const CardLayout
     if (s.position_sync) {
         card.punch(sync_field(layout, FieldKind::position_sync).first_column, Row::r0);
         number(sync_field(layout, FieldKind::sync_angle), s.angle_deg);
+    }
+    if (s.register_reset) {
+        card.punch(sync_field(layout, FieldKind::register_reset).first_column, Row::r0);
     }
     if (s.loop) {
         card.punch(sync_field(layout, FieldKind::loop_mark).first_column, Row::r0);

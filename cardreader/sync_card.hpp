@@ -12,6 +12,7 @@
 //   column  6       loop (M99): row 0
 //   7 .. 10         the card number the reader goes back to
 //   11 .. 14        how many times, 0001-9999
+//   column 15       register 14 reset (switch 16A, claim 5): row 0
 //   16-20 table, 21-25 cross, 26-30 vertical, 31-35 swivel, 36-40 tilt
 //                   speed sync (G95 F): the travel per detector pulse, five digits read
 //                   0.ddddd in; blank = the axis is not speed-synchronised
@@ -19,9 +20,11 @@
 //   every other column blank
 //
 // A loop card stands alone, as the seed's M99 is a block of its own: a card with the loop mark
-// carries no synchronisation. decode and encode are pure, as for the motion card (layout.hpp).
-// Emulation note: the seed's F is millimetres per pulse; the card holds inches, as every
-// number of the 1952 machine does, to five decimals (a pulse is a fraction of a degree).
+// carries no synchronisation and no reset. The reset acts as the card is read (the crank's angle
+// there becomes the reference R counts from); a card of the reset alone needs no motion card.
+// decode and encode are pure, as for the motion card (layout.hpp). Emulation note: the seed's F is
+// millimetres per pulse; the card holds inches, as every number of the 1952 machine does, to five
+// decimals (a pulse is a fraction of a degree).
 #pragma once
 
 #include "cardreader/layout.hpp"

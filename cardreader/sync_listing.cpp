@@ -68,7 +68,7 @@ void read_sync_row(std::string_view text, const std::string& file, std::int64_t 
     };
     if (fields.size() < 3) {
         throw fail("a sync row is card,sync,position,ANGLE or card,sync,speed,AXIS,TRAVEL or "
-                   "card,sync,loop,TARGET,COUNT");
+                   "card,sync,loop,TARGET,COUNT or card,sync,reset");
     }
     if (!all_digits(fields[0]) || fields[0].size() > 4) {
         throw fail(fmt::format("card number '{}' is not 0..9999", fields[0]));
@@ -114,20 +114,32 @@ void read_sync_row(std::string_view text, const std::string& file, std::int64_t 
         }
         lines.loop = line;
         order.loop = true;
+    } else if (fields[2] == "reset") {
+        expect(3, "card,sync,reset");
+        if (lines.reset != 0) {
+            throw again("reset row", lines.reset);
+        }
+        lines.reset = line;
+        order.register_reset = true;
     } else {
-        throw fail(fmt::format("unknown sync order '{}' (position, speed or loop)", fields[2]));
+        throw fail(
+            fmt::format("unknown sync order '{}' (position, speed, loop or reset)", fields[2]));
     }
-    if (order.loop && (order.position_sync || order.speed_sync())) {
-        throw fail(fmt::format("card {}: a loop and synchronisation on one card (a loop card "
-                               "stands alone, like the seed's M99 block: give the loop a card "
-                               "number of its own)",
-                               number));
+    if (order.loop && (order.synchronises() || order.register_reset)) {
+        throw fail(fmt::format("card {}: a loop and {} on one card (a loop card stands alone, "
+                               "like the seed's M99 block: give the loop a card number of its "
+                               "own)",
+                               number,
+                               order.synchronises() ? "synchronisation" : "a register reset"));
     }
 }
 
 std::vector<std::string> sync_rows(const CardOrders& orders) {
     const SyncOrder& s = orders.sync;
     std::vector<std::string> rows;
+    if (s.register_reset) {
+        rows.push_back(fmt::format("{},sync,reset", orders.number));
+    }
     if (s.position_sync) {
         rows.push_back(fmt::format("{},sync,position,{}", orders.number, s.angle_deg));
     }

@@ -87,7 +87,9 @@ void SyncReview::sync_card(std::int64_t index, const CardOrders& orders,
                                      pending_->card)});
         return; // the first still waits for its motion card
     }
-    pending_ = Pending{index, s};
+    if (s.synchronises()) {
+        pending_ = Pending{index, s}; // a card of the reset alone acts as it is read
+    }
 }
 
 void SyncReview::loop_card(std::int64_t index, const CardOrders& orders,

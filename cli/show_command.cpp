@@ -122,8 +122,11 @@ std::vector<std::array<std::string, 3>> sync_card_fields(const CardOrders& o,
                                     : "";
             break;
         case FieldKind::sync_angle:
-            value =
-                s.position_sync ? fmt::format("{} degrees from top dead centre", s.angle_deg) : "";
+            value = s.position_sync
+                        ? fmt::format("{} degrees from top dead centre (or from where a "
+                                      "reset order cleared register 14)",
+                                      s.angle_deg)
+                        : "";
             break;
         case FieldKind::loop_mark:
             value = s.loop ? "M99: the reader goes back" : "";
@@ -134,6 +137,11 @@ std::vector<std::array<std::string, 3>> sync_card_fields(const CardOrders& o,
         case FieldKind::loop_count:
             value =
                 s.loop ? fmt::format("{} time{}", s.loop_count, s.loop_count == 1 ? "" : "s") : "";
+            break;
+        case FieldKind::register_reset:
+            value = s.register_reset ? "16A: register 14 clears as the card is read (the "
+                                       "reference the crank angle counts from)"
+                                     : "";
             break;
         case FieldKind::travel_per_pulse:
             if (const auto& t = s.travel_per_pulse.at(axis_index(f.axis.value_or(Axis::table)))) {
@@ -172,6 +180,7 @@ Json sync_card_json(std::int64_t index, const CardOrders& o) {
             {"position_sync", s.position_sync ? Json(s.angle_deg) : Json(nullptr)},
             {"speed_sync", speed},
             {"loop", s.loop ? Json{{"to", s.loop_to}, {"count", s.loop_count}} : Json(nullptr)},
+            {"register_reset", s.register_reset},
             {"warnings", Json::array()}};
 }
 

@@ -222,6 +222,7 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
     long holes = 0;      // spindle synchronisation: tap cards that tapped
     int tap_stops = 0;   // ... runs that stopped on transfer_timeout or tap_refused
     long loop_backs = 0; // press synchronisation: loop cards that sent the reader back
+    long resets = 0;     // ... and switch 16A operated by reset orders
     int synced = 0;      // runs with a press
     int timeouts = 0;    // ... that stopped on sync_timeout
     long impulses = 0;
@@ -266,6 +267,7 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
         if (reference.press) {
             ++synced;
             loop_backs += reference.press->loop_backs;
+            resets += reference.press->register_resets;
             timeouts += reference.stop && reference.stop->reason == StopReason::sync_timeout;
         }
 
@@ -298,6 +300,7 @@ TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, resul
     CHECK(interlocks >= 2);
     CHECK(synced >= 40);
     CHECK(loop_backs >= 5);
+    CHECK(resets >= 5); // sync cards' reset orders (claim 5) taken at both paces
     CHECK(timeouts >= 2);
     CHECK(holes >= 20);
     CHECK(tap_stops >= 3);

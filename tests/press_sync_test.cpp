@@ -74,6 +74,15 @@ CardOrders table_move(int number, int from, int to) {
     return c;
 }
 
+// The pulses detector 10 has given by time t (an independent press).
+long count_at(const axes::PressProfile& p, double t) {
+    axes::Press press(p);
+    while (press.next_event_time() <= t) {
+        press.advance_to(press.next_event_time());
+    }
+    return press.count();
+}
+
 // Records everything, but lets fast-forward jump (it does not follow impulses).
 class SparseRecorder : public Recorder {
 public:
@@ -164,8 +173,10 @@ TEST_CASE("Press sync: position register 14 counts up and down, setter 15 preset
     CHECK(r.presets() == 2);
     r.preset(725);
     CHECK(r.digits() == Digits{0, 7, 2, 5});
-    r.clear();
+    r.switch_16A();
     CHECK(r.value() == 0);
+    CHECK(r.resets() == 1);
+    CHECK(r.presets() == 2); // the switch is not setter 15
     // Many counts at once leave what single counts leave.
     for (int sense : {+1, -1}) {
         for (long n : {1L, 9L, 1439L, 1440L, 1441L, 5000L}) {
@@ -657,4 +668,109 @@ TEST_CASE("Press sync (position data, claim 7): with position sync ordered, proc
     CHECK(loop_behind <= 10);
     CHECK(loop_speed_only == 0.0);
     CHECK(loop_max > 0.0);
+}
+
+TEST_CASE("Press sync (claim 5): a sync card's reset order clears register 14 where the crank "
+          "stands, and R and setter 15's revolution count from there, at both paces",
+          "[press_sync][position][reset]") {
+    const Pace pace = GENERATE(Pace::impulse_level, Pace::fast_forward);
+    INFO("pace " << static_cast<int>(pace));
+    const axes::MachineProfile p = press_profile();
+    SyncOrder reset_and_wait = position_sync(90);
+    reset_and_wait.register_reset = true;
+    // Card 1 takes the crank well past top dead centre first: the reset comes where no edge of
+    // a revolution would put register 14 at 0.
+    const std::vector<CardOrders> deck = {table_move(1, 0, 300), sync_card(2, reset_and_wait),
+                                          table_move(3, 300, 0), sync_card(4, position_sync(90)),
+                                          table_move(5, 0, 300)};
+    SparseRecorder sparse;
+    Recorder full;
+    Recorder& rec = pace == Pace::fast_forward ? static_cast<Recorder&>(sparse) : full;
+    const RunResult r = test::run_orders(deck, p, &rec, {}, pace);
+    INFO((r.stop ? r.stop->message : std::string()));
+    REQUIRE(r.completed);
+    REQUIRE(r.press);
+    CHECK(r.press->register_resets == 1);
+    // Switch 16A operates as card 2 is read, once.
+    const double reset_t = first_time(rec, "press.switch_16A", 1);
+    REQUIRE(reset_t > 0);
+    std::size_t operated = 0;
+    for (const auto& c : rec.of("press.switch_16A")) {
+        operated += c.new_value == 1 ? 1U : 0U;
+    }
+    CHECK(operated == 1);
+    const long at_reset = count_at(p.press, reset_t);
+    REQUIRE(at_reset % 1440 > 360); // not a place where the crank's own angle would do
+    bool cleared = false;
+    for (const auto& c : rec.of("press.position_register_14")) {
+        cleared = cleared || (c.t == reset_t && c.new_value == 0);
+    }
+    CHECK(cleared);
+    // Card 3 starts on the edge 90 degrees (360 pulses) past the reset, not at the crank's 90.
+    const double start3 = edge_time(p.press, at_reset + 360) + p.relay_operate_s;
+    double start5 = -1;
+    int starts = 0;
+    for (const auto& c : rec.of("table.motor_38")) {
+        if (c.new_value == 1 && ++starts == 3) {
+            start5 = c.t;
+        }
+    }
+    double start3_seen = -1;
+    starts = 0;
+    for (const auto& c : rec.of("table.motor_38")) {
+        if (c.new_value == 1 && ++starts == 2) {
+            start3_seen = c.t;
+        }
+    }
+    CHECK(start3_seen == Approx(start3).margin(1e-9));
+    // Card 5, with no reset of its own, keeps the reference: a whole revolution later.
+    CHECK(start5 ==
+          Approx(edge_time(p.press, at_reset + 360 + 1440) + p.relay_operate_s).margin(1e-9));
+    // Setter 15 now operates a revolution after the reset, not at top dead centre.
+    // (Edges nobody waits on are taken in jumps at the reference blocks: the relay is seen to
+    // operate at the block that takes the edge.)
+    const double setter = first_time(rec, "press.setter_15", 1);
+    const double revolution = edge_time(p.press, at_reset + 1440);
+    CHECK(setter >= revolution - 1e-9);
+    CHECK(setter <= revolution + p.speed_sample_s + 1e-9);
+    CHECK(setter > 30.0 + 1.0); // the crank's own revolution ends at 30 s
+
+    // Without the reset the same deck starts card 3 at the crank's own 90 degrees.
+    std::vector<CardOrders> plain = deck;
+    plain.at(1) = sync_card(2, position_sync(90));
+    Recorder again;
+    const RunResult q = test::run_orders(plain, p, &again, {}, Pace::impulse_level);
+    REQUIRE(q.completed);
+    CHECK(q.press->register_resets == 0);
+    starts = 0;
+    double plain3 = -1;
+    for (const auto& c : again.of("table.motor_38")) {
+        if (c.new_value == 1 && ++starts == 2) {
+            plain3 = c.t;
+        }
+    }
+    const long turns = at_reset / 1440 + (at_reset % 1440 >= 360 ? 1 : 0);
+    CHECK(plain3 ==
+          Approx(edge_time(p.press, turns * 1440 + 360) + p.relay_operate_s).margin(1e-9));
+}
+
+TEST_CASE("Press sync (claim 5): a card of the reset alone holds nothing and needs no motion card, "
+          "and after a waiting sync card it is refused as a second one",
+          "[press_sync][reset][errors]") {
+    const axes::MachineProfile p = press_profile();
+    SyncOrder reset;
+    reset.register_reset = true;
+    const RunResult alone = test::run_orders(
+        {table_move(1, 0, 300), sync_card(2, reset), table_move(3, 300, 0), sync_card(4, reset)},
+        p);
+    INFO((alone.stop ? alone.stop->message : std::string()));
+    REQUIRE(alone.completed);
+    CHECK(alone.press->register_resets == 2);
+    CHECK(alone.press->waited_s == 0.0);
+    const RunResult second = test::run_orders(
+        {sync_card(1, position_sync(30)), sync_card(2, reset), table_move(3, 0, 300)}, p);
+    REQUIRE(second.stop);
+    CHECK(second.stop->reason == StopReason::sync_refused);
+    CHECK_THAT(second.stop->message, Catch::Contains("a second sync card before one motion card"));
+    CHECK(second.press->register_resets == 0);
 }

@@ -282,7 +282,10 @@ Case random_case(std::mt19937& rng, std::mt19937& crng, std::mt19937& srng, std:
                     sc.sync.travel_per_pulse.at(axis_index(a)) = spick(20, 400);
                 }
             }
-            if (!sc.sync.position_sync && !sc.sync.speed_sync()) {
+            // Now and then switch 16A clears register 14 as the card is read (claim 5); a card
+            // of the reset alone synchronises nothing.
+            sc.sync.register_reset = schance(0.15);
+            if (!sc.sync.synchronises() && !sc.sync.register_reset) {
                 sc.sync.position_sync = true;
             }
             c.cards.push_back(sc);

@@ -235,8 +235,10 @@ TEST_CASE("Sync card: a bad punch is named by its column", "[sync_card][card]") 
              set_digits(c, 36, {0, 0, 1, 0});
          },
          40, "blank digit inside the number in tilt travel per pulse"},
-        {"a hole in the blank column 15", &base, [](Card& c) { c.punch(15, Row::r3); }, 15,
-         "column 15, which layout fig8 leaves unused on a sync card"},
+        {"a hole in the blank column 41", &base, [](Card& c) { c.punch(41, Row::r3); }, 41,
+         "column 41, which layout fig8 leaves unused on a sync card"},
+        {"row 3 in column 15, the reset's", &base, [](Card& c) { c.punch(15, Row::r3); }, 15,
+         "punch in row 3 where none belongs (in register 14 reset)"},
         {"a hole in column 41", &base, [](Card& c) { c.punch(41, Row::r1); }, 41,
          "leaves unused on a sync card"},
         {"row 1 in the position-sync column", &base, [](Card& c) { c.punch(2, Row::r1); }, 2,
@@ -248,7 +250,7 @@ TEST_CASE("Sync card: a bad punch is named by its column", "[sync_card][card]") 
         {"the card number blank", &base, [&](Card& c) { clear(c, 77, 80); }, 77,
          "card number is blank"},
         {"the mark and nothing else", &base, [&](Card& c) { clear(c, 1, 75); }, 76,
-         "no synchronisation or loop is punched"},
+         "no synchronisation, register reset or loop is punched"},
         {"a loop mark without its target", &loop, [&](Card& c) { clear(c, 7, 10); }, 7,
          "loop target is blank"},
         {"a loop mark without its count", &loop, [&](Card& c) { clear(c, 11, 14); }, 11,
@@ -356,7 +358,12 @@ TEST_CASE("Sync card: the listing's errors name file and line", "[sync_card][lis
         {"3,sync,loop,10000,1\n", "loop target '10000' is not 0..9999"},
         {"3,sync,position,30\n3,sync,loop,1,5\n",
          "t.csv:3: card 3: a loop and synchronisation on one card"},
-        {"3,sync,jump,1\n", "t.csv:2: unknown sync order 'jump' (position, speed or loop)"},
+        {"3,sync,jump,1\n", "t.csv:2: unknown sync order 'jump' (position, speed, loop or reset)"},
+        {"3,sync,reset,1\n", "t.csv:2: a sync reset row has 3 comma-separated fields"},
+        {"3,sync,reset\n3,sync,reset\n",
+         "t.csv:3: card 3 has a second reset row (first on line 2)"},
+        {"3,sync,loop,1,5\n3,sync,reset\n",
+         "t.csv:3: card 3: a loop and a register reset on one card"},
         {"3,sync\n", "t.csv:2: a sync row is card,sync,position,ANGLE"},
         {"1,0,table,+,3,,,0.000,0.000,1\n1,sync,position,30\n",
          "t.csv:3: a sync row begins, but card 1 (from line 2) has no row for the cross axis"},
@@ -651,4 +658,98 @@ TEST_CASE("Sync card: a loop back to card number 9999, the last a deck can numbe
     const CardOrders beyond = loop_card(12, 10000, 3);
     CHECK(sync_order_error(beyond.sync) == "loop target 10000 is not a card number 0..9999");
     CHECK_FALSE(encode(beyond, fig8_layout()));
+}
+
+TEST_CASE("Sync card (claim 5): the reset of register 14 is punched in column 15 row 0, alone or "
+          "with synchronisation, never with a loop, and listed as card,sync,reset",
+          "[sync_card][card][listing]") {
+    // With position sync: the seed's G101 R30, the reset on the same card.
+    CardOrders with = seed_step3(4);
+    with.sync.register_reset = true;
+    const Card both = punched(with);
+    CHECK(both.column(15) == row_bit(Row::r0));
+    CHECK(punched(seed_step3(4)).column(15) == 0);
+    const DecodeResult back = decode(both, fig8_layout());
+    REQUIRE_FALSE(back.bad_punch);
+    CHECK(back.orders == with);
+    // Alone: a card of the reset only is a sound card (it synchronises nothing).
+    CardOrders alone;
+    alone.kind = CardKind::sync;
+    alone.number = 8;
+    alone.sync.register_reset = true;
+    CHECK_FALSE(alone.sync.synchronises());
+    CHECK_FALSE(sync_order_error(alone.sync));
+    const Card only = punched(alone);
+    for (int col = 1; col <= 75; ++col) {
+        INFO("column " << col);
+        CHECK(only.column(col) == (col == 15 ? row_bit(Row::r0) : 0));
+    }
+    const DecodeResult alone_back = decode(only, fig8_layout());
+    REQUIRE_FALSE(alone_back.bad_punch);
+    CHECK(alone_back.orders == alone);
+    // Never with a loop: the keypunch refuses it, the reader names column 6.
+    CardOrders looped = loop_card(9, 1, 2);
+    looped.sync.register_reset = true;
+    CHECK_FALSE(encode(looped, fig8_layout()));
+    Card spoiled = punched(loop_card(9, 1, 2));
+    spoiled.punch(15, Row::r0);
+    const DecodeResult bad = decode(spoiled, fig8_layout());
+    REQUIRE(bad.bad_punch);
+    CHECK(bad.bad_punch->column == 6);
+    CHECK_THAT(bad.bad_punch->what, Catch::Contains("also carries the reset of register 14 "
+                                                    "(switch 16A)"));
+    // Row 0 only.
+    Card row1 = only;
+    row1.set_column(15, row_bit(Row::r1));
+    const DecodeResult wrong = decode(row1, fig8_layout());
+    REQUIRE(wrong.bad_punch);
+    CHECK(wrong.bad_punch->column == 15);
+    CHECK_THAT(wrong.bad_punch->what, Catch::Contains("register 14 reset"));
+
+    // The listing: the reset row first, with or without synchronisation.
+    const std::string text = std::string(kListingHeader) + "\n" +
+                             "4,sync,reset\n4,sync,position,30\n4,sync,speed,table,0.00150\n"
+                             "4,sync,speed,cross,0.00100\n" +
+                             motion_rows(5, "1.000", "1.000") + "8,sync,reset\n";
+    std::istringstream in(text);
+    ListingReader reader(in, "r.csv");
+    auto first = reader.next();
+    REQUIRE(first);
+    CHECK(first->orders == with);
+    REQUIRE(reader.next());
+    auto last = reader.next();
+    REQUIRE(last);
+    CHECK(last->orders == alone);
+    CHECK(sync_rows(with).front() == "4,sync,reset");
+    CHECK(sync_rows(alone) == std::vector<std::string>{"8,sync,reset"});
+    // The rows may come in any order; written back the reset comes first.
+    std::istringstream later(std::string(kListingHeader) + "\n4,sync,position,30\n4,sync,reset\n");
+    ListingReader later_reader(later, "l.csv");
+    const auto l = later_reader.next();
+    REQUIRE(l);
+    CHECK(l->orders.sync.register_reset);
+    CHECK(l->orders.sync.position_sync);
+}
+
+TEST_CASE("Sync card (claim 5): a card of the reset alone needs no motion card after it, and is a "
+          "second sync card after one that waits",
+          "[sync_card][review]") {
+    CardOrders reset;
+    reset.kind = CardKind::sync;
+    reset.number = 2;
+    reset.sync.register_reset = true;
+    DeckReviewer trailing;
+    CHECK(review_all(trailing, {moving_card(1, 0, 100), reset}).empty());
+    DeckReviewer between;
+    CardOrders sync3 = seed_step3(3);
+    CHECK(review_all(between, {moving_card(1, 0, 100), reset, sync3, moving_card(4, 100, 0)})
+              .empty());
+    DeckReviewer second;
+    CardOrders after = reset;
+    after.number = 2;
+    const auto notes = review_all(second, {seed_step3(1), after, moving_card(3, 0, 100)});
+    REQUIRE(notes.size() == 1);
+    CHECK(notes.at(0).card == 2);
+    CHECK(notes.at(0).column == 76);
+    CHECK_THAT(notes.at(0).message, Catch::Contains("a second sync card before one motion card"));
 }

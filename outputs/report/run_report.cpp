@@ -82,6 +82,15 @@ std::string lag_text(const relaylogic::PressResult& p) {
            (parts.size() == 2 ? parts[0] + ", " + parts[1] : parts[0]);
 }
 
+// The press line's resets: register 14 cleared by switch 16A at sync cards' orders, when any.
+std::string reset_text(const relaylogic::PressResult& p) {
+    if (p.register_resets == 0) {
+        return {};
+    }
+    return fmt::format(" (register 14 reset {} time{} by switch 16A, angles counted from there)",
+                       p.register_resets, p.register_resets == 1 ? "" : "s");
+}
+
 std::string join(const std::vector<std::string>& parts, std::string_view sep) {
     std::string out;
     for (const auto& p : parts) {
@@ -299,7 +308,8 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachinePr
                  {"longest_cycle_seconds", seconds(p.longest_cycle_s)},
                  {"waited_seconds", time_s(p.waited_s)},
                  {"max_lag_position_sync_in", std::round(p.max_lag_position_sync_in * 1e5) / 1e5},
-                 {"max_lag_speed_only_in", std::round(p.max_lag_speed_only_in * 1e5) / 1e5}};
+                 {"max_lag_speed_only_in", std::round(p.max_lag_speed_only_in * 1e5) / 1e5},
+                 {"register_resets", p.register_resets}};
     }
     // Spindle synchronisation (an addition after EP 0360190): only when a tap card was read.
     if (r.tapping && r.tapping->used) {
@@ -365,7 +375,7 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
     if (r.press && r.press->used) {
         const relaylogic::PressResult& p = *r.press;
         line(fmt::format("  press          revolution {}, crank at {:.2f} deg{}; {} cycle{} of "
-                         "the job{}; cards held {:.3f} s for the crank{}",
+                         "the job{}; cards held {:.3f} s for the crank{}{}",
                          p.revolution, p.crank_angle_deg, p.press_stopped ? " (stopped)" : "",
                          p.cycles, p.cycles == 1 ? "" : "s",
                          p.mean_cycle_s
@@ -373,7 +383,7 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
                                            "longest {:.3f})",
                                            *p.mean_cycle_s, *p.shortest_cycle_s, *p.longest_cycle_s)
                              : "",
-                         p.waited_s, lag_text(p)));
+                         p.waited_s, reset_text(p), lag_text(p)));
     }
     if (r.tapping && r.tapping->used) {
         const relaylogic::TappingResult& t = *r.tapping;

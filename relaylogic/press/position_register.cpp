@@ -40,6 +40,11 @@ PositionRegister::PositionRegister(Tracer& tracer, int device_16, int value, Pul
                                "setter 15: operated when register 14 reaches device 16's "
                                "value (a revolution) and presets it",
                                "15", 1);
+    switch_16A_ = tracer.define("press", "switch_16A",
+                                "reset switch 16A: a sync card's reset order clears register 14 "
+                                "where the crank stands (claim 5); released at the next "
+                                "reference block",
+                                "16A", 1);
 }
 
 void PositionRegister::show() {
@@ -100,8 +105,22 @@ void PositionRegister::preset(int value) {
     show();
 }
 
+void PositionRegister::release_16A() {
+    if (switch_16A_) {
+        tracer_.set(*switch_16A_, 0);
+    }
+}
+
+void PositionRegister::switch_16A() {
+    ++resets_;
+    if (switch_16A_) {
+        tracer_.set(*switch_16A_, 1);
+    }
+    preset(0);
+}
+
 nlohmann::json PositionRegister::save() const {
-    return {{"value", value_}, {"presets", presets_}};
+    return {{"value", value_}, {"presets", presets_}, {"resets", resets_}};
 }
 
 void PositionRegister::load(const nlohmann::json& j) {
@@ -111,6 +130,8 @@ void PositionRegister::load(const nlohmann::json& j) {
     }
     value_ = v;
     presets_ = axes::read<std::int64_t>(j, "presets");
+    // A state saved before sync cards could order the reset: none had been.
+    resets_ = j.contains("resets") ? axes::read<std::int64_t>(j, "resets") : 0;
 }
 
 } // namespace parsons::relaylogic

@@ -12,8 +12,10 @@
 // borrow). Device 16 is a row of four decade switches set to a revolution's pulses (360 x
 // pulses a degree); a comparer on the register's wipers against it operates setter 15, which
 // homes every switch (the crank at top dead centre again). Counting down below zero, setter 15
-// presets device 16's value less one. Switch 16A is the operator's: it homes the register
-// wherever the crank stands, which is how the register is lined up with top dead centre.
+// presets device 16's value less one. Switch 16A homes the register wherever the crank stands:
+// the register starts the run lined up with top dead centre, and a sync card's reset order
+// operates the switch as the card is read, so that the crank's angle there becomes the reference
+// every later R, and setter 15's revolution, counts from.
 //
 // The register's switches step at the detector's rate; the profile keeps that under the
 // stepping switches' fastest rate (a press whose pulses come faster is refused when the
@@ -26,6 +28,8 @@
 #include "relaylogic/tracer.hpp"
 
 #include <nlohmann/json.hpp>
+
+#include <optional>
 
 namespace parsons::relaylogic {
 
@@ -42,8 +46,13 @@ public:
     void count(int sense);
     // Setter 15 presets a value (0 .. device 16 - 1).
     void preset(int value);
-    // Switch 16A: the register homes.
-    void clear() { preset(0); }
+    // Switch 16A, operated by a sync card's reset order (claim 5: "selectively resettable at a
+    // reference position"): the register homes wherever the crank stands, which becomes the
+    // reference position every later angle counts from.
+    void switch_16A();
+    // The switch's contact opens again (at the next reference block: the same instant at
+    // either pace, where an edge may be taken in a jump).
+    void release_16A();
     // Fast-forward: n counts in one sense at once (what n single counts leave).
     void count_many(std::int64_t n, int sense);
     int value() const { return value_; }
@@ -51,6 +60,8 @@ public:
     Digits digits() const { return value_digits(value_); }
     // Each time setter 15 operated (the crank passing top dead centre), for the report.
     std::int64_t presets() const { return presets_; }
+    // Each time switch 16A operated, for the report.
+    std::int64_t resets() const { return resets_; }
     nlohmann::json save() const;
     void load(const nlohmann::json& j);
 
@@ -61,8 +72,10 @@ private:
     int device_16_;
     int value_ = 0;
     std::int64_t presets_ = 0;
+    std::int64_t resets_ = 0;
     std::array<SignalId, 4> switches_{};
     SignalId setter_15_ = 0;
+    std::optional<SignalId> switch_16A_; // the press's register only
     SignalId value_signal_ = 0;
 };
 

@@ -102,8 +102,9 @@ void PressAttachment::sensed(ControlCabinet& cab) {
     }
 }
 
-// A sync card: no axis moves; its orders wait in readers 60 and 62 for the motion card after
-// it, or, a loop card, it sends the reader back at the end of its card cycle.
+// A sync card: no axis moves; a reset order operates switch 16A as the card is read, its
+// synchronisation waits in readers 60 and 62 for the motion card after it, or, a loop card, it
+// sends the reader back at the end of its card cycle.
 void PressAttachment::read_card(ControlCabinet& cab) {
     used_ = true;
     const cardreader::CardOrders& orders = cab.orders();
@@ -119,7 +120,12 @@ void PressAttachment::read_card(ControlCabinet& cab) {
                            cab.card_name(), scp.pending_card(), scp.pending_number()));
         return;
     }
-    scp.take(orders.sync, cab.cards_read(), orders.number);
+    if (orders.sync.register_reset) {
+        units_.reset_register_14();
+    }
+    if (orders.sync.synchronises()) {
+        scp.take(orders.sync, cab.cards_read(), orders.number);
+    }
 }
 
 bool PressAttachment::card_read(ControlCabinet& cab) {
@@ -421,6 +427,7 @@ void PressAttachment::add_to(RunResult& result) const {
     p.revolution = units_.press().revolution();
     p.crank_angle_deg = units_.press().angle_deg();
     p.position_register = units_.position_register().value();
+    p.register_resets = units_.position_register().resets();
     p.press_stopped = units_.press().stopped();
     p.cycles = cycles_;
     p.loop_backs = loop_backs_;

@@ -8,12 +8,13 @@
 namespace parsons::relaylogic {
 
 struct PressResult {
-    int revolution = 0;          // the crank's revolution (1 = the first)
-    double crank_angle_deg = 0;  // where crank 21 stood at the last detector edge taken
-    int position_register = 0;   // register 14, detector pulses
-    bool press_stopped = false;  // motor 22 stopped (the profile's stop)
-    std::int64_t cycles = 0;     // how many times the job reached its loop card (M99)
-    std::int64_t loop_backs = 0; // how many times the reader went back
+    int revolution = 0;               // the crank's revolution (1 = the first)
+    double crank_angle_deg = 0;       // where crank 21 stood at the last detector edge taken
+    int position_register = 0;        // register 14, detector pulses
+    std::int64_t register_resets = 0; // switch 16A operated by sync cards' reset orders
+    bool press_stopped = false;       // motor 22 stopped (the profile's stop)
+    std::int64_t cycles = 0;          // how many times the job reached its loop card (M99)
+    std::int64_t loop_backs = 0;      // how many times the reader went back
     // Time between two loop-backs: the job's cycle (none with fewer than two loop-backs).
     std::optional<double> mean_cycle_s;
     std::optional<double> shortest_cycle_s;

@@ -82,6 +82,7 @@ void SyncUnits::on_edges(std::int64_t n, const axes::DetectorEdge& last, double 
 }
 
 double SyncUnits::sample_speed(double t) {
+    register_14_->release_16A();
     register_11_->sample();
     const int n = register_11_->stored();
     if (n > 0) {
@@ -99,6 +100,12 @@ double SyncUnits::sample_speed(double t) {
     }
     tracer_->set(speed_11_, static_cast<std::uint32_t>(std::lround(rate_ * 100.0)));
     return rate_;
+}
+
+void SyncUnits::reset_register_14() {
+    // Read between two cards' motions: no axis follows now (the zeroizing circuit cleared
+    // processor 63), so no reference travel jumps with the register.
+    register_14_->switch_16A();
 }
 
 std::int64_t SyncUnits::quiet_edges(std::int64_t limit) const {

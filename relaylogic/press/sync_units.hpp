@@ -12,7 +12,8 @@
 //                               11's count is stored and read; 63 computes the next speeds;
 //                               a wait longer than the profile's sync_timeout_s stops the
 //                               machine (sync_timeout)
-//   sync card read ............ its orders wait in 60 and 62 for the next motion card
+//   sync card read ............ a reset order operates switch 16A (14 clears); its
+//                               synchronisation waits in 60 and 62 for the next motion card
 //   motion card, relays pick .. the orders are armed on this card
 //   reading complete .......... position sync: 60's hold relay holds the card's motion unless
 //                               14 stands on R; 61 drops it when 14 reaches R
@@ -43,6 +44,8 @@ public:
     const PositionRegister& position_register() const { return *register_14_; }
     PositionRegister& position_register() { return *register_14_; }
     const SpeedRegister& speed_register() const { return *register_11_; }
+    // A sync card's reset order: switch 16A clears register 14 where the crank stands.
+    void reset_register_14();
 
     // A detector edge at time t: 13, 14, 11. Returns true when detector 61 conducts (the
     // card's motion is to start).

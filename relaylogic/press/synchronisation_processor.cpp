@@ -272,6 +272,7 @@ nlohmann::json SynchronisationProcessor::save() const {
         pending = {{"position_sync", pending_->position_sync},
                    {"angle_deg", pending_->angle_deg},
                    {"travel_per_pulse", f},
+                   {"register_reset", pending_->register_reset},
                    {"card", pending_card_},
                    {"number", pending_number_}};
     }
@@ -296,6 +297,7 @@ void SynchronisationProcessor::load(const nlohmann::json& j) {
         cardreader::SyncOrder o;
         o.position_sync = axes::read<bool>(p, "position_sync");
         o.angle_deg = axes::read<int>(p, "angle_deg");
+        o.register_reset = p.contains("register_reset") && axes::read<bool>(p, "register_reset");
         const auto& f = axes::member(p, "travel_per_pulse");
         for (std::size_t i = 0; i < o.travel_per_pulse.size() && i < f.size(); ++i) {
             o.travel_per_pulse.at(i) = read_optional(f.at(i));

@@ -45,7 +45,9 @@
 //                degree); bits 1-2: 1 + b % 4 sync cards of 3 bytes each: the motion card they
 //                stand before (b % cards), the angle R (b * 360 / 256; none when b % 4 == 3:
 //                speed sync only), the speed-synchronised axis (b % 5, none when b / 5 % 3 == 0)
-//                with a travel per pulse of 10 + b * 2 hundred-thousandths; bit 3 a loop card
+//                with a travel per pulse of 10 + b * 2 hundred-thousandths, the reset of
+//                register 14 (switch 16A) when the axis byte's b / 15 % 2 == 1 (with neither R
+//                nor an axis, a card of the reset alone); bit 3 a loop card
 //                at the end back to the first card, 1 + (b >> 4) % 3 times; bit 4 the press
 //                slows 30 % while pressing; bit 5 a lasting change to 0.7 of its speed in the
 //                first revolution at 100 deg; bit 6 motor 22 stops in the second revolution at
@@ -295,7 +297,8 @@ std::vector<CardOrders> with_sync(Recipe& recipe, std::vector<CardOrders> deck,
         }
         const int axis = recipe.next();
         const int travel = recipe.next();
-        if (axis / 5 % 3 != 0 || !o.position_sync) {
+        o.register_reset = axis / 15 % 2 == 1;
+        if (axis / 5 % 3 != 0 || (!o.position_sync && !o.register_reset)) {
             o.travel_per_pulse.at(static_cast<std::size_t>(axis % 5)) = 10 + travel * 2;
         }
         before.at(card).push_back(o);

@@ -486,6 +486,7 @@ async function runAll() {
   const sample = path.join(SAMPLES, 'patent-example.csv');
   const conditions = path.join(SAMPLES, 'condition-cards.csv');
   const pressSync = path.join(SAMPLES, 'press-sync.csv');
+  const pressReset = path.join(SAMPLES, 'press-reset.csv');
   const sampleText = fs.readFileSync(sample, 'utf8');
   const conditionText = fs.readFileSync(conditions, 'utf8');
   const X = ['--profile', 'parsons-extended'];
@@ -624,6 +625,14 @@ async function runAll() {
        'press-sync.events.jsonl']);
   expect('press-sync.report.json', 'report');
   expect('press-sync.events.jsonl', 'events');
+  // Claim 5: a sync card's reset order (switch 16A, register_resets in the report).
+  run(['run', pressReset, ...X, '-q', '--report', 'press-reset.report.json', '--events',
+       'press-reset.events.jsonl']);
+  expect('press-reset.report.json', 'report');
+  expect('press-reset.events.jsonl', 'events');
+  if (JSON.parse(fs.readFileSync(inWork('press-reset.report.json'), 'utf8')).press.register_resets !== 1) {
+    fail('press-reset.report.json: press.register_resets is not 1');
+  }
   run(['run', pressSync, '--profile', 'press-stops.json', '-q', '--report', 'sync-timeout.report.json',
        '--save-state', 'sync-timeout.state.json'], { codes: [3] });
   expect('sync-timeout.report.json', 'report');
@@ -769,6 +778,7 @@ async function runAll() {
     ['show-stall.json', ['stall.csv'], [0]],
     ['show-conditions.json', [conditions, ...X], [0]],
     ['show-press-sync.json', [pressSync, ...X], [0]],
+    ['show-press-reset.json', [pressReset, ...X], [0]],
     ['show-plate.json', ['plate.csv', ...X], [0]],
     ['show-stray-hole.json', ['stray-hole.txt'], [2]],
     ['show-double-punch.json', ['double-punch.txt'], [0]],
