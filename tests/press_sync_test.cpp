@@ -100,6 +100,16 @@ double first_time(const Recorder& r, const std::string& signal, std::uint32_t va
     return -1;
 }
 
+// The n-th time (1 = the first) a signal changes to `value`, or -1.
+double nth_time(const Recorder& r, const std::string& signal, std::uint32_t value, int n) {
+    for (const auto& c : r.of(signal)) {
+        if (c.new_value == value && --n == 0) {
+            return c.t;
+        }
+    }
+    return -1;
+}
+
 // The time of the edge that brings the count to `count`.
 double edge_time(const axes::PressProfile& p, long count) {
     axes::Press press(p);
@@ -694,11 +704,7 @@ TEST_CASE("Press sync (claim 5): a sync card's reset order clears register 14 wh
     // Switch 16A operates as card 2 is read, once.
     const double reset_t = first_time(rec, "press.switch_16A", 1);
     REQUIRE(reset_t > 0);
-    std::size_t operated = 0;
-    for (const auto& c : rec.of("press.switch_16A")) {
-        operated += c.new_value == 1 ? 1U : 0U;
-    }
-    CHECK(operated == 1);
+    CHECK(nth_time(rec, "press.switch_16A", 1, 2) < 0);
     const long at_reset = count_at(p.press, reset_t);
     REQUIRE(at_reset % 1440 > 360); // not a place where the crank's own angle would do
     bool cleared = false;
@@ -708,21 +714,8 @@ TEST_CASE("Press sync (claim 5): a sync card's reset order clears register 14 wh
     CHECK(cleared);
     // Card 3 starts on the edge 90 degrees (360 pulses) past the reset, not at the crank's 90.
     const double start3 = edge_time(p.press, at_reset + 360) + p.relay_operate_s;
-    double start5 = -1;
-    int starts = 0;
-    for (const auto& c : rec.of("table.motor_38")) {
-        if (c.new_value == 1 && ++starts == 3) {
-            start5 = c.t;
-        }
-    }
-    double start3_seen = -1;
-    starts = 0;
-    for (const auto& c : rec.of("table.motor_38")) {
-        if (c.new_value == 1 && ++starts == 2) {
-            start3_seen = c.t;
-        }
-    }
-    CHECK(start3_seen == Approx(start3).margin(1e-9));
+    CHECK(nth_time(rec, "table.motor_38", 1, 2) == Approx(start3).margin(1e-9));
+    const double start5 = nth_time(rec, "table.motor_38", 1, 3);
     // Card 5, with no reset of its own, keeps the reference: a whole revolution later.
     CHECK(start5 ==
           Approx(edge_time(p.press, at_reset + 360 + 1440) + p.relay_operate_s).margin(1e-9));
@@ -742,13 +735,7 @@ TEST_CASE("Press sync (claim 5): a sync card's reset order clears register 14 wh
     const RunResult q = test::run_orders(plain, p, &again, {}, Pace::impulse_level);
     REQUIRE(q.completed);
     CHECK(q.press->register_resets == 0);
-    starts = 0;
-    double plain3 = -1;
-    for (const auto& c : again.of("table.motor_38")) {
-        if (c.new_value == 1 && ++starts == 2) {
-            plain3 = c.t;
-        }
-    }
+    const double plain3 = nth_time(again, "table.motor_38", 1, 2);
     const long turns = at_reset / 1440 + (at_reset % 1440 >= 360 ? 1 : 0);
     CHECK(plain3 ==
           Approx(edge_time(p.press, turns * 1440 + 360) + p.relay_operate_s).margin(1e-9));

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <ostream>
@@ -124,10 +125,26 @@ std::string json_string(std::string_view s) {
         .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-std::string utc_now() {
-    const std::time_t now = std::time(nullptr);
+// The $date text, as reproducible builds ask (reproducible-builds.org/specs/source-date-epoch):
+// the instant SOURCE_DATE_EPOCH gives, in seconds since 1970 UTC; without it, or when it is not
+// such a count, none, so that two runs of one deck write the same trace byte for byte (a run's
+// machine time starts at 0 whenever it is run; the wall clock says nothing of it).
+std::string source_date() {
+    const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
+    if (epoch == nullptr || *epoch == '\0' || std::strlen(epoch) > 15) {
+        return {};
+    }
+    std::time_t seconds = 0;
+    for (const char* c = epoch; *c != '\0'; ++c) {
+        if (*c < '0' || *c > '9') {
+            return {};
+        }
+        seconds = seconds * 10 + (*c - '0');
+    }
     std::tm tm{};
-    gmtime_r(&now, &tm);
+    if (gmtime_r(&seconds, &tm) == nullptr) {
+        return {};
+    }
     std::array<char, 64> text{};
     const std::size_t n = std::strftime(text.data(), text.size(), "%Y-%m-%d %H:%M:%S UTC", &tm);
     return std::string(text.data(), n);
@@ -195,9 +212,13 @@ void VcdWriter::write_header() {
         return scope_rank(a, appearance) < scope_rank(b, appearance);
     });
 
-    buf_.put("$date\n    ");
-    buf_.put(date_.empty() ? utc_now() : date_);
-    buf_.put("\n$end\n$version parsons $end\n");
+    const std::string date = date_.empty() ? source_date() : date_;
+    if (!date.empty()) {
+        buf_.put("$date\n    ");
+        buf_.put(date);
+        buf_.put("\n$end\n");
+    }
+    buf_.put("$version parsons $end\n");
     buf_.put("$comment\n    Parsons-Stulen punched-card control (US 2,820,187), relay level.\n"
              "    One scope per lead-screw axis and one for the cabinet; each name ends in the\n"
              "    patent's reference numeral. Machine time, 1 us per tick.\n$end\n");

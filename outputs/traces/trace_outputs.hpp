@@ -80,7 +80,7 @@ std::string vcd_identifier_code(std::size_t n);
 // microseconds. Card feeds and a machine stop are written as `$comment`s where they happen.
 class VcdWriter : public relaylogic::MachineObserver {
 public:
-    // date: the $date text; empty = the current date and time (UTC) when the header is written.
+    // date: the $date text; empty = SOURCE_DATE_EPOCH's instant (UTC), or no $date without it.
     explicit VcdWriter(std::ostream& out, std::string date = {});
 
     void on_signal_defined(const relaylogic::SignalInfo& info, std::uint32_t initial) override;
