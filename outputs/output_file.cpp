@@ -108,6 +108,35 @@ bool try_again(int error) {
     return error == EINTR && (g_give_up == nullptr || *g_give_up == 0);
 }
 
+// A FIFO opened for writing: the wait for its reader, as any Unix program writing to one makes
+// it, but in steps of 20 ms, so that the operator's signal ends it whenever it came. A blocking
+// open() is ended only by a signal that comes during it: one that came just before (while the
+// command was still generating, say) would leave it waiting for a reader for ever. -1 with
+// errno set when it cannot be opened, EINTR once the operator has stopped the run.
+int open_fifo_for_writing(const std::string& target) {
+    for (;;) {
+        if (g_give_up != nullptr && *g_give_up != 0) {
+            errno = EINTR;
+            return -1;
+        }
+        const int fd = ::open(target.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
+        if (fd >= 0) {
+            const int flags = ::fcntl(fd, F_GETFL);
+            if (flags < 0 || ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) < 0) {
+                const int error = errno;
+                ::close(fd);
+                errno = error;
+                return -1;
+            }
+            return fd;
+        }
+        if (errno != ENXIO && errno != EINTR) { // ENXIO: no reader yet
+            return -1;
+        }
+        ::poll(nullptr, 0, 20); // a signal ends the pause early
+    }
+}
+
 } // namespace
 
 std::string final_target(const std::string& path) {
@@ -245,9 +274,13 @@ OutputFile::OutputFile(std::string path) : path_(std::move(path)), out_(&buffer_
     kind_ = Kind::straight_through;
     if (S_ISSOCK(st.st_mode)) {
         fd_ = connect_socket(target_, path_);
+    } else if (S_ISFIFO(st.st_mode)) {
+        fd_ = open_fifo_for_writing(target_);
+        if (fd_ < 0) {
+            throw DeckError::in_file(path_, "cannot write: " + reason(errno));
+        }
     } else {
-        // A character device or a FIFO: opened as it is, never created or truncated. (A FIFO
-        // waits here for its reader, as any Unix program writing to one does.)
+        // A character device: opened as it is, never created or truncated.
         do {
             fd_ = ::open(target_.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
         } while (fd_ < 0 && try_again(errno));
