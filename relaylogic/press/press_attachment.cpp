@@ -121,7 +121,9 @@ void PressAttachment::read_card(ControlCabinet& cab) {
         return;
     }
     if (orders.sync.register_reset) {
-        units_.reset_register_14();
+        // Read between two cards' motions: no axis follows now (the zeroizing circuit cleared
+        // processor 63), so no reference travel jumps with the register.
+        units_.position_register().switch_16A();
     }
     if (orders.sync.synchronises()) {
         scp.take(orders.sync, cab.cards_read(), orders.number);

@@ -102,12 +102,6 @@ double SyncUnits::sample_speed(double t) {
     return rate_;
 }
 
-void SyncUnits::reset_register_14() {
-    // Read between two cards' motions: no axis follows now (the zeroizing circuit cleared
-    // processor 63), so no reference travel jumps with the register.
-    register_14_->switch_16A();
-}
-
 std::int64_t SyncUnits::quiet_edges(std::int64_t limit) const {
     if (!scp_->holding()) {
         return limit;

@@ -44,8 +44,6 @@ public:
     const PositionRegister& position_register() const { return *register_14_; }
     PositionRegister& position_register() { return *register_14_; }
     const SpeedRegister& speed_register() const { return *register_11_; }
-    // A sync card's reset order: switch 16A clears register 14 where the crank stands.
-    void reset_register_14();
 
     // A detector edge at time t: 13, 14, 11. Returns true when detector 61 conducts (the
     // card's motion is to start).
