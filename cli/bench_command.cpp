@@ -10,12 +10,14 @@
 //   cut sweep .......................... run --cut of a 2,000-station template deck
 //   deck generation .................... a 9,997-station template deck (the most a deck holds)
 //   peak memory ........................ resident size of `parsons run` on 1,000 / 10,000 /
-//                                        100,000 cards (a child process each)
-//   press cycles ....................... a press-feeder cycle looped 1,000 times under
-//                                        parsons-extended, fast-forward (press sync, an
+//                                        100,000 cards (--memory-cards; a child process each)
+//   press cycles ....................... a press-feeder cycle looped 1,000 times (--press-cycles)
+//                                        under parsons-extended, fast-forward (press sync, an
 //                                        addition after EP 0436887): seconds, and the peak
-//                                        memory of 100 and 1,000 cycles (flat)
-// A benchmark, not a test: it asserts nothing about time. --json for the same as JSON.
+//                                        memory of a tenth of the cycles and of all (flat)
+// A benchmark, not a test: it asserts nothing about time. --json for the same as JSON. Each
+// figure is printed as soon as it is measured; a reader that goes away (`| head -3`) ends the
+// benchmark there, quietly (exit 141).
 #include "cli/commands.hpp"
 #include "cli/support/progress_line.hpp"
 #include "outputs/output_file.hpp"
@@ -58,6 +60,8 @@ struct BenchOptions {
     int long_cards = 400;
     int trace_cards = 40;
     int short_cards = 100000;
+    int memory_cards = 100000; // the longest of the memory figure's three decks
+    int press_cycles = 1000;
     bool json = false;
     bool scaling = false;
     std::string child_deck;   // internal: run this deck and exit (the memory figure's child)
@@ -338,7 +342,7 @@ public:
         stages_.clear();
         if (!o_.json) {
             fmt::print("{}\n", s);
-            std::fflush(stdout);
+            finish_standard_output(); // a reader gone (`| head -3`) ends the benchmark here
         }
     }
     void machine();
@@ -490,13 +494,14 @@ void Bench::generation_and_cut() {
 void Bench::peak_memory() {
     nlohmann::json memory = nlohmann::json::object();
     std::string line;
-    for (int cards : {1000, 10000, 100000}) {
+    for (int cards : {o_.memory_cards / 100, o_.memory_cards / 10, o_.memory_cards}) {
         stages_.begin(fmt::format("peak memory, {} cards", cards));
         const std::string deck = path(fmt::format("mem{}.cbn", cards));
         write_deck(deck, cards, kShortMoves);
         const double peak = child_peak_mb(deck, path("peak.txt"), {});
         memory[std::to_string(cards)] = peak;
-        line += fmt::format("{}{:.1f} MB ({} cards)", line.empty() ? "" : ", ", peak, cards);
+        line += fmt::format("{}{:.1f} MB ({} card{})", line.empty() ? "" : ", ", peak, cards,
+                            cards == 1 ? "" : "s");
     }
     j_["peak_memory_mb"] = memory;
     say(fmt::format("peak memory of parsons run  {}", line));
@@ -505,28 +510,32 @@ void Bench::peak_memory() {
 // Press synchronisation: 1,000 press cycles in fast-forward, and memory flat in cycles.
 void Bench::press_cycles() {
     stages_.begin("press cycles");
-    write_press_deck(path("press.cbn"), 1000);
+    const int cycles = o_.press_cycles;
+    const int tenth = std::max(2, cycles / 10); // a loop card repeats 1 .. 9,999 times
+    write_press_deck(path("press.cbn"), cycles);
     RunRequest press = quiet_run(path("press.cbn"));
     press.profile = "parsons-extended";
     const Timed pc = time_run(press, o_.runs, stages_);
-    if (!pc.result.press || pc.result.press->cycles != 1000) {
-        throw std::logic_error("the press benchmark deck did not run 1,000 cycles");
+    if (!pc.result.press || pc.result.press->cycles != cycles) {
+        throw std::logic_error(fmt::format("the press benchmark deck did not run {} cycles",
+                                           decks::count_text(cycles)));
     }
-    write_press_deck(path("press100.cbn"), 100);
-    const double peak_100 = child_peak_mb(path("press100.cbn"), path("peak.txt"),
-                                          {"--child-profile", "parsons-extended"});
-    const double peak_1000 =
+    write_press_deck(path("press-tenth.cbn"), tenth);
+    const double peak_tenth = child_peak_mb(path("press-tenth.cbn"), path("peak.txt"),
+                                            {"--child-profile", "parsons-extended"});
+    const double peak_all =
         child_peak_mb(path("press.cbn"), path("peak.txt"), {"--child-profile", "parsons-extended"});
-    j_["press_cycles"] = {{"cycles", 1000},
-                          {"cards", pc.result.cards_read},
-                          {"machine_seconds", pc.result.machine_seconds},
-                          {"seconds", pc.seconds},
-                          {"peak_mb_100_cycles", peak_100},
-                          {"peak_mb_1000_cycles", peak_1000}};
-    say(fmt::format("press cycles, fast-forward  {:>8.3f} s         (1,000 cycles, {} cards, "
-                    "{:.0f} s of machine time; peak {:.1f} MB at 100 cycles, {:.1f} MB at 1,000)",
-                    pc.seconds, pc.result.cards_read, pc.result.machine_seconds, peak_100,
-                    peak_1000));
+    j_["press_cycles"] = {
+        {"cycles", cycles},
+        {"cards", pc.result.cards_read},
+        {"machine_seconds", pc.result.machine_seconds},
+        {"seconds", pc.seconds},
+        {"peak_mb", {{std::to_string(tenth), peak_tenth}, {std::to_string(cycles), peak_all}}}};
+    say(fmt::format("press cycles, fast-forward  {:>8.3f} s         ({} cycles, {} cards, "
+                    "{:.0f} s of machine time; peak {:.1f} MB at {} cycles, {:.1f} MB at {})",
+                    pc.seconds, decks::count_text(cycles), pc.result.cards_read,
+                    pc.result.machine_seconds, peak_tenth, decks::count_text(tenth), peak_all,
+                    decks::count_text(cycles)));
 }
 
 // How cost grows: decks of short moves, 10^3 .. 10^6 cards, each run once in a child process
@@ -607,6 +616,15 @@ void add_bench_command(CLI::App& app, Command& selected) {
     cmd->add_option("--short-cards", o->short_cards, "Cards in the short-move deck")
         ->capture_default_str()
         ->check(CLI::Range(10, 10000000));
+    cmd->add_option("--memory-cards", o->memory_cards,
+                    "Cards in the longest of the memory figure's three decks (a hundredth, a "
+                    "tenth and all of them)")
+        ->capture_default_str()
+        ->check(CLI::Range(100, 10000000));
+    cmd->add_option("--press-cycles", o->press_cycles,
+                    "Press cycles the press deck loops (its memory is also taken at a tenth)")
+        ->capture_default_str()
+        ->check(CLI::Range(2, 10000)); // the loop card's count, 1 .. 9,999, and the first pass
     cmd->add_flag("--json", o->json, "Print the figures as JSON");
     cmd->add_flag("--scaling", o->scaling,
                   "Also time decks of 10^3 .. 10^6 cards (fast-forward, impulse level, VCD)");

@@ -16,11 +16,10 @@ foreach(pair "fmt=/usr/include/fmt" "CLI=/usr/include/CLI" "nlohmann=/usr/includ
   file(CREATE_LINK ${target} ${PARSONS_WASM_INCLUDE}/${name} SYMBOLIC)
 endforeach()
 
-foreach(lib fmt::fmt CLI11::CLI11 nlohmann_json::nlohmann_json Eigen3::Eigen)
+foreach(lib CLI11::CLI11 nlohmann_json::nlohmann_json Eigen3::Eigen)
   add_library(${lib} INTERFACE IMPORTED)
   set_target_properties(${lib} PROPERTIES INTERFACE_INCLUDE_DIRECTORIES ${PARSONS_WASM_INCLUDE})
 endforeach()
-set_target_properties(fmt::fmt PROPERTIES INTERFACE_COMPILE_DEFINITIONS FMT_HEADER_ONLY=1)
 
 # parsons reports bad input by exception (DeckError): WebAssembly needs them switched on. Its
 # own exception handling (-fwasm-exceptions, in every browser since 2021 and in Node.js 17 on),
@@ -28,3 +27,9 @@ set_target_properties(fmt::fmt PROPERTIES INTERFACE_COMPILE_DEFINITIONS FMT_HEAD
 # JavaScript and runs the machine several times slower.
 add_compile_options(-fwasm-exceptions)
 add_link_options(-fwasm-exceptions)
+
+# fmt's implementation compiled once (web/fmt_library.cpp), not header-only in every file
+# (after the exception setting above, which a target takes when it is made).
+add_library(parsons_wasm_fmt STATIC ${PROJECT_SOURCE_DIR}/web/fmt_library.cpp)
+target_include_directories(parsons_wasm_fmt SYSTEM PUBLIC ${PARSONS_WASM_INCLUDE})
+add_library(fmt::fmt ALIAS parsons_wasm_fmt)

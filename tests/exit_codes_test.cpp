@@ -98,7 +98,8 @@ TEST_CASE("Exit codes: each command returns 0 when it did its work and 2 on inpu
         {"gen airfoil", "gen airfoil --naca 0012 --stations 20 -o " + q(dir.str("g.cbn"))},
         {"profile", "profile"},
         {"demo", "demo --out " + q(dir.str("demo"))},
-        {"bench", "bench --runs 1 --long-cards 2 --trace-cards 2 --short-cards 10 --json"}};
+        {"bench", "bench --runs 1 --long-cards 2 --trace-cards 2 --short-cards 10 --memory-cards "
+                  "100 --press-cycles 2 --json"}};
     for (const auto& [command, args] : ok) {
         const auto r = run_parsons(args);
         INFO(args << ":\n" << r.output);

@@ -375,7 +375,8 @@ TEST_CASE("Progress: a line on standard error for bench, run and gen on a termin
           "[cli][progress]") {
     TempDir dir;
     write_bytes(dir.path("deck.csv"), long_listing(6));
-    const std::string bench = "bench --runs 1 --long-cards 4 --trace-cards 2 --short-cards 1000";
+    const std::string bench = "bench --runs 1 --long-cards 4 --trace-cards 2 --short-cards 1000 "
+                              "--memory-cards 1000 --press-cycles 10";
     // `script` gives the command a terminal (a pseudo-terminal) and copies what it printed.
     auto on_terminal = [](const std::string& args) {
         return run_shell("script -qec " + q(std::string("'") + PARSONS_EXE + "' " + args) +
