@@ -238,7 +238,7 @@ std::unique_ptr<CardSource> open_card_source(std::istream& in, const DeckOptions
         inner = make_bin_source(in, options.file_name);
         break;
     case DeckFormat::text:
-        inner = make_text_source(in, options.file_name, options.code);
+        inner = make_text_source(in, options.file_name, options.code, options.warn);
         break;
     case DeckFormat::listing:
         inner = make_listing_source(in, options.file_name, *options.layout);

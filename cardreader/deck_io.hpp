@@ -14,6 +14,7 @@
 #include "cardreader/layout.hpp"
 
 #include <array>
+#include <functional>
 #include <iosfwd>
 #include <memory>
 #include <optional>
@@ -77,6 +78,9 @@ struct DeckOptions {
     std::string file_name;                     // for messages
     KeypunchCode code = KeypunchCode::ibm029;  // text card images
     const CardLayout* layout = &fig8_layout(); // listing <-> cards
+    // Told of what in the deck is no error but would surprise its owner (a SIMH end-of-file
+    // mark with cards after it): "FILE:LINE: what". Nothing is said when empty.
+    std::function<void(const std::string&)> warn;
 };
 
 // A reader that also refuses an empty deck ("empty file: no cards").

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
 #include <istream>
 #include <optional>
 #include <ostream>
@@ -21,7 +22,9 @@ std::string describe_char(int ch) {
 }
 
 // SIMH's end-of-record card, ~eor: rows 7, 8, 9 in column 1 alone (sim_card.c). Its ~eof
-// (rows 6, 7, 9) and ~eoi (rows 6, 7, 8, 9) end a deck here, so they are never written.
+// (rows 6, 7, 9), ~eoi (rows 6, 7, 8, 9) and a lone ~ (the end-of-file flag) are marks for a
+// monitor program, which the 1952 machine does not have: they are passed over and the reader
+// reads on, as sim_card.c does (with a warning when cards follow), so they are never written.
 constexpr ColumnWord kEndOfRecord = 07;
 
 bool only_column_1(const Card& card, ColumnWord word) {
@@ -46,21 +49,23 @@ std::string lower(std::string_view text) {
 
 class TextSource : public CardSource {
 public:
-    TextSource(std::istream& in, std::string file, KeypunchCode code)
-        : buf_(*in.rdbuf()), file_(std::move(file)), code_(code) {}
+    TextSource(std::istream& in, std::string file, KeypunchCode code,
+               std::function<void(const std::string&)> warn)
+        : buf_(*in.rdbuf()), file_(std::move(file)), code_(code), warn_(std::move(warn)) {}
 
     std::optional<Card> next() override {
-        if (ended_) {
-            return std::nullopt;
+        for (;;) {
+            const std::optional<std::string> line = read_line();
+            if (!line) {
+                return std::nullopt; // a mark at the end closes the deck, as the hopper's end
+            }
+            std::optional<Card> card =
+                !line->empty() && (*line)[0] == '~' ? control_line(*line) : characters(*line);
+            if (card) {
+                warn_of_mark();
+                return card;
+            }
         }
-        const std::optional<std::string> line = read_line();
-        if (!line) {
-            return std::nullopt;
-        }
-        if (!line->empty() && (*line)[0] == '~') {
-            return control_line(*line);
-        }
-        return characters(*line);
     }
 
 private:
@@ -97,11 +102,11 @@ private:
     }
 
     // SIMH's lines that begin with '~' (sim_card.c): "~raw" and 80 octal column words, the
-    // control cards ~eor, ~eof, ~eoi, and a lone '~' that ends the deck.
+    // control cards ~eor, ~eof, ~eoi, and a lone '~'. Nothing for an end-of-file mark.
     std::optional<Card> control_line(const std::string& line) {
         const std::string rest = line.substr(1);
         if (rest.find_first_not_of(" \t") == std::string::npos) {
-            ended_ = true; // a lone '~': the end of the file, as SIMH's EOF flag
+            note_mark("a lone '~' is SIMH's end-of-file flag");
             return std::nullopt;
         }
         const std::string word = lower(rest.substr(0, 3));
@@ -116,8 +121,8 @@ private:
             return card;
         }
         if (bare && (word == "eof" || word == "eoi")) {
-            // An end-of-file or end-of-input card closes the deck: the hopper's end.
-            ended_ = true;
+            note_mark(word == "eof" ? "'~eof' is SIMH's end-of-file card (rows 6-7-9)"
+                                    : "'~eoi' is SIMH's end-of-input card (rows 6-7-8-9)");
             return std::nullopt;
         }
         throw DeckError::at_line_column(
@@ -198,11 +203,28 @@ private:
             "line is longer than 80 columns (a card has 80; nothing is cut off silently)");
     }
 
+    // An end-of-file mark on this line: said when a card comes after it (not at the deck's end).
+    void note_mark(const std::string& what) {
+        if (!mark_) {
+            mark_ = fmt::format("{}:{}: {}, for a monitor program the 1952 machine does not have: "
+                                "it is passed over and the cards after it are read, as SIMH "
+                                "reads on",
+                                file_, line_, what);
+        }
+    }
+    void warn_of_mark() {
+        if (mark_ && warn_) {
+            warn_(*mark_);
+        }
+        mark_.reset();
+    }
+
     std::streambuf& buf_;
     std::string file_;
     KeypunchCode code_;
+    std::function<void(const std::string&)> warn_;
     std::int64_t line_ = 0;
-    bool ended_ = false;
+    std::optional<std::string> mark_; // the warning of a mark no card has followed yet
 };
 
 class TextSink : public CardSink {
@@ -244,7 +266,7 @@ public:
 
     // As SIMH's punch writes a card that is not all characters: "~raw" and 80 four-digit
     // octal column words (an end-of-file or end-of-input card too, which as ~eof or ~eoi
-    // would end the deck when read back).
+    // would be passed over when read back).
     static std::string raw_line(const Card& card) {
         std::string line = "~raw";
         for (int c = 1; c <= kColumns; ++c) {
@@ -262,9 +284,9 @@ private:
 
 } // namespace
 
-std::unique_ptr<CardSource> make_text_source(std::istream& in, std::string file,
-                                             KeypunchCode code) {
-    return std::make_unique<TextSource>(in, std::move(file), code);
+std::unique_ptr<CardSource> make_text_source(std::istream& in, std::string file, KeypunchCode code,
+                                             std::function<void(const std::string&)> warn) {
+    return std::make_unique<TextSource>(in, std::move(file), code, std::move(warn));
 }
 
 std::unique_ptr<CardSink> make_text_sink(std::ostream& out, std::string file, KeypunchCode code) {

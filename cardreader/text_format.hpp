@@ -21,7 +21,9 @@
 
 namespace parsons::cardreader {
 
-std::unique_ptr<CardSource> make_text_source(std::istream& in, std::string file, KeypunchCode code);
+// `warn` (may be empty) is told of an end-of-file mark (~eof, ~eoi, a lone ~) with cards after it.
+std::unique_ptr<CardSource> make_text_source(std::istream& in, std::string file, KeypunchCode code,
+                                             std::function<void(const std::string&)> warn = {});
 std::unique_ptr<CardSink> make_text_sink(std::ostream& out, std::string file, KeypunchCode code);
 
 } // namespace parsons::cardreader

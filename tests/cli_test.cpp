@@ -182,6 +182,35 @@ TEST_CASE("CLI: a fig8 deck goes into a text deck as SIMH ~raw cards and comes b
     CHECK(read_bytes(dir.path("back.cbn")) == read_bytes(dir.path("s.cbn")));
 }
 
+TEST_CASE("CLI: a SIMH ~eof inside a text deck is passed over with one warning naming the line, "
+          "and every card after it runs",
+          "[cli][simh]") {
+    TempDir dir;
+    REQUIRE(
+        run_parsons("punch " + q(source_path(kSample)) + " -o " + q(dir.str("s.txt"))).exit_code ==
+        0);
+    const std::string text = read_bytes(dir.path("s.txt"));
+    const std::size_t second = text.find('\n', text.find('\n') + 1) + 1;
+    write_bytes(dir.path("e.txt"),
+                text.substr(0, second) + "~eof\n" + text.substr(second) + "~eoi\n");
+    const std::string warning = "parsons: warning: " + dir.str("e.txt") +
+                                ":3: '~eof' is SIMH's end-of-file card (rows 6-7-9), for a monitor "
+                                "program the 1952 machine does not have: it is passed over";
+    // run reads the deck twice (a look for condition, sync and tap cards first): one warning.
+    const auto run =
+        run_parsons("run " + q(dir.str("e.txt")) + " -q --report " + q(dir.str("r.json")));
+    INFO(run.output);
+    CHECK(run.exit_code == 0);
+    CHECK_THAT(run.output, Catch::Contains(warning));
+    CHECK(run.output.find(warning) == run.output.rfind(warning));
+    CHECK(read_bytes(dir.path("r.json")).find("\"cards_read\": 4") != std::string::npos);
+    const auto shown = run_parsons("show " + q(dir.str("e.txt")));
+    CHECK_THAT(shown.output, Catch::Contains(warning));
+    CHECK_THAT(shown.output, Catch::Contains("card 4"));
+    // The same deck without the mark: no warning; a mark at the end says nothing.
+    CHECK(run_parsons("show " + q(dir.str("s.txt"))).output.find("warning") == std::string::npos);
+}
+
 TEST_CASE("CLI: usage errors exit 2, --help exits 0 with an example", "[cli]") {
     CHECK(run_parsons("").exit_code == 2);
     auto unknown_command = run_parsons("frobnicate");

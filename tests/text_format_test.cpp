@@ -157,16 +157,50 @@ TEST_CASE("Text cards: ~eor is the 7-8-9 card, written back as ~eor", "[text][si
     CHECK(out.str() == "A\n~eor\nB\n");
 }
 
-TEST_CASE("Text cards: ~eof, ~eoi and a lone ~ end the deck, nothing after them is read",
+TEST_CASE("Text cards: ~eof, ~eoi and a lone ~ are passed over and the cards after them read, "
+          "as SIMH reads on, with a warning naming the line only when cards follow",
           "[text][simh]") {
-    for (const char* end : {"~eof", "~EOI", "~", "~  \t"}) {
-        INFO(end);
-        const auto cards = read_text(std::string("A\nB\n") + end + "\nC\nD\n");
-        REQUIRE(cards.size() == 2);
+    auto read_warned = [](const std::string& text, std::vector<std::string>& warnings) {
+        std::istringstream in(text);
+        DeckOptions options;
+        options.format = DeckFormat::text;
+        options.file_name = "deck.txt";
+        options.warn = [&warnings](const std::string& w) { warnings.push_back(w); };
+        auto source = open_card_source(in, options);
+        std::vector<Card> cards;
+        while (auto c = source->next()) {
+            cards.push_back(*c);
+        }
+        return cards;
+    };
+    for (const char* mark : {"~eof", "~EOI", "~", "~  \t"}) {
+        INFO(mark);
+        std::vector<std::string> warnings;
+        const auto cards = read_warned(std::string("A\nB\n") + mark + "\nC\nD\n", warnings);
+        REQUIRE(cards.size() == 4); // the mark is no card; C and D are read
         CHECK(cards[1].column(1) == ch('B'));
+        CHECK(cards[2].column(1) == ch('C'));
+        CHECK(cards[3].column(1) == ch('D'));
+        REQUIRE(warnings.size() == 1);
+        CHECK_THAT(warnings[0], Catch::StartsWith("deck.txt:3: "));
+        CHECK_THAT(warnings[0], Catch::Contains("passed over and the cards after it are read"));
+        // At the end of the deck a mark only closes it, as the hopper's end: nothing to say.
+        warnings.clear();
+        CHECK(read_warned(std::string("A\nB\n") + mark + "\n", warnings).size() == 2);
+        CHECK(warnings.empty());
     }
-    // An end-of-file card of holes (6-7-9) is written as ~raw, so that it reads back as a card
-    // rather than ending the deck.
+    std::vector<std::string> warnings;
+    read_warned("A\n~eof\n~eoi\nB\n~\nC\n", warnings);
+    REQUIRE(warnings.size() == 2); // one a run of marks, at its first
+    CHECK_THAT(warnings[0], Catch::StartsWith("deck.txt:2: '~eof' is SIMH's end-of-file card"));
+    CHECK_THAT(warnings[1], Catch::StartsWith("deck.txt:5: a lone '~' is SIMH's end-of-file"));
+    // Without a listener the reader reads on all the same.
+    CHECK(read_text("A\n~eof\nB\n").size() == 2);
+}
+
+TEST_CASE("Text cards: an end-of-file card of holes is written as ~raw, so that it reads back "
+          "as the card and is not passed over",
+          "[text][simh]") {
     Card eof_card;
     eof_card.set_column(1, 015);
     std::ostringstream out;

@@ -16,6 +16,8 @@
 #include <filesystem>
 #include <iostream>
 #include <iterator>
+#include <memory>
+#include <set>
 #include <sstream>
 
 namespace parsons::cli {
@@ -161,6 +163,13 @@ InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
         }
         options_.format = *sniffed;
     }
+    // A warning about the deck goes to standard error once, however often the deck is read
+    // (run reads it through before the run when it holds condition, sync or tap cards).
+    options_.warn = [said = std::make_shared<std::set<std::string>>()](const std::string& what) {
+        if (said->insert(what).second) {
+            say(stderr, "parsons: warning: " + what + "\n");
+        }
+    };
     source_ = cardreader::open_card_source(*in_, options_);
 }
 
