@@ -13,12 +13,17 @@ using namespace parsons::cardreader;
 
 namespace {
 
-std::vector<Card> read_text(const std::string& text, KeypunchCode code = KeypunchCode::ibm029) {
+// The cards of `text`; each warning the reader gives goes into `warnings` when one is given.
+std::vector<Card> read_text(const std::string& text, KeypunchCode code = KeypunchCode::ibm029,
+                            std::vector<std::string>* warnings = nullptr) {
     std::istringstream in(text);
     DeckOptions options;
     options.format = DeckFormat::text;
     options.file_name = "deck.txt";
     options.code = code;
+    if (warnings != nullptr) {
+        options.warn = [warnings](const std::string& w) { warnings->push_back(w); };
+    }
     auto source = open_card_source(in, options);
     std::vector<Card> cards;
     while (auto c = source->next()) {
@@ -161,17 +166,7 @@ TEST_CASE("Text cards: ~eof, ~eoi and a lone ~ are passed over and the cards aft
           "as SIMH reads on, with a warning naming the line only when cards follow",
           "[text][simh]") {
     auto read_warned = [](const std::string& text, std::vector<std::string>& warnings) {
-        std::istringstream in(text);
-        DeckOptions options;
-        options.format = DeckFormat::text;
-        options.file_name = "deck.txt";
-        options.warn = [&warnings](const std::string& w) { warnings.push_back(w); };
-        auto source = open_card_source(in, options);
-        std::vector<Card> cards;
-        while (auto c = source->next()) {
-            cards.push_back(*c);
-        }
-        return cards;
+        return read_text(text, KeypunchCode::ibm029, &warnings);
     };
     for (const char* mark : {"~eof", "~EOI", "~", "~  \t"}) {
         INFO(mark);
