@@ -28,6 +28,7 @@
 #include "decks/deck_limits.hpp"
 #include "relaylogic/control_cabinet.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 

@@ -26,6 +26,7 @@
 #include "cardreader/layout.hpp"
 #include "relaylogic/card_reader.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 namespace parsons::cli {

@@ -4,8 +4,7 @@
 #pragma once
 
 #include "cli/commands.hpp"
-
-#include <CLI/CLI.hpp>
+#include "cli/support/cli11_fwd.hpp"
 
 #include <string>
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "cli/exit_codes.hpp"
+#include "cli/support/cli11_fwd.hpp"
 #include "cli/support/deck_files.hpp"
 #include "cli/support/file_plan.hpp"
 
@@ -11,8 +12,6 @@
 #include "decks/job_file.hpp"
 #include "decks/two_tool_job.hpp"
 #include "relaylogic/control_cabinet.hpp"
-
-#include <CLI/CLI.hpp>
 
 #include <functional>
 #include <optional>

@@ -19,6 +19,7 @@
 #include "cardreader/layout.hpp"
 #include "cli/support/deck_files.hpp"
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <fmt/format.h>
@@ -243,6 +244,7 @@ ExitCode run_demo(const std::string& dir) {
         write_file(fmt::format("{}/cards/card-{:04}.svg", dir, i + 1),
                    cardreader::card_svg(punched.card, cardreader::fig8_layout(), notes));
     }
+    finish_standard_output(); // a reader gone (`| head -1`) ends the demo here, as it does bench
     RunRequest run;
     run.input = deck;
     run.report = dir + "/report.json";
@@ -256,12 +258,15 @@ ExitCode run_demo(const std::string& dir) {
         throw std::logic_error("the machine stopped on the demo's own deck");
     }
     if (code == ExitCode::ok) {
+        finish_standard_output();
         code = run_two_tool_demo(dir);
     }
     if (code == ExitCode::ok) {
+        finish_standard_output();
         code = run_press_demo(dir);
     }
     if (code == ExitCode::ok) {
+        finish_standard_output();
         code = run_tapping_demo(dir);
     }
     fmt::print("\nwrote {0}/naca2412.cbn (+ .job.json), {0}/cards/, {0}/report.json, "

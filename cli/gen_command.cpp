@@ -23,6 +23,7 @@
 #include "decks/move_planner.hpp"
 #include "decks/number_text.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cmath>

@@ -11,6 +11,7 @@
 #include "decks/move_planner.hpp"
 #include "decks/template_job.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cmath>

@@ -11,6 +11,7 @@
 #include "outputs/output_file.hpp"
 #include "outputs/proofs/press_proof.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cmath>

@@ -6,10 +6,9 @@
 
 #include "axes/machine_profile.hpp"
 #include "cli/commands.hpp"
+#include "cli/support/cli11_fwd.hpp"
 #include "decks/press_feeder_job.hpp"
 #include "relaylogic/control_cabinet.hpp"
-
-#include <CLI/CLI.hpp>
 
 #include <string>
 #include <vector>

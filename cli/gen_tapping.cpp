@@ -10,6 +10,7 @@
 #include "decks/template_job.hpp"
 #include "outputs/output_file.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>

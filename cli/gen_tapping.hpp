@@ -5,9 +5,8 @@
 
 #include "axes/machine_profile.hpp"
 #include "cli/commands.hpp"
+#include "cli/support/cli11_fwd.hpp"
 #include "decks/tapping_job.hpp"
-
-#include <CLI/CLI.hpp>
 
 #include <string>
 

@@ -6,6 +6,7 @@
 
 #include "cli/version.hpp" // generated: cmake/git_version.cmake
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cstdio>

@@ -4,6 +4,7 @@
 
 #include "axes/profile_json.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>

@@ -5,6 +5,7 @@
 #include "cli/support/json_output.hpp"
 #include "outputs/output_file.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <memory>

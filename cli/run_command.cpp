@@ -23,6 +23,7 @@
 #include "decks/job_file.hpp"
 #include "relaylogic/control_cabinet.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -14,6 +14,7 @@
 #include "cardreader/deck_review.hpp"
 #include "relaylogic/card_reader.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <array>

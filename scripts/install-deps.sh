@@ -4,7 +4,8 @@
 set -euo pipefail
 
 # clang and libclang-rt-14-dev: clang's sanitizer runtimes and libFuzzer, for
-# scripts/sanitize.sh and scripts/fuzz.sh (one build, build-sanitize/).
+# scripts/sanitize.sh and scripts/fuzz.sh (one build, build-sanitize/). lld: the linker of both
+# builds, some eight times faster than GNU ld on the test program (CMakeLists.txt).
 # groff-base and zsh: the tests read the manual pages with groff and parse the zsh completion.
 # dpkg-dev and file: CPack works out the .deb's Depends with dpkg-shlibdeps.
 # emscripten and node-acorn (its JavaScript optimizer's parser): the exhibit page, the emulator
@@ -12,7 +13,7 @@ set -euo pipefail
 # real browser, headless (puppeteer-core drives it; nothing downloads a browser).
 packages=(g++ cmake make dpkg-dev file libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev catch2
           gtkwave
-          clang libclang-rt-14-dev groff-base zsh
+          clang libclang-rt-14-dev lld groff-base zsh
           emscripten node-acorn chromium)
 # Node.js and npm: the tests' independent cross-checks (tests/js: Ajv validates every JSON
 # output against docs/schemas, gcode-toolpath reads the G-code parsons writes) and the browser

@@ -7,6 +7,7 @@
 #include "tests/test_support.hpp"
 
 #include <catch2/catch.hpp>
+#include <CLI/CLI.hpp>
 
 #include <map>
 #include <string>

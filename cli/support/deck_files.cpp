@@ -7,6 +7,7 @@
 #include "axes/profile_json.hpp"
 #include "cardreader/deck_error.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>

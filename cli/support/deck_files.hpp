@@ -4,8 +4,7 @@
 #include "axes/machine_profile.hpp"
 #include "cardreader/deck_io.hpp"
 #include "cardreader/deck_review.hpp"
-
-#include <CLI/CLI.hpp>
+#include "cli/support/cli11_fwd.hpp"
 
 #include <fstream>
 #include <memory>

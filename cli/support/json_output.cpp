@@ -4,6 +4,7 @@
 
 #include "cardreader/deck_error.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cmath>

@@ -5,8 +5,8 @@
 #pragma once
 
 #include "cardreader/orders.hpp"
+#include "cli/support/cli11_fwd.hpp"
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <optional>

@@ -1,5 +1,6 @@
 #include "cli/support/manual.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -7,7 +7,7 @@
 // that every option of every command is in its page and both scripts.
 #pragma once
 
-#include <CLI/CLI.hpp>
+#include "cli/support/cli11_fwd.hpp"
 
 #include <string>
 #include <vector>
