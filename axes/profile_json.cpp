@@ -1,6 +1,7 @@
 #include "axes/profile_json.hpp"
 #include "axes/profile_values.hpp"
 
+#include "axes/json_text.hpp"
 #include "axes/screw_error_table.hpp"
 #include "axes/spindle_json.hpp"
 
@@ -617,7 +618,7 @@ std::string profile_to_json(const MachineProfile& p) {
     put_readings(j, p);
     put_press_sync(j, p);
     put_spindle_sync(j, p);
-    return j.dump(2) + "\n";
+    return json_text(j, 2) + "\n";
 }
 
 } // namespace parsons::axes

@@ -18,6 +18,7 @@
 // A benchmark, not a test: it asserts nothing about time. --json for the same as JSON. Each
 // figure is printed as soon as it is measured; a reader that goes away (`| head -3`) ends the
 // benchmark there, quietly (exit 141).
+#include "axes/json_text.hpp"
 #include "cli/commands.hpp"
 #include "cli/support/progress_line.hpp"
 #include "outputs/output_file.hpp"
@@ -356,7 +357,7 @@ public:
     void scaling();
     void print_json() const {
         if (o_.json) {
-            fmt::print("{}\n", j_.dump(2));
+            fmt::print("{}\n", axes::json_text(j_, 2));
         }
     }
 

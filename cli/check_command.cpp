@@ -119,9 +119,9 @@ private:
             Finding f{index_, o.number, "limit", a,
                       fmt::format("{} {} {:+.3f} in, from {:.3f} to {:.3f} in, past {}",
                                   axis_name(a), returns ? "taps" : "moves", move, pos, to, past)};
-            f.extra["from_in"] = rounded_inches(pos);
-            f.extra["to_in"] = rounded_inches(to);
-            f.extra["limit_in"] = rounded_inches(limit);
+            f.extra["from_in"] = counter_reading(pos);
+            f.extra["to_in"] = counter_reading(to);
+            f.extra["limit_in"] = counter_reading(limit);
             f.extra["limit_kind"] = limit_kind;
             found.push_back(std::move(f));
         }

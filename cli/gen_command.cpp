@@ -16,6 +16,7 @@
 #include "cli/support/progress_line.hpp"
 #include "outputs/output_file.hpp"
 #include "outputs/proofs/two_tool_proof.hpp"
+#include "outputs/report/figures.hpp"
 
 #include "cardreader/deck_error.hpp"
 #include "cardreader/layout.hpp"
@@ -293,8 +294,10 @@ Json summary_json(const GenFlags& f, const GeneratedJob& job) {
         doc["sweep_deg"] = f.sweep_deg;
         doc["cards"] = w.cards.size();
         doc["stations"] = w.stations.size();
-        doc["largest_scallop_in"] = w.planned_leftover_in;
-        doc["zero_in"] = {{"cross", w.zero.x()}, {"table", w.zero.y()}, {"vertical", w.zero.z()}};
+        doc["largest_scallop_in"] = fine_length(w.planned_leftover_in);
+        doc["zero_in"] = {{"cross", fine_length(w.zero.x())},
+                          {"table", fine_length(w.zero.y())},
+                          {"vertical", fine_length(w.zero.z())}};
     } else {
         const auto& d = job.deck;
         doc["surface"] = f.surface;
@@ -303,9 +306,10 @@ Json summary_json(const GenFlags& f, const GeneratedJob& job) {
         doc["stations"] = d.stations.size();
         doc["approach_cards"] = d.cards.size() + 1 - d.stations.size();
         doc["corner_cards"] = d.corner_cards;
-        doc["largest_scallop_in"] = d.planned_leftover_in;
-        doc["largest_dip_in"] = d.planned_gouge_in;
-        doc["work_zero_in"] = {{"table", d.work_zero_in.x()}, {"cross", d.work_zero_in.y()}};
+        doc["largest_scallop_in"] = fine_length(d.planned_leftover_in);
+        doc["largest_dip_in"] = fine_length(d.planned_gouge_in);
+        doc["work_zero_in"] = {{"table", fine_length(d.work_zero_in.x())},
+                               {"cross", fine_length(d.work_zero_in.y())}};
     }
     return doc;
 }
@@ -453,9 +457,10 @@ Json two_tool_json(const TwoToolFlags& f, const GeneratedTwoToolJob& job) {
     doc["clearance_in"] = d.clearance / 1000.0;
     doc["return_from_in"] = d.return_from / 1000.0;
     doc["trip_position_in"] = d.trip_position / 1000.0;
-    doc["return_move_seconds"] = d.return_move_s;
-    doc["planned_lead_seconds"] = d.planned_lead_s;
-    doc["work_zero_in"] = {{"table", d.work_zero_in.x()}, {"cross", d.work_zero_in.y()}};
+    doc["return_move_seconds"] = time_s(d.return_move_s);
+    doc["planned_lead_seconds"] = time_s(d.planned_lead_s);
+    doc["work_zero_in"] = {{"table", fine_length(d.work_zero_in.x())},
+                           {"cross", fine_length(d.work_zero_in.y())}};
     return doc;
 }
 

@@ -5,6 +5,7 @@
 #include "cli/support/deck_files.hpp"
 #include "cli/support/json_output.hpp"
 #include "outputs/output_file.hpp"
+#include "outputs/report/figures.hpp"
 
 #include "cardreader/deck_error.hpp"
 #include "decks/gcode_job.hpp"
@@ -33,10 +34,6 @@ struct GcodeFlags {
     bool json = false;
 };
 
-double rounded(double v, double scale) {
-    return std::round(v * scale) / scale;
-}
-
 Json gcode_json(const GcodeFlags& f, const decks::GcodeProgram& program,
                 const decks::GcodeDeck& deck) {
     Json doc = json_document("gen");
@@ -50,9 +47,9 @@ Json gcode_json(const GcodeFlags& f, const decks::GcodeProgram& program,
     doc["lines"] = deck.lines;
     doc["arcs"] = deck.arcs;
     doc["tolerance_in"] = f.o.tolerance_in;
-    doc["staircase_in"] = rounded(deck.planned_deviation_in, 1e6);
-    doc["work_zero_in"] = {rounded(deck.work_zero_in.x(), 1e4), rounded(deck.work_zero_in.y(), 1e4),
-                           rounded(deck.work_zero_in.z(), 1e4)};
+    doc["staircase_in"] = fine_length(deck.planned_deviation_in);
+    doc["work_zero_in"] = {decimals(deck.work_zero_in.x(), 4), decimals(deck.work_zero_in.y(), 4),
+                           decimals(deck.work_zero_in.z(), 4)};
     doc["ignored"] = program.ignored;
     return doc;
 }

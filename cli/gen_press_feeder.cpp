@@ -10,6 +10,7 @@
 #include "decks/template_job.hpp"
 #include "outputs/output_file.hpp"
 #include "outputs/proofs/press_proof.hpp"
+#include "outputs/report/figures.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -196,17 +197,17 @@ Json press_json(const PressFeederFlags& f, const GeneratedPressJob& g) {
     doc["cards"] = g.deck.cards.size();
     doc["cycles"] = g.job.options.cycles;
     doc["strokes_per_min"] = g.job.options.strokes_per_min;
-    doc["start_angle_deg"] = g.job.options.start_angle_deg;
-    doc["insert_entry_deg"] = g.insert_entry_deg;
-    doc["takeout_entry_deg"] = g.takeout_entry_deg;
+    doc["start_angle_deg"] = angle_deg(g.job.options.start_angle_deg);
+    doc["insert_entry_deg"] = angle_deg(g.insert_entry_deg);
+    doc["takeout_entry_deg"] = angle_deg(g.takeout_entry_deg);
     doc["revolutions_per_cycle"] = g.revolutions_per_cycle;
     Json moves = Json::array();
     for (const auto& m : g.deck.moves) {
         moves.push_back({{"move", m.name},
                          {"sync_card", m.card},
-                         {"degrees", m.degrees},
-                         {"travel_per_pulse_in", m.travel_per_pulse * 1e-5},
-                         {"speed_in_per_min", m.speed_in_per_min}});
+                         {"degrees", angle_deg(m.degrees)},
+                         {"travel_per_pulse_in", fine_length(m.travel_per_pulse / 1e5)},
+                         {"speed_in_per_min", decimals(m.speed_in_per_min, 4)}});
     }
     doc["moves"] = moves;
     return doc;

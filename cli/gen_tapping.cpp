@@ -9,6 +9,7 @@
 #include "decks/move_planner.hpp"
 #include "decks/template_job.hpp"
 #include "outputs/output_file.hpp"
+#include "outputs/report/figures.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -86,9 +87,9 @@ Json tapping_json(const TappingFlags& f, const GeneratedTappingJob& g) {
                          {"cross_in", h.y_in},
                          {"tool", h.tool},
                          {"tap_pitch_in", h.tap_pitch_in},
-                         {"head_ratio", h.head_ratio},
+                         {"head_ratio", decimals(h.head_ratio, 6)},
                          {"rpm", h.rpm},
-                         {"feed_in_per_min", std::round(h.feed_in_per_min * 1e4) / 1e4}});
+                         {"feed_in_per_min", decimals(h.feed_in_per_min, 4)}});
     }
     doc["holes"] = holes;
     return doc;

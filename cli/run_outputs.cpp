@@ -2,6 +2,7 @@
 // command's own, the saved state (it names the command that resumes from it).
 #include "cli/run_outputs.hpp"
 
+#include "axes/json_text.hpp"
 #include "axes/profile_json.hpp"
 #include "axes/state_json.hpp"
 #include "cli/support/deck_files.hpp"
@@ -75,10 +76,10 @@ public:
     void finish(RunEnd& end) override {
         const RunRequest& f = request_;
         if (end.result.stop) {
-            write_file(f.save_state,
-                       state_json(end.result, cabinet_.resume_point(), applied_, faults_, f)
-                               .dump(1, ' ', false, nlohmann::json::error_handler_t::replace) +
-                           "\n");
+            write_file(f.save_state, axes::json_text(state_json(end.result, cabinet_.resume_point(),
+                                                                applied_, faults_, f),
+                                                     1) +
+                                         "\n");
         } else if (!f.quiet) {
             fmt::print(message_stream(),
                        "  state          the deck completed: no state to save ({} not written)\n",

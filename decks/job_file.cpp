@@ -1,5 +1,7 @@
 #include "decks/job_file.hpp"
 
+#include "axes/json_text.hpp"
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -48,7 +50,7 @@ std::string job_to_json(const JobDescription& job) {
     if (!job.deck_fingerprint.empty()) {
         j["deck"] = {{"cards", job.deck_cards}, {"fingerprint", job.deck_fingerprint}};
     }
-    return j.dump(2) + "\n";
+    return axes::json_text(j, 2) + "\n";
 }
 
 JobDescription job_from_json(const std::string& text) {

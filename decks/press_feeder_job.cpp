@@ -1,6 +1,7 @@
 // The press-feeder job (decks/press_feeder_job.hpp says what each card does).
 #include "decks/press_feeder_job.hpp"
 
+#include "axes/json_text.hpp"
 #include "cardreader/sync_card.hpp"
 #include "cardreader/sync_review.hpp"
 #include "cardreader/tap_review.hpp"
@@ -365,7 +366,7 @@ std::string press_job_to_json(const PressFeederJob& job) {
         {"profile_file", job.profile_file},
         {"deck_cards", job.deck_cards},
     };
-    return j.dump(2) + "\n";
+    return axes::json_text(j, 2) + "\n";
 }
 
 bool is_press_job(const std::string& text) {

@@ -1,6 +1,7 @@
 // The tapping job (decks/tapping_job.hpp says what each card does).
 #include "decks/tapping_job.hpp"
 
+#include "axes/json_text.hpp"
 #include "decks/deck_limits.hpp"
 #include "decks/move_planner.hpp"
 #include "decks/number_text.hpp"
@@ -430,7 +431,7 @@ std::string tapping_job_to_json(const TappingJob& job) {
         {"profile_file", job.profile_file},
         {"deck_cards", job.deck_cards},
     };
-    return j.dump(2) + "\n";
+    return axes::json_text(j, 2) + "\n";
 }
 
 bool is_tapping_job(const std::string& text) {

@@ -1,6 +1,8 @@
 #include "cli/support/json_output.hpp"
 
+#include "axes/json_text.hpp"
 #include "outputs/output_file.hpp"
+#include "outputs/report/figures.hpp"
 
 #include "cardreader/deck_error.hpp"
 
@@ -21,11 +23,6 @@ Json json_document(std::string_view command) {
     return Json{{"command", std::string(command)}, {"schema_version", kJsonSchemaVersion}};
 }
 
-double rounded_inches(double inches) {
-    const double r = std::round(inches * 1000.0) / 1000.0;
-    return r == 0 ? 0.0 : r; // no -0.0
-}
-
 Json file_or_null(const std::string& name) {
     return name.empty() ? Json(nullptr) : Json(name);
 }
@@ -34,7 +31,7 @@ Json inches_json(std::optional<cardreader::Thousandths> value) {
     if (!value) {
         return nullptr;
     }
-    return rounded_inches(*value / 1000.0);
+    return counter_reading(*value / 1000.0);
 }
 
 void refuse_json_beside_standard_output(std::string_view command, bool json, std::string_view flag,
@@ -51,7 +48,7 @@ void print_json_document(const Json& document) {
     // Names and messages come from the user's files: a byte that is not UTF-8 is replaced
     // (U+FFFD) rather than refused.
     OutputFile out("-");
-    out.stream() << document.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
+    out.stream() << axes::json_text(document, 2) << '\n';
     out.commit();
 }
 

@@ -28,9 +28,6 @@ void add_json_flag(CLI::App& cmd, bool& json);
 // {"command": COMMAND, "schema_version": 1}: the head of every document.
 Json json_document(std::string_view command);
 
-// Inches rounded to 0.001 (the machine's unit), so a sum of moves reads 8.385, not
-// 8.384999999999998.
-double rounded_inches(double inches);
 // A file's name, or null when none was written.
 Json file_or_null(const std::string& name);
 // A card's four digits as inches (8785 -> 8.785), or null for a blank field.

@@ -1,6 +1,8 @@
 // The press-feeder proof (outputs/proofs/press_proof.hpp says what it checks and how).
 #include "outputs/proofs/press_proof.hpp"
 
+#include "outputs/report/figures.hpp"
+
 #include "cardreader/deck_error.hpp"
 
 #include <fmt/format.h>
@@ -135,14 +137,6 @@ void PressProof::check(double t) {
     last_theta_ = press_.theta_deg();
 }
 
-namespace {
-
-double rounded(double v, double unit) {
-    return std::round(v / unit) * unit;
-}
-
-} // namespace
-
 nlohmann::json press_block(const relaylogic::RunResult& /*result*/, const PressProof& proof,
                            const decks::PressFeederJob& job) {
     nlohmann::json j;
@@ -150,22 +144,22 @@ nlohmann::json press_block(const relaylogic::RunResult& /*result*/, const PressP
     j["variant"] = job.variant;
     j["zone_edge_x_in"] = job.options.zone_edge_x_in;
     j["safe_height_in"] = job.options.safe_height_in;
-    j["min_clearance_in"] = rounded(proof.closest().clearance_in, 1e-6);
+    j["min_clearance_in"] = fine_length(proof.closest().clearance_in);
     j["min_clearance_cycle"] = proof.closest().cycle;
     j["min_time_margin_s"] =
-        proof.min_margin_s() ? nlohmann::json(rounded(*proof.min_margin_s(), 1e-4)) : nullptr;
+        proof.min_margin_s() ? nlohmann::json(decimals(*proof.min_margin_s(), 4)) : nullptr;
     nlohmann::json per_cycle = nlohmann::json::array();
     for (double c : proof.cycle_clearance_in()) {
-        per_cycle.push_back(rounded(c, 1e-6));
+        per_cycle.push_back(fine_length(c));
     }
     j["cycle_clearance_in"] = per_cycle;
     j["collision"] = nullptr;
     if (const auto& c = proof.collision()) {
         j["collision"] = {{"cycle", c->cycle},
-                          {"machine_seconds", rounded(c->t, 1e-6)},
-                          {"crank_angle_deg", rounded(c->crank_deg, 1e-4)},
-                          {"feeder_x_in", rounded(c->feeder_x_in, 1e-6)},
-                          {"die_height_in", rounded(c->die_height_in, 1e-6)}};
+                          {"machine_seconds", time_s(c->t)},
+                          {"crank_angle_deg", angle_deg(c->crank_deg)},
+                          {"feeder_x_in", fine_length(c->feeder_x_in)},
+                          {"die_height_in", fine_length(c->die_height_in)}};
     }
     return j;
 }

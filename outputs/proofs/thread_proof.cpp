@@ -1,6 +1,8 @@
 // The thread proof (outputs/proofs/thread_proof.hpp says what it measures and how).
 #include "outputs/proofs/thread_proof.hpp"
 
+#include "outputs/report/figures.hpp"
+
 #include "cardreader/deck_error.hpp"
 #include "decks/template_job.hpp"
 
@@ -73,13 +75,6 @@ double depth_at_revs(const std::vector<Point>& pts, double revs) {
 
 double percent(double pitch, double tap) {
     return (pitch - tap) / tap * 100.0;
-}
-
-// v to `places` decimals, as the nearest double to that decimal (and no -0).
-double decimals(double v, int places) {
-    const double scale = std::pow(10.0, places);
-    const double r = std::round(v * scale) / scale;
-    return r == 0 ? 0.0 : r;
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "outputs/replay/replay_page.hpp"
 
+#include "axes/json_text.hpp"
 #include "outputs/web_assets.hpp" // generated: cmake/embed_web.cmake
 
 #include "cardreader/card_svg.hpp"
@@ -52,8 +53,7 @@ std::string replay_page(const RunTimeline& timeline, const nlohmann::json& repor
     std::string page(web_assets::replay_html);
     // The slots are filled last to first in the template, so no filled text is searched.
     nlohmann::json run = {{"deck", deck_name}, {"report", report}};
-    fill(page, "<!--run-json-->",
-         script_safe(run.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)));
+    fill(page, "<!--run-json-->", script_safe(axes::json_text(run)));
     fill(page, "<!--timeline-json-->", script_safe(timeline.embedded_json()));
     fill(page, "/*viewer-js*/", web_assets::viewer_js);
     fill(page, "<!--viewer-->",

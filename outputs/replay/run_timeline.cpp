@@ -1,5 +1,6 @@
 #include "outputs/replay/run_timeline.hpp"
 
+#include "axes/json_text.hpp"
 #include "axes/lead_screw_axis.hpp"
 #include "cardreader/orders.hpp"
 
@@ -177,7 +178,7 @@ nlohmann::json RunTimeline::header() const {
 
 std::string RunTimeline::signals_text() const {
     if (signals_text_.empty()) {
-        signals_text_ = signals_.dump();
+        signals_text_ = axes::json_text(signals_);
     }
     return signals_text_;
 }
@@ -198,7 +199,7 @@ std::string RunTimeline::header_text(bool with_signals) const {
                                  {"changes", change_t_.size()},
                                  {"motion_records", motion_.size() / kMotionRecord},
                                  {"truncated", truncated_}};
-    std::string text = rest.dump();
+    std::string text = axes::json_text(rest);
     if (with_signals) { // {"signals":[...], then the rest's keys
         text.replace(0, 1, "{\"signals\":" + signals_text() + ",");
     }

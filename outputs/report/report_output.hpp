@@ -2,6 +2,7 @@
 // the outputs before it in run's table (the cut, the proofs) added.
 #pragma once
 
+#include "axes/json_text.hpp"
 #include "outputs/output.hpp"
 #include "outputs/output_file.hpp"
 
@@ -15,8 +16,7 @@ public:
     explicit ReportOutput(std::string file) : file_(std::move(file)) {}
     void finish(RunEnd& end) override {
         // A deck name that is not UTF-8 is written with U+FFFD for its bad bytes, not refused.
-        write_file(file_,
-                   end.report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+        write_file(file_, axes::json_text(end.report, 2) + "\n");
     }
 
 private:

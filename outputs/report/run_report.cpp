@@ -19,21 +19,6 @@ double screw_vs_counters(const relaylogic::AxisResult& x) {
     return std::remainder(x.screw_in - x.counter_in, 10.0);
 }
 
-double rounded(double v, double step) {
-    if (!std::isfinite(v)) {
-        return v;
-    }
-    const double r = std::round(v / step) * step;
-    return r == 0 ? 0.0 : r; // no -0
-}
-
-// v to `places` decimals, as the nearest double to that decimal (no 0.59912000000000001).
-double decimals(double v, int places) {
-    const double scale = std::pow(10.0, places);
-    const double r = std::round(v * scale) / scale;
-    return r == 0 ? 0.0 : r;
-}
-
 nlohmann::json tapping_json(const relaylogic::TappingResult& t) {
     using nlohmann::json;
     json holes = json::array();
@@ -191,19 +176,6 @@ std::vector<std::string> error_causes(const relaylogic::AxisResult& x) {
 
 } // namespace
 
-double counter_reading(double inches) {
-    return rounded(inches, 0.001);
-}
-double fine_length(double inches) {
-    return rounded(inches, 0.00001);
-}
-double time_s(double seconds) {
-    return rounded(seconds, 0.000001);
-}
-double angle_deg(double degrees) {
-    return rounded(degrees, 0.0001);
-}
-
 nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachineProfile& profile,
                            const nlohmann::json& profile_applied, const std::string& deck) {
     using nlohmann::json;
@@ -296,20 +268,19 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachinePr
         auto seconds = [](const std::optional<double>& v) {
             return v ? json(time_s(*v)) : json(nullptr);
         };
-        j["press"] =
-            json{{"revolution", p.revolution},
-                 {"crank_angle_deg", std::round(p.crank_angle_deg * 1000) / 1000},
-                 {"position_register_14", p.position_register},
-                 {"press_stopped", p.press_stopped},
-                 {"cycles", p.cycles},
-                 {"loop_backs", p.loop_backs},
-                 {"mean_cycle_seconds", seconds(p.mean_cycle_s)},
-                 {"shortest_cycle_seconds", seconds(p.shortest_cycle_s)},
-                 {"longest_cycle_seconds", seconds(p.longest_cycle_s)},
-                 {"waited_seconds", time_s(p.waited_s)},
-                 {"max_lag_position_sync_in", std::round(p.max_lag_position_sync_in * 1e5) / 1e5},
-                 {"max_lag_speed_only_in", std::round(p.max_lag_speed_only_in * 1e5) / 1e5},
-                 {"register_resets", p.register_resets}};
+        j["press"] = json{{"revolution", p.revolution},
+                          {"crank_angle_deg", decimals(p.crank_angle_deg, 3)},
+                          {"position_register_14", p.position_register},
+                          {"press_stopped", p.press_stopped},
+                          {"cycles", p.cycles},
+                          {"loop_backs", p.loop_backs},
+                          {"mean_cycle_seconds", seconds(p.mean_cycle_s)},
+                          {"shortest_cycle_seconds", seconds(p.shortest_cycle_s)},
+                          {"longest_cycle_seconds", seconds(p.longest_cycle_s)},
+                          {"waited_seconds", time_s(p.waited_s)},
+                          {"max_lag_position_sync_in", fine_length(p.max_lag_position_sync_in)},
+                          {"max_lag_speed_only_in", fine_length(p.max_lag_speed_only_in)},
+                          {"register_resets", p.register_resets}};
     }
     // Spindle synchronisation (an addition after EP 0360190): only when a tap card was read.
     if (r.tapping && r.tapping->used) {
