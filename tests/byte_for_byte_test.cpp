@@ -194,7 +194,7 @@ std::string random_deck(Outputs& o, int i, std::mt19937& rng) {
 TEST_CASE("Byte for byte: the sample decks, the demo, the generators' decks, a saved and resumed "
           "run, the readers' seed decks and 100 random decks give every output exactly as the "
           "manifest records",
-          "[byte-for-byte][cli]") {
+          "[byte-for-byte][cli][heavy]") {
     const char* keep = std::getenv("PARSONS_BYTE_FOR_BYTE_DIR");
     const TempDir temp;
     const fs::path work = keep != nullptr ? fs::path(keep) : temp.path("work");

@@ -41,7 +41,7 @@ json read_json(const TempDir& dir, const std::string& name) {
 
 TEST_CASE("Check: its verdict and stop are run's on 400 random decks, every profile reading, "
           "fault, measuring chain and medium",
-          "[check][agreement][cli]") {
+          "[check][agreement][cli][heavy]") {
     std::mt19937 rng(29001);
     std::mt19937 crng(29002);
     std::mt19937 srng(29003);

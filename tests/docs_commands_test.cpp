@@ -304,7 +304,7 @@ std::vector<std::string> subcommands(const std::string& help) {
 
 TEST_CASE("Docs: every example of every command's --help runs as written against shipped "
           "files, with the exit code its comment gives",
-          "[docs][cli]") {
+          "[docs][cli][heavy]") {
     // Every command, and the commands under one (gen airfoil), as `parsons --help` lists them.
     std::vector<std::string> commands;
     for (const std::string& c : subcommands(run_parsons("--help").output)) {
@@ -344,7 +344,7 @@ TEST_CASE("Docs: every example of every command's --help runs as written against
 
 TEST_CASE("Docs: every command of the README and the tutorial runs as written, and the "
           "figures and pictures they quote are what the binary gives",
-          "[docs][cli]") {
+          "[docs][cli][heavy]") {
     int pictures = 0;
     {
         Scratch scratch;

@@ -214,7 +214,7 @@ void require_same(const RunResult& a, const RunResult& b) {
 
 TEST_CASE("Fast-forward: 240 random decks end exactly as at impulse level, result and relay "
           "events alike",
-          "[fastforward][cabinet]") {
+          "[fastforward][cabinet][heavy]") {
     std::mt19937 rng(1952);
     std::mt19937 crng(640901);
     std::mt19937 srng(436887);

@@ -207,7 +207,8 @@ TEST_CASE("G-code: arcs by centre and by radius, both senses, full circles and h
     }
 }
 
-TEST_CASE("G-code deck: within the tolerance, chords and staircases, every station", "[gcode]") {
+TEST_CASE("G-code deck: within the tolerance, chords and staircases, every station",
+          "[gcode][heavy]") {
     const auto program = read("G20 G90\nG0 Z0.2\nG1 Z-0.1\nG1 X2 Y1\nG3 X3 Y2 I0 J1\nG2 X3.5 Y2.5 "
                               "R0.5\nG1 X0.5 Y2.5 Z0\n");
     const auto profile = axes::default_profile();

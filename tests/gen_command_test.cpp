@@ -123,7 +123,7 @@ TEST_CASE("Gen: a scallop of zero or less is refused, not taken as 'use --statio
 
 TEST_CASE("Gen: a scallop finer than the finest stations is refused with the smallest possible, "
           "and that smallest one is accepted",
-          "[gen][cli][bad-input]") {
+          "[gen][cli][bad-input][heavy]") {
     TempDir dir;
     for (const char* job : {"template", "wing"}) {
         INFO(job);

@@ -283,7 +283,7 @@ TEST_CASE("Never lose a file: two outputs on standard output are refused before 
 
 TEST_CASE("Never lose a file: a deck that goes to a device, a FIFO or standard output has no job "
           "description beside it, unless --job-out names one",
-          "[never-lose][cli]") {
+          "[never-lose][cli][heavy]") {
     Workshop w;
     REQUIRE(mkfifo(w.dir.path("pipe").c_str(), 0600) == 0);
     for (const char* gen : {"gen airfoil --naca 2412 --stations 10", "gen two-tool --naca 2412",
@@ -369,7 +369,7 @@ void discard_everything(const Workshop& w, const std::string& as) {
 
 TEST_CASE("Never lose a file: /dev/null discards every output of every command, as root and as "
           "a user, and nothing appears beside it",
-          "[never-lose][cli]") {
+          "[never-lose][cli][heavy]") {
     Workshop w;
     discard_everything(w, "");
     if (running_as_root()) {
@@ -459,7 +459,7 @@ Ended into_a_closed_pipe(const fs::path& dir, const std::string& args, Into into
 
 TEST_CASE("Never lose a file: a reader that goes away ends every command quietly with exit 141, "
           "standard error on the same pipe or not, and leaves no temporary file",
-          "[never-lose][cli][pipe]") {
+          "[never-lose][cli][pipe][heavy]") {
     Workshop w;
     for (const char* args :
          {"run deck.cbn",

@@ -171,7 +171,7 @@ std::string sample_with(const std::string& from, const std::string& to) {
 
 TEST_CASE("Output formats: every field, event kind, stop reason and signal of run --events has a "
           "row in docs/output-formats.md",
-          "[output-formats][events][docs]") {
+          "[output-formats][events][docs][heavy]") {
     TempDir dir;
     EventsSeen seen;
     // The sample deck run through, then stopped by each check the machine has.

@@ -326,7 +326,7 @@ TEST_CASE("Template: both surfaces approach over the top, four cards: 4,998 stat
 
 TEST_CASE("Template: a scallop that would need more cards than a deck holds is refused while the "
           "stations are being chosen",
-          "[template][decks][limits]") {
+          "[template][decks][limits][heavy]") {
     TemplateOptions o;
     o.surface = Surface::both;
     o.scallop_in = 1e-7; // every step the finest, 0.0001 of the path: 20,001 stations

@@ -33,7 +33,7 @@ constexpr bool kOneWing = false;
 
 TEST_CASE("Wing: a tapered, swept NACA wing runs to completion and its root and tip sections "
           "are cut within tolerance (Fig. 5)",
-          "[wing][decks][fig5]") {
+          "[wing][decks][fig5][heavy]") {
     auto [source, radius, taper, sweep] = GENERATE(
         filter([](const auto& wing) { return !kOneWing || std::get<0>(wing) == "clarky.dat"; },
                table<std::string, double, double, double>({
@@ -105,7 +105,7 @@ TEST_CASE("Wing: the fixture angles follow the sine-plate geometry", "[wing][dec
 
 TEST_CASE("Wing: two cards a station, so 4,999 stations make 9,998 cards and 5,000 are refused "
           "before a station is computed",
-          "[wing][decks][limits]") {
+          "[wing][decks][limits][heavy]") {
     using Catch::Matchers::Contains;
     const auto airfoil = naca4("2412");
     const auto profile = axes::default_profile();
