@@ -102,4 +102,33 @@ function numberFindings(text, schema) {
   return findings;
 }
 
-module.exports = { numberFindings, decimalsOf, significantDigits };
+// The numbers' rule must be able to fail: float noise, too many decimals for the kind, and a
+// figure under the report's quoted profile (kept to the last bit, so it passes). `fail` reports
+// a case that went wrong; the count of such cases is returned.
+function numberSelfCheck(fail) {
+  const cases = [
+    ['report', '{"machine_seconds": 88.19411099999999}', 1],
+    ['report', '{"cards": [{"start_seconds": 336.91522200000003}]}', 2], // both rules
+    ['report', '{"axes": {"table": {"real_position": 0.123456}}}', 1],
+    ['json-output', '{"moves": [{"degrees": 32.05128205128205}]}', 1],
+    ['report', '{"press": {"cycle_clearance_in": [0.09312899999999999, 0.1]}}', 1],
+    ['report', '{"machine_seconds": 88.194111, "profile_applied": {"x_deg": 332.2130851211906}}', 0],
+    ['profile', '{"press": {"start_angle_deg": 332.2130851211906}}', 0],
+    ['state', '{"t": 0.30000000000000004}', 0],
+    ['job', '{"t": 0.10000000000000001}', 1],
+    ['events', '{"t":0.020800,"signal":"a 0.30000000000000004 b"}', 0],
+  ];
+  let wrong = 0;
+  for (const [schema, text, expected] of cases) {
+    const found = numberFindings(text, schema).length;
+    if (found !== expected) {
+      wrong += 1;
+      fail(`numbers' rule: ${schema} ${text}: ${found} finding(s), expected ${expected}`);
+    } else {
+      console.log(`ok    numbers' rule: ${schema} ${text}: ${found} finding(s)`);
+    }
+  }
+  return wrong;
+}
+
+module.exports = { numberFindings, numberSelfCheck, decimalsOf, significantDigits };
