@@ -4,13 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace parsons::axes {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-} // namespace
+namespace {} // namespace
 
 LeadScrewAxis::LeadScrewAxis(const AxisProfile& profile)
     : profile_(profile), nut_(profile.backlash_in, ScrewErrorTable(profile.lead_error_in)) {
@@ -301,7 +298,7 @@ double LeadScrewAxis::real_in_at(double t) const {
 double fixture_angle_deg(const AxisProfile& profile, double real_in, bool sine_plate) {
     const double ratio = (real_in - profile.level_in) / profile.pivot_to_screw_in;
     const double radians = sine_plate ? std::asin(std::clamp(ratio, -1.0, 1.0)) : std::atan(ratio);
-    return radians * 180.0 / kPi;
+    return radians * 180.0 / std::numbers::pi;
 }
 
 nlohmann::json LeadScrewAxis::save() const {

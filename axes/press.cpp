@@ -37,13 +37,13 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <string>
 
 namespace parsons::axes {
 namespace {
 
 constexpr double kDegPerRev = 360.0;
-constexpr double kPi = 3.14159265358979323846;
 
 // splitmix64 (Steele, Lea and Flood): a mixing function, so the variation of a revolution is a
 // pure function of seed and revolution, with no generator state to save.
@@ -319,7 +319,7 @@ int Press::revolution() const {
 double Press::die_height_in_at_angle(double a_deg) const {
     const double r = profile_.stroke_in / 2;
     const double L = profile_.rod_in;
-    const double a = a_deg * kPi / 180;
+    const double a = a_deg * std::numbers::pi / 180;
     const double s = std::sin(a);
     return r * std::cos(a) + std::sqrt(L * L - r * r * s * s) - (L - r);
 }
@@ -338,7 +338,8 @@ std::optional<std::pair<double, double>> Press::angles_at_height(double h_in) co
     const double L = profile_.rod_in;
     const double one_minus_c = (stroke - h_in) * (h_in + 2 * (L - r)); // both x 2 y r
     const double one_plus_c = h_in * (h_in + 2 * L);
-    const double down = 2 * std::atan2(std::sqrt(one_minus_c), std::sqrt(one_plus_c)) * 180 / kPi;
+    const double down =
+        2 * std::atan2(std::sqrt(one_minus_c), std::sqrt(one_plus_c)) * 180 / std::numbers::pi;
     // At the top (h = stroke) the way up ends at 360, the next top dead centre.
     return std::pair{down, kDegPerRev - down};
 }

@@ -333,7 +333,7 @@ struct PressNumber {
     double most;
     bool most_open;
 };
-constexpr double kNoEnd = HUGE_VAL;
+using profile_values::kNoEnd;
 const std::array<PressNumber, 11> kPressNumbers = {{
     {"strokes_per_min", &PressProfile::strokes_per_min, 0.1, false, 120, false},
     {"start_angle_deg", &PressProfile::start_angle_deg, 0, false, 360, true},

@@ -7,9 +7,13 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <limits>
 #include <string>
 
 namespace parsons::axes::profile_values {
+
+// The most of a range that has no upper end.
+inline constexpr double kNoEnd = std::numeric_limits<double>::infinity();
 
 // true or false.
 bool flag(const nlohmann::json& j, const std::string& key);

@@ -34,7 +34,7 @@ using profile_values::flag;
 using profile_values::number_in;
 using profile_values::whole_in;
 
-constexpr double kNoEnd = HUGE_VAL;
+using profile_values::kNoEnd;
 
 // The spindle's numbers: key, field, range (ends open or closed).
 struct SpindleNumber {

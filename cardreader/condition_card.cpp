@@ -11,8 +11,8 @@ using detail::kDigitRows;
 using detail::Problems;
 using detail::read_number;
 
-constexpr ColumnWord r0 = row_bit(Row::r0);
-constexpr ColumnWord r1 = row_bit(Row::r1);
+using detail::r0;
+using detail::r1;
 
 // The fields of one slot, in the order of the table above.
 const LayoutField& slot_field(const CardLayout& layout, int slot, FieldKind kind) {

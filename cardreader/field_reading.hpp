@@ -13,6 +13,8 @@
 namespace parsons::cardreader::detail {
 
 inline constexpr ColumnWord kDigitRows = 0x03FF; // rows 0 .. 9
+inline constexpr ColumnWord r0 = row_bit(Row::r0);
+inline constexpr ColumnWord r1 = row_bit(Row::r1);
 
 // "0 and 1": the rows punched in a column word, top to bottom.
 std::string join_rows(ColumnWord word);

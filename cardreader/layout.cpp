@@ -15,9 +15,9 @@ namespace {
 using detail::join_rows;
 using detail::kDigitRows;
 using detail::Problems;
+using detail::r0;
+using detail::r1;
 using detail::read_number;
-constexpr ColumnWord r0 = row_bit(Row::r0);
-constexpr ColumnWord r1 = row_bit(Row::r1);
 constexpr ColumnWord r2 = row_bit(Row::r2);
 constexpr ColumnWord r3 = row_bit(Row::r3);
 constexpr ColumnWord r12 = row_bit(Row::r12);

@@ -11,7 +11,7 @@ namespace {
 
 using detail::Problems;
 
-constexpr ColumnWord r0 = row_bit(Row::r0);
+using detail::r0;
 constexpr int kTravelFirstColumn = 16;
 constexpr int kTravelColumns = 5;
 

@@ -9,7 +9,7 @@
 namespace parsons::cardreader {
 namespace {
 
-int column_of(FieldKind kind, std::optional<Axis> axis = std::nullopt) {
+int sync_column(FieldKind kind, std::optional<Axis> axis = std::nullopt) {
     const LayoutField* f = fig8_layout().find_sync(kind, axis);
     return f ? f->first_column : 0;
 }
@@ -69,7 +69,7 @@ void SyncReview::sync_card(std::int64_t index, const CardOrders& orders,
                 ? fmt::format(" x {:g} with its variation and change of speed",
                               limits_.fastest_factor)
                 : std::string{};
-        found.push_back({index, column_of(FieldKind::travel_per_pulse, a), a,
+        found.push_back({index, sync_column(FieldKind::travel_per_pulse, a), a,
                          fmt::format("{} travel per pulse {} in needs {:.1f} in/min at the press's "
                                      "fastest ({:g} strokes a minute{}, {} pulses a degree); the "
                                      "sync drive follows at most {:g} in/min: at most {} in per "
@@ -104,7 +104,7 @@ void SyncReview::loop_card(std::int64_t index, const CardOrders& orders,
     }
     const int target = orders.sync.loop_to;
     if (numbers_.count(target) == 0) {
-        found.push_back({index, column_of(FieldKind::loop_target), std::nullopt,
+        found.push_back({index, sync_column(FieldKind::loop_target), std::nullopt,
                          fmt::format("a loop to card number {:04}, which the deck does not hold "
                                      "before this card (the loop goes back to a card already "
                                      "read)",
@@ -120,7 +120,7 @@ void SyncReview::motion_card(std::int64_t index, const CardOrders& orders,
     for (Axis a : kAxes) {
         const auto& f = pending_->order.travel_per_pulse.at(axis_index(a));
         if (f && orders.axis(a).check == 0) {
-            found.push_back({pending_->card, column_of(FieldKind::travel_per_pulse, a), a,
+            found.push_back({pending_->card, sync_column(FieldKind::travel_per_pulse, a), a,
                              fmt::format("speed sync on the {} axis ({} in per pulse), which "
                                          "motion card {} does not move (check 0.000)",
                                          axis_name(a), format_travel_per_pulse(*f), index)});

@@ -11,8 +11,8 @@ namespace {
 
 using detail::Problems;
 
-constexpr ColumnWord r0 = row_bit(Row::r0);
-constexpr ColumnWord r1 = row_bit(Row::r1);
+using detail::r0;
+using detail::r1;
 
 const LayoutField& tap_field(const CardLayout& layout, FieldKind kind) {
     if (const LayoutField* f = layout.find_tap(kind)) {

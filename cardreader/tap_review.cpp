@@ -12,7 +12,7 @@ namespace {
 
 constexpr double kHundredThousandths = 1e5;
 
-int column_of(FieldKind kind) {
+int tap_column(FieldKind kind) {
     const LayoutField* f = fig8_layout().find_tap(kind);
     return f ? f->first_column : 0;
 }
@@ -75,19 +75,19 @@ std::vector<TapFinding> TapReview::card(std::int64_t index, const CardOrders& or
     }
     const SpindleLimits::Head* head = limits_.head(t.tool);
     if (!head) {
-        found.push_back({index, column_of(FieldKind::tap_tool), t.axis,
+        found.push_back({index, tap_column(FieldKind::tap_tool), t.axis,
                          fmt::format("tap tool {}: no spindle head 31 of profile {} holds it "
                                      "(its heads hold tools {}): PC 130 has nothing to put on",
                                      t.tool, profile_, held_tools(limits_))});
     } else if (!head->tap) {
-        found.push_back({index, column_of(FieldKind::tap_tool), t.axis,
+        found.push_back({index, tap_column(FieldKind::tap_tool), t.axis,
                          fmt::format("tap tool {}: its spindle head 31 holds a cutter, not a tap "
                                      "(profile {}): a tap card feeds the axis one pitch a turn of "
                                      "the tool, which only a tap may be fed",
                                      t.tool, profile_)});
     }
     if (t.rpm > limits_.max_rpm + 1e-9) {
-        found.push_back({index, column_of(FieldKind::tap_rpm), t.axis,
+        found.push_back({index, tap_column(FieldKind::tap_rpm), t.axis,
                          fmt::format("tap speed S {} rev/min is above spindle motor 27's fastest, "
                                      "{:g} rev/min (max_rpm of profile {})",
                                      t.rpm, limits_.max_rpm, profile_)});
@@ -96,7 +96,7 @@ std::vector<TapFinding> TapReview::card(std::int64_t index, const CardOrders& or
         const double feed = SpindleLimits::feed_in_per_min(t.pitch, t.rpm, head->ratio);
         if (feed > limits_.drive_max_in_per_min + 1e-9) {
             found.push_back(
-                {index, column_of(FieldKind::tap_pitch), t.axis,
+                {index, tap_column(FieldKind::tap_pitch), t.axis,
                  fmt::format("tap pitch {} in at S {} rev/min through tool {}'s gear ratio "
                              "{:.4g} needs the {} axis to feed {:.2f} in/min; the follower drive "
                              "follows at most {:g} in/min: at most {} in per tool revolution at "
@@ -106,7 +106,7 @@ std::vector<TapFinding> TapReview::card(std::int64_t index, const CardOrders& or
                              format_pitch(limits_.max_pitch(t.rpm, head->ratio)))});
         } else if (feed < kLeastTapFeedInPerMin - 1e-9) {
             found.push_back(
-                {index, column_of(FieldKind::tap_pitch), t.axis,
+                {index, tap_column(FieldKind::tap_pitch), t.axis,
                  fmt::format("tap pitch {} in at S {} rev/min through tool {}'s gear ratio "
                              "{:.4g} feeds the {} axis {:.3f} in/min; the follower drive feeds "
                              "no slower than {:g} in/min: at least {} in per tool revolution at "

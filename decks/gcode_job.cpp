@@ -10,13 +10,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 namespace parsons::decks {
 namespace {
 
 using Eigen::Vector3d;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kCounterMaxIn = 9.999;
 // A move that arrives at a sharp turn runs fast to this far before it, and the rest at the
 // lowest speed (inches).
@@ -33,7 +33,7 @@ std::vector<Vector3d> stations_of(const GcodeMove& move, double sagitta) {
     }
     const double r = std::max((move.from.head<2>() - move.centre).norm(),
                               (move.to.head<2>() - move.centre).norm());
-    double step = kPi / 18;
+    double step = std::numbers::pi / 18;
     if (sagitta < r) {
         step = std::min(step, 2 * std::acos(1 - sagitta / r));
     }
@@ -201,7 +201,7 @@ void place_work_zero(const std::vector<Design>& design, const GcodeProgram& prog
 // A design point where the path turns sharper than the corner limit is a corner: the card
 // arriving there runs at the lowest speed (EP 0636958), over its last kCornerApproachIn.
 std::vector<char> corners_of(const std::vector<Design>& design, const GcodeJobOptions& o) {
-    const double limit = o.corner_limit_deg * kPi / 180;
+    const double limit = o.corner_limit_deg * std::numbers::pi / 180;
     std::vector<char> corner_at(design.size(), 0);
     for (std::size_t i = 1; o.corner_slowdown && i + 1 < design.size(); ++i) {
         const Vector3d d1 = design[i].at - design[i - 1].at;

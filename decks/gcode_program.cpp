@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <set>
 
@@ -18,7 +19,6 @@ using cardreader::DeckError;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMmPerInch = 25.4;
 // An arc whose end lies further than this from the circle through its start is refused
 // (inches): half a thousandth, the machine's own resolution.
@@ -479,21 +479,21 @@ private:
         double sweep = a1 - a0;
         if (cw) {
             while (sweep >= 0) {
-                sweep -= 2 * kPi;
+                sweep -= 2 * std::numbers::pi;
             }
             if ((b - a).norm() < 1e-9) {
-                sweep = -2 * kPi;
+                sweep = -2 * std::numbers::pi;
             }
         } else {
             while (sweep <= 0) {
-                sweep += 2 * kPi;
+                sweep += 2 * std::numbers::pi;
             }
             if ((b - a).norm() < 1e-9) {
-                sweep = 2 * kPi;
+                sweep = 2 * std::numbers::pi;
             }
         }
-        if (sweep <= -2 * kPi - 1e-12 || sweep >= 2 * kPi + 1e-12) {
-            sweep = cw ? -2 * kPi : 2 * kPi;
+        if (sweep <= -2 * std::numbers::pi - 1e-12 || sweep >= 2 * std::numbers::pi + 1e-12) {
+            sweep = cw ? -2 * std::numbers::pi : 2 * std::numbers::pi;
         }
         move.centre = centre;
         move.sweep_rad = sweep;

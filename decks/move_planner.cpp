@@ -1,4 +1,5 @@
 #include "decks/move_planner.hpp"
+#include "decks/units.hpp"
 
 #include "cardreader/deck_review.hpp"
 
@@ -12,10 +13,6 @@ namespace {
 
 constexpr double kHalfThousandth = 0.0005;
 constexpr int kMaxNudge = 60; // thousandths a slow-down may be moved to avoid a hazard
-
-double speed_in_per_s(const axes::AxisProfile& axis, int position) {
-    return axis.speed_in_per_min.at(static_cast<std::size_t>(position - 1)) / 60.0;
-}
 
 cardreader::Thousandths th(int v) {
     return static_cast<cardreader::Thousandths>(v);

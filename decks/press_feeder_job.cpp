@@ -7,12 +7,14 @@
 #include "cardreader/tap_review.hpp"
 #include "decks/move_planner.hpp"
 #include "decks/template_job.hpp"
+#include "decks/units.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <tuple>
 #include <utility>
@@ -26,12 +28,7 @@ using cardreader::CardOrders;
 
 constexpr cardreader::SequencePattern kFourth = 0b01000;
 constexpr cardreader::SequencePattern kFifth = 0b10000;
-constexpr double kMaxPosition_in = 9.999;
-constexpr double kPi = 3.14159265358979323846; // the counters' range, whole inches 0-9
-
-int th(double in) {
-    return static_cast<int>(std::lround(in * 1000.0));
-}
+constexpr double kMaxPosition_in = 9.999; // the counters' range, whole inches 0-9
 
 [[noreturn]] void refuse(const std::string& what) {
     throw JobError("gen press-feeder: " + what);
@@ -60,16 +57,16 @@ public:
         check_geometry();
         x_ = 0;
         y_ = 0;
-        move("home", th(o_.retracted_x_in), th(o_.press_y_in), std::nullopt, 0);
+        move("home", thousandths(o_.retracted_x_in), thousandths(o_.press_y_in), std::nullopt, 0);
         deck_.cycle_card = next_number();
-        move("carry-in", x_, th(o_.carry_in_y_in), std::nullopt, 0);
-        move("to the press", x_, th(o_.press_y_in), std::nullopt, 0);
-        move("insert", th(o_.insert_x_in), y_, o_.insert_angle_deg, o_.insert_deg);
-        move("retract", th(o_.retracted_x_in), y_, std::nullopt, o_.retract_deg);
-        move("take-out", th(o_.insert_x_in), y_, o_.takeout_angle_deg, o_.takeout_deg);
-        move("carry-out", th(o_.retracted_x_in), y_, std::nullopt, o_.carry_out_deg);
-        move("to the conveyor", x_, th(o_.carry_out_y_in), std::nullopt, 0);
-        move("return", x_, th(o_.press_y_in), std::nullopt, 0);
+        move("carry-in", x_, thousandths(o_.carry_in_y_in), std::nullopt, 0);
+        move("to the press", x_, thousandths(o_.press_y_in), std::nullopt, 0);
+        move("insert", thousandths(o_.insert_x_in), y_, o_.insert_angle_deg, o_.insert_deg);
+        move("retract", thousandths(o_.retracted_x_in), y_, std::nullopt, o_.retract_deg);
+        move("take-out", thousandths(o_.insert_x_in), y_, o_.takeout_angle_deg, o_.takeout_deg);
+        move("carry-out", thousandths(o_.retracted_x_in), y_, std::nullopt, o_.carry_out_deg);
+        move("to the conveyor", x_, thousandths(o_.carry_out_y_in), std::nullopt, 0);
+        move("return", x_, thousandths(o_.press_y_in), std::nullopt, 0);
         if (o_.cycles > 1) {
             CardOrders c = card();
             c.kind = cardreader::CardKind::sync;
@@ -103,14 +100,15 @@ private:
                                    name, v, kMaxPosition_in));
             }
         }
-        if (!(th(o.retracted_x_in) < th(o.zone_edge_x_in) &&
-              th(o.zone_edge_x_in) < th(o.insert_x_in))) {
+        if (!(thousandths(o.retracted_x_in) < thousandths(o.zone_edge_x_in) &&
+              thousandths(o.zone_edge_x_in) < thousandths(o.insert_x_in))) {
             refuse(fmt::format("--retracted-x {:.3f}, --zone-edge-x {:.3f}, --insert-x {:.3f}: "
                                "the feeder must stand outside the die zone when retracted and "
                                "inside it when inserting (retracted < zone edge < insert)",
                                o.retracted_x_in, o.zone_edge_x_in, o.insert_x_in));
         }
-        if (th(o.carry_in_y_in) == th(o.press_y_in) || th(o.carry_out_y_in) == th(o.press_y_in)) {
+        if (thousandths(o.carry_in_y_in) == thousandths(o.press_y_in) ||
+            thousandths(o.carry_out_y_in) == thousandths(o.press_y_in)) {
             refuse("--carry-in-y and --carry-out-y must differ from --press-y (the conveyors "
                    "stand beside the press line)");
         }
@@ -173,8 +171,9 @@ private:
         const double r = profile_.press.stroke_in / 2;
         const double l = profile_.press.rod_in;
         auto height = [&](double a) {
-            const double s = std::sin(a * kPi / 180);
-            return r * std::cos(a * kPi / 180) + std::sqrt(l * l - r * r * s * s) - (l - r);
+            const double s = std::sin(a * std::numbers::pi / 180);
+            return r * std::cos(a * std::numbers::pi / 180) + std::sqrt(l * l - r * r * s * s) -
+                   (l - r);
         };
         double lo = 0;
         double hi = 180;

@@ -6,6 +6,7 @@
 #include "decks/move_planner.hpp"
 #include "decks/number_text.hpp"
 #include "decks/template_job.hpp"
+#include "decks/units.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -29,11 +30,7 @@ constexpr int kMostHolesPerRow = 9;
 // Two cards a hole (a motion card, a tap card): the largest plate is far inside a deck.
 static_assert(2 * kMostRows * kMostHolesPerRow <= kMaxDeckCards, "every plate fits a deck");
 
-int th(double in) {
-    return static_cast<int>(std::lround(in * 1000.0));
-}
-
-// Whether th(in) lies in the counters' 0 .. 9999 (false for NaN and infinities).
+// Whether thousandths(in) lies in the counters' 0 .. 9999 (false for NaN and infinities).
 bool in_counters(double in) {
     const double thousandths = in * 1000.0;
     return thousandths > -0.5 && thousandths < 9999.5;
@@ -76,11 +73,11 @@ public:
                 const double y_in = o_.first_y_in + r * o_.spacing_y_in;
                 check_position("the holes' table positions (--first-x, --spacing-x)", x_in);
                 check_position("the holes' cross positions (--first-y, --spacing-y)", y_in);
-                places.emplace_back(th(x_in), th(y_in));
+                places.emplace_back(thousandths(x_in), thousandths(y_in));
                 rows.push_back(r);
             }
         }
-        const int start = th(o_.surface_in + o_.clearance_in);
+        const int start = thousandths(o_.surface_in + o_.clearance_in);
         for (std::size_t h = 0; h < places.size(); ++h) {
             move(places[h].first, places[h].second, start);
             tap(static_cast<int>(h) + 1, rows[h], places[h].first, places[h].second);
@@ -91,7 +88,7 @@ public:
 private:
     int next_number() const { return static_cast<int>(deck_.cards.size()) + 1; }
 
-    // Checked in inches, before th(): a position far outside would not fit an int.
+    // Checked in inches, before thousandths(): a position far outside would not fit an int.
     static void check_position(const std::string& what, double in) {
         if (!in_counters(in)) {
             refuse(fmt::format("{}: {} in is outside the counters' range, 0.000 to {:.3f} in", what,
@@ -119,7 +116,7 @@ private:
         }
         for (const auto& [name, v] :
              {std::pair{"--spacing-x", o.spacing_x_in}, {"--spacing-y", o.spacing_y_in}}) {
-            if (!(v * 1000.0 >= 0.5)) { // th(v) >= 1, and no overflow for a huge one
+            if (!(v * 1000.0 >= 0.5)) { // thousandths(v) >= 1, and no overflow for a huge one
                 refuse(fmt::format("{} {}: give the holes' spacing, at least 0.001 in", name, v));
             }
         }
@@ -131,21 +128,22 @@ private:
                                    name, v, kMaxPosition_in));
             }
         }
-        if (!(th(o.clearance_in) >= 1)) {
+        if (!(thousandths(o.clearance_in) >= 1)) {
             refuse(fmt::format("--clearance {}: give at least 0.001 in, so that motor 27 runs up "
                                "before the tap reaches the plate",
                                o.clearance_in));
         }
-        if (!(th(o.thread_depth_in) >= 1)) {
+        if (!(thousandths(o.thread_depth_in) >= 1)) {
             refuse(fmt::format("--thread-depth {}: give at least 0.001 in", o.thread_depth_in));
         }
-        if (th(o.surface_in) - th(o.thread_depth_in) < 0) {
+        if (thousandths(o.surface_in) - thousandths(o.thread_depth_in) < 0) {
             refuse(fmt::format("--surface {:.3f} and --thread-depth {:.3f}: the hole's bottom "
                                "would lie below the vertical's zero (the tap goes in counting "
                                "down): raise the surface",
                                o.surface_in, o.thread_depth_in));
         }
-        if (th(o.surface_in) + th(o.clearance_in) > th(kMaxPosition_in)) {
+        if (thousandths(o.surface_in) + thousandths(o.clearance_in) >
+            thousandths(kMaxPosition_in)) {
             refuse(fmt::format("--surface {:.3f} and --clearance {:.3f}: the tap's start, {:.3f} "
                                "in, is outside the counters' range (at most {:.3f} in)",
                                o.surface_in, o.clearance_in, o.surface_in + o.clearance_in,
@@ -274,8 +272,8 @@ private:
         c.tap.tool = tool;
         c.tap.axis = Axis::vertical;
         c.tap.motion = cardreader::Motion::reverse;
-        c.tap.depth =
-            static_cast<cardreader::Thousandths>(th(o_.clearance_in) + th(o_.thread_depth_in));
+        c.tap.depth = static_cast<cardreader::Thousandths>(thousandths(o_.clearance_in) +
+                                                           thousandths(o_.thread_depth_in));
         c.tap.pitch = pitch;
         c.tap.rpm = rpm;
         deck_.cards.push_back(c);
@@ -290,10 +288,10 @@ private:
         h.head_ratio = head.ratio;
         h.rpm = rpm;
         h.feed_in_per_min = feed;
-        h.surface_in = th(o_.surface_in) / 1000.0;
+        h.surface_in = thousandths(o_.surface_in) / 1000.0;
         h.start_in = z_ / 1000.0;
-        h.thread_depth_in = th(o_.thread_depth_in) / 1000.0;
-        h.clearance_in = th(o_.clearance_in) / 1000.0;
+        h.thread_depth_in = thousandths(o_.thread_depth_in) / 1000.0;
+        h.clearance_in = thousandths(o_.clearance_in) / 1000.0;
         h.tolerance_percent = o_.tolerance_percent;
         deck_.holes.push_back(h);
     }

@@ -3,6 +3,7 @@
 #include "decks/deck_limits.hpp"
 #include "decks/move_planner.hpp"
 #include "decks/number_text.hpp"
+#include "decks/units.hpp"
 
 #include <fmt/format.h>
 
@@ -10,12 +11,12 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 
 namespace parsons::decks {
 namespace {
 
 using Eigen::Vector2d;
-constexpr double kPi = 3.14159265358979323846;
 // The approach (make_template_deck) takes three cards from the reference zero to the first
 // station, or four when it goes over the top of the job.
 constexpr std::int64_t kLeastApproachCards = 3;
@@ -188,7 +189,8 @@ std::vector<double> stations_by_count(const TemplateOptions& o, const Track& tra
     std::vector<double> per_surface;
     for (int k = 0; k < o.stations; ++k) {
         const double f = static_cast<double>(k) / (o.stations - 1);
-        per_surface.push_back(o.spacing == Spacing::uniform ? f : (1 - std::cos(kPi * f)) / 2);
+        per_surface.push_back(
+            o.spacing == Spacing::uniform ? f : (1 - std::cos(std::numbers::pi * f)) / 2);
     }
     if (track.surface != Surface::both) {
         return per_surface;
@@ -248,10 +250,6 @@ std::vector<double> stations_by_scallop(const Airfoil& airfoil, const TemplateOp
     return ws;
 }
 
-int thousandths(double inches) {
-    return static_cast<int>(std::lround(inches * 1000));
-}
-
 cardreader::CardOrders idle_card(int number) {
     cardreader::CardOrders c;
     c.number = number % 10000;
@@ -298,7 +296,8 @@ void check_cutter_fits(const Airfoil& airfoil, const TemplateOptions& o, const T
     for (int k = 0; k <= kSamples; ++k) {
         const double f = static_cast<double>(k) / kSamples * track.end();
         const double whole = std::floor(std::min(f, track.end() - 1e-12));
-        pts.push_back(station_at(airfoil, o, track, whole + (1 - std::cos(kPi * (f - whole))) / 2));
+        pts.push_back(station_at(airfoil, o, track,
+                                 whole + (1 - std::cos(std::numbers::pi * (f - whole))) / 2));
     }
     double tightest = std::numeric_limits<double>::infinity(); // no hollow: any cutter fits
     Vector2d where = Vector2d::Zero();
@@ -441,7 +440,7 @@ TemplateDeck make_template_deck(const Airfoil& airfoil, const TemplateOptions& o
     for (const Target& t : approach) {
         maker.move(t.x, t.y, t.table_first, false);
     }
-    const double limit = o.corner_limit_deg * kPi / 180;
+    const double limit = o.corner_limit_deg * std::numbers::pi / 180;
     for (std::size_t i = 1; i < deck.stations.size(); ++i) {
         const Station& a = deck.stations[i - 1];
         const Station& b = deck.stations[i];
@@ -474,7 +473,7 @@ DesignSamples design_samples(const Airfoil& airfoil, const TemplateOptions& o,
         const double f = static_cast<double>(k) / per_surface;
         const double whole = std::floor(std::min(f, track.end() - 1e-12));
         const double frac = f - whole;
-        const double w = whole + (1 - std::cos(kPi * frac)) / 2;
+        const double w = whole + (1 - std::cos(std::numbers::pi * frac)) / 2;
         const Station s = station_at(airfoil, o, track, std::min(w, track.end()));
         out.points.push_back(s.work + work_zero_in);
         out.toward_cutter.push_back(s.toward_cutter);

@@ -2,6 +2,7 @@
 
 #include "decks/deck_limits.hpp"
 #include "decks/move_planner.hpp"
+#include "decks/units.hpp"
 
 #include <fmt/format.h>
 
@@ -19,10 +20,6 @@ using Eigen::Vector2d;
 
 constexpr cardreader::SequencePattern kFirst = 0b01000; // sequence position 4
 constexpr cardreader::SequencePattern kLast = 0b10000;  // position 5: the cut (col. 11)
-
-int thousandths(double inches) {
-    return static_cast<int>(std::lround(inches * 1000));
-}
 
 // One card of a pass, as a target in the common frame: which axis goes first, and whether a
 // corner slowed it.
@@ -146,10 +143,6 @@ void check_card_count(const TwoToolOptions& o, const std::vector<Move>& pass1,
                            false,
                            fmt::format("pass 1 {}, the tool change {}, pass 2 {}",
                                        count_text(first), change, count_text(second)));
-}
-
-double speed_in_per_s(const axes::AxisProfile& axis, int position) {
-    return axis.speed_in_per_min.at(static_cast<std::size_t>(position - 1)) / 60.0;
 }
 
 // When the axis passes each thousandth of its move (index: thousandths from the start; the

@@ -5,6 +5,7 @@
 #include "decks/deck_limits.hpp"
 #include "decks/move_planner.hpp"
 #include "decks/number_text.hpp"
+#include "decks/units.hpp"
 
 #include <Eigen/Geometry>
 #include <fmt/format.h>
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <numbers>
 #include <tuple>
 
 namespace parsons::decks {
@@ -20,7 +22,6 @@ namespace {
 
 using Eigen::Vector2d;
 using Eigen::Vector3d;
-constexpr double kPi = 3.14159265358979323846;
 // Two cards a station (wing_job.hpp); by scallop, at most this many stations.
 constexpr std::int64_t kCardsPerStation = 2;
 constexpr int kMostScallopStations = 400;
@@ -35,7 +36,7 @@ struct Section {
 
 Section section_at(const WingOptions& o, double y) {
     return {o.root_chord_in * (1 + (o.taper - 1) * y / o.span_in),
-            y * std::tan(o.sweep_deg * kPi / 180), y};
+            y * std::tan(o.sweep_deg * std::numbers::pi / 180), y};
 }
 
 Vector3d point_on(const Airfoil& a, const Section& s, double u) {
@@ -77,7 +78,7 @@ std::vector<double> stations_u(int n, Spacing spacing) {
     std::vector<double> us;
     for (int k = 0; k < n; ++k) {
         const double f = static_cast<double>(k) / (n - 1);
-        us.push_back(spacing == Spacing::uniform ? f : (1 - std::cos(kPi * f)) / 2);
+        us.push_back(spacing == Spacing::uniform ? f : (1 - std::cos(std::numbers::pi * f)) / 2);
     }
     return us;
 }
@@ -101,10 +102,6 @@ SectionProof section_proof(const Airfoil& a, const WingOptions& o, double y,
         sp.max_gouge_in = std::max(sp.max_gouge_in, -dev);
     }
     return sp;
-}
-
-int th(double inches) {
-    return static_cast<int>(std::lround(inches * 1000));
 }
 
 // Planned deviation: the ideal lines, each run past both ends of the span.
@@ -204,8 +201,9 @@ WingDeck make_wing_deck(const Airfoil& airfoil, const WingOptions& o,
     std::vector<Setting> settings;
     for (const WingStation& st : deck.stations) {
         Setting s;
-        s.tilt_screw = th(tilt.level_in + tilt.pivot_to_screw_in * std::sin(st.tilt_rad));
-        s.swivel_screw = th(swivel.level_in + swivel.pivot_to_screw_in * std::tan(st.swivel_rad));
+        s.tilt_screw = thousandths(tilt.level_in + tilt.pivot_to_screw_in * std::sin(st.tilt_rad));
+        s.swivel_screw =
+            thousandths(swivel.level_in + swivel.pivot_to_screw_in * std::tan(st.swivel_rad));
         // The line is placed for the angles the quantised screws really make.
         const double tilt_q = std::asin(std::clamp(
             (s.tilt_screw / 1000.0 - tilt.level_in) / tilt.pivot_to_screw_in, -1.0, 1.0));
@@ -259,7 +257,7 @@ WingDeck make_wing_deck(const Airfoil& airfoil, const WingOptions& o,
                     "wing: at chord station {:.3f} the fixture must {} {:.2f} deg, which puts its "
                     "screw at {:.3f} in, outside the counters' 0.000 .. 9.999 in (level at "
                     "{:.3f} in, arm {:.1f} in): use less sweep or taper, or a shorter span",
-                    st.u, what, angle * 180 / kPi, screw / 1000.0, axis->level_in,
+                    st.u, what, angle * 180 / std::numbers::pi, screw / 1000.0, axis->level_in,
                     axis->pivot_to_screw_in));
             }
         }
@@ -280,12 +278,12 @@ WingDeck make_wing_deck(const Airfoil& airfoil, const WingOptions& o,
         deck.cards.push_back(c);
         at = to;
     };
-    const int z_top = th(top + deck.zero.z());
+    const int z_top = thousandths(top + deck.zero.z());
     for (const Setting& s : settings) {
-        const int cross = th((s.root.x() + s.tip.x()) / 2 + deck.zero.x());
-        const int z = th((s.root.z() + s.tip.z()) / 2 + deck.zero.z());
-        const int start = th(s.root.y() - overrun + deck.zero.y());
-        const int end = th(s.tip.y() + overrun + deck.zero.y());
+        const int cross = thousandths((s.root.x() + s.tip.x()) / 2 + deck.zero.x());
+        const int z = thousandths((s.root.z() + s.tip.z()) / 2 + deck.zero.z());
+        const int start = thousandths(s.root.y() - overrun + deck.zero.y());
+        const int end = thousandths(s.tip.y() + overrun + deck.zero.y());
         //     table  cross  vertical  swivel  tilt
         card({start, cross, z_top, s.swivel_screw, s.tilt_screw}, {4, 3, 0, 1, 2});
         card({end, cross, z, s.swivel_screw, s.tilt_screw}, {4, 0, 3, 1, 2});

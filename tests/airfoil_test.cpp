@@ -77,7 +77,7 @@ double camber_station(const Airfoil& foil, Side side, double target) {
     return 0.5 * (lo + hi);
 }
 
-std::string read_error(const std::string& path) {
+std::string airfoil_error(const std::string& path) {
     try {
         read_dat(path);
     } catch (const DeckError& e) {
@@ -355,7 +355,7 @@ TEST_CASE("Airfoil: bad coordinate files name the file and the line", "[airfoil]
     parsons::test::TempDir dir;
     const auto bad = [&](const std::string& file, const std::string& bytes) {
         parsons::test::write_bytes(dir.path(file), bytes);
-        return read_error(dir.str(file));
+        return airfoil_error(dir.str(file));
     };
     const std::string good = "1.0 0.001\r\n0.5 0.05\r\n0.2 0.06\r\n0.1 0.04\r\n0.0 0.0\r\n"
                              "0.1 -0.03\r\n0.2 -0.04\r\n0.5 -0.03\r\n1.0 -0.001\r\n";
@@ -384,7 +384,7 @@ TEST_CASE("Airfoil: bad coordinate files name the file and the line", "[airfoil]
           dir.str("back.dat") +
               ":3: the upper surface turns back (x = 0.5 after 0.6 from the leading edge); x "
               "must increase from the leading edge to the trailing edge");
-    CHECK(read_error(dir.str("missing.dat")) ==
+    CHECK(airfoil_error(dir.str("missing.dat")) ==
           dir.str("missing.dat") + ": cannot open the airfoil file");
     // Found by the airfoil fuzzer: a y so large that the chord-length spline overflowed.
     CHECK(bad("tall.dat", "TALL\n1.0 0.001\n0.5 -3.5e138\n" + good) ==

@@ -1,20 +1,15 @@
 #include "cardreader/card_svg.hpp"
 
+#include "tests/test_support.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <regex>
 
 using namespace parsons::cardreader;
+using parsons::test::count;
 
 namespace {
-
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto pos = text.find(what); pos != std::string::npos; pos = text.find(what, pos + 1)) {
-        ++n;
-    }
-    return n;
-}
 
 Card sample_card() {
     Card card;

@@ -59,7 +59,7 @@ std::string write_deck(const std::vector<Card>& cards) {
     return out.str();
 }
 
-std::string read_error(const std::string& bytes) {
+std::string cbn_error(const std::string& bytes) {
     return parsons::test::read_error(bytes, DeckFormat::cbn, "deck.cbn");
 }
 
@@ -108,22 +108,22 @@ TEST_CASE("Column binary: a truncated card names the card and byte where the fil
           "[cbn][bad-input]") {
     std::string bytes = write_deck({Card{}, Card{}});
     bytes.resize(260);
-    CHECK(read_error(bytes) == "deck.cbn: card 2, byte 261 (offset 0x104): truncated card: the "
-                               "file ends after 100 of its 160 bytes");
+    CHECK(cbn_error(bytes) == "deck.cbn: card 2, byte 261 (offset 0x104): truncated card: the "
+                              "file ends after 100 of its 160 bytes");
 }
 
 TEST_CASE("Column binary: a card without the card-start flag is reported, not read",
           "[cbn][bad-input]") {
     std::string bytes = write_deck({Card{}, Card{}});
     bytes[160] = static_cast<char>(0x40);
-    CHECK(read_error(bytes) == "deck.cbn: card 2, byte 161 (offset 0xa0): no card-start mark: bit "
-                               "7 of the first byte of every card must be set");
+    CHECK(cbn_error(bytes) == "deck.cbn: card 2, byte 161 (offset 0xa0): no card-start mark: bit "
+                              "7 of the first byte of every card must be set");
 }
 
 TEST_CASE("Column binary: a card-start flag inside a card is reported", "[cbn][bad-input]") {
     std::string bytes = write_deck({Card{}});
     bytes[21] = static_cast<char>(0xC0);
-    CHECK(read_error(bytes) ==
+    CHECK(cbn_error(bytes) ==
           "deck.cbn: card 1, byte 22 (offset 0x15): card-start mark (bit 7) inside the card at "
           "column 11: the card is short or the file is not column binary");
 }
@@ -131,12 +131,12 @@ TEST_CASE("Column binary: a card-start flag inside a card is reported", "[cbn][b
 TEST_CASE("Column binary: a parity error names card, byte and column", "[cbn][bad-input]") {
     std::string bytes = write_deck({Card{}});
     bytes[5] = static_cast<char>(0x00); // column 3, rows 4-9: even parity
-    CHECK(read_error(bytes) == "deck.cbn: card 1, byte 6 (offset 0x5): parity error in column 3 "
-                               "(byte 0x00 has even parity; column binary uses odd parity)");
+    CHECK(cbn_error(bytes) == "deck.cbn: card 1, byte 6 (offset 0x5): parity error in column 3 "
+                              "(byte 0x00 has even parity; column binary uses odd parity)");
 }
 
 TEST_CASE("Column binary: an empty file is an error, not an empty deck", "[cbn][bad-input]") {
-    CHECK(read_error("") == "deck.cbn: empty file: the deck has no cards");
+    CHECK(cbn_error("") == "deck.cbn: empty file: the deck has no cards");
 }
 
 // The kind of the .bin low-bit check (issue 11, item 7): no single wrong hole is read silently.
@@ -150,7 +150,7 @@ TEST_CASE("Column binary: any one bit flipped in any byte of a card is refused, 
             std::string bytes = good;
             bytes.at(160 + i) = static_cast<char>(bytes.at(160 + i) ^ (1 << bit));
             INFO("byte " << i << ", bit " << bit);
-            const std::string error = read_error(bytes);
+            const std::string error = cbn_error(bytes);
             CHECK(
                 error.find(fmt::format("deck.cbn: card 2, byte {} (offset {:#x}): parity error in "
                                        "column {} ",

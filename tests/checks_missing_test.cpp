@@ -17,8 +17,6 @@ using namespace parsons::test;
 
 namespace {
 
-const std::string kSample = "decks/samples/patent-example.csv";
-
 // The sample deck as .bin with one extra hole: card `card`, column `column`, row 5.
 std::string sample_with_row5(TempDir& dir, long card, int column) {
     REQUIRE(

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <sstream>
 
+using parsons::test::kSample;
 using parsons::test::q;
 using parsons::test::read_bytes;
 using parsons::test::run_parsons;
@@ -14,8 +15,6 @@ using parsons::test::TempDir;
 using parsons::test::write_bytes;
 
 namespace {
-
-const std::string kSample = "decks/samples/patent-example.csv";
 
 std::string without_comments(const std::string& listing) {
     std::istringstream in(listing);

@@ -2,6 +2,7 @@
 // card of them, and a deck punched from orders.
 #pragma once
 
+#include "tests/card_support.hpp"
 #include "tests/machine_support.hpp"
 
 #include "cardreader/layout.hpp"
@@ -30,16 +31,6 @@ condition_card(int number, std::initializer_list<cardreader::ConditionOrder> con
         c.conditions.at(static_cast<std::size_t>(c.condition_count++)) = x;
     }
     return c;
-}
-
-inline std::vector<cardreader::Card> punched(const std::vector<cardreader::CardOrders>& cards) {
-    std::vector<cardreader::Card> out;
-    for (const auto& o : cards) {
-        const auto e = cardreader::encode(o, cardreader::fig8_layout());
-        REQUIRE(e);
-        out.push_back(e.card);
-    }
-    return out;
 }
 
 // A motion card: the table from `from` to `to` at speed 3, the other axes idle at 0; column 1

@@ -1,6 +1,8 @@
 #include "decks/cut_proof.hpp"
 #include "decks/cut_svg.hpp"
 
+#include "tests/test_support.hpp"
+
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
@@ -9,30 +11,31 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 using namespace parsons::decks;
 using Eigen::Vector2d;
+using parsons::test::count;
 
 namespace {
 
 constexpr double kStep = 0.001; // one impulse of the 0.001-inch commutator
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The path as the machine records it: one point per 0.001-inch impulse, one axis at a time
 // (the table moves x, then the cross slide moves y).
-class Recorder {
+class ImpulseRecorder {
 public:
-    explicit Recorder(Vector2d start) : path_{start} {}
-    Recorder& x_to(double x) { return move(0, x); }
-    Recorder& y_to(double y) { return move(1, y); }
+    explicit ImpulseRecorder(Vector2d start) : path_{start} {}
+    ImpulseRecorder& x_to(double x) { return move(0, x); }
+    ImpulseRecorder& y_to(double y) { return move(1, y); }
     const std::vector<Vector2d>& path() const { return path_; }
 
 private:
-    Recorder& move(int axis, double target) {
+    ImpulseRecorder& move(int axis, double target) {
         Vector2d p = path_.back();
         const long steps = std::lround((target - p[axis]) / kStep);
         const double dir = steps < 0 ? -1.0 : 1.0;
@@ -60,19 +63,11 @@ DesignContour flat_design(double x0, double x1, double spacing) {
 
 // Plunges to centres (k delta, R), k = 0..cuts-1, lifting to `lift` between them.
 std::vector<Vector2d> plunge_path(double r, double delta, int cuts, double lift) {
-    Recorder rec(Vector2d(0, lift));
+    ImpulseRecorder rec(Vector2d(0, lift));
     for (int k = 0; k < cuts; ++k) {
         rec.x_to(k * delta).y_to(r).y_to(lift);
     }
     return rec.path();
-}
-
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto pos = text.find(what); pos != std::string::npos; pos = text.find(what, pos + 1)) {
-        ++n;
-    }
-    return n;
 }
 
 // True when every element opened is closed in order (self-closing tags allowed).
@@ -158,8 +153,13 @@ TEST_CASE("Cut proof: plunges at spacing delta leave scallops R - sqrt(R^2 - del
 
 TEST_CASE("Cut proof: a path that dips 0.003 in below the offset gouges 0.003 in", "[cut]") {
     const double r = 0.25;
-    const auto path =
-        Recorder(Vector2d(-0.5, r)).x_to(1.0).y_to(r - 0.003).x_to(1.5).y_to(r).x_to(3.0).path();
+    const auto path = ImpulseRecorder(Vector2d(-0.5, r))
+                          .x_to(1.0)
+                          .y_to(r - 0.003)
+                          .x_to(1.5)
+                          .y_to(r)
+                          .x_to(3.0)
+                          .path();
     const DesignContour design = flat_design(0, 2.5, 0.01);
     const CutProof proof = prove_cut(path, r, design, 2 * r);
 
@@ -173,7 +173,7 @@ TEST_CASE("Cut proof: a convex circle cut from centres on radius rho + R leaves 
           "[cut]") {
     const double rho = 2.0;
     const double r = 0.25;
-    const double alpha = 5.0 * kPi / 180; // angle between stations
+    const double alpha = 5.0 * std::numbers::pi / 180; // angle between stations
     const int stations = 19;
     const auto at = [](double radius, double angle) {
         return Vector2d(radius * std::cos(angle), radius * std::sin(angle));
@@ -225,7 +225,7 @@ TEST_CASE("Cut proof: design points out of the cutter's reach are not machined (
 
 TEST_CASE("Cut proof: simplify_path keeps every corner and drops collinear points", "[cut]") {
     const auto staircase =
-        Recorder(Vector2d(0, 0)).x_to(0.010).y_to(0.003).x_to(0.020).y_to(0.001).path();
+        ImpulseRecorder(Vector2d(0, 0)).x_to(0.010).y_to(0.003).x_to(0.020).y_to(0.001).path();
     const auto runs = simplify_path(staircase, 1e-6);
     const std::vector<Vector2d> corners{
         {0, 0}, {0.010, 0}, {0.010, 0.003}, {0.020, 0.003}, {0.020, 0.001}};
@@ -242,7 +242,7 @@ TEST_CASE("Cut proof: simplify_path keeps every corner and drops collinear point
 TEST_CASE("Cut proof: the picture is one well-formed SVG that states the worst numbers",
           "[cut][svg]") {
     const double r = 0.25;
-    const auto path = Recorder(Vector2d(-0.5, 2 * r))
+    const auto path = ImpulseRecorder(Vector2d(-0.5, 2 * r))
                           .y_to(r)
                           .x_to(0.5)
                           .y_to(r - 0.002)
@@ -274,9 +274,10 @@ TEST_CASE("Cut proof: five passes over a steep bump, 10^5 impulses against 5000 
     // 0.2, 0.1, 0.05, 0.02 and 0 in of stock, each from centres offset along the normal at
     // stations 0.01 in apart, joined by 0.001-in staircases that hug the straight line.
     const double r = 0.25;
-    const auto surface = [](double x) { return 3.0 * std::sin(kPi * x / 10); };
+    const auto surface = [](double x) { return 3.0 * std::sin(std::numbers::pi * x / 10); };
     const auto normal = [](double x) {
-        return Vector2d(-0.3 * kPi * std::cos(kPi * x / 10), 1).normalized();
+        return Vector2d(-0.3 * std::numbers::pi * std::cos(std::numbers::pi * x / 10), 1)
+            .normalized();
     };
     DesignContour design;
     for (int k = 0; k <= 5000; ++k) {
@@ -289,7 +290,7 @@ TEST_CASE("Cut proof: five passes over a steep bump, 10^5 impulses against 5000 
         const Vector2d n = normal(x);
         return Vector2d(x + (r + stock) * n.x(), surface(x) + (r + stock) * n.y());
     };
-    Recorder rec(station(0, 0.2));
+    ImpulseRecorder rec(station(0, 0.2));
     for (double stock : {0.2, 0.1, 0.05, 0.02, 0.0}) {
         rec.y_to(std::round(station(0, stock).y() / kStep) * kStep);
         for (int s = (stock == 0.2 ? 1 : 0); s <= 1000; ++s) {
@@ -332,7 +333,7 @@ TEST_CASE("Cut proof: agrees with brute-force bisection on a raw staircase recor
         const Vector2d c = Vector2d(x, 0.6 * x) + (r - push) * n;
         return Vector2d(std::round(c.x() / kStep) * kStep, std::round(c.y() / kStep) * kStep);
     };
-    Recorder rec(station(0));
+    ImpulseRecorder rec(station(0));
     for (int s = 1; s <= 30; ++s) {
         rec.y_to(station(s).y()).x_to(station(s).x());
     }
@@ -381,7 +382,7 @@ TEST_CASE("Cut proof: a cut right through a thin part gouges the part's thicknes
         design.normals.emplace_back(0, -1);
     }
     const double r = 0.25;
-    const auto path = Recorder(Vector2d(0.5, 1)).y_to(-1).path();
+    const auto path = ImpulseRecorder(Vector2d(0.5, 1)).y_to(-1).path();
     const CutProof proof = prove_cut(path, r, design, 2 * r);
     CHECK(proof.max_gouge_in == Approx(0.01).margin(1e-9));
     CHECK(proof.deviation_in[50] == Approx(-0.01).margin(1e-9));  // upper face, in the slot

@@ -8,8 +8,8 @@ using namespace parsons::cardreader;
 
 namespace {
 
-AxisOrder order(Motion m, int speed, std::optional<Thousandths> s1, std::optional<Thousandths> s2,
-                Thousandths stop, Thousandths check) {
+AxisOrder review_order(Motion m, int speed, std::optional<Thousandths> s1,
+                       std::optional<Thousandths> s2, Thousandths stop, Thousandths check) {
     AxisOrder o;
     o.motion = m;
     o.start_speed = speed;
@@ -24,7 +24,7 @@ CardOrders card_with_table(int number, const AxisOrder& table) {
     CardOrders c;
     c.number = number;
     for (Axis a : kAxes) {
-        c.axis(a) = order(Motion::forward, 3, std::nullopt, std::nullopt, 0, 0);
+        c.axis(a) = review_order(Motion::forward, 3, std::nullopt, std::nullopt, 0, 0);
         c.axis(a).sequence = static_cast<SequencePattern>(1U << axis_index(a)); // 1, 2 .. 5
     }
     c.axis(Axis::table) = table;
@@ -36,14 +36,14 @@ CardOrders card_with_table(int number, const AxisOrder& table) {
 TEST_CASE("Shared banks: 8.785 / 8.885 / 8.985 compare equal only at those three numbers "
           "(Fig. 12)",
           "[review][fig12]") {
-    auto o = order(Motion::forward, 1, 8785, 8885, 8985, 8985);
+    auto o = review_order(Motion::forward, 1, 8785, 8885, 8985, 8985);
     CHECK(shared_bank_matches(o) == std::vector<Thousandths>{8785, 8885, 8985});
     CHECK(spurious_matches_on_path(o, 0).empty());
 }
 
 TEST_CASE("Shared banks: stop 9.050 with slow-downs 8.850, 8.950 also matches 8.050 on the way",
           "[review][fig12]") {
-    auto o = order(Motion::forward, 1, 8850, 8950, 9050, 9050);
+    auto o = review_order(Motion::forward, 1, 8850, 8950, 9050, 9050);
     const auto spurious = spurious_matches_on_path(o, 0);
     REQUIRE_FALSE(spurious.empty());
     CHECK(spurious.front() == 8050);
@@ -58,13 +58,15 @@ TEST_CASE("Shared banks: stop 9.050 with slow-downs 8.850, 8.950 also matches 8.
 TEST_CASE("Review: advice on slow-downs that do not match the start speed, or lie past the stop",
           "[review]") {
     DeckReviewer reviewer;
-    auto notes = reviewer.review(card_with_table(1, order(Motion::forward, 1, 700, {}, 900, 900)));
+    auto notes =
+        reviewer.review(card_with_table(1, review_order(Motion::forward, 1, 700, {}, 900, 900)));
     REQUIRE(notes.size() == 1);
     CHECK(notes[0].message == "start speed 1 with 1 slow-down(s) punched: a card punches 3 - start "
                               "speed = 2 of them, one for each step of speed switch 236 to speed "
                               "3");
     DeckReviewer second;
-    notes = second.review(card_with_table(1, order(Motion::forward, 2, 1100, {}, 1000, 1000)));
+    notes =
+        second.review(card_with_table(1, review_order(Motion::forward, 2, 1100, {}, 1000, 1000)));
     REQUIRE(notes.size() == 1);
     CHECK(notes[0].message ==
           "first slow-down 1.100 is not on the way from the stop before, 0.000, "
@@ -74,7 +76,7 @@ TEST_CASE("Review: advice on slow-downs that do not match the start speed, or li
 TEST_CASE("Shared banks: a match at the starting position counts: the comparer conducts there",
           "[review][fig12]") {
     // Slow-down 0.500, stop 1.000: banks hold {0,1} {5,0} {0} {0}, so 0.000 also matches.
-    auto o = order(Motion::forward, 2, 500, {}, 1000, 1000);
+    auto o = review_order(Motion::forward, 2, 500, {}, 1000, 1000);
     CHECK(spurious_matches_on_path(o, 0) == std::vector<Thousandths>{0});
     CHECK(spurious_matches_on_path(o, 200).empty());
 }
@@ -94,13 +96,15 @@ TEST_CASE("Review: travel is counted modulo 10 inches in the direction of motion
 TEST_CASE("Review: a correct move across 0.000 / 9.999 is silent, both ways", "[review]") {
     DeckReviewer reviewer;
     // Reverse from 0.000 through 9.999 to 9.900, then forward through 0.000 to 0.100.
-    CHECK(
-        reviewer.review(card_with_table(1, order(Motion::reverse, 3, {}, {}, 9900, 100))).empty());
-    CHECK(reviewer.review(card_with_table(2, order(Motion::forward, 3, {}, {}, 100, 200))).empty());
+    CHECK(reviewer.review(card_with_table(1, review_order(Motion::reverse, 3, {}, {}, 9900, 100)))
+              .empty());
+    CHECK(reviewer.review(card_with_table(2, review_order(Motion::forward, 3, {}, {}, 100, 200)))
+              .empty());
     // With slow-downs on the far side of zero: reverse from 0.100 past 9.980 (0.120 on) and
     // 9.950 (0.150 on) to the stop 9.900 (0.200 on).
-    CHECK(reviewer.review(card_with_table(3, order(Motion::reverse, 1, 9980, 9950, 9900, 200)))
-              .empty());
+    CHECK(
+        reviewer.review(card_with_table(3, review_order(Motion::reverse, 1, 9980, 9950, 9900, 200)))
+            .empty());
 }
 
 TEST_CASE("Review: a slow-down on the stop itself is not reached before the stop, one thousandth "
@@ -118,14 +122,14 @@ TEST_CASE("Review: a slow-down on the stop itself is not reached before the stop
         return found;
     };
     // Counting up from 0.000 to 1.000: a second slow-down at 1.000 is the stop's own number.
-    CHECK(off_the_way(order(Motion::forward, 1, 900, 1000, 1000, 1000)) ==
+    CHECK(off_the_way(review_order(Motion::forward, 1, 900, 1000, 1000, 1000)) ==
           std::vector<std::string>{"second slow-down 1.000 is not on the way from the stop "
                                    "before, 0.000, to the stop 1.000"});
-    CHECK(off_the_way(order(Motion::forward, 1, 900, 999, 1000, 1000)).empty());
+    CHECK(off_the_way(review_order(Motion::forward, 1, 900, 999, 1000, 1000)).empty());
     // Counting down through the wrap, from 0.000 to 9.000: slow-down 9.000 is the stop, 9.001
     // comes before it.
-    CHECK(off_the_way(order(Motion::reverse, 2, 9000, {}, 9000, 1000)) ==
+    CHECK(off_the_way(review_order(Motion::reverse, 2, 9000, {}, 9000, 1000)) ==
           std::vector<std::string>{"first slow-down 9.000 is not on the way from the stop "
                                    "before, 0.000, to the stop 9.000"});
-    CHECK(off_the_way(order(Motion::reverse, 2, 9001, {}, 9000, 1000)).empty());
+    CHECK(off_the_way(review_order(Motion::reverse, 2, 9001, {}, 9000, 1000)).empty());
 }

@@ -22,7 +22,8 @@ using parsons::test::write_bytes;
 
 namespace {
 
-const std::string kSample = std::string(PARSONS_SOURCE_DIR) + "/decks/samples/patent-example.csv";
+const std::string kSampleDeck =
+    std::string(PARSONS_SOURCE_DIR) + "/decks/samples/patent-example.csv";
 
 // The codes listed under "Exit codes:" in a help text.
 std::set<int> listed_codes(const std::string& help) {
@@ -89,7 +90,7 @@ TEST_CASE("Exit codes: each command returns 0 when it did its work and 2 on inpu
     TempDir dir;
     const std::string missing = q(dir.str("missing.cbn"));
     const std::string deck = q(dir.str("deck.cbn"));
-    REQUIRE(run_parsons("punch " + q(kSample) + " -o " + deck).exit_code == 0);
+    REQUIRE(run_parsons("punch " + q(kSampleDeck) + " -o " + deck).exit_code == 0);
     const std::map<std::string, std::string> ok = {
         {"run", "run -q " + deck},
         {"check", "check " + deck},

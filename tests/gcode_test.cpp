@@ -15,6 +15,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <numbers>
 #include <regex>
 #include <sstream>
 
@@ -23,8 +24,6 @@ using Catch::Matchers::Contains;
 using Eigen::Vector3d;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::string refusal(const std::string& text) {
     try {
@@ -177,29 +176,29 @@ TEST_CASE("G-code: arcs by centre and by radius, both senses, full circles and h
     SECTION("I J: a clockwise quarter is -90 degrees, the counter-clockwise way round 270") {
         const auto cw = read("G20 G0 X1\nG2 X0 Y-1 I-1 J0\n").moves.at(1);
         CHECK(cw.centre.isApprox(Eigen::Vector2d(0, 0)));
-        CHECK(cw.sweep_rad == Approx(-kPi / 2));
+        CHECK(cw.sweep_rad == Approx(-std::numbers::pi / 2));
         const auto ccw = read("G20 G0 X1\nG3 X0 Y-1 I-1 J0\n").moves.at(1);
-        CHECK(ccw.sweep_rad == Approx(3 * kPi / 2));
+        CHECK(ccw.sweep_rad == Approx(3 * std::numbers::pi / 2));
         CHECK(decks::point_on(ccw, 1.0 / 3).isApprox(Vector3d(0, 1, 0)));
     }
     SECTION("R positive: the short way; negative: the long way; the centre on the right side") {
         const auto g2 = read("G20 G2 X1 Y1 R1\n").moves.at(0);
         CHECK(g2.centre.isApprox(Eigen::Vector2d(1, 0)));
-        CHECK(g2.sweep_rad == Approx(-kPi / 2));
+        CHECK(g2.sweep_rad == Approx(-std::numbers::pi / 2));
         const auto g3 = read("G20 G3 X1 Y1 R1\n").moves.at(0);
         CHECK(g3.centre.isApprox(Eigen::Vector2d(0, 1)));
-        CHECK(g3.sweep_rad == Approx(kPi / 2));
+        CHECK(g3.sweep_rad == Approx(std::numbers::pi / 2));
         const auto g2long = read("G20 G2 X1 Y1 R-1\n").moves.at(0);
         CHECK(g2long.centre.isApprox(Eigen::Vector2d(0, 1)));
-        CHECK(g2long.sweep_rad == Approx(-3 * kPi / 2));
+        CHECK(g2long.sweep_rad == Approx(-3 * std::numbers::pi / 2));
     }
     SECTION("an arc ending where it starts is a full circle; a Z word makes a helix") {
         const auto full = read("G20 G0 X1\nG2 X1 Y0 Z-0.5 I-1 J0\n").moves.at(1);
-        CHECK(full.sweep_rad == Approx(-2 * kPi));
+        CHECK(full.sweep_rad == Approx(-2 * std::numbers::pi));
         const Vector3d half = decks::point_on(full, 0.5);
         CHECK(half.isApprox(Vector3d(-1, 0, -0.25), 1e-9));
         const auto full_ccw = read("G20 G0 X1\nG3 X1 Y0 I-1 J0\n").moves.at(1);
-        CHECK(full_ccw.sweep_rad == Approx(2 * kPi));
+        CHECK(full_ccw.sweep_rad == Approx(2 * std::numbers::pi));
     }
     SECTION("an end half a thousandth off its circle is taken; more is refused") {
         CHECK_NOTHROW(read("G20 G0 X1\nG3 X0 Y1.0004 I-1 J0\n"));

@@ -16,6 +16,7 @@
 using nlohmann::json;
 using parsons::test::idle_rest;
 using parsons::test::kHeader;
+using parsons::test::kSample;
 using parsons::test::lines_of;
 using parsons::test::q;
 using parsons::test::read_bytes;
@@ -26,8 +27,6 @@ using parsons::test::TempDir;
 using parsons::test::write_bytes;
 
 namespace {
-
-const std::string kSample = "decks/samples/patent-example.csv";
 
 // A run with standard output and standard error apart.
 struct Split {

@@ -1,5 +1,6 @@
 #include "cardreader/layout.hpp"
 
+#include "tests/card_support.hpp"
 #include "tests/test_support.hpp"
 
 #include <catch2/catch.hpp>
@@ -7,6 +8,8 @@
 #include <set>
 
 using namespace parsons::cardreader;
+
+using parsons::test::punched;
 
 namespace {
 
@@ -27,12 +30,6 @@ CardOrders patent_card() {
     table.check = 8985;
     table.sequence = 0b00011;
     return o;
-}
-
-Card punched(const CardOrders& o) {
-    auto r = encode(o, fig8_layout());
-    REQUIRE(r);
-    return r.card;
 }
 
 BadPunch bad_punch_of(const Card& card) {

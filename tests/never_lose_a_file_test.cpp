@@ -31,6 +31,8 @@ using parsons::test::TempDir;
 using parsons::test::write_bytes;
 namespace fs = std::filesystem;
 
+using parsons::test::running_as_root;
+
 namespace {
 
 // Everything in a folder, recursively: each entry's kind and, for a file its bytes, for a link
@@ -325,10 +327,6 @@ TEST_CASE("Never lose a file: a deck that goes to a device, a FIFO or standard o
 }
 
 namespace {
-
-bool running_as_root() {
-    return geteuid() == 0;
-}
 
 // Every output of every command at /dev/null; `as` runs the line as another user (or "").
 void discard_everything(const Workshop& w, const std::string& as) {

@@ -33,6 +33,8 @@ using parsons::test::TempDir;
 using parsons::test::write_bytes;
 namespace fs = std::filesystem;
 
+using parsons::test::running_as_root;
+
 namespace {
 
 mode_t kind_of(const fs::path& p) {
@@ -83,10 +85,6 @@ private:
     std::string got_;
     std::thread thread_;
 };
-
-bool running_as_root() {
-    return geteuid() == 0;
-}
 
 } // namespace
 

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+using parsons::test::kSample;
 using parsons::test::lines_of;
 using parsons::test::q;
 using parsons::test::read_bytes;
@@ -31,8 +32,6 @@ using parsons::test::TempDir;
 using parsons::test::write_bytes;
 
 namespace {
-
-const std::string kSample = "decks/samples/patent-example.csv";
 
 std::vector<std::string> split(const std::string& line, char sep) {
     std::vector<std::string> cells;
@@ -97,11 +96,12 @@ void require_documented(const std::set<std::string>& names,
 }
 
 // Every key of a JSON object, nested objects as "outer.inner" (arrays are values).
-void collect_keys(const nlohmann::json& j, const std::string& prefix, std::set<std::string>& out) {
+void collect_doc_keys(const nlohmann::json& j, const std::string& prefix,
+                      std::set<std::string>& out) {
     for (const auto& [key, value] : j.items()) {
         out.insert(prefix + key);
         if (value.is_object()) {
-            collect_keys(value, prefix + key + ".", out);
+            collect_doc_keys(value, prefix + key + ".", out);
         }
     }
 }
@@ -133,7 +133,7 @@ struct EventsSeen {
             const auto j = nlohmann::json::parse(line);
             REQUIRE(j.is_object());
             ++lines;
-            collect_keys(j, "", fields);
+            collect_doc_keys(j, "", fields);
             const double t = j.at("t").get<double>();
             CHECK(t >= last_t); // machine time never runs backwards
             last_t = t;
@@ -378,7 +378,7 @@ TEST_CASE("Output formats: the job file gen airfoil writes beside the deck, temp
                                    " -o " + q(deck));
         REQUIRE(r.exit_code == 0);
         const auto j = nlohmann::json::parse(read_bytes(deck + ".job.json"));
-        collect_keys(j, "", keys);
+        collect_doc_keys(j, "", keys);
         CHECK(j["job"] == job);
         CHECK(j["airfoil"] == "naca 2412");
 

@@ -20,7 +20,7 @@ using parsons::test::TempDir;
 
 namespace {
 
-struct Proved {
+struct ProvedFeeder {
     relaylogic::RunResult result;
     std::optional<cli::PressProof::Instant> collision;
     std::vector<double> per_cycle;
@@ -30,8 +30,8 @@ struct Proved {
 
 // Generates the job (variant), runs it under its profile changed by `change`, proves it.
 template <typename Change>
-Proved prove(bool speed_only, int cycles, Change change,
-             const axes::MachineProfile& base = axes::extended_profile()) {
+ProvedFeeder prove(bool speed_only, int cycles, Change change,
+                   const axes::MachineProfile& base = axes::extended_profile()) {
     decks::PressFeederOptions o;
     o.speed_only = speed_only;
     o.cycles = cycles;
@@ -39,7 +39,7 @@ Proved prove(bool speed_only, int cycles, Change change,
     axes::MachineProfile p = g.profile;
     change(p.press);
     cli::PressProof proof(p.press, o.zone_edge_x_in, o.safe_height_in, g.deck.cycle_card);
-    Proved r;
+    ProvedFeeder r;
     r.result = cli::run_cards(g.deck.cards, p, &proof);
     r.collision = proof.collision();
     r.per_cycle = proof.cycle_clearance_in();
@@ -71,8 +71,8 @@ TEST_CASE("Press feeder: with the press slowing 25 % mid-cycle, position + speed
           "positive clearance on every cycle and speed sync alone (Fig. 7) collides, named by "
           "cycle and instant",
           "[press_feeder]") {
-    const Proved both = prove(false, 4, slow_mid_cycle);
-    const Proved speed = prove(true, 4, slow_mid_cycle);
+    const ProvedFeeder both = prove(false, 4, slow_mid_cycle);
+    const ProvedFeeder speed = prove(true, 4, slow_mid_cycle);
     REQUIRE_FALSE(both.result.stop);
     REQUIRE_FALSE(speed.result.stop);
     CHECK(both.cycles == 4);
@@ -99,7 +99,7 @@ TEST_CASE("Press feeder: at nominal speed both variants keep clear on the first 
           "[press_feeder]") {
     for (bool speed_only : {false, true}) {
         INFO("speed only " << speed_only);
-        const Proved r = prove(speed_only, 2, [](axes::PressProfile&) {});
+        const ProvedFeeder r = prove(speed_only, 2, [](axes::PressProfile&) {});
         REQUIRE_FALSE(r.result.stop);
         REQUIRE_FALSE(r.per_cycle.empty());
         CHECK(r.per_cycle.front() > 0.05);
@@ -219,7 +219,7 @@ TEST_CASE("Press feeder: every move of both variants, the home and the Y moves t
           "speed-synchronised, none slower than the drive's 0.5 in/min, and at the nominal speed "
           "the speed-only job keeps clear for all its cycles",
           "[press_feeder]") {
-    const Proved nominal = prove(true, 4, [](axes::PressProfile&) {});
+    const ProvedFeeder nominal = prove(true, 4, [](axes::PressProfile&) {});
     REQUIRE_FALSE(nominal.result.stop);
     CHECK(nominal.cycles == 4);
     CHECK_FALSE(nominal.collision);

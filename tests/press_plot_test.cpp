@@ -24,6 +24,7 @@
 using namespace parsons;
 using cli::PlotSvgRecorder;
 using cli::PressTrace;
+using parsons::test::count;
 using parsons::test::kHeader;
 using parsons::test::q;
 using parsons::test::read_bytes;
@@ -101,14 +102,6 @@ std::vector<std::pair<double, double>> path_points(const std::string& svg, const
         points.emplace_back(std::stod((*it)[1].str()), std::stod((*it)[2].str()));
     }
     return points;
-}
-
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) {
-        ++n;
-    }
-    return n;
 }
 
 } // namespace

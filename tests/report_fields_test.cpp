@@ -283,18 +283,18 @@ namespace {
 
 // Every key of a JSON document, at any depth; the axis names (keys of per-axis objects) are
 // not field names.
-void collect_keys(const json& j, std::set<std::string>& keys) {
+void collect_report_keys(const json& j, std::set<std::string>& keys) {
     static const std::set<std::string> axes = {"table", "cross", "vertical", "swivel", "tilt"};
     if (j.is_object()) {
         for (const auto& [k, v] : j.items()) {
             if (axes.count(k) == 0) {
                 keys.insert(k);
             }
-            collect_keys(v, keys);
+            collect_report_keys(v, keys);
         }
     } else if (j.is_array()) {
         for (const auto& v : j) {
-            collect_keys(v, keys);
+            collect_report_keys(v, keys);
         }
     }
 }
@@ -355,7 +355,7 @@ TEST_CASE("Report: docs/report.md names every key a report carries", "[cli][repo
                         q(dir.str("f.csv.job.json")) + " --report " + q(dir.str("f.json")))
                 .exit_code == 0);
     for (const char* name : {"a.json", "b.json", "c.json", "d.json", "e.json", "f.json"}) {
-        collect_keys(read_json(dir.path(name)), keys);
+        collect_report_keys(read_json(dir.path(name)), keys);
     }
     // The reports exercised what they were meant to.
     for (const char* expected :

@@ -2,6 +2,7 @@
 //
 // A resumed run must finish exactly as an uninterrupted run of the corrected deck: the same
 // report, and from the moment the stopped card was fed, the same trace, event for event.
+#include "tests/card_support.hpp"
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 
@@ -79,14 +80,6 @@ public:
     std::vector<std::uint32_t> initial_values;
     std::vector<std::tuple<double, SignalId, std::uint32_t>> events;
 };
-
-std::vector<Card> punched(const std::vector<CardOrders>& cards) {
-    std::vector<Card> out;
-    for (const auto& o : cards) {
-        out.push_back(encode(o, fig8_layout()).card);
-    }
-    return out;
-}
 
 // A deck read from the bytes of its file: cards as they are (.cbn), or five a step (.five).
 struct FileDeck {

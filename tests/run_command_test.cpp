@@ -11,6 +11,7 @@
 #include <array>
 #include <filesystem>
 
+using parsons::test::kSample;
 using parsons::test::q;
 using parsons::test::read_bytes;
 using parsons::test::run_parsons;
@@ -20,7 +21,6 @@ using parsons::test::write_bytes;
 
 namespace {
 
-const std::string kSample = "decks/samples/patent-example.csv";
 std::string sample_with(const std::string& from, const std::string& to) {
     std::string text = read_bytes(source_path(kSample));
     const auto at = text.find(from);

@@ -12,6 +12,7 @@
 #include <string>
 
 using namespace parsons;
+using parsons::test::count;
 using parsons::test::idle_rest;
 using parsons::test::kHeader;
 using parsons::test::q;
@@ -19,18 +20,6 @@ using parsons::test::read_bytes;
 using parsons::test::run_parsons;
 using parsons::test::TempDir;
 using parsons::test::write_bytes;
-
-namespace {
-
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) {
-        ++n;
-    }
-    return n;
-}
-
-} // namespace
 
 TEST_CASE("Show: silent on a correct move across zero, and the machine agrees", "[show][cli]") {
     TempDir dir;

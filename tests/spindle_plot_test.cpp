@@ -11,6 +11,8 @@
 #include "outputs/plots/plot_spindle_lanes.hpp"
 #include "outputs/plots/plot_svg.hpp"
 
+#include "tests/test_support.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -28,19 +30,20 @@ using parsons::test::idle_card;
 using parsons::test::run_orders;
 using Line = SpindleTrace::Line;
 using Interval = std::pair<double, double>;
+using parsons::test::count;
 
 namespace {
 
-const std::array<int, 5> kHome = {0, 0, 0, 0, 0};
+const std::array<int, 5> kOrigin = {0, 0, 0, 0, 0};
 
-axes::MachineProfile tap_profile(axes::RatioSource source = axes::RatioSource::transferred) {
+axes::MachineProfile spindle_profile(axes::RatioSource source = axes::RatioSource::transferred) {
     axes::MachineProfile p = axes::extended_profile();
     p.press_sync = false; // the spindle's lanes alone
     p.spindle.ratio_source = source;
     return p;
 }
 
-CardOrders tap(int number, int tool, int depth, int pitch, int rpm) {
+CardOrders tap_card(int number, int tool, int depth, int pitch, int rpm) {
     CardOrders c;
     c.kind = CardKind::tap;
     c.number = number;
@@ -57,34 +60,26 @@ CardOrders tap(int number, int tool, int depth, int pitch, int rpm) {
 // at 240 rev/min; card 3 calls tool 2 (ratio 1/3, a 0.0625 in tap): PC 130 exchanges the head
 // and the ratio reaches 12a (transferred, or selected if stored) before it taps 0.400 in at
 // 180 rev/min. Both tools turn 60 rev/min.
-const std::vector<CardOrders> kTwoTaps = {idle_card(1, kHome), tap(2, 1, 300, 5000, 240),
-                                          tap(3, 2, 400, 6250, 180), idle_card(4, kHome)};
+const std::vector<CardOrders> kTwoTaps = {idle_card(1, kOrigin), tap_card(2, 1, 300, 5000, 240),
+                                          tap_card(3, 2, 400, 6250, 180), idle_card(4, kOrigin)};
 
-struct PlottedRun {
+struct PlottedTaps {
     relaylogic::RunResult result;
     PlotSvgRecorder plot;
 };
 
 void run_plotted(const std::vector<CardOrders>& cards, const axes::MachineProfile& profile,
-                 PlottedRun& out, const std::vector<relaylogic::Fault>& faults = {}) {
+                 PlottedTaps& out, const std::vector<relaylogic::Fault>& faults = {}) {
     out.result = run_orders(cards, profile, &out.plot, faults);
 }
 
-const PlottedRun& two_taps() {
-    static const PlottedRun* run = [] {
-        auto* r = new PlottedRun;
-        run_plotted(kTwoTaps, tap_profile(), *r);
+const PlottedTaps& two_taps() {
+    static const PlottedTaps* run = [] {
+        auto* r = new PlottedTaps;
+        run_plotted(kTwoTaps, spindle_profile(), *r);
         return r;
     }();
     return *run;
-}
-
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) {
-        ++n;
-    }
-    return n;
 }
 
 // The largest value of a series within [t0, t1].
@@ -139,7 +134,7 @@ bar_starts(const std::string& svg, const std::string& cls, const std::string& da
 TEST_CASE("Spindle plot: motor 27 and tool 16 reach the speeds the tap cards order, and "
           "interface 33 counts the edges encoder 32 gives at them",
           "[spindle_plot]") {
-    const PlottedRun& run = two_taps();
+    const PlottedTaps& run = two_taps();
     INFO((run.result.stop ? run.result.stop->message : std::string("completed")));
     REQUIRE(run.result.completed);
     REQUIRE(run.result.tapping);
@@ -173,7 +168,7 @@ TEST_CASE("Spindle plot: motor 27 and tool 16 reach the speeds the tap cards ord
 TEST_CASE("Spindle plot: memory 12a's lane changes to the new head's ratio once the transfer is "
           "done, after the exchange mark, and the feed and depth follow each tap",
           "[spindle_plot]") {
-    const PlottedRun& run = two_taps();
+    const PlottedTaps& run = two_taps();
     REQUIRE(run.result.completed);
     const SpindleTrace& spindle = run.plot.spindle();
     const double t_end = run.result.machine_seconds;
@@ -229,7 +224,7 @@ TEST_CASE("Spindle plot: memory 12a's lane changes to the new head's ratio once 
 TEST_CASE("Spindle plot: bus 35's handshake and PC 130's relays come in the seed's order for a "
           "head exchange (Fig. 4), in the record and in the bars drawn",
           "[spindle_plot]") {
-    const PlottedRun& run = two_taps();
+    const PlottedTaps& run = two_taps();
     REQUIRE(run.result.completed);
     const SpindleTrace& spindle = run.plot.spindle();
     const double t_end = run.result.machine_seconds;
@@ -302,7 +297,7 @@ TEST_CASE("Spindle plot: bus 35's handshake and PC 130's relays come in the seed
 TEST_CASE("Spindle plot: the chart of a run with tap cards has its lanes under the panels in "
           "order, each in the legend, and one time axis under them all",
           "[spindle_plot]") {
-    const PlottedRun& run = two_taps();
+    const PlottedTaps& run = two_taps();
     const std::string svg = run.plot.svg();
     const std::vector<std::string> lanes = {
         "motor_27",         "tool_16",      "interface_33", "memory_12a",
@@ -339,11 +334,11 @@ TEST_CASE("Spindle plot: the chart of a run with tap cards has its lanes under t
 TEST_CASE("Spindle plot: with a press beside the machine the spindle's lanes come under the "
           "press's, and both legends are drawn",
           "[spindle_plot]") {
-    axes::MachineProfile profile = tap_profile();
+    axes::MachineProfile profile = spindle_profile();
     profile.press_sync = true;
-    PlottedRun run;
-    run_plotted({idle_card(1, kHome), tap(2, 1, 200, 5000, 240), idle_card(3, kHome)}, profile,
-                run);
+    PlottedTaps run;
+    run_plotted({idle_card(1, kOrigin), tap_card(2, 1, 200, 5000, 240), idle_card(3, kOrigin)},
+                profile, run);
     INFO((run.result.stop ? run.result.stop->message : std::string("completed")));
     REQUIRE(run.result.completed);
     const std::string svg = run.plot.svg();
@@ -372,8 +367,8 @@ TEST_CASE("Spindle plot: with the ratios stored per tool no transfer is drawn, a
           "stale-ratio fault the head is exchanged while memory 12a's ratio stays",
           "[spindle_plot]") {
     SECTION("stored (Figs. 5-7)") {
-        PlottedRun run;
-        run_plotted(kTwoTaps, tap_profile(axes::RatioSource::stored), run);
+        PlottedTaps run;
+        run_plotted(kTwoTaps, spindle_profile(axes::RatioSource::stored), run);
         REQUIRE(run.result.completed);
         const SpindleTrace& spindle = run.plot.spindle();
         const double t_end = run.result.machine_seconds;
@@ -388,8 +383,8 @@ TEST_CASE("Spindle plot: with the ratios stored per tool no transfer is drawn, a
         CHECK(count(run.plot.svg(), "class=\"bus35-bar\" data-line=\"transfer_request\"") == 0);
     }
     SECTION("stale-ratio:1") {
-        PlottedRun run;
-        run_plotted(kTwoTaps, tap_profile(), run, {relaylogic::parse_fault("stale-ratio:1")});
+        PlottedTaps run;
+        run_plotted(kTwoTaps, spindle_profile(), run, {relaylogic::parse_fault("stale-ratio:1")});
         INFO((run.result.stop ? run.result.stop->message : std::string("completed")));
         const SpindleTrace& spindle = run.plot.spindle();
         REQUIRE(spindle.exchanges().size() == 1);
@@ -438,15 +433,15 @@ TEST_CASE("Spindle plot: the speeds kept for the lanes stay within the reduction
 TEST_CASE("Spindle plot: a run with spindle synchronisation but no tap card draws no spindle "
           "lane, byte for byte the chart of the same run without it",
           "[spindle_plot]") {
-    const std::vector<CardOrders> deck = {idle_card(1, kHome), idle_card(2, kHome)};
+    const std::vector<CardOrders> deck = {idle_card(1, kOrigin), idle_card(2, kOrigin)};
     for (bool press : {false, true}) {
         INFO("press " << press);
-        axes::MachineProfile with = tap_profile();
+        axes::MachineProfile with = spindle_profile();
         with.press_sync = press;
         axes::MachineProfile without = with;
         without.spindle_sync = false;
-        PlottedRun a;
-        PlottedRun b;
+        PlottedTaps a;
+        PlottedTaps b;
         run_plotted(deck, with, a);
         run_plotted(deck, without, b);
         REQUIRE(a.result.completed);

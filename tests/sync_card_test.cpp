@@ -1,6 +1,7 @@
 // Sync cards, an addition after EP 0436887 (Mitsubishi): the card (column 76 row 2),
 // its listing rows, its picture, the deck review's errors and the CLI's exit codes. What the
 // sync units do with a sync card while the machine runs is relaylogic's and is tested there.
+#include "tests/card_support.hpp"
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 
@@ -25,6 +26,9 @@ using parsons::test::idle_card;
 using parsons::test::listing_error;
 using parsons::test::order;
 using parsons::test::review_all;
+
+using parsons::test::digit;
+using parsons::test::punched;
 
 namespace {
 
@@ -68,20 +72,9 @@ CardOrders moving_card(int number, int from, int to) {
     return c;
 }
 
-Card punched(const CardOrders& o) {
-    const EncodeResult e = encode(o, fig8_layout());
-    INFO(e.error.value_or(""));
-    REQUIRE(e);
-    return e.card;
-}
-
-ColumnWord digit(int d) {
-    return row_bit(digit_row(d));
-}
-
 // One motion card's five listing rows: the table and cross from 0.000 to `stop` (check = the
 // travel), the others idle.
-std::string motion_rows(int card, const char* stop, const char* check) {
+std::string table_cross_rows(int card, const char* stop, const char* check) {
     std::string rows = fmt::format("{},0,table,+,3,,,{},{},1\n", card, stop, check);
     rows += fmt::format("{},0,cross,+,3,,,{},{},2\n", card, stop, check);
     for (const char* axis : {"vertical", "swivel", "tilt"}) {
@@ -291,8 +284,9 @@ TEST_CASE("Sync card: listing rows position, speed and loop read as one card per
     const std::string rows = "3,sync,position,30\n"
                              "3,sync,speed,table,0.00150\n"
                              "3,sync,speed,cross,0.00100\n" +
-                             motion_rows(4, "1.000", "1.000") + "5,sync,speed,table,0.00100\n" +
-                             motion_rows(6, "0.000", "1.000") + "7,sync,loop,3,100\n";
+                             table_cross_rows(4, "1.000", "1.000") +
+                             "5,sync,speed,table,0.00100\n" +
+                             table_cross_rows(6, "0.000", "1.000") + "7,sync,loop,3,100\n";
     const std::string text = std::string(kListingHeader) + "\n" + rows;
     std::istringstream in(text);
     ListingReader reader(in, "t.csv");
@@ -503,7 +497,7 @@ TEST_CASE("Sync card: check, show and run exit 2 on a sync card under parsons-19
     test::TempDir dir;
     const std::string header = std::string(kListingHeader) + "\n";
     const std::string deck = header + "1,sync,position,30\n1,sync,speed,table,0.00100\n" +
-                             motion_rows(2, "0.100", "0.100");
+                             table_cross_rows(2, "0.100", "0.100");
     test::write_bytes(dir.path("sync.csv"), deck);
     const std::string says = "sync.csv: card 1, column 76: a sync card (an addition after EP "
                              "0436887, Mitsubishi): profile parsons-1952 has no press "
@@ -526,8 +520,8 @@ TEST_CASE("Sync card: check, show and run exit 2 on a sync card under parsons-19
     CHECK(checked.exit_code == 0);
 
     // A travel the drive cannot follow: run refuses it under parsons-extended too.
-    test::write_bytes(dir.path("fast.csv"),
-                      header + "1,sync,speed,table,0.01000\n" + motion_rows(2, "0.100", "0.100"));
+    test::write_bytes(dir.path("fast.csv"), header + "1,sync,speed,table,0.01000\n" +
+                                                table_cross_rows(2, "0.100", "0.100"));
     const auto fast =
         test::run_parsons("run " + test::q(dir.str("fast.csv")) + " -q --profile parsons-extended");
     CHECK(fast.exit_code == 2);
@@ -540,7 +534,7 @@ TEST_CASE("Sync card: show prints it field by field, in --json and as a picture"
     test::TempDir dir;
     const std::string deck = std::string(kListingHeader) + "\n" +
                              "1,sync,position,30\n1,sync,speed,table,0.00100\n" +
-                             motion_rows(2, "0.100", "0.100") + "3,sync,loop,1,100\n";
+                             table_cross_rows(2, "0.100", "0.100") + "3,sync,loop,1,100\n";
     test::write_bytes(dir.path("sync.csv"), deck);
     const auto text =
         test::run_parsons("show " + test::q(dir.str("sync.csv")) +
@@ -581,7 +575,7 @@ TEST_CASE("Sync card: convert carries it through .cbn and text card images and b
     test::TempDir dir;
     const std::string deck = std::string(kListingHeader) + "\n" +
                              "1,sync,position,190\n1,sync,speed,cross,0.00417\n" +
-                             motion_rows(2, "0.100", "0.100") + "3,sync,loop,1,9999\n";
+                             table_cross_rows(2, "0.100", "0.100") + "3,sync,loop,1,9999\n";
     test::write_bytes(dir.path("sync.csv"), deck);
     for (const char* medium : {"cbn", "txt", "bin", "tape"}) {
         INFO(medium);
@@ -710,7 +704,7 @@ TEST_CASE("Sync card (claim 5): the reset of register 14 is punched in column 15
     const std::string text = std::string(kListingHeader) + "\n" +
                              "4,sync,reset\n4,sync,position,30\n4,sync,speed,table,0.00150\n"
                              "4,sync,speed,cross,0.00100\n" +
-                             motion_rows(5, "1.000", "1.000") + "8,sync,reset\n";
+                             table_cross_rows(5, "1.000", "1.000") + "8,sync,reset\n";
     std::istringstream in(text);
     ListingReader reader(in, "r.csv");
     auto first = reader.next();

@@ -3,6 +3,7 @@
 // tap_card_cli_test.cpp). What motor
 // 27, PC 130 and the feed do with a tap card while the machine runs is relaylogic's and is
 // tested there.
+#include "tests/card_support.hpp"
 #include "tests/machine_support.hpp"
 #include "tests/tap_support.hpp"
 #include "tests/test_support.hpp"
@@ -32,6 +33,9 @@ using parsons::test::motion_rows;
 using parsons::test::order;
 using parsons::test::review_all;
 
+using parsons::test::digit;
+using parsons::test::punched;
+
 namespace {
 
 TapOrder tap(int tool, Axis axis, Motion motion, int depth, int pitch, int rpm) {
@@ -57,17 +61,6 @@ CardOrders tap_orders(int number, const TapOrder& t) {
     c.number = number;
     c.tap = t;
     return c;
-}
-
-Card punched(const CardOrders& o) {
-    const EncodeResult e = encode(o, fig8_layout());
-    INFO(e.error.value_or(""));
-    REQUIRE(e);
-    return e.card;
-}
-
-ColumnWord digit(int d) {
-    return row_bit(digit_row(d));
 }
 
 // A motion card that takes the vertical axis from `from` to `to` (thousandths), the others idle.

@@ -10,6 +10,10 @@
 
 namespace parsons::test {
 
+// The pitches of the two taps of the tapping tests (inches a turn).
+inline constexpr double kPitch1 = 0.05;   // tool 1's tap, head ratio 1/4
+inline constexpr double kPitch2 = 0.0625; // tool 2's tap, head ratio 1/3
+
 // One motion card's five listing rows: the vertical axis forward to `stop` with check `check`,
 // the others idle, each axis at its own sequence position.
 inline std::string motion_rows(int card, const char* stop, const char* check) {

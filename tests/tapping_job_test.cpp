@@ -6,6 +6,7 @@
 // completes stops the machine. Also the generator's cards and its refusals. The proof's
 // arithmetic on synthetic helices: thread_proof_test.cpp.
 #include "tests/machine_support.hpp"
+#include "tests/tap_support.hpp"
 #include "tests/test_support.hpp"
 
 #include "cli/gen_tapping.hpp"
@@ -25,21 +26,21 @@ using parsons::test::q;
 using parsons::test::run_parsons;
 using parsons::test::TempDir;
 
-namespace {
+using parsons::test::kPitch1;
+using parsons::test::kPitch2;
 
-constexpr double kPitch1 = 0.05;   // tool 1's tap, head ratio 1/4
-constexpr double kPitch2 = 0.0625; // tool 2's tap, head ratio 1/3
+namespace {
 
 // ---- The job run in-process ----
 
-struct Proved {
+struct ProvedPlate {
     relaylogic::RunResult result;
     cli::ThreadProof proof;
     decks::TappingJob job;
 };
 
-Proved run_job(decks::TappingOptions o, const std::vector<std::string>& faults,
-               relaylogic::Pace pace = relaylogic::Pace::fast_forward) {
+ProvedPlate run_job(decks::TappingOptions o, const std::vector<std::string>& faults,
+                    relaylogic::Pace pace = relaylogic::Pace::fast_forward) {
     const cli::GeneratedTappingJob g =
         cli::generate_tapping_job(o, axes::extended_profile(), "", "");
     std::vector<cardreader::Card> punched;
@@ -55,7 +56,7 @@ Proved run_job(decks::TappingOptions o, const std::vector<std::string>& faults,
     for (const auto& f : faults) {
         cabinet.add_fault(relaylogic::parse_fault(f));
     }
-    Proved p;
+    ProvedPlate p;
     p.result = cabinet.run(deck);
     p.job = g.job;
     REQUIRE(p.result.tapping);
@@ -70,7 +71,7 @@ decks::TappingOptions options(axes::RatioSource source, int rows = 2) {
     return o;
 }
 
-void every_hole_within(const Proved& p, std::size_t holes) {
+void every_hole_within(const ProvedPlate& p, std::size_t holes) {
     INFO(cli::thread_summary(p.proof));
     CHECK(p.result.completed);
     CHECK_FALSE(p.result.stop);
@@ -231,7 +232,7 @@ TEST_CASE("Tapping job: every hole's pitch is within tolerance with the ratio tr
           "[tapping_job][end_to_end]") {
     for (axes::RatioSource source : {axes::RatioSource::transferred, axes::RatioSource::stored}) {
         INFO("ratio " << decks::ratio_source_name(source));
-        const Proved p = run_job(options(source), {});
+        const ProvedPlate p = run_job(options(source), {});
         every_hole_within(p, 6);
         const relaylogic::TappingResult& t = *p.result.tapping;
         CHECK(t.head_exchanges == 1); // tool 1 is on the spindle when the run starts
@@ -247,8 +248,8 @@ TEST_CASE("Tapping job: every hole's pitch is within tolerance with the ratio tr
 
 TEST_CASE("Tapping job: at impulse level the holes are cut as in fast-forward",
           "[tapping_job][end_to_end]") {
-    const Proved fast = run_job(options(axes::RatioSource::transferred), {});
-    const Proved slow =
+    const ProvedPlate fast = run_job(options(axes::RatioSource::transferred), {});
+    const ProvedPlate slow =
         run_job(options(axes::RatioSource::transferred), {}, relaylogic::Pace::impulse_level);
     every_hole_within(slow, 6);
     REQUIRE(slow.proof.holes.size() == fast.proof.holes.size());
@@ -265,7 +266,8 @@ TEST_CASE("Tapping job: a head exchange that sends no ratio (stale-ratio) cuts t
           "[tapping_job][end_to_end]") {
     // Three rows: tool 1, tool 2, tool 1 (exchanges 1 and 2).
     SECTION("the first exchange: tool 2's row computed with tool 1's ratio, -25 %") {
-        const Proved p = run_job(options(axes::RatioSource::transferred, 3), {"stale-ratio:1"});
+        const ProvedPlate p =
+            run_job(options(axes::RatioSource::transferred, 3), {"stale-ratio:1"});
         INFO(cli::thread_summary(p.proof));
         CHECK(p.result.completed);
         REQUIRE(p.proof.holes.size() == 9);
@@ -295,13 +297,14 @@ TEST_CASE("Tapping job: a head exchange that sends no ratio (stale-ratio) cuts t
                                              "0.3333"));
     }
     SECTION("with the ratios stored per tool there is no transfer to miss") {
-        const Proved p = run_job(options(axes::RatioSource::stored, 3), {"stale-ratio:1"});
+        const ProvedPlate p = run_job(options(axes::RatioSource::stored, 3), {"stale-ratio:1"});
         every_hole_within(p, 9);
         REQUIRE(p.result.faults.size() == 1);
         CHECK_FALSE(p.result.faults.front().acted);
     }
     SECTION("the second exchange: tool 1's row computed with tool 2's ratio, +33 %") {
-        const Proved p = run_job(options(axes::RatioSource::transferred, 3), {"stale-ratio:2"});
+        const ProvedPlate p =
+            run_job(options(axes::RatioSource::transferred, 3), {"stale-ratio:2"});
         REQUIRE(p.proof.holes.size() == 9);
         for (const cli::ProvedHole& h : p.proof.holes) {
             INFO("hole " << h.hole_number());

@@ -13,6 +13,8 @@
 #include <sstream>
 #include <sys/wait.h>
 
+#include <unistd.h>
+
 namespace parsons::test {
 
 std::string listing_error(const std::string& rows) {
@@ -132,6 +134,18 @@ std::vector<std::string> lines_of(const std::string& text) {
         lines.push_back(line);
     }
     return lines;
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) {
+        ++n;
+    }
+    return n;
+}
+
+bool running_as_root() {
+    return geteuid() == 0;
 }
 
 std::string source_path(const std::string& relative) {

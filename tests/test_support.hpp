@@ -7,6 +7,7 @@
 #include "cardreader/layout.hpp"
 #include "cardreader/orders.hpp"
 
+#include <cstddef>
 #include <filesystem>
 #include <random>
 #include <string>
@@ -58,6 +59,10 @@ void write_bytes(const std::filesystem::path& p, const std::string& bytes);
 std::string read_bytes(const std::filesystem::path& p);
 // The lines of a text, without their newlines.
 std::vector<std::string> lines_of(const std::string& text);
+// How often `what` occurs in `text`, overlapping occurrences too.
+std::size_t count(const std::string& text, const std::string& what);
+// Whether the tests run as root, for whom a file's permissions do not stop a write.
+bool running_as_root();
 std::string source_path(const std::string& relative); // a file of the source tree
 
 // Random orders a layout can hold (a second slow-down only where the layout has the field).
@@ -69,6 +74,9 @@ double widest_span_in(const std::string& refusal);
 
 // The cards as a deck file of `format` holds them (the card sink `convert` writes through).
 std::string deck_bytes(const std::vector<cardreader::Card>& cards, cardreader::DeckFormat format);
+
+// The patent's example deck, relative to the source tree (where run_parsons runs).
+inline const std::string kSample = "decks/samples/patent-example.csv";
 
 // The header of a listing (docs/deck-formats.md).
 inline constexpr const char* kHeader =

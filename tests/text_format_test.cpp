@@ -32,7 +32,7 @@ std::vector<Card> read_text(const std::string& text, KeypunchCode code = Keypunc
     return cards;
 }
 
-std::string read_error(const std::string& text) {
+std::string text_error(const std::string& text) {
     return parsons::test::read_error(text, DeckFormat::text, "deck.txt");
 }
 
@@ -72,27 +72,27 @@ TEST_CASE("Text cards: lower case is folded to upper case", "[text]") {
 
 TEST_CASE("Text cards: CRLF line ends read the same as LF", "[text]") {
     CHECK(read_text("AB\r\nCD\r\n") == read_text("AB\nCD\n"));
-    CHECK(read_error("AB\rCD\n") == "deck.txt:1:3: carriage return inside a line");
+    CHECK(text_error("AB\rCD\n") == "deck.txt:1:3: carriage return inside a line");
 }
 
 TEST_CASE("Text cards: a line over 80 columns is an error naming file and line",
           "[text][bad-input]") {
     const std::string eighty(80, 'X');
     CHECK(read_text(eighty + "\n").size() == 1);
-    CHECK(read_error("OK\n" + eighty + "Y\n") ==
+    CHECK(text_error("OK\n" + eighty + "Y\n") ==
           "deck.txt:2:81: line is longer than 80 columns (a card has 80; nothing is cut off "
           "silently)");
-    CHECK(read_error(std::string(79, ' ') + "\tX\n") ==
+    CHECK(text_error(std::string(79, ' ') + "\tX\n") ==
           "deck.txt:1:81: line is longer than 80 columns (a card has 80; nothing is cut off "
           "silently)");
 }
 
 TEST_CASE("Text cards: a character outside the 029 set names line and column",
           "[text][bad-input]") {
-    CHECK(read_error("ABC~\n") == "deck.txt:1:4: '~' is not a character of the IBM 029 keypunch");
-    CHECK(read_error("A\nB\xC3\xA9\n") ==
+    CHECK(text_error("ABC~\n") == "deck.txt:1:4: '~' is not a character of the IBM 029 keypunch");
+    CHECK(text_error("A\nB\xC3\xA9\n") ==
           "deck.txt:2:2: byte 0xc3 is not a character of the IBM 029 keypunch");
-    CHECK(read_error(std::string("A\0B", 3)) ==
+    CHECK(text_error(std::string("A\0B", 3)) ==
           "deck.txt:1:2: byte 0x00 is not a character of the IBM 029 keypunch");
 }
 
@@ -133,16 +133,16 @@ TEST_CASE("Text cards: ~raw with fewer words leaves the rest blank, any case", "
 }
 
 TEST_CASE("Text cards: a bad ~raw line is named by line and column", "[text][simh][bad-input]") {
-    CHECK(read_error("~raw0008\n") == "deck.txt:1:8: '8' in a ~raw card: each column is four "
+    CHECK(text_error("~raw0008\n") == "deck.txt:1:8: '8' in a ~raw card: each column is four "
                                       "octal digits 0-7 (rows 12-11-0 .. 7-8-9)");
-    CHECK(read_error("A\n~raw00 7\n") == "deck.txt:2:7: byte 0x20 in a ~raw card: each column "
+    CHECK(text_error("A\n~raw00 7\n") == "deck.txt:2:7: byte 0x20 in a ~raw card: each column "
                                          "is four octal digits 0-7 (rows 12-11-0 .. 7-8-9)");
-    CHECK(read_error("~raw000\n") ==
+    CHECK(text_error("~raw000\n") ==
           "deck.txt:1:7: a ~raw card ends inside a column word (3 of its 4 octal digits)");
-    CHECK(read_error("~raw" + std::string(320, '0') + "0\n") ==
+    CHECK(text_error("~raw" + std::string(320, '0') + "0\n") ==
           "deck.txt:1:325: a ~raw card has more than 80 columns (320 octal digits)");
     CHECK(read_text("~raw" + std::string(320, '1') + "\n").size() == 1);
-    CHECK(read_error("~frob\n") ==
+    CHECK(text_error("~frob\n") ==
           "deck.txt:1:1: '~frob' is no SIMH control line (~raw followed by octal column words, "
           "~eor, ~eof, ~eoi, or a lone ~); '~' is no keypunch character");
 }

@@ -4,6 +4,8 @@
 // tapping job run end to end: tapping_job_test.cpp.
 #include "outputs/proofs/thread_proof.hpp"
 
+#include "tests/tap_support.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -11,10 +13,10 @@
 
 using namespace parsons;
 
-namespace {
+using parsons::test::kPitch1;
+using parsons::test::kPitch2;
 
-constexpr double kPitch1 = 0.05;   // tool 1's tap, head ratio 1/4
-constexpr double kPitch2 = 0.0625; // tool 2's tap, head ratio 1/3
+namespace {
 
 // ---- Synthetic taps for the proof's arithmetic ----
 

@@ -28,6 +28,7 @@ using namespace parsons;
 using cardreader::Axis;
 using cardreader::CardOrders;
 using cli::PlotSvgRecorder;
+using parsons::test::count;
 using parsons::test::lines_of;
 
 namespace {
@@ -107,14 +108,6 @@ Recorded run_deck(const std::vector<CardOrders>& deck) {
 const Recorded& simple_run() {
     static const Recorded rec = run_deck({one_axis_per_step()});
     return rec;
-}
-
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) {
-        ++n;
-    }
-    return n;
 }
 
 // A small VCD reader: declarations, then value changes, checking as it goes.

@@ -35,10 +35,6 @@
 namespace parsons::relaylogic {
 namespace {
 
-std::uint32_t millionths(double ratio) {
-    return static_cast<std::uint32_t>(std::lround(std::fmax(ratio, 0.0) * 1e6));
-}
-
 bool valid_step(int step) {
     return step == 0 || (step >= 11 && step <= 16);
 }
@@ -52,7 +48,7 @@ GearRatioMemory::GearRatioMemory(Tracer& tracer, const axes::SpindleSyncProfile&
     ratio_signal_ = tracer.define("spindle", "memory_12a.ratio",
                                   "gear ratio data memory 12a: the ratio A the NC computes the "
                                   "tool's speed with (S x A), millionths",
-                                  "12a", 24, millionths(ratio_));
+                                  "12a", 24, ratio_millionths(ratio_));
     buffer_signal_ = tracer.define("spindle", "interface_9.buffer",
                                    "interface 9's buffer memory: the ratio read from bus 35 "
                                    "(S14), millionths (0 = empty)",
@@ -130,8 +126,8 @@ void GearRatioMemory::scan(double t, Bus35& bus) {
     tracer_.set(step_signal_, static_cast<std::uint32_t>(step_));
     tracer_.set(ready_signal_, bus.nc_ready ? 1U : 0U);
     tracer_.set(received_signal_, bus.nc_received ? 1U : 0U);
-    tracer_.set(buffer_signal_, millionths(buffer_.value_or(0.0)));
-    tracer_.set(ratio_signal_, millionths(ratio_));
+    tracer_.set(buffer_signal_, ratio_millionths(buffer_.value_or(0.0)));
+    tracer_.set(ratio_signal_, ratio_millionths(ratio_));
 }
 
 bool GearRatioMemory::select(int tool) {
@@ -140,7 +136,7 @@ bool GearRatioMemory::select(int tool) {
         return false;
     }
     ratio_ = h->ratio;
-    tracer_.set(ratio_signal_, millionths(ratio_));
+    tracer_.set(ratio_signal_, ratio_millionths(ratio_));
     return true;
 }
 

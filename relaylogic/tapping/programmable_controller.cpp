@@ -89,11 +89,11 @@ constexpr std::array<RelayName, ProgrammableController::kRelays> kRelayNames = {
     {"pc130.cr8_done", "PC 130 relay CR8: the sequence is done, tool ready to the NC"},
 }};
 
-std::uint32_t millionths(double ratio) {
+} // namespace
+
+std::uint32_t ratio_millionths(double ratio) {
     return static_cast<std::uint32_t>(std::lround(std::fmax(ratio, 0.0) * 1e6));
 }
-
-} // namespace
 
 ProgrammableController::ProgrammableController(Tracer& tracer,
                                                const axes::SpindleSyncProfile& profile)
@@ -201,11 +201,11 @@ void ProgrammableController::show(const Bus35& bus) {
     for (std::size_t i = 0; i < relay_.size(); ++i) {
         tracer_.set(relay_signal_.at(i), relay_.at(i) ? 1U : 0U);
     }
-    tracer_.set(register_signal_, millionths(register_132_));
+    tracer_.set(register_signal_, ratio_millionths(register_132_));
     tracer_.set(tool_call_signal_, static_cast<std::uint32_t>(std::max(bus.tool_call, 0)));
     tracer_.set(request_signal_, bus.transfer_request ? 1U : 0U);
     tracer_.set(data_valid_signal_, bus.data_valid ? 1U : 0U);
-    tracer_.set(data_ratio_signal_, millionths(bus.data_ratio));
+    tracer_.set(data_ratio_signal_, ratio_millionths(bus.data_ratio));
     tracer_.set(tool_ready_signal_, bus.tool_ready ? 1U : 0U);
 }
 

@@ -55,6 +55,9 @@ struct Bus35 {
     bool operator==(const Bus35&) const = default;
 };
 
+// A ratio as the whole millionths its relays and memory 12a are traced in (below 0 as 0).
+std::uint32_t ratio_millionths(double ratio);
+
 class ProgrammableController {
 public:
     ProgrammableController(Tracer& tracer, const axes::SpindleSyncProfile& profile);

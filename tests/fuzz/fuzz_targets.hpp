@@ -22,11 +22,17 @@
 #include <cstdint>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 
 namespace parsons::fuzz {
 
 using Bytes = std::span<const std::uint8_t>;
+
+// The input as text, byte for byte.
+inline std::string as_string(Bytes input) {
+    return {reinterpret_cast<const char*>(input.data()), input.size()};
+}
 
 // A property of an accepted input that does not hold. Thrown, never caught by a target.
 class Finding : public std::logic_error {

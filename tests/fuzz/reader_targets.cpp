@@ -32,10 +32,6 @@ using namespace parsons::cardreader;
 
 constexpr const char* kFile = "fuzz-deck";
 
-std::string as_string(Bytes input) {
-    return {reinterpret_cast<const char*>(input.data()), input.size()};
-}
-
 void check_names_file(const DeckError& e, const std::string& file) {
     if (std::string_view(e.what()).rfind(file, 0) != 0) {
         throw Finding(fmt::format("a DeckError that does not start with the file name '{}': {}",

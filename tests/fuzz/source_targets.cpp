@@ -29,10 +29,6 @@ namespace {
 
 using namespace parsons::cardreader;
 
-std::string as_string(Bytes input) {
-    return {reinterpret_cast<const char*>(input.data()), input.size()};
-}
-
 // Stations a deck generator asks for: the ends, the nose, and between.
 constexpr std::array<double, 10> kStations = {0, 1e-9, 1e-4, 0.002, 0.03, 0.25, 0.5, 0.9, 0.999, 1};
 
