@@ -21,6 +21,8 @@
 #include "axes/state_json.hpp"
 #include "cardreader/deck_error.hpp"
 #include "decks/job_file.hpp"
+#include "decks/press_feeder_job.hpp"
+#include "decks/tapping_job.hpp"
 #include "relaylogic/control_cabinet.hpp"
 
 #include <CLI/CLI.hpp>
@@ -52,9 +54,12 @@ std::string job_file_read(const RunRequest& f) {
     if (!f.cut.empty()) {
         return beside;
     }
+    // The replay page draws the cut of a job that has one; the job file of a press feeder or
+    // a tapping plate beside the deck is for its proof (--press-proof, --thread-proof).
     if ((!f.html.empty() || f.timeline != nullptr) && f.input != "-" &&
         std::filesystem::is_regular_file(beside)) {
-        return beside;
+        const std::string text = read_text_file(beside);
+        return decks::is_press_job(text) || decks::is_tapping_job(text) ? "" : beside;
     }
     return "";
 }

@@ -233,6 +233,27 @@ TEST_CASE("Run --html: the page of a completed run, of a stop, and of a generate
     page = read_bytes(dir.path("a.html"));
     CHECK(page.find("\"design\":{\"airfoil\":\"naca 2412\"") != std::string::npos);
 
+    // A press-feeder or tapping deck: the job file beside it is its proof's, with no cut to
+    // draw; the page is written without a design (it was exit 2, the file taken for a
+    // template's job).
+    for (const char* gen : {"press-feeder --cycles 1", "tapping"}) {
+        INFO(gen);
+        r = run_parsons(std::string("gen ") + gen + " -o " + q(dir.str("p.csv")));
+        REQUIRE(r.exit_code == 0);
+        r = run_parsons("run " + q(dir.str("p.csv")) + " -q --profile " +
+                        q(dir.str("p.csv.profile.json")) + " --html " + q(dir.str("p.html")));
+        INFO(r.output);
+        CHECK(r.exit_code == 0);
+        page = read_bytes(dir.path("p.html"));
+        CHECK(page.find("\"status\":\"completed\"") != std::string::npos);
+        CHECK(page.find("\"design\":null") != std::string::npos);
+    }
+    // A job file beside the deck that is no JSON is an error still, naming it.
+    parsons::test::write_bytes(dir.path("a.cbn.job.json"), "{not json");
+    r = run_parsons("run " + q(dir.str("a.cbn")) + " -q --html " + q(dir.str("a2.html")));
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find("a.cbn.job.json") != std::string::npos);
+
     // A deck whose name is not UTF-8: the report and the page carry U+FFFD for the bad byte
     // (it was an internal error, exit 1).
     const std::string odd = dir.str("odd\xff.csv");
