@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Configures and builds parsons in build/ (after installing what is missing).
+# Configures and builds parsons and its test suite in build/ (after installing everything the
+# tests need that is missing; scripts/demo.sh builds the program alone).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPARSONS_BUILD_TESTS=ON >/dev/null
 cmake --build build --parallel "$(nproc 2>/dev/null || echo 2)"

@@ -1,25 +1,46 @@
 #!/usr/bin/env bash
-# Installs what parsons needs to build and test, from Debian's packages only, and only what is
-# missing. Safe to run again: with everything present it installs nothing and asks for nothing.
+# Installs what parsons needs, from Debian's packages only, and only what is missing. Safe to
+# run again: with everything present it installs nothing and asks for nothing.
+#
+#   scripts/install-deps.sh            everything the build and the whole test suite need
+#                                      (scripts/test.sh, scripts/build.sh)
+#   scripts/install-deps.sh --program  only what the parsons program needs to build: the
+#                                      compiler, cmake and four header libraries
+#                                      (scripts/demo.sh)
 set -euo pipefail
 
+program_only=false
+if [ "${1:-}" = "--program" ]; then
+    program_only=true
+elif [ $# -gt 0 ]; then
+    echo "usage: scripts/install-deps.sh [--program]" >&2
+    exit 2
+fi
+
+# The program: g++, cmake, make, the four libraries (fmt, CLI11, nlohmann-json, Eigen) and lld,
+# the linker of both builds, some eight times faster than GNU ld on the test program
+# (CMakeLists.txt). Then, for the tests:
+# catch2: the test suite's framework (version 2).
 # clang and libclang-rt-14-dev: clang's sanitizer runtimes and libFuzzer, for
-# scripts/sanitize.sh and scripts/fuzz.sh (one build, build-sanitize/). lld: the linker of both
-# builds, some eight times faster than GNU ld on the test program (CMakeLists.txt).
+# scripts/sanitize.sh and scripts/fuzz.sh (one build, build-sanitize/).
+# gtkwave: its vcd2fst reads every trace the tests write, as GTKWave would.
 # groff-base and zsh: the tests read the manual pages with groff and parse the zsh completion.
 # dpkg-dev and file: CPack works out the .deb's Depends with dpkg-shlibdeps.
 # emscripten and node-acorn (its JavaScript optimizer's parser): the exhibit page, the emulator
 # compiled to WebAssembly (cmake --preset wasm, docs/web.md). chromium: the page's tests in a
 # real browser, headless (puppeteer-core drives it; nothing downloads a browser).
-packages=(g++ cmake make dpkg-dev file libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev catch2
-          gtkwave
-          clang libclang-rt-14-dev lld groff-base zsh
-          emscripten node-acorn chromium)
-# Node.js and npm: the tests' independent cross-checks (tests/js: Ajv validates every JSON
-# output against docs/schemas, gcode-toolpath reads the G-code parsons writes) and the browser
-# tests (puppeteer-core). Debian's own unless a node is already on the PATH.
-if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
-    packages+=(nodejs npm)
+packages=(g++ cmake make lld libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev)
+if ! $program_only; then
+    packages+=(dpkg-dev file catch2
+               gtkwave
+               clang libclang-rt-14-dev groff-base zsh
+               emscripten node-acorn chromium)
+    # Node.js and npm: the tests' independent cross-checks (tests/js: Ajv validates every JSON
+    # output against docs/schemas, gcode-toolpath reads the G-code parsons writes) and the
+    # browser tests (puppeteer-core). Debian's own unless a node is already on the PATH.
+    if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+        packages+=(nodejs npm)
+    fi
 fi
 
 missing=()
@@ -42,7 +63,7 @@ npm_packages() {
 }
 
 if [ ${#missing[@]} -eq 0 ]; then
-    npm_packages
+    $program_only || npm_packages
     exit 0
 fi
 
@@ -59,4 +80,4 @@ fi
 export DEBIAN_FRONTEND=noninteractive
 $sudo apt-get update -qq
 $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
-npm_packages
+$program_only || npm_packages

@@ -358,7 +358,8 @@ TEST_CASE("Docs: every command of the README and the tutorial runs as written, a
         std::smatch m;
         REQUIRE(std::regex_search(tutorial, m,
                                   std::regex(R"((\d+) cards and about (\w+) minutes of 1952)")));
-        const auto report = nlohmann::json::parse(read_bytes(scratch.path("out/demo/report.json")));
+        const auto report =
+            nlohmann::json::parse(read_bytes(scratch.path("out/tutorial/report.json")));
         static const std::vector<std::string> words = {"zero", "one",    "two",   "three", "four",
                                                        "five", "six",    "seven", "eight", "nine",
                                                        "ten",  "eleven", "twelve"};

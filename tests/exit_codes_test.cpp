@@ -153,16 +153,17 @@ TEST_CASE("Exit codes: demo returns 130 on Ctrl-C and 143 on SIGTERM, even while
     for (const auto& [signal, code] : std::map<std::string, int>{{"INT", 130}, {"TERM", 143}}) {
         TempDir dir;
         const std::string out = dir.str("out");
-        // The demo's trace is a FIFO that nobody reads (a live viewer not started yet): the
-        // run waits in open() for a reader. The operator gives up: the signal ends the wait.
-        // The demo starts with both signals ignored (as a background job's Ctrl-C is), so a
-        // signal that comes while it still generates its deck is lost, on a slow machine
-        // (the sanitizer build) too; the operator presses again every 0.1 s until the run
-        // takes it, which it does only where it waits. (A loop, not a bare wait, so that a
-        // demo that ignores the signal fails the test instead of hanging it.)
+        // The trace of the demo's first run, the sample deck's, is a FIFO that nobody reads
+        // (a live viewer not started yet): the run waits in open() for a reader. The operator gives
+        // up: the signal ends the wait. The demo starts with both signals ignored (as a background
+        // job's Ctrl-C is), so a signal that comes while it still generates its deck is lost, on a
+        // slow machine (the sanitizer build) too; the operator presses again every 0.1 s until the
+        // run takes it, which it does only where it waits. (A loop, not a bare wait, so that a demo
+        // that ignores the signal fails the test instead of hanging it.)
         const auto r = run_shell(
-            "mkdir -p " + q(out) + " && mkfifo " + q(out + "/trace.vcd") +
-            " && { trap '' INT TERM; PARSONS demo --out " + q(out) + " > " + q(dir.str("log.txt")) +
+            "mkdir -p " + q(out + "/sample-deck") + " && mkfifo " +
+            q(out + "/sample-deck/trace.vcd") + " && { trap '' INT TERM; PARSONS demo --out " +
+            q(out) + " > " + q(dir.str("log.txt")) +
             " 2>&1 & pid=$!; trap - INT TERM; i=0; while kill -0 $pid " +
             "2>/dev/null && [ $i -lt 300 ]; do kill -" + signal +
             " $pid 2>/dev/null; sleep 0.1; i=$((i+1)); done; kill -9 $pid 2>/dev/null; wait " +
@@ -172,9 +173,10 @@ TEST_CASE("Exit codes: demo returns 130 on Ctrl-C and 143 on SIGTERM, even while
         CHECK(r.output.find(fmt::format("status {}", code)) != std::string::npos);
         CHECK(log.find("parsons: interrupted while opening the outputs, before any card") !=
               std::string::npos);
-        CHECK(std::filesystem::is_fifo(dir.path("out/trace.vcd")));
-        CHECK_FALSE(std::filesystem::exists(dir.path("out/report.json")));
-        for (const auto& entry : std::filesystem::directory_iterator(dir.path("out"))) {
+        CHECK(std::filesystem::is_fifo(dir.path("out/sample-deck/trace.vcd")));
+        CHECK_FALSE(std::filesystem::exists(dir.path("out/sample-deck/report.json")));
+        CHECK_FALSE(std::filesystem::exists(dir.path("out/airfoil-template")));
+        for (const auto& entry : std::filesystem::recursive_directory_iterator(dir.path("out"))) {
             CHECK(entry.path().filename().string().find(".partial-") == std::string::npos);
         }
     }

@@ -5,11 +5,16 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
+#include <regex>
+#include <string>
+#include <vector>
 
 using parsons::test::q;
 using parsons::test::read_bytes;
 using parsons::test::run_parsons;
+using parsons::test::run_shell;
 using parsons::test::source_path;
 using parsons::test::TempDir;
 using parsons::test::write_bytes;
@@ -101,11 +106,94 @@ TEST_CASE("Demo: the default job writes its deck, cards, report, trace, plot and
     // Where to find every claim shown at work (issue 30, item 4), and that the page is there.
     CHECK(demo.output.find("docs/claims.md") != std::string::npos);
     CHECK(std::filesystem::exists(source_path("docs/claims.md")));
-    for (const char* f : {"naca2412.cbn", "naca2412.cbn.job.json", "cards/card-0001.svg",
-                          "report.json", "trace.vcd", "plot.svg", "cut.svg", "centres.csv"}) {
+    for (const char* f :
+         {"airfoil-template/naca2412.cbn", "airfoil-template/naca2412.cbn.job.json",
+          "airfoil-template/cards/card-0001.svg", "airfoil-template/report.json",
+          "airfoil-template/trace.vcd", "airfoil-template/plot.svg", "airfoil-template/cut.svg",
+          "airfoil-template/centres.csv", "airfoil-template/replay.html",
+          "sample-deck/patent-example.cbn", "sample-deck/cards/card-0004.svg",
+          "sample-deck/report.json", "sample-deck/replay.html", "two-tools/two-tool-tripped.csv",
+          "press-feeder/press-feeder-speed-only.csv.plot.svg",
+          "tapping/tapping-stale-ratio.report.json", "index.html"}) {
         INFO(f);
         CHECK(std::filesystem::exists(dir.path("demo/" + std::string(f))));
     }
+}
+
+namespace {
+
+// Every href and src of the index, in the order they come.
+std::vector<std::string> index_targets(const std::string& html) {
+    std::vector<std::string> targets;
+    static const std::regex target(R"re((?:href|src)="([^"#][^"]*)")re");
+    for (auto it = std::sregex_iterator(html.begin(), html.end(), target);
+         it != std::sregex_iterator(); ++it) {
+        targets.push_back((*it)[1].str());
+    }
+    return targets;
+}
+
+} // namespace
+
+TEST_CASE("Demo: one story in order, a folder a system, and an index.html whose every link and "
+          "picture is a file the demo wrote",
+          "[cli][demo]") {
+    TempDir dir;
+    const auto demo = run_parsons("demo --out " + q(dir.str("demo")));
+    REQUIRE(demo.exit_code == 0);
+    // The story: the five parts in order, the two failures shown on purpose announced before
+    // they happen, and at the end what to open.
+    std::size_t at = 0;
+    for (const char* part : {"1. The 1952 machine", "2. What it was made for", "3. Two tools",
+                             "4. A feeder", "falls behind and collides", "COLLISION", "5. Tapping",
+                             "on purpose", "wrong pitch in 3 of 6 holes", "Open "}) {
+        INFO(part);
+        const std::size_t found = demo.output.find(part, at);
+        REQUIRE(found != std::string::npos);
+        at = found;
+    }
+    CHECK(demo.output.find(dir.str("demo") + "/index.html") != std::string::npos);
+
+    const std::string html = read_bytes(dir.path("demo/index.html"));
+    const std::vector<std::string> targets = index_targets(html);
+    CHECK(targets.size() > 30);
+    for (const std::string& t : targets) {
+        INFO(t);
+        CHECK(t.find("..") == std::string::npos); // relative, inside the demo's folder
+        CHECK(t.front() != '/');
+        CHECK(std::filesystem::is_regular_file(dir.path("demo/" + t)));
+    }
+    for (const char* folder :
+         {"sample-deck", "airfoil-template", "two-tools", "press-feeder", "tapping"}) {
+        INFO(folder);
+        CHECK(html.find(std::string("<section id=\"") + folder + "\">") != std::string::npos);
+        CHECK(std::find_if(targets.begin(), targets.end(), [&](const std::string& t) {
+                  return t.starts_with(std::string(folder) + "/") && t.ends_with(".svg");
+              }) != targets.end()); // a picture each
+    }
+    // The figures in the page are the runs' own.
+    const auto report =
+        nlohmann::json::parse(read_bytes(dir.path("demo/airfoil-template/report.json")));
+    const double seconds = report.at("machine_seconds").get<double>();
+    CHECK(html.find(fmt::format("{} min {:.1f} s", static_cast<long>(seconds / 60),
+                                seconds - 60.0 * static_cast<long>(seconds / 60))) !=
+          std::string::npos);
+}
+
+TEST_CASE("Demo: without the shipped data it says the sample deck was not run, and runs the rest",
+          "[cli][demo]") {
+    TempDir dir;
+    std::filesystem::create_directories(dir.path("empty"));
+    // run_shell takes every PARSONS for the program: the variable's name is split in quotes.
+    const auto demo = run_shell("env 'PARS''ONS_DATA_DIR='" + q(dir.str("empty")) +
+                                " PARSONS demo --out " + q(dir.str("demo")));
+    CHECK(demo.exit_code == 0);
+    CHECK(demo.output.find("1. the patent's example deck: not run, the shipped sample decks were "
+                           "not found") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir.path("demo/sample-deck")));
+    const std::string html = read_bytes(dir.path("demo/index.html"));
+    CHECK(html.find("sample-deck/") == std::string::npos);
+    CHECK(html.find("airfoil-template/replay.html") != std::string::npos);
 }
 
 TEST_CASE("Gen: a scallop of zero or less is refused, not taken as 'use --stations'",

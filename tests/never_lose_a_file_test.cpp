@@ -502,8 +502,10 @@ TEST_CASE("Never lose a file: a reader that goes away ends every command quietly
             CHECK(e.err.find("error") == std::string::npos);
             CHECK(temporaries(w.dir.path("")).empty());
             if (std::string_view(args).starts_with("demo")) {
-                // It ends where it first finds its reader gone, before it runs the deck.
-                CHECK_FALSE(fs::exists(w.dir.path("demo/report.json")));
+                // It ends where it first finds its reader gone, after its first line and
+                // before it runs any deck: no report, no folder of a system.
+                CHECK_FALSE(fs::exists(w.dir.path("demo/sample-deck")));
+                CHECK_FALSE(fs::exists(w.dir.path("demo/airfoil-template/report.json")));
             }
         }
     }

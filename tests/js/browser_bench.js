@@ -49,7 +49,7 @@ function timeNative(args) {
   const demoDir = path.join(workDir, 'demo');
   const d = childProcess.spawnSync(parsonsExe, ['demo', '--out', demoDir], { encoding: 'utf8' });
   if (d.status !== 0) throw new Error(`parsons demo: ${d.stderr}`);
-  const deck = path.join(demoDir, 'naca2412.cbn');
+  const deck = path.join(demoDir, 'airfoil-template', 'naca2412.cbn');
   const report = ['run', deck, '-q', '--report', path.join(workDir, 'r.json')];
   const nativePlain = timeNative(report);
   const nativeTrace = timeNative([...report, '--trace', path.join(workDir, 't.vcd')]);

@@ -205,7 +205,7 @@ function compareRun(name, page, report) {
     const demoDir = path.join(workDir, 'demo');
     const d = parsons(['demo', '--out', demoDir]);
     check(d.status === 0, 'parsons demo runs', d.status === 0 ? '' : d.stderr);
-    const demoReport = JSON.parse(fs.readFileSync(path.join(demoDir, 'report.json'), 'utf8'));
+    const demoReport = JSON.parse(fs.readFileSync(path.join(demoDir, 'airfoil-template', 'report.json'), 'utf8'));
     compareRun('demo deck', demo, demoReport);
     const design = await page.evaluate(() => window.parsonsViewer.h.design && window.parsonsViewer.h.design.airfoil);
     check(design === 'naca 2412', 'the demo run draws the cut against the NACA 2412 design', String(design));
@@ -222,7 +222,7 @@ function compareRun(name, page, report) {
       return fs.readFileSync(path.join(workDir, file));
     };
     const deck = await downloaded('#dl-deck', 'deck.cbn');
-    const nativeDeck = fs.readFileSync(path.join(demoDir, 'naca2412.cbn'));
+    const nativeDeck = fs.readFileSync(path.join(demoDir, 'airfoil-template', 'naca2412.cbn'));
     check(deck !== null && deck.equals(nativeDeck), 'the deck download is the deck parsons demo punches',
           deck === null ? 'nothing downloaded' : `${deck.length} bytes against ${nativeDeck.length}`);
     const report = await downloaded('#dl-report', 'report.json');
@@ -231,7 +231,7 @@ function compareRun(name, page, report) {
     check(report !== null && same(JSON.parse(report)), 'the report download is the CLI\'s report of the deck');
     const trace = await downloaded('#dl-trace', 'trace.vcd');
     const nativeTrace = path.join(workDir, 'demo-trace.vcd');
-    parsons(['run', path.join(demoDir, 'naca2412.cbn'), '-q', '--trace', nativeTrace]);
+    parsons(['run', path.join(demoDir, 'airfoil-template', 'naca2412.cbn'), '-q', '--trace', nativeTrace]);
     const body = (t) => t.toString().replace(/\$date[\s\S]*?\$end/, '').replace(/\$version[\s\S]*?\$end/, '');
     check(trace !== null && body(trace) === body(fs.readFileSync(nativeTrace)), 'the trace download is the CLI\'s trace');
 

@@ -63,7 +63,12 @@ mkdir -p "$work/run"
 grep -q "status         completed" "$work/demo.log" &&
     grep -q "every hole within tolerance" "$work/demo.log" ||
     fail "the demo did not run to its end: $(tail -5 "$work/demo.log")"
-[ -s "$work/run/out/demo/report.json" ] || fail "the demo wrote no report"
+[ -s "$work/run/out/demo/airfoil-template/report.json" ] || fail "the demo wrote no report"
+# The shipped sample deck, found in PREFIX/share/parsons, ran too, and the index names it.
+[ -s "$work/run/out/demo/sample-deck/report.json" ] ||
+    fail "the demo did not find the shipped sample deck: $(grep -m1 "^1\." "$work/demo.log")"
+grep -q 'href="sample-deck/replay.html"' "$work/run/out/demo/index.html" ||
+    fail "the demo's index.html does not show the sample deck"
 
 echo "== it finds its bundled airfoil files by name, from any folder"
 (cd "$work/run" && "$prefix/bin/parsons" gen airfoil --dat clarky --scallop 0.002 -o clarky.cbn \
