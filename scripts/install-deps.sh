@@ -25,13 +25,13 @@ fi
 # scripts/sanitize.sh and scripts/fuzz.sh (one build, build-sanitize/).
 # gtkwave: its vcd2fst reads every trace the tests write, as GTKWave would.
 # groff-base and zsh: the tests read the manual pages with groff and parse the zsh completion.
-# dpkg-dev and file: CPack works out the .deb's Depends with dpkg-shlibdeps.
+# dpkg-dev and file: CPack works out the .debs' Depends with dpkg-shlibdeps; lintian checks them.
 # emscripten and node-acorn (its JavaScript optimizer's parser): the exhibit page, the emulator
 # compiled to WebAssembly (cmake --preset wasm, docs/web.md). chromium: the page's tests in a
 # real browser, headless (puppeteer-core drives it; nothing downloads a browser).
 packages=(g++ cmake make lld libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev)
 if ! $program_only; then
-    packages+=(dpkg-dev file catch2
+    packages+=(dpkg-dev file lintian catch2
                gtkwave
                clang libclang-rt-14-dev groff-base zsh
                emscripten node-acorn chromium)

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# The install and the .deb, as a user gets them (docs/install.md): `cmake --install` into a
-# temporary prefix, whose parsons runs the demo and finds its bundled data from any folder, and
-# whose CMake package builds and runs examples/; then `cpack` makes the .deb, whose contents,
-# dependencies and unpacked tree are checked.
+# The install and the .debs, as a user gets them (docs/install.md): `cmake --install` into a
+# temporary prefix, whose parsons runs the demo and finds its bundled data from any folder; then
+# `cpack` makes the two packages, parsons and parsons-dev, whose fields, contents, stripping and
+# lintian's verdict are checked, and the examples build against the unpacked pair.
 #   install_test.sh BUILD_DIR SOURCE_DIR WORK_DIR
 set -euo pipefail
 build=$(realpath "$1")
@@ -30,11 +30,14 @@ echo "== cmake --install --prefix $prefix"
 cmake --install "$build" --prefix "$prefix" >"$work/install.log"
 tree=$(cd "$prefix" && find . -type f | sed 's|^\./||' | sort)
 must_have "$tree" bin/parsons \
-    share/man/man1/parsons.1 share/man/man1/parsons-run.1 share/man/man1/parsons-gen-tapping.1 \
+    share/man/man1/parsons.1.gz share/man/man1/parsons-run.1.gz \
+    share/man/man1/parsons-gen-tapping.1.gz \
     share/bash-completion/completions/parsons share/zsh/vendor-completions/_parsons \
-    share/doc/parsons/README.md share/doc/parsons/LICENSE share/doc/parsons/CHANGELOG.md \
+    share/doc/parsons/README.md share/doc/parsons/copyright share/doc/parsons/CHANGELOG.md \
+    share/doc/parsons/changelog.gz share/doc/parsons/airfoil-sources.md \
     share/doc/parsons/docs/design-rules.md share/doc/parsons/docs/install.md \
-    share/doc/parsons/examples/relay_events.cpp share/doc/parsons/examples/CMakeLists.txt \
+    share/doc/parsons-dev/copyright share/doc/parsons-dev/changelog.gz \
+    share/doc/parsons-dev/examples/relay_events.cpp share/doc/parsons-dev/examples/CMakeLists.txt \
     share/parsons/airfoils/clarky.dat share/parsons/airfoils/naca2412.dat \
     share/parsons/samples/patent-example.csv \
     include/parsons/cardreader/layout.hpp include/parsons/relaylogic/control_cabinet.hpp \
@@ -42,10 +45,19 @@ must_have "$tree" bin/parsons \
     lib/libparsons_cardreader.a lib/libparsons_relaylogic.a lib/libparsons_axes.a \
     lib/libparsons_decks.a lib/cmake/parsons/parsonsConfig.cmake \
     lib/cmake/parsons/parsonsConfigVersion.cmake lib/cmake/parsons/parsonsTargets.cmake
-# Every page the build wrote is installed, and every header of the four parts.
+# Every page the build wrote is installed, gzipped as gzip -9n gives it (no name, no time: the
+# same bytes every build), and every header of the four parts.
 for page in "$build"/man/man1/*.1; do
-    must_have "$tree" "share/man/man1/$(basename "$page")"
+    must_have "$tree" "share/man/man1/$(basename "$page").gz"
+    cmp -s <(gzip -9n -c "$page") "$prefix/share/man/man1/$(basename "$page").gz" ||
+        fail "share/man/man1/$(basename "$page").gz is not the page gzipped -9n"
 done
+if grep -q "share/man/man1/.*\.1$" <<<"$tree"; then
+    fail "an uncompressed manual page was installed: $(grep -m1 "share/man/man1/.*\.1$" <<<"$tree")"
+fi
+if grep -q "share/parsons/airfoils/SOURCES.md" <<<"$tree"; then
+    fail "the airfoils' provenance was installed with the data, not with the docs"
+fi
 for part in cardreader relaylogic axes decks; do
     for h in "$source/$part"/*.hpp; do
         must_have "$tree" "include/parsons/$part/$(basename "$h")"
@@ -87,12 +99,112 @@ set -e
 grep -q "no-such-foil: cannot open the airfoil file (bundled, by name: clarky.dat, e387.dat" \
     "$work/err.log" || fail "the unknown airfoil's message: $(cat "$work/err.log")"
 
-echo "== examples/ builds against the installed package and runs"
-cmake -S "$source/examples" -B "$work/examples" -DCMAKE_PREFIX_PATH="$prefix" \
+echo "== cpack: the two packages"
+cpack --config "$build/CPackConfig.cmake" -B "$work/package" >"$work/cpack.log" 2>&1 ||
+    fail "cpack: $(tail -20 "$work/cpack.log")"
+version=$(sed -n 's/^project(parsons VERSION \([0-9.]*\).*/\1/p' "$source/CMakeLists.txt")
+deb=$(ls "$work"/package/parsons_*.deb)
+dev=$(ls "$work"/package/parsons-dev_*.deb)
+field() { dpkg-deb -f "$1" "$2"; }
+list_has() { # list_has "a, b (>= 1), c" b: b is one of the comma-separated package names
+    local names
+    names=$(sed 's/, /\n/g; s/ ([^)]*)//g' <<<"$1")
+    grep -qxF "$2" <<<"$names"
+}
+[ "$(field "$deb" Package)" = parsons ] || fail "the program's package is not named parsons"
+[ "$(field "$dev" Package)" = parsons-dev ] || fail "the library's package is not named parsons-dev"
+for d in "$deb" "$dev"; do
+    [ "$(field "$d" Version)" = "$version" ] || fail "$(basename "$d"): version is not $version"
+    # A clean Description: a synopsis and an extended text, no CMake list separator in it.
+    desc=$(field "$d" Description)
+    if grep -q ";" <<<"$desc"; then fail "$(basename "$d"): a ';' in the Description: $desc"; fi
+    [ "$(wc -l <<<"$desc")" -ge 3 ] || fail "$(basename "$d"): no extended description: $desc"
+    # apt installs Recommends by default: no compiler, cmake or -dev package there.
+    if field "$d" Recommends | grep -Eq "g\+\+|cmake|-dev|clang"; then
+        fail "$(basename "$d") recommends a toolchain: $(field "$d" Recommends)"
+    fi
+done
+depends=$(field "$deb" Depends)
+for p in libc6 libstdc++6 libfmt9; do
+    list_has "$depends" "$p" || fail "parsons' Depends lacks $p: $depends"
+done
+dev_depends=$(field "$dev" Depends)
+for p in parsons libfmt-dev nlohmann-json3-dev libeigen3-dev; do
+    list_has "$dev_depends" "$p" || fail "parsons-dev's Depends lacks $p: $dev_depends"
+done
+grep -qF "parsons (= $version)" <<<"$dev_depends" || fail "parsons-dev does not need parsons $version"
+contents_of() { dpkg-deb -c "$1" | awk '{print $6}' | sed 's|^\./||'; }
+contents=$(contents_of "$deb")
+dev_contents=$(contents_of "$dev")
+must_have "$contents" usr/bin/parsons usr/share/man/man1/parsons-run.1.gz \
+    usr/share/bash-completion/completions/parsons usr/share/zsh/vendor-completions/_parsons \
+    usr/share/parsons/airfoils/clarky.dat usr/share/parsons/samples/patent-example.csv \
+    usr/share/doc/parsons/README.md usr/share/doc/parsons/copyright usr/share/doc/parsons/changelog.gz
+must_have "$dev_contents" usr/include/parsons/relaylogic/control_cabinet.hpp \
+    usr/lib/cmake/parsons/parsonsConfig.cmake usr/lib/libparsons_decks.a \
+    usr/share/doc/parsons-dev/copyright usr/share/doc/parsons-dev/changelog.gz \
+    usr/share/doc/parsons-dev/examples/relay_events.cpp
+if grep -q "^usr/include/\|^usr/lib/" <<<"$contents"; then
+    fail "parsons carries the library's files: $(grep -m1 "^usr/include/\|^usr/lib/" <<<"$contents")"
+fi
+if grep -q "^usr/bin/\|^usr/share/parsons/\|^usr/share/man/" <<<"$dev_contents"; then
+    fail "parsons-dev carries the program's files: $(grep -m1 "^usr/bin/\|^usr/share/" <<<"$dev_contents")"
+fi
+for c in "$contents" "$dev_contents"; do
+    if grep -v '^usr/\|^$' <<<"$c" | grep -q .; then
+        fail "a .deb puts files outside /usr: $(grep -v '^usr/\|^$' <<<"$c" | head -3)"
+    fi
+done
+# The copyright file is Debian's machine-readable format, the licence text the project's.
+unpacked=$work/unpacked
+dpkg-deb -x "$deb" "$unpacked"
+dpkg-deb -x "$dev" "$unpacked"
+copyright=$unpacked/usr/share/doc/parsons/copyright
+head -1 "$copyright" | grep -qx "Format: https://www.debian.org/doc/packaging-manuals/copyright-format/1.0/" ||
+    fail "the copyright file is not in the machine-readable format"
+grep -q "^Files: \*$" "$copyright" && grep -q "^License: Expat$" "$copyright" ||
+    fail "the copyright file has no Files: * paragraph with its licence"
+diff <(sed -n '/^Permission is hereby granted/,$p' "$source/LICENSE") \
+    <(sed -n '/^ Permission is hereby granted/,$p' "$copyright" | sed 's/^ //; s/^\.$//') >/dev/null ||
+    fail "the copyright file's Expat text is not the project's LICENSE"
+zcat "$unpacked/usr/share/doc/parsons/changelog.gz" | head -1 | grep -qx "parsons ($version) unstable; urgency=medium" ||
+    fail "changelog.gz is no Debian changelog of $version"
+# Stripped: the executable has no symbols, the libraries no debug sections but their symbols.
+kind=$(file "$unpacked/usr/bin/parsons")
+grep -q ", stripped" <<<"$kind" || fail "usr/bin/parsons is not stripped"
+for part in cardreader relaylogic axes decks; do
+    lib=$unpacked/usr/lib/libparsons_$part.a
+    # (captured first: grep -q ending a pipe early would fail it under pipefail)
+    sections=$(objdump -h "$lib")
+    symbols=$(nm -C "$lib")
+    if grep -q "\.debug_" <<<"$sections"; then fail "$lib keeps debug sections"; fi
+    grep -q " T parsons::" <<<"$symbols" || fail "$lib has lost its symbol table"
+done
+(cd "$work/run" && "$unpacked/usr/bin/parsons" gen airfoil --dat naca2412.dat -o n.cbn \
+    >/dev/null) || fail "the unpacked .deb's parsons cannot find its airfoil files"
+
+# lintian, Debian's package checker: every tag it gives, at every level, must be one that
+# docs/install.md's table explains (a row "| `TAG` | ...").
+if command -v lintian >/dev/null; then
+    explained=$(sed -n 's/^| `\([a-z0-9-]*\)` |.*/\1/p' "$source/docs/install.md" | sort -u)
+    [ -n "$explained" ] || fail "docs/install.md explains no lintian tag"
+    lintian -I --pedantic "$deb" "$dev" >"$work/lintian.log" 2>&1 || true
+    tags=$(sed -n 's/^[EWIPX]: [a-z-]*: \([a-z0-9-]*\).*/\1/p' "$work/lintian.log" | sort -u)
+    for t in $tags; do
+        grep -qxF "$t" <<<"$explained" || fail "lintian: $t, which docs/install.md does not explain: $(grep -m1 " $t" "$work/lintian.log")"
+    done
+    echo "lintian: $(grep -c '^[EWIPX]: ' "$work/lintian.log") tags, all explained: $(tr '\n' ' ' <<<"$tags")"
+else
+    echo "lintian is not installed (scripts/install-deps.sh installs it): not run"
+fi
+
+echo "== examples/, as parsons-dev ships them, build against the unpacked packages and run"
+cmake -S "$unpacked/usr/share/doc/parsons-dev/examples" -B "$work/examples" \
+    -DCMAKE_PREFIX_PATH="$unpacked/usr" \
     -DCMAKE_BUILD_TYPE=Release >"$work/examples-configure.log" ||
     fail "configuring examples/: $(tail -20 "$work/examples-configure.log")"
-grep -q "$prefix/lib/cmake/parsons" "$work/examples/CMakeCache.txt" ||
-    fail "examples/ did not find the installed package"
+grep -q "$unpacked/usr/lib/cmake/parsons" "$work/examples/CMakeCache.txt" ||
+    fail "examples/ did not find the unpacked parsons-dev"
 cmake --build "$work/examples" >"$work/examples-build.log" 2>&1 ||
     fail "building examples/: $(tail -20 "$work/examples-build.log")"
 "$work/examples/relay_events" >"$work/relay_events.log" || fail "relay_events: exit $?"
@@ -103,32 +215,6 @@ grep -q "picks .*numeral" "$work/relay_events.log" || fail "relay_events printed
 grep -q "table at 0.0... in, cross slide at 0.0... in" "$work/relay_events.log" ||
     fail "relay_events did not bring the table and the cross slide home"
 
-echo "== cpack: the .deb"
-cpack --config "$build/CPackConfig.cmake" -B "$work/package" >"$work/cpack.log" 2>&1 ||
-    fail "cpack: $(tail -20 "$work/cpack.log")"
-deb=$(ls "$work"/package/parsons_*.deb)
-version=$(sed -n 's/^project(parsons VERSION \([0-9.]*\).*/\1/p' "$source/CMakeLists.txt")
-[ "$(dpkg-deb -f "$deb" Package)" = parsons ] || fail "the package is not named parsons"
-[ "$(dpkg-deb -f "$deb" Version)" = "$version" ] || fail "the package version is not $version"
-depends=$(dpkg-deb -f "$deb" Depends)
-for dep in libc6 libstdc++6 libfmt9; do
-    sed 's/, /\n/g; s/ ([^)]*)//g' <<<"$depends" | grep -qxF "$dep" || fail "Depends lacks $dep: $depends"
-done
-recommends=$(dpkg-deb -f "$deb" Recommends)
-for dep in libfmt-dev nlohmann-json3-dev libeigen3-dev; do
-    grep -q "$dep" <<<"$recommends" || fail "Recommends lacks $dep: $recommends"
-done
-contents=$(dpkg-deb -c "$deb" | awk '{print $6}' | sed 's|^\./||')
-must_have "$contents" usr/bin/parsons usr/share/man/man1/parsons-run.1 \
-    usr/share/bash-completion/completions/parsons usr/share/zsh/vendor-completions/_parsons \
-    usr/share/parsons/airfoils/clarky.dat usr/share/parsons/samples/patent-example.csv \
-    usr/include/parsons/relaylogic/control_cabinet.hpp usr/lib/cmake/parsons/parsonsConfig.cmake \
-    usr/lib/libparsons_decks.a usr/share/doc/parsons/README.md
-if grep -v '^usr/\|^$' <<<"$contents" | grep -q .; then
-    fail "the .deb puts files outside /usr: $(grep -v '^usr/\|^$' <<<"$contents" | head -3)"
-fi
-dpkg-deb -x "$deb" "$work/unpacked"
-(cd "$work/run" && "$work/unpacked/usr/bin/parsons" gen airfoil --dat naca2412.dat -o n.cbn \
-    >/dev/null) || fail "the unpacked .deb's parsons cannot find its airfoil files"
-echo "$deb: $(dpkg-deb -c "$deb" | wc -l) entries; Depends: $depends"
+echo "$(basename "$deb"): $(field "$deb" Installed-Size) kB installed, $(wc -l <<<"$contents") entries; Depends: $depends"
+echo "$(basename "$dev"): $(field "$dev" Installed-Size) kB installed, $(wc -l <<<"$dev_contents") entries; Depends: $dev_depends"
 echo "all checked"
