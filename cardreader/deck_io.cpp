@@ -91,6 +91,30 @@ std::optional<DeckFormat> format_named(std::string_view name) {
     return std::nullopt;
 }
 
+std::span<const std::string_view> format_extensions(DeckFormat f) {
+    static constexpr std::array<std::string_view, 1> cbn = {"cbn"};
+    static constexpr std::array<std::string_view, 1> bin = {"bin"};
+    static constexpr std::array<std::string_view, 4> text = {"txt", "crd", "card", "cards"};
+    static constexpr std::array<std::string_view, 2> listing = {"csv", "lst"};
+    static constexpr std::array<std::string_view, 2> tape = {"tape", "ptp"};
+    static constexpr std::array<std::string_view, 1> five = {"five"};
+    switch (f) {
+    case DeckFormat::cbn:
+        return cbn;
+    case DeckFormat::bin:
+        return bin;
+    case DeckFormat::text:
+        return text;
+    case DeckFormat::listing:
+        return listing;
+    case DeckFormat::tape:
+        return tape;
+    case DeckFormat::five:
+        return five;
+    }
+    return {};
+}
+
 std::optional<DeckFormat> format_for_path(std::string_view path) {
     const auto dot = path.rfind('.');
     const auto slash = path.find_last_of("/\\");
@@ -100,23 +124,11 @@ std::optional<DeckFormat> format_for_path(std::string_view path) {
     std::string ext(path.substr(dot + 1));
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (ext == "cbn") {
-        return DeckFormat::cbn;
-    }
-    if (ext == "bin") {
-        return DeckFormat::bin;
-    }
-    if (ext == "txt" || ext == "crd" || ext == "card" || ext == "cards") {
-        return DeckFormat::text;
-    }
-    if (ext == "csv" || ext == "lst") {
-        return DeckFormat::listing;
-    }
-    if (ext == "tape" || ext == "ptp") {
-        return DeckFormat::tape;
-    }
-    if (ext == "five") {
-        return DeckFormat::five;
+    for (DeckFormat f : kDeckFormats) {
+        const auto known = format_extensions(f);
+        if (std::find(known.begin(), known.end(), ext) != known.end()) {
+            return f;
+        }
     }
     return std::nullopt;
 }

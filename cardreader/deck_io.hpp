@@ -18,6 +18,7 @@
 #include <iosfwd>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -33,6 +34,9 @@ bool format_is_continuous(DeckFormat f);
 
 std::string_view format_name(DeckFormat f);
 std::optional<DeckFormat> format_named(std::string_view name);
+// The file-name extensions of a format, without the dot, lower case ("txt", "crd", ...): the
+// ones format_for_path knows it by (in any case).
+std::span<const std::string_view> format_extensions(DeckFormat f);
 std::optional<DeckFormat> format_for_path(std::string_view path);
 // The format of a deck told from its first bytes (standard input has no extension):
 // a card-start mark (bit 7 of the first byte) is column binary, a '#' or a "card," header a

@@ -133,11 +133,10 @@ std::string_view code_name(KeypunchCode code) {
 }
 
 std::optional<KeypunchCode> code_named(std::string_view name) {
-    if (name == "029") {
-        return KeypunchCode::ibm029;
-    }
-    if (name == "026") {
-        return KeypunchCode::ibm026;
+    for (KeypunchCode code : kKeypunchCodes) {
+        if (code_name(code) == name) {
+            return code;
+        }
     }
     return std::nullopt;
 }

@@ -9,6 +9,7 @@
 
 #include "cardreader/card.hpp"
 
+#include <array>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -33,6 +34,8 @@ std::optional<ColumnWord> punches_for(char ascii, KeypunchCode code);
 // The table entry for a column's holes, or nothing if no key makes exactly these holes.
 const CodeEntry* entry_for_punches(ColumnWord punches, KeypunchCode code);
 
+inline constexpr std::array<KeypunchCode, 2> kKeypunchCodes = {KeypunchCode::ibm029,
+                                                               KeypunchCode::ibm026};
 std::string_view code_name(KeypunchCode code);
 std::optional<KeypunchCode> code_named(std::string_view name);
 

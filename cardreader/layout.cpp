@@ -332,7 +332,7 @@ const CardLayout& fig8_layout() {
 }
 
 const CardLayout* layout_named(std::string_view name) {
-    if (name == "fig8") {
+    if (name == kLayoutNames[0]) {
         return &fig8_layout();
     }
     return nullptr;

@@ -12,6 +12,7 @@
 #include "cardreader/card.hpp"
 #include "cardreader/orders.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -130,6 +131,8 @@ std::string field_label(const LayoutField& field);
 std::string_view field_short_label(FieldKind kind);
 
 const CardLayout& fig8_layout();
+// The layouts a card reader can be plugged for, by name ("fig8"), and the one of a name.
+inline constexpr std::array<std::string_view, 1> kLayoutNames = {"fig8"};
 const CardLayout* layout_named(std::string_view name);
 
 // A punch the layout cannot read; the reader stops the machine and names the column.

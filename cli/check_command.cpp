@@ -20,6 +20,7 @@
 #include "cli/support/applied_profile.hpp"
 #include "cli/support/deck_prediction.hpp"
 #include "cli/support/json_output.hpp"
+#include "cli/support/value_names.hpp"
 #include "outputs/report/run_report.hpp"
 
 #include "cardreader/deck_review.hpp"
@@ -257,12 +258,17 @@ void add_check_command(CLI::App& app, Command& selected) {
         "check", "Before running: run the deck on the emulator and say whether the machine runs "
                  "it through or where it stops and why, from the relay events; with every card "
                  "past a limit and advice on the deck");
-    cmd->add_option("DECK", rq.input, "The deck to check")->required();
-    cmd->add_option("--profile", rq.profile, "Machine profile JSON (see 'parsons profile')");
+    cmd->add_option("DECK", rq.input, "The deck to check")
+        ->type_name(std::string(kDeckValue))
+        ->required();
+    cmd->add_option("--profile", rq.profile, "Machine profile JSON (see 'parsons profile')")
+        ->type_name(std::string(kProfileValue));
     cmd->add_option("--limit", rq.limits,
-                    "Soft limits of the job, AXIS=MIN:MAX inches (e.g. table=0:9.5)");
+                    "Soft limits of the job, AXIS=MIN:MAX inches (e.g. table=0:9.5)")
+        ->type_name("AXIS=MIN:MAX");
     cmd->add_option("--fault", rq.faults,
-                    "Inject a fault, as 'parsons run --fault' does (repeatable; docs/faults.md)");
+                    "Inject a fault, as 'parsons run --fault' does (repeatable; docs/faults.md)")
+        ->type_name("FAULT");
     cmd->add_option("--feed", rq.feed,
                     "cards or ribbon, as 'parsons run --feed' (a tape deck always feeds as a "
                     "ribbon)")

@@ -4,6 +4,7 @@
 #include "cli/commands.hpp"
 #include "cli/support/applied_profile.hpp"
 #include "cli/support/deck_files.hpp"
+#include "cli/support/value_names.hpp"
 #include "outputs/output_file.hpp"
 
 #include "cardreader/deck_error.hpp"
@@ -11,6 +12,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 
@@ -30,7 +32,8 @@ bool wants_gcode(const ConvertFlags& f) {
         return f.to == "gcode";
     }
     const std::string ext = std::filesystem::path(f.output).extension().string();
-    return ext == ".ngc" || ext == ".nc" || ext == ".gcode";
+    return std::any_of(kGcodeExtensions.begin(), kGcodeExtensions.end(),
+                       [&](std::string_view e) { return ext == "." + std::string(e); });
 }
 
 // The deck run on the emulated machine, its path written as G-code.
@@ -84,15 +87,20 @@ ExitCode run_convert(const ConvertFlags& f) {
 void add_convert_command(CLI::App& app, Command& selected) {
     auto flags = std::make_shared<ConvertFlags>();
     CLI::App* cmd = app.add_subcommand("convert", "Convert a deck between file formats");
-    cmd->add_option("DECK", flags->input, "The deck to read")->required();
+    cmd->add_option("DECK", flags->input, "The deck to read")
+        ->type_name(std::string(kDeckValue))
+        ->required();
     cmd->add_option("-o,--output", flags->output, "The deck to write; format from the extension")
+        ->type_name(std::string(kDeckValue) + "|" + file_value(kGcodeExtensions))
         ->required();
     cmd->add_option("--to", flags->to,
                     "Output format: cbn, bin, text, listing, tape or five; or gcode, the machine's "
-                    "path as it runs the deck");
+                    "path as it runs the deck")
+        ->type_name(deck_formats({"gcode"}));
     cmd->add_option("--profile", flags->profile,
                     "G-code output: the machine profile to run the deck on (a name or a JSON "
-                    "file)");
+                    "file)")
+        ->type_name(std::string(kProfileValue));
     add_input_flags(*cmd, flags->deck);
     cmd->footer(
         exit_codes_help(

@@ -17,6 +17,7 @@
 #include "cli/demo_index.hpp"
 #include "cli/gen_press_feeder.hpp"
 #include "cli/gen_tapping.hpp"
+#include "cli/support/value_names.hpp"
 #include "outputs/output_file.hpp"
 #include "outputs/proofs/press_proof.hpp"
 #include "outputs/proofs/two_tool_proof.hpp"
@@ -592,7 +593,9 @@ void add_demo_command(CLI::App& app, Command& selected) {
                 "template deck generated, run and its cut proved; then the two-tool job with "
                 "its tool change tripped early (EP 0640901), the press feeder (EP 0436887) and "
                 "the tapping job (EP 0360190); and an index.html that shows them all");
-    cmd->add_option("--out", *dir, "Folder for everything the demo writes")->capture_default_str();
+    cmd->add_option("--out", *dir, "Folder for everything the demo writes")
+        ->type_name(std::string(kDirValue))
+        ->capture_default_str();
     cmd->footer(exit_codes_help({{ExitCode::ok, "the demo ran and its deck completed"},
                                  {ExitCode::interrupted, "stopped by the operator with Ctrl-C"},
                                  {ExitCode::terminated, "stopped by SIGTERM"}}) +

@@ -14,6 +14,7 @@
 #include "cli/support/deck_files.hpp"
 #include "cli/support/json_output.hpp"
 #include "cli/support/progress_line.hpp"
+#include "cli/support/value_names.hpp"
 #include "outputs/output_file.hpp"
 #include "outputs/proofs/two_tool_proof.hpp"
 #include "outputs/report/figures.hpp"
@@ -111,7 +112,8 @@ void add_job_out_option(CLI::App& cmd, std::string& job_out) {
     cmd.add_option("--job-out", job_out,
                    "Write the job description (for run --cut and the proofs) to this file "
                    "instead of beside the deck (DECK.job.json); a deck to standard output or a "
-                   "device has none unless this is given");
+                   "device has none unless this is given")
+        ->type_name(file_value({"json"}));
 }
 
 std::string files_written(const std::string& deck, const std::string& job_file,
@@ -566,7 +568,8 @@ void add_two_tool_command(CLI::App& gen, Command& selected) {
     cmd->add_option("--naca", flags->naca, "NACA 4-digit section, e.g. 2412");
     cmd->add_option("--dat", flags->dat,
                     "Airfoil coordinate file (Selig or Lednicer .dat), or a bundled one by name: "
-                    "clarky, e387, n63412, naca0012, naca2412, naca63412_lednicer");
+                    "clarky, e387, n63412, naca0012, naca2412, naca63412_lednicer")
+        ->type_name(file_value({"dat"}));
     cmd->add_flag("--closed-te", flags->closed_te, "NACA: closed trailing edge (a4 = 0.1036)");
     cmd->add_option("--chord", flags->chord_in, "Chord, inches")->capture_default_str();
     cmd->add_option("--stations", flags->stations, "Stations per pass")->capture_default_str();
@@ -590,12 +593,16 @@ void add_two_tool_command(CLI::App& gen, Command& selected) {
                     "Tool of the second pass (default: the profile's next tool)");
     cmd->add_flag("--no-corner-slowdown", flags->no_corner_slowdown,
                   "Do not slow down at sharp turns of the path");
-    cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")->required();
-    cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing");
+    cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")
+        ->type_name(std::string(kDeckValue))
+        ->required();
+    cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing")
+        ->type_name(deck_formats());
     add_job_out_option(*cmd, flags->job_out);
     cmd->add_option("--profile", flags->profile,
                     "Machine profile (its tools and tool-change time); one that takes condition "
                     "cards")
+        ->type_name(std::string(kProfileValue))
         ->capture_default_str();
     add_json_flag(*cmd, flags->json);
     cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was written"}}) +
@@ -621,7 +628,8 @@ void add_gen_command(CLI::App& app, Command& selected) {
     cmd->add_option("--naca", flags->naca, "NACA 4-digit section, e.g. 2412");
     cmd->add_option("--dat", flags->dat,
                     "Airfoil coordinate file (Selig or Lednicer .dat), or a bundled one by name: "
-                    "clarky, e387, n63412, naca0012, naca2412, naca63412_lednicer");
+                    "clarky, e387, n63412, naca0012, naca2412, naca63412_lednicer")
+        ->type_name(file_value({"dat"}));
     cmd->add_flag("--closed-te", flags->closed_te, "NACA: closed trailing edge (a4 = 0.1036)");
     cmd->add_option("--chord", flags->chord_in, "Chord (the wing's root chord), inches")
         ->capture_default_str();
@@ -647,12 +655,17 @@ void add_gen_command(CLI::App& app, Command& selected) {
         ->capture_default_str();
     cmd->add_flag("--no-corner-slowdown", flags->no_corner_slowdown,
                   "Do not slow down at sharp turns of the path (to see why one should)");
-    cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")->required();
-    cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing");
+    cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")
+        ->type_name(std::string(kDeckValue))
+        ->required();
+    cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing")
+        ->type_name(deck_formats());
     cmd->add_option("--centres", flags->centres,
-                    "Write x,y,cx,cy per station (work point and cutter centre, inches)");
+                    "Write x,y,cx,cy per station (work point and cutter centre, inches)")
+        ->type_name(file_value({"csv"}));
     add_job_out_option(*cmd, flags->job_out);
-    cmd->add_option("--profile", flags->profile, "Machine profile JSON");
+    cmd->add_option("--profile", flags->profile, "Machine profile JSON")
+        ->type_name(std::string(kProfileValue));
     add_json_flag(*cmd, flags->json);
     cmd->footer(
         exit_codes_help({{ExitCode::ok, "the deck was written"}}) +

@@ -4,6 +4,7 @@
 #include "cli/support/applied_profile.hpp"
 #include "cli/support/deck_files.hpp"
 #include "cli/support/json_output.hpp"
+#include "cli/support/value_names.hpp"
 #include "outputs/output_file.hpp"
 #include "outputs/report/figures.hpp"
 
@@ -128,9 +129,13 @@ void add_gen_gcode_command(CLI::App& gen, Command& selected) {
         "gcode", "A G-code program (G0 G1 G2 G3, G20 G21, G90 G91) as a deck: arcs in chords, "
                  "each move a staircase within the tolerance, speeds by the slow-down rule");
     cmd->add_option("PROGRAM", flags->program, "The G-code program to read (- for standard input)")
+        ->type_name(file_value(kGcodeExtensions))
         ->required();
-    cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")->required();
-    cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing");
+    cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")
+        ->type_name(std::string(kDeckValue))
+        ->required();
+    cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing")
+        ->type_name(deck_formats());
     cmd->add_option("--tolerance", flags->o.tolerance_in,
                     "How close the path as cut stays to the program's, inches (at least 0.003)")
         ->capture_default_str();
@@ -144,7 +149,8 @@ void add_gen_gcode_command(CLI::App& gen, Command& selected) {
         ->capture_default_str();
     cmd->add_flag("--no-corner-slowdown", flags->no_corner_slowdown,
                   "Do not slow down where the path turns sharply (EP 0636958)");
-    cmd->add_option("--profile", flags->profile, "Machine profile (a name or a JSON file)");
+    cmd->add_option("--profile", flags->profile, "Machine profile (a name or a JSON file)")
+        ->type_name(std::string(kProfileValue));
     add_json_flag(*cmd, flags->json);
     cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was written"}}) +
                 "Examples:\n"

@@ -1,6 +1,7 @@
 // parsons gen press-feeder: the seed's Fig. 3 cycle (decks/press_feeder_job.hpp), its job file
 // and its profile; the speed-only variant timed by running it (cli/gen_press_feeder.hpp).
 #include "cli/gen_press_feeder.hpp"
+#include "cli/support/value_names.hpp"
 
 #include "axes/profile_json.hpp"
 #include "cardreader/deck_error.hpp"
@@ -299,11 +300,15 @@ void add_press_feeder_command(CLI::App& gen, Command& selected) {
         ->capture_default_str();
     cmd->add_flag("--speed-only", o.speed_only,
                   "The seed's Fig. 7 (conventional): no position sync, timed to the nominal press");
-    cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")->required();
-    cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing");
+    cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")
+        ->type_name(std::string(kDeckValue))
+        ->required();
+    cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing")
+        ->type_name(deck_formats());
     add_job_out_option(*cmd, flags->job_out);
     cmd->add_option("--profile", flags->profile,
                     "Machine profile the job's profile starts from (one with press sync)")
+        ->type_name(std::string(kProfileValue))
         ->capture_default_str();
     add_json_flag(*cmd, flags->json);
     cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was written"}}) +

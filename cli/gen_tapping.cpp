@@ -1,6 +1,7 @@
 // parsons gen tapping: a plate of tapped holes with two taps on two spindle heads
 // (decks/tapping_job.hpp), its job file and its profile (cli/gen_tapping.hpp).
 #include "cli/gen_tapping.hpp"
+#include "cli/support/value_names.hpp"
 
 #include "axes/profile_json.hpp"
 #include "cardreader/deck_error.hpp"
@@ -180,12 +181,18 @@ void add_tapping_command(CLI::App& gen, Command& selected) {
     cmd->add_option("--ratio-source", flags->ratio_source,
                     "How the gear ratio reaches memory 12a in the job's profile: transferred (PC "
                     "130 sends it after each head exchange) or stored (per tool, in advance)")
+        ->type_name(one_of({decks::ratio_source_name(axes::RatioSource::transferred),
+                            decks::ratio_source_name(axes::RatioSource::stored)}))
         ->capture_default_str();
-    cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")->required();
-    cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing");
+    cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")
+        ->type_name(std::string(kDeckValue))
+        ->required();
+    cmd->add_option("--to", flags->to, "Deck format: cbn, bin or listing")
+        ->type_name(deck_formats());
     add_job_out_option(*cmd, flags->job_out);
     cmd->add_option("--profile", flags->profile,
                     "Machine profile the job's profile starts from (one with spindle heads)")
+        ->type_name(std::string(kProfileValue))
         ->capture_default_str();
     add_json_flag(*cmd, flags->json);
     cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was written"}}) +

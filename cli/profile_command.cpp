@@ -1,6 +1,7 @@
 // parsons profile [--profile FILE]: print the machine profile in force as JSON.
 #include "cli/commands.hpp"
 #include "cli/support/deck_files.hpp"
+#include "cli/support/value_names.hpp"
 
 #include "axes/profile_json.hpp"
 
@@ -23,7 +24,8 @@ void add_profile_command(CLI::App& app, Command& selected) {
     auto file = std::make_shared<std::string>();
     CLI::App* cmd = app.add_subcommand(
         "profile", "Print the machine profile (every time and rate of the machine) as JSON");
-    cmd->add_option("--profile", *file, "A profile file to apply over the built-in default");
+    cmd->add_option("--profile", *file, "A profile file to apply over the built-in default")
+        ->type_name(file_value({"json"}));
     cmd->footer(exit_codes_help({{ExitCode::ok, "the profile was printed"}}) +
                 "Examples:\n"
                 "  parsons profile > my-machine.json     (then edit it)\n"

@@ -3,6 +3,7 @@
 #include "cli/commands.hpp"
 #include "cli/support/deck_files.hpp"
 #include "cli/support/json_output.hpp"
+#include "cli/support/value_names.hpp"
 #include "outputs/output_file.hpp"
 
 #include <CLI/CLI.hpp>
@@ -63,14 +64,20 @@ void add_punch_command(CLI::App& app, Command& selected) {
     CLI::App* cmd = app.add_subcommand("punch", "Keypunch a listing into a deck of cards");
     cmd->add_option("LISTING", flags->listing,
                     "The listing: CSV, one row per axis per card (docs/deck-formats.md)")
+        ->type_name(file_value(cardreader::format_extensions(cardreader::DeckFormat::listing)))
         ->required();
     cmd->add_option("-o,--output", flags->output,
                     "The deck to punch; format from the extension (.cbn .bin .txt/.crd .csv/.lst)")
+        ->type_name(std::string(kDeckValue))
         ->required();
-    cmd->add_option("--to", flags->to, "Output format: cbn, bin, text, listing, tape or five");
+    cmd->add_option("--to", flags->to, "Output format: cbn, bin, text, listing, tape or five")
+        ->type_name(deck_formats());
     cmd->add_option("--code", flags->deck.code, "Keypunch code for text card images: 029 or 026")
+        ->type_name(code_names())
         ->capture_default_str();
-    cmd->add_option("--layout", flags->deck.layout, "Card layout")->capture_default_str();
+    cmd->add_option("--layout", flags->deck.layout, "Card layout")
+        ->type_name(layout_names())
+        ->capture_default_str();
     add_json_flag(*cmd, flags->json);
     cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was punched"}}) +
                 "Examples:\n"

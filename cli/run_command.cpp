@@ -12,6 +12,7 @@
 #include "cli/support/file_plan.hpp"
 #include "cli/support/job_files.hpp"
 #include "cli/support/progress_line.hpp"
+#include "cli/support/value_names.hpp"
 #include "outputs/output.hpp"
 #include "outputs/output_file.hpp"
 #include "outputs/proofs/press_proof.hpp"
@@ -511,29 +512,41 @@ void add_run_command(CLI::App& app, Command& selected, RunTimeline* timeline) {
     flags->timeline = timeline;
     CLI::App* cmd = app.add_subcommand(
         "run", "Run a deck through the emulated control cabinet and five lead-screw axes");
-    cmd->add_option("DECK", flags->input, "The deck to run")->required();
-    cmd->add_option("--report", flags->report, "Write the run report as JSON");
+    cmd->add_option("DECK", flags->input, "The deck to run")
+        ->type_name(std::string(kDeckValue))
+        ->required();
+    cmd->add_option("--report", flags->report, "Write the run report as JSON")
+        ->type_name(file_value({"json"}));
     cmd->add_option("--trace", flags->trace,
                     "Write every relay, switch and lamp as a VCD trace "
-                    "(GTKWave)");
-    cmd->add_option("--events", flags->events, "Write one JSON object per signal change");
+                    "(GTKWave)")
+        ->type_name(file_value({"vcd"}));
+    cmd->add_option("--events", flags->events, "Write one JSON object per signal change")
+        ->type_name(file_value({"jsonl"}));
     cmd->add_option("--html", flags->html,
                     "Write the run as one self-contained HTML page that replays it: the cabinet's "
                     "relays, counters and lamps and the cutter's path, on machine time (opens "
-                    "from disk, no server)");
-    cmd->add_option("--path", flags->path, "Write machine time and the five real positions, CSV");
-    cmd->add_option("--plot", flags->plot, "Draw positions and speed positions against time, SVG");
+                    "from disk, no server)")
+        ->type_name(file_value({"html"}));
+    cmd->add_option("--path", flags->path, "Write machine time and the five real positions, CSV")
+        ->type_name(file_value({"csv"}));
+    cmd->add_option("--plot", flags->plot, "Draw positions and speed positions against time, SVG")
+        ->type_name(file_value({"svg"}));
     cmd->add_option("--cut", flags->cut,
                     "Sweep the cutter along the path the axes really took and draw the cut "
-                    "against the design, SVG (generated decks)");
-    cmd->add_option("--job", flags->job, "The job description for --cut (default DECK.job.json)");
+                    "against the design, SVG (generated decks)")
+        ->type_name(file_value({"svg"}));
+    cmd->add_option("--job", flags->job, "The job description for --cut (default DECK.job.json)")
+        ->type_name(file_value({"json"}));
     cmd->add_option("--press-proof", flags->press_proof,
                     "Prove a press-feeder job (gen press-feeder's DECK.job.json): the feeder never "
                     "inside the die zone while the die is below its safe height; a collision is "
-                    "exit 3");
+                    "exit 3")
+        ->type_name(file_value({"json"}));
     cmd->add_option("--thread-proof", flags->thread_proof,
                     "Prove a tapping job (gen tapping's DECK.job.json): the pitch each hole was "
-                    "cut with against its tap's; a hole beyond the tolerance is exit 3");
+                    "cut with against its tap's; a hole beyond the tolerance is exit 3")
+        ->type_name(file_value({"json"}));
     cmd->add_option("--thread-tolerance", flags->thread_tolerance_percent,
                     "The thread proof's tolerance, percent of the tap's pitch (default: the "
                     "job's, 5)");
@@ -541,22 +554,27 @@ void add_run_command(CLI::App& app, Command& selected, RunTimeline* timeline) {
                     "Inject a fault (repeatable; docs/faults.md): drop-impulse:AXIS:N, "
                     "stuck-relay:AXIS:BANK:DIGIT, dead-relay:AXIS:BANK:DIGIT, "
                     "skip-step:AXIS:SWITCH:N, feed-twice:N, swap-cards:N, short-card:N, "
-                    "slip:AXIS:N:M, stale-ratio:N, transfer-hang:N");
-    cmd->add_option("--profile", flags->profile, "Machine profile JSON (see 'parsons profile')");
+                    "slip:AXIS:N:M, stale-ratio:N, transfer-hang:N")
+        ->type_name("FAULT");
+    cmd->add_option("--profile", flags->profile, "Machine profile JSON (see 'parsons profile')")
+        ->type_name(std::string(kProfileValue));
     cmd->add_option("--feed", flags->feed,
                     "cards (separate cards, a feed gap each) or ribbon (Fig. 9: cards end to end, "
                     "no gap); a tape deck always feeds as a ribbon")
         ->check(CLI::IsMember({"cards", "ribbon"}));
     cmd->add_option("--limit", flags->limits,
                     "Soft limits of the job, AXIS=MIN:MAX inches (e.g. table=0:9.5): the machine "
-                    "stops with soft_limit before the part passes one");
+                    "stops with soft_limit before the part passes one")
+        ->type_name("AXIS=MIN:MAX");
     cmd->add_flag("-q,--quiet", flags->quiet, "No summary and no progress bar");
     cmd->add_option("--save-state", flags->save_state,
                     "On a stop (or Ctrl-C), write the machine state as JSON: where it stopped, "
-                    "and the machine as the stopped card was fed, to --resume from");
+                    "and the machine as the stopped card was fed, to --resume from")
+        ->type_name(file_value({"json"}));
     cmd->add_option("--resume", flags->resume,
                     "Resume from a saved state: the deck (corrected) is read again from the "
-                    "card the machine stopped on");
+                    "card the machine stopped on")
+        ->type_name(file_value({"json"}));
     cmd->add_flag("--impulse-level", flags->impulse_level,
                   "Take every commutator impulse one by one (the reference) instead of "
                   "fast-forwarding between comparer equalities; the result is the same");

@@ -6,6 +6,7 @@
 #include "cli/support/deck_files.hpp"
 #include "cli/support/deck_prediction.hpp"
 #include "cli/support/json_output.hpp"
+#include "cli/support/value_names.hpp"
 #include "outputs/output_file.hpp"
 
 #include "cardreader/card_svg.hpp"
@@ -627,11 +628,15 @@ void add_show_command(CLI::App& app, Command& selected) {
     auto flags = std::make_shared<ShowFlags>();
     CLI::App* cmd = app.add_subcommand(
         "show", "Interpret each card field by field, with warnings; optionally draw the cards");
-    cmd->add_option("DECK", flags->input, "The deck to read")->required();
+    cmd->add_option("DECK", flags->input, "The deck to read")
+        ->type_name(std::string(kDeckValue))
+        ->required();
     cmd->add_option("--svg", flags->svg_dir,
-                    "Write one picture per card, DIR/card-0001.svg, ... (created if missing)");
+                    "Write one picture per card, DIR/card-0001.svg, ... (created if missing)")
+        ->type_name(std::string(kDirValue));
     cmd->add_option("--profile", flags->profile,
-                    "Machine profile JSON, for the coast estimate (see 'parsons profile')");
+                    "Machine profile JSON, for the coast estimate (see 'parsons profile')")
+        ->type_name(std::string(kProfileValue));
     add_json_flag(*cmd, flags->json);
     add_input_flags(*cmd, flags->deck);
     cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was shown (its warnings do not "

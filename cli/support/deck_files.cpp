@@ -1,4 +1,5 @@
 #include "cli/support/deck_files.hpp"
+#include "cli/support/value_names.hpp"
 
 #include "cardreader/layout.hpp"
 #include "cli/support/applied_profile.hpp"
@@ -38,10 +39,10 @@ void add_input_flags(CLI::App& cmd, DeckFlags& flags) {
         "--format", flags.format,
         "Input deck format: auto, cbn, bin, text, listing, tape or five (auto, the default: from "
         "the extension .cbn .bin .txt/.crd/.card/.cards .csv/.lst .tape/.ptp .five, else from "
-        "the first bytes as SIMH tells them; - reads standard input)");
-    cmd.add_option("--code", flags.code, "Keypunch code of text card images: 029 or 026")
+        "the first bytes as SIMH tells them; - reads standard input)")->type_name(deck_formats({"auto"}));
+    cmd.add_option("--code", flags.code, "Keypunch code of text card images: 029 or 026")->type_name(code_names())
         ->capture_default_str();
-    cmd.add_option("--layout", flags.layout, "Card layout (the reader's plugboard)")
+    cmd.add_option("--layout", flags.layout, "Card layout (the reader's plugboard)")->type_name(layout_names())
         ->capture_default_str();
 }
 

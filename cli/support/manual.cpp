@@ -1,5 +1,7 @@
 #include "cli/support/manual.hpp"
 
+#include "cli/support/value_names.hpp"
+
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -46,8 +48,15 @@ std::string upper(std::string s) {
     return s;
 }
 
+// A flag expects no value (CLI11's add_flag: expected(0)); every other option one or more.
 bool takes_value(const CLI::Option& o) {
-    return o.get_type_size_max() > 0;
+    return o.get_items_expected_max() > 0;
+}
+
+// An option in no group (group("")) is internal (bench's --child-*): CLI11's --help leaves it
+// out, and so do the manual pages and the completion.
+bool hidden(const CLI::Option& o) {
+    return o.get_group().empty();
 }
 
 std::vector<const CLI::App*> subcommands_of(const CLI::App& app) {
@@ -55,7 +64,12 @@ std::vector<const CLI::App*> subcommands_of(const CLI::App& app) {
 }
 
 std::vector<const CLI::Option*> named_options(const CLI::App& app) {
-    return app.get_options([](const CLI::Option* o) { return !o->get_positional(); });
+    return app.get_options(
+        [](const CLI::Option* o) { return !o->get_positional() && !hidden(*o); });
+}
+
+std::vector<const CLI::Option*> positional_options(const CLI::App& app) {
+    return app.get_options([](const CLI::Option* o) { return o->get_positional(); });
 }
 
 std::string page_name(const std::string& path) {
@@ -199,13 +213,15 @@ ManPage page_of(const std::string& path, const CLI::App& app, const std::string&
     return page;
 }
 
-// The words of a command's completion: its subcommands, its options, those that take a value.
+// The words of a command's completion: its subcommands, its options, the type name of each
+// option's value (cli/support/value_names.hpp) and of its first positional.
 struct Completion {
     std::string path; // "/gen/airfoil"; "" for the program
     const CLI::App* app;
-    std::vector<std::pair<std::string, std::string>> subs; // name, description
-    std::vector<std::pair<std::string, std::string>> opts; // name, description
-    std::vector<std::string> valued;
+    std::vector<std::pair<std::string, std::string>> subs;   // name, description
+    std::vector<std::pair<std::string, std::string>> opts;   // name, description
+    std::vector<std::pair<std::string, std::string>> valued; // option name, its value's type name
+    std::string positional;                                  // the first positional's type name
 };
 
 std::vector<Completion> completions(const CLI::App& app) {
@@ -227,13 +243,100 @@ std::vector<Completion> completions(const CLI::App& app) {
             for (const std::string& n : option_names(*o)) {
                 c.opts.emplace_back(n, o->get_description());
                 if (takes_value(*o)) {
-                    c.valued.push_back(n);
+                    c.valued.emplace_back(n, o->get_type_name());
                 }
             }
+        }
+        if (const auto pos = positional_options(*a); !pos.empty()) {
+            c.positional = pos.front()->get_type_name();
         }
         out.push_back(std::move(c));
     }
     return out;
+}
+
+// Every type name the completion offers values for, once each, in order of first use.
+std::vector<std::string> value_types(const std::vector<Completion>& all) {
+    std::vector<std::string> types;
+    auto add = [&](const std::string& t) {
+        if (!t.empty() && std::find(types.begin(), types.end(), t) == types.end()) {
+            types.push_back(t);
+        }
+    };
+    for (const Completion& c : all) {
+        for (const auto& v : c.valued) {
+            add(v.second);
+        }
+        add(c.positional);
+    }
+    return types;
+}
+
+// Each extension as typed and in capitals ("cbn CBN"): format_for_path takes either.
+std::vector<std::string> both_cases(const std::vector<std::string>& extensions) {
+    std::vector<std::string> out;
+    for (const std::string& e : extensions) {
+        out.push_back(e);
+        if (upper(e) != e) {
+            out.push_back(upper(e));
+        }
+    }
+    return out;
+}
+
+// bash: what to put in COMPREPLY for a value of this type name, the word typed being "$cur".
+std::string bash_offer(const std::string& type) {
+    const ValueChoices v = value_choices(type);
+    std::string s;
+    if (!v.words.empty()) {
+        // one a line: _parsons_offer splits on newlines only (file names with spaces)
+        std::string words;
+        for (const std::string& w : v.words) {
+            words += (words.empty() ? "" : "\\n") + w;
+        }
+        s += fmt::format(" $(compgen -W $'{}' -- \"$cur\")", words);
+    }
+    for (const std::string& e : both_cases(v.extensions)) {
+        s += fmt::format(" $(compgen -f -X {} -- \"$cur\")", shell_quoted("!*." + e));
+    }
+    if (v.any_file) {
+        s += " $(compgen -f -- \"$cur\")";
+    } else if (v.folders || !v.extensions.empty()) {
+        s += " $(compgen -d -- \"$cur\")";
+    }
+    return "COMPREPLY=(" + (s.empty() ? std::string() : s.substr(1)) + ")";
+}
+
+// zsh: the completion call for a value of this type name.
+std::string zsh_offer(const std::string& type) {
+    const ValueChoices v = value_choices(type);
+    std::vector<std::string> calls;
+    if (!v.words.empty()) {
+        std::string words;
+        for (const std::string& w : v.words) {
+            words += " " + shell_quoted(w);
+        }
+        calls.push_back("compadd --" + words);
+    }
+    if (!v.extensions.empty()) {
+        std::string kinds;
+        for (const std::string& e : v.extensions) {
+            kinds += (kinds.empty() ? "" : "|") + e;
+        }
+        calls.push_back("_files -g " + shell_quoted("*.(#i)(" + kinds + ")"));
+    } else if (v.any_file) {
+        calls.push_back("_files");
+    } else if (v.folders) {
+        calls.push_back("_files -/");
+    }
+    if (calls.empty()) {
+        return "_message " + shell_quoted(type);
+    }
+    std::string s;
+    for (const std::string& c : calls) {
+        s += (s.empty() ? "" : "; ") + c;
+    }
+    return s;
 }
 
 template <class Pairs>
@@ -241,14 +344,6 @@ std::string first_words(const Pairs& pairs) {
     std::string s;
     for (const auto& p : pairs) {
         s += (s.empty() ? "" : " ") + p.first;
-    }
-    return s;
-}
-
-std::string joined(const std::vector<std::string>& words) {
-    std::string s;
-    for (const std::string& w : words) {
-        s += (s.empty() ? "" : " ") + w;
     }
     return s;
 }
@@ -304,33 +399,56 @@ std::string bash_completion(const CLI::App& app) {
     std::string s =
         "# bash completion for parsons: written from its command line by parsons_manual; do not "
         "edit.\n"
-        "_parsons() {\n"
-        "    local cur=${COMP_WORDS[COMP_CWORD]} prev=${COMP_WORDS[COMP_CWORD-1]}\n"
-        "    local cmdpath=\"\" i w\n"
-        "    for ((i = 1; i < COMP_CWORD; i++)); do\n"
-        "        w=${COMP_WORDS[i]}\n"
-        "        case \"$cmdpath/$w\" in\n";
+        "# The values a type name offers (cli/support/value_names.hpp).\n"
+        "_parsons_offer() {\n"
+        "    local cur=$2 IFS=$'\\n'\n"
+        "    case \"$1\" in\n";
+    for (const std::string& t : value_types(all)) {
+        s += fmt::format("        {}) {} ;;\n", shell_quoted(t), bash_offer(t));
+    }
+    s += "        *) COMPREPLY=() ;;\n"
+         "    esac\n"
+         "}\n"
+         "_parsons() {\n"
+         "    local cur=${COMP_WORDS[COMP_CWORD]} prev=${COMP_WORDS[COMP_CWORD-1]}\n"
+         "    # --option=VALUE: bash splits the word at the '='.\n"
+         "    if [[ $cur == = ]]; then\n"
+         "        cur=\"\"\n"
+         "    elif [[ $prev == = ]] && ((COMP_CWORD >= 2)); then\n"
+         "        prev=${COMP_WORDS[COMP_CWORD-2]}\n"
+         "    fi\n"
+         "    local cmdpath=\"\" i w\n"
+         "    for ((i = 1; i < COMP_CWORD; i++)); do\n"
+         "        w=${COMP_WORDS[i]}\n"
+         "        case \"$cmdpath/$w\" in\n";
     s += fmt::format("            {}) cmdpath=\"$cmdpath/$w\" ;;\n", path_pattern(all));
     s += "        esac\n"
          "    done\n"
-         "    local subs=\"\" opts=\"\" valued=\"\"\n"
+         "    local subs=\"\" opts=\"\" positional=\"\"\n"
          "    case \"$cmdpath\" in\n";
     for (const Completion& c : all) {
-        s += fmt::format("        \"{}\") subs=\"{}\"; opts=\"{}\"; valued=\" {} \" ;;\n", c.path,
-                         first_words(c.subs), first_words(c.opts), joined(c.valued));
+        s += fmt::format("        \"{}\") subs=\"{}\"; opts=\"{}\"; positional={} ;;\n", c.path,
+                         first_words(c.subs), first_words(c.opts), shell_quoted(c.positional));
     }
     s += "    esac\n"
-         "    if [[ $valued == *\" $prev \"* ]]; then\n"
-         "        COMPREPLY=($(compgen -f -- \"$cur\"))\n"
-         "    elif [[ $cur == -* ]]; then\n"
+         "    # The word after an option that takes a value is that value.\n"
+         "    case \"$cmdpath $prev\" in\n";
+    for (const Completion& c : all) {
+        for (const auto& [name, type] : c.valued) {
+            s += fmt::format("        {}) _parsons_offer {} \"$cur\"; return ;;\n",
+                             shell_quoted(c.path + " " + name), shell_quoted(type));
+        }
+    }
+    s += "    esac\n"
+         "    if [[ $cur == -* ]]; then\n"
          "        COMPREPLY=($(compgen -W \"$opts\" -- \"$cur\"))\n"
          "    elif [[ -n $subs ]]; then\n"
          "        COMPREPLY=($(compgen -W \"$subs\" -- \"$cur\"))\n"
          "    else\n"
-         "        COMPREPLY=($(compgen -f -- \"$cur\"))\n"
+         "        _parsons_offer \"$positional\" \"$cur\"\n"
          "    fi\n"
          "}\n"
-         "complete -o filenames -o bashdefault -F _parsons parsons\n";
+         "complete -o filenames -F _parsons parsons\n";
     return s;
 }
 
@@ -349,33 +467,51 @@ std::string zsh_completion(const CLI::App& app) {
         "#compdef parsons\n"
         "# zsh completion for parsons: written from its command line by parsons_manual; do not "
         "edit.\n"
-        "_parsons() {\n"
-        "    local cmdpath=\"\" i w\n"
-        "    for ((i = 2; i < CURRENT; i++)); do\n"
-        "        w=${words[i]}\n"
-        "        case \"$cmdpath/$w\" in\n";
+        "# The values a type name offers (cli/support/value_names.hpp).\n"
+        "_parsons_offer() {\n"
+        "    case \"$1\" in\n";
+    for (const std::string& t : value_types(all)) {
+        s += fmt::format("        {}) {} ;;\n", shell_quoted(t), zsh_offer(t));
+    }
+    s += "        *) _message \"$1\" ;;\n"
+         "    esac\n"
+         "}\n"
+         "_parsons() {\n"
+         "    local cmdpath=\"\" i w prev=${words[CURRENT-1]}\n"
+         "    for ((i = 2; i < CURRENT; i++)); do\n"
+         "        w=${words[i]}\n"
+         "        case \"$cmdpath/$w\" in\n";
     s += fmt::format("            {}) cmdpath=\"$cmdpath/$w\" ;;\n", path_pattern(all));
     s += "        esac\n"
          "    done\n"
-         "    local -a subs opts valued\n"
+         "    local -a subs opts\n"
+         "    local positional=\"\"\n"
          "    case \"$cmdpath\" in\n";
     for (const Completion& c : all) {
-        std::string valued;
-        for (const std::string& v : c.valued) {
-            valued += (valued.empty() ? "" : " ") + shell_quoted(v);
-        }
-        s += fmt::format("        \"{}\") subs=({}); opts=({}); valued=({}) ;;\n", c.path,
-                         described(c.subs), described(c.opts), valued);
+        s += fmt::format("        \"{}\") subs=({}); opts=({}); positional={} ;;\n", c.path,
+                         described(c.subs), described(c.opts), shell_quoted(c.positional));
     }
     s += "    esac\n"
-         "    if (( ${valued[(Ie)${words[CURRENT-1]}]} )); then\n"
-         "        _files\n"
-         "    elif [[ $PREFIX == -* ]]; then\n"
+         "    # --option=VALUE: the value after the '='.\n"
+         "    if [[ $PREFIX == -*=* ]]; then\n"
+         "        prev=${PREFIX%%=*}\n"
+         "        compset -P '*='\n"
+         "    fi\n"
+         "    # The word after an option that takes a value is that value.\n"
+         "    case \"$cmdpath $prev\" in\n";
+    for (const Completion& c : all) {
+        for (const auto& [name, type] : c.valued) {
+            s += fmt::format("        {}) _parsons_offer {}; return ;;\n",
+                             shell_quoted(c.path + " " + name), shell_quoted(type));
+        }
+    }
+    s += "    esac\n"
+         "    if [[ $PREFIX == -* ]]; then\n"
          "        _describe -t options 'option' opts\n"
          "    elif (( ${#subs} )); then\n"
          "        _describe -t commands 'command' subs\n"
          "    else\n"
-         "        _files\n"
+         "        _parsons_offer \"$positional\"\n"
          "    fi\n"
          "}\n"
          "_parsons \"$@\"\n";
