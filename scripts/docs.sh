@@ -7,4 +7,12 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh >/dev/null
 PARSONS_UPDATE_DOCS=1 build/tests/parsons_tests "[docs]"
+# The demo's index page as a visitor first sees it (docs/install.md), in headless Chromium at a
+# laptop's width. A screenshot is not byte for byte the same on two machines (fonts), so no test
+# compares it: look at it.
+shot=$(mktemp -d)
+trap 'rm -rf "$shot"' EXIT
+(cd "$shot" && "$OLDPWD/build/cli/parsons" demo >/dev/null)
+chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars --window-size=1366,1100 \
+    --screenshot="$PWD/docs/images/demo-index.png" "file://$shot/out/demo/index.html" 2>/dev/null
 git status --short README.md docs/
