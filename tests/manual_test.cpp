@@ -253,6 +253,28 @@ TEST_CASE("Manual: every value an option or argument takes says what it is, for 
     CHECK(parsons::cli::value_choices("AXIS=MIN:MAX").empty());
 }
 
+namespace {
+
+// What the bash completion offers for COMP_WORDS=(words) with the cursor on word `cword`, in
+// `dir`: COMPREPLY sorted, each word in brackets.
+std::string bash_offers(const std::string& dir, const std::string& words, int cword) {
+    const std::string script = std::string(PARSONS_BINARY_DIR) + "/completion/parsons.bash";
+    const auto r = run_shell("cd " + q(dir) + " && bash -c " +
+                             q("source " + q(script) + "; COMP_WORDS=(" + words +
+                               "); COMP_CWORD=" + std::to_string(cword) +
+                               "; _parsons; printf \"%s\\n\" \"${COMPREPLY[@]}\"") +
+                             " 2>&1");
+    INFO(r.output);
+    CHECK(r.exit_code == 0);
+    auto offered = parsons::test::lines_of(r.output);
+    std::sort(offered.begin(), offered.end());
+    std::string out;
+    for (const std::string& w : offered) {
+        out += w.empty() ? "" : "[" + w + "]";
+    }
+    return out;
+}
+
 // A folder with one file of each kind the completion tells apart.
 void fill_completion_folder(const parsons::test::TempDir& dir) {
     for (const char* f :
@@ -262,29 +284,16 @@ void fill_completion_folder(const parsons::test::TempDir& dir) {
     std::filesystem::create_directories(dir.path("sub"));
 }
 
+} // namespace
+
 TEST_CASE("Manual: the bash completion offers each value as its type says, after flags and in "
           "--option=value",
           "[cli][manual]") {
-    const std::string script = std::string(PARSONS_BINARY_DIR) + "/completion/parsons.bash";
     const parsons::test::TempDir tmp;
     fill_completion_folder(tmp);
     const std::string dir = tmp.str("");
-    // COMPREPLY sorted, each word in brackets.
     auto complete = [&](const std::string& words, int cword) {
-        const auto r = run_shell("cd " + q(dir) + " && bash -c " +
-                                 q("source " + q(script) + "; COMP_WORDS=(" + words +
-                                   "); COMP_CWORD=" + std::to_string(cword) +
-                                   "; _parsons; printf \"%s\\n\" \"${COMPREPLY[@]}\"") +
-                                 " 2>&1");
-        INFO(r.output);
-        CHECK(r.exit_code == 0);
-        auto offered = parsons::test::lines_of(r.output);
-        std::sort(offered.begin(), offered.end());
-        std::string out;
-        for (const std::string& w : offered) {
-            out += w.empty() ? "" : "[" + w + "]";
-        }
-        return out;
+        return bash_offers(dir, words, cword);
     };
     const std::string decks = "[F.CBN][a.cbn][c.txt][e.csv][sub][with space.cbn]";
     // After an on/off flag, and after --json, the deck argument is next.
@@ -352,22 +361,15 @@ TEST_CASE("Manual: the zsh completion offers each value as its type says", "[cli
 
 TEST_CASE("Manual: the bash completion offers commands, subcommands and options as typed",
           "[cli][manual]") {
-    const std::string script = std::string(PARSONS_BINARY_DIR) + "/completion/parsons.bash";
+    const parsons::test::TempDir tmp;
     auto complete = [&](const std::string& words, int cword) {
-        const auto r = run_shell("bash -c " +
-                                 q("source " + q(script) + "; COMP_WORDS=(" + words +
-                                   "); COMP_CWORD=" + std::to_string(cword) +
-                                   "; _parsons; echo \"[${COMPREPLY[*]}]\"") +
-                                 " 2>&1");
-        INFO(r.output);
-        CHECK(r.exit_code == 0);
-        return r.output;
+        return bash_offers(tmp.str(""), words, cword);
     };
-    const std::string commands = complete("parsons ''", 1);
-    CHECK(commands.find(" run ") != std::string::npos);
+    const std::string commands = complete("parsons \"\"", 1);
+    CHECK(commands.find("[run]") != std::string::npos);
     CHECK(commands.find("tapping") == std::string::npos); // gen's, not here
-    CHECK(complete("parsons gen ta", 2) == "[tapping]\n");
-    CHECK(complete("parsons run deck.cbn --thr", 3) == "[--thread-proof --thread-tolerance]\n");
-    CHECK(complete("parsons gen tapping --rat", 3) == "[--ratio-source]\n");
-    CHECK(complete("parsons --ver", 1) == "[--version]\n");
+    CHECK(complete("parsons gen ta", 2) == "[tapping]");
+    CHECK(complete("parsons run deck.cbn --thr", 3) == "[--thread-proof][--thread-tolerance]");
+    CHECK(complete("parsons gen tapping --rat", 3) == "[--ratio-source]");
+    CHECK(complete("parsons --ver", 1) == "[--version]");
 }
