@@ -76,6 +76,7 @@ FilePlan run_plan(const RunRequest& f) {
     plan.read(f.job.empty() ? "the job description beside DECK" : "--job", job_file_read(f));
     plan.write("--report", f.report);
     plan.write("--trace", f.trace);
+    plan.write("the GTKWave save file beside --trace", gtkwave_save_file_for(f.trace));
     plan.write("--events", f.events);
     plan.write("--path", f.path);
     plan.write("-o", f.gcode); // convert DECK -o path.ngc
