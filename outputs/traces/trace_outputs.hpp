@@ -94,8 +94,8 @@ struct VcdVariable {
 // and only when the position to the nearest thousandth changes. A thousandth is the machine's
 // own unit (the cards, the counters and the commutator's impulses count it); five decimals would
 // write almost every motion report of every moving axis (55,032 changes on the sample deck
-// against 31,705, beside the signals' 142,587), and --path has them. The positions take the identifier codes after the signals', so
-// a signal's code is the same as in a trace without them.
+// against 31,705, beside the signals' 142,587), and --path has them. The positions take the
+// identifier codes after the signals', so a signal's code is the same as in a trace without them.
 class VcdWriter : public relaylogic::MachineObserver {
 public:
     // The reference of each axis scope's position.
