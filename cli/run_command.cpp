@@ -515,8 +515,8 @@ void add_run_command(CLI::App& app, Command& selected, RunTimeline* timeline) {
     cmd->add_option("DECK", flags->input, "The deck to run")->required();
     cmd->add_option("--report", flags->report, "Write the run report as JSON");
     cmd->add_option("--trace", flags->trace,
-                    "Write every relay, switch and lamp as a VCD trace "
-                    "(GTKWave)");
+                    "Write every relay, switch and lamp and the axes' real positions as a VCD "
+                    "trace, and beside it a GTKWave save file (T.gtkw for T.vcd: gtkwave T.gtkw)");
     cmd->add_option("--events", flags->events, "Write one JSON object per signal change");
     cmd->add_option("--html", flags->html,
                     "Write the run as one self-contained HTML page that replays it: the cabinet's "
