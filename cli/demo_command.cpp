@@ -27,6 +27,7 @@
 #include "cardreader/layout.hpp"
 #include "cli/support/data_files.hpp"
 #include "cli/support/deck_files.hpp"
+#include "cli/support/file_plan.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -89,6 +90,7 @@ DemoRun demo_run(std::string title, std::string sentence, const RunRequest& run,
     r.pictures.insert(r.pictures.end(), pictures.begin(), pictures.end());
     std::error_code ec;
     const std::string job = run.input + ".job.json";
+    const std::string save_file = gtkwave_save_file_for(run.trace); // beside the trace
     for (const auto& [label, file] :
          Files{{"replay page: the run relay by relay", run.html},
                {"report (JSON)", run.report},
@@ -98,6 +100,8 @@ DemoRun demo_run(std::string title, std::string sentence, const RunRequest& run,
                {"the machine profile it ran under (JSON)",
                 std::filesystem::is_regular_file(run.profile, ec) ? run.profile : std::string()},
                {"relay trace (VCD, for GTKWave)", run.trace},
+               {"its GTKWave save file (gtkwave FILE: the signals grouped by axis)",
+                std::filesystem::is_regular_file(save_file, ec) ? save_file : std::string()},
                {"tool path (CSV)", run.path}}) {
         if (!file.empty()) {
             r.links.emplace_back(label, relative(file));
@@ -561,7 +565,7 @@ ExitCode run_demo(const std::string& dir) {
     write_file(dir + "/index.html", demo_index_html(sections));
     fmt::print("\nOpen {}/index.html in a browser: every run above with a sentence, its plot or "
                "cut, and its replay page, which plays the run relay by relay. The relay traces "
-               "open in GTKWave (gtkwave {}/sample-deck/trace.vcd).\n",
+               "open in GTKWave (gtkwave {}/sample-deck/trace.gtkw).\n",
                dir, dir);
     fmt::print("Every claim of the five patents, with a command that shows it at work and what "
                "to look for: docs/claims.md (installed under share/doc/parsons/docs/)\n");

@@ -77,6 +77,7 @@ FilePlan run_plan(const RunRequest& f) {
     plan.read(f.job.empty() ? "the job description beside DECK" : "--job", job_file_read(f));
     plan.write("--report", f.report);
     plan.write("--trace", f.trace);
+    plan.write("the GTKWave save file beside --trace", gtkwave_save_file_for(f.trace));
     plan.write("--events", f.events);
     plan.write("--path", f.path);
     plan.write("-o", f.gcode); // convert DECK -o path.ngc
@@ -518,8 +519,8 @@ void add_run_command(CLI::App& app, Command& selected, RunTimeline* timeline) {
     cmd->add_option("--report", flags->report, "Write the run report as JSON")
         ->type_name(file_value({"json"}));
     cmd->add_option("--trace", flags->trace,
-                    "Write every relay, switch and lamp as a VCD trace "
-                    "(GTKWave)")
+                    "Write every relay, switch and lamp and the axes' real positions as a VCD "
+                    "trace, and beside it a GTKWave save file (T.gtkw for T.vcd: gtkwave T.gtkw)")
         ->type_name(file_value({"vcd"}));
     cmd->add_option("--events", flags->events, "Write one JSON object per signal change")
         ->type_name(file_value({"jsonl"}));

@@ -6,6 +6,7 @@
 #include "axes/profile_json.hpp"
 #include "axes/state_json.hpp"
 #include "cli/support/deck_files.hpp"
+#include "cli/support/file_plan.hpp"
 #include "outputs/output_file.hpp"
 #include "outputs/plots/plot_output.hpp"
 #include "outputs/proofs/cut_output.hpp"
@@ -15,6 +16,7 @@
 #include "outputs/traces/gcode_path.hpp"
 #include "outputs/traces/trace_output.hpp"
 #include "outputs/traces/trace_outputs.hpp"
+#include "outputs/traces/vcd_trace_output.hpp"
 
 #include <fmt/format.h>
 
@@ -95,6 +97,15 @@ private:
     KeepsValues values_kept_;
 };
 
+// Where the five axes stand before the first card (a resumed run: where the state left them).
+std::array<double, 5> real_positions(const relaylogic::ControlCabinet& cabinet) {
+    std::array<double, 5> real{};
+    for (std::size_t i = 0; i < real.size() && i < cabinet.circuits().size(); ++i) {
+        real.at(i) = cabinet.circuits()[i]->plant.real_in_at(cabinet.now());
+    }
+    return real;
+}
+
 std::string deck_name(const RunRequest& f) {
     return f.input == "-" ? std::string("standard input") : f.input;
 }
@@ -106,7 +117,9 @@ const std::vector<RunOutputOption>& run_output_options() {
     static const std::vector<RunOutputOption> table{
         {"--trace", [](const RunRequest& f) { return !f.trace.empty(); },
          [](RunSetup& s) -> Made {
-             return std::make_unique<TraceOutput<VcdWriter>>(s.request.trace);
+             return std::make_unique<VcdTraceOutput>(s.request.trace,
+                                                     gtkwave_save_file_for(s.request.trace),
+                                                     real_positions(s.cabinet));
          },
          true},
         {"--events", [](const RunRequest& f) { return !f.events.empty(); },

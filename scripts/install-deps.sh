@@ -23,7 +23,8 @@ fi
 # catch2: the test suite's framework (version 2).
 # clang and libclang-rt-14-dev: clang's sanitizer runtimes and libFuzzer, for
 # scripts/sanitize.sh and scripts/fuzz.sh (one build, build-sanitize/).
-# gtkwave: its vcd2fst reads every trace the tests write, as GTKWave would.
+# gtkwave: its vcd2fst reads every trace the tests write, as GTKWave would; and xvfb: GTKWave
+# itself opens the save file a run writes beside its trace, on a virtual display (xvfb-run).
 # groff-base and zsh: the tests read the manual pages with groff and parse the zsh completion.
 # dpkg-dev and file: CPack works out the .debs' Depends with dpkg-shlibdeps; lintian checks them.
 # emscripten and node-acorn (its JavaScript optimizer's parser): the exhibit page, the emulator
@@ -32,7 +33,7 @@ fi
 packages=(g++ cmake make lld libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev)
 if ! $program_only; then
     packages+=(dpkg-dev file lintian catch2
-               gtkwave
+               gtkwave xvfb
                clang libclang-rt-14-dev groff-base zsh
                emscripten node-acorn chromium)
     # Node.js and npm: the tests' independent cross-checks (tests/js: Ajv validates every JSON

@@ -114,6 +114,7 @@ const Recorded& simple_run() {
 struct VcdVar {
     std::string name; // "table.absolute_counter_110"
     int width = 1;
+    bool real = false; // an axis's position_in (tests/gtkwave_test.cpp reads its values)
 };
 
 struct ParsedVcd {
@@ -123,7 +124,8 @@ struct ParsedVcd {
     std::map<std::string, std::string> value; // last value by code ("0101")
     std::set<std::string> dumped;             // codes given an initial value
     std::vector<long long> times;
-    std::size_t changes = 0; // after $dumpvars
+    std::size_t changes = 0; // of the signals (wires), after $dumpvars
+    std::size_t real_changes = 0;
     std::string timescale;
 
     long long value_of(const std::string& name) const {
@@ -166,7 +168,7 @@ ParsedVcd parse_vcd(const std::string& text) {
             if (vcd.vars.count(code) != 0) {
                 vcd.problems.push_back("identifier used twice: " + code);
             }
-            vcd.vars[code] = VcdVar{full, width};
+            vcd.vars[code] = VcdVar{full, width, kind == "real"};
             vcd.names.push_back(full);
         } else if (token == "$timescale") {
             while (header >> token && token != "$end") {
@@ -197,6 +199,22 @@ ParsedVcd parse_vcd(const std::string& text) {
         }
         std::string bits;
         std::string code;
+        if (line[0] == 'r') {
+            const auto space = line.find(' ');
+            code = line.substr(space + 1);
+            auto var = vcd.vars.find(code);
+            if (var == vcd.vars.end() || !var->second.real) {
+                vcd.problems.push_back("a real value of a variable not declared real: " + line);
+                continue;
+            }
+            vcd.value[code] = line.substr(1, space - 1);
+            if (in_dumpvars) {
+                vcd.dumped.insert(code);
+            } else {
+                ++vcd.real_changes;
+            }
+            continue;
+        }
         if (line[0] == 'b') {
             const auto space = line.find(' ');
             bits = line.substr(1, space - 1);
@@ -210,7 +228,7 @@ ParsedVcd parse_vcd(const std::string& text) {
             vcd.problems.push_back("change of an undeclared identifier: " + line);
             continue;
         }
-        if (static_cast<int>(bits.size()) != var->second.width) {
+        if (var->second.real || static_cast<int>(bits.size()) != var->second.width) {
             vcd.problems.push_back("value of the wrong width: " + line);
         }
         vcd.value[code] = bits;
@@ -264,7 +282,7 @@ TEST_CASE("VCD: the header declares every signal of the cabinet once, one scope 
     CHECK(rec.vcd.rfind("$date\n    test date\n$end\n$version parsons $end\n", 0) == 0);
     CHECK(vcd.timescale == "1 us");
     REQUIRE_FALSE(rec.signals.empty());
-    CHECK(vcd.names.size() == rec.signals.size());
+    CHECK(vcd.names.size() == rec.signals.size() + 5); // and the five positions
     std::multiset<std::string> declared(vcd.names.begin(), vcd.names.end());
     for (const auto& s : rec.signals) {
         INFO(s.scope << "." << s.name);
@@ -338,7 +356,8 @@ TEST_CASE("VCD: changes in the same microsecond share one timestamp, wide values
     }
     const std::string text = out.str();
     const std::string body = text.substr(text.find("$enddefinitions $end"));
-    CHECK(body == "$enddefinitions $end\n#0\n$dumpvars\n0!\nb001 \"\n$end\n"
+    CHECK(body == "$enddefinitions $end\n#0\n$dumpvars\n0!\nb001 \"\n"
+                  "r0.000 #\nr0.000 $\nr0.000 %\nr0.000 &\nr0.000 '\n$end\n"
                   "1!\n#1500000\nb010 \"\n0!\n#2250000\nb101 \"\n#3000000\n");
     CHECK(text.find("$var wire 1 ! absolute_storage_352_relay_7 $end") != std::string::npos);
     CHECK(text.find("$var wire 3 \" stepping_shaft_280 [2:0] $end") != std::string::npos);
@@ -363,7 +382,8 @@ TEST_CASE("VCD: GTKWave's vcd2fst converts the trace of a run, and fst2vcd gives
                                      dir.str("back.vcd") + q + " 2>/dev/null")
                                         .c_str())) == 0);
     const std::string back = test::read_bytes(dir.path("back.vcd"));
-    CHECK(count(back, "$var ") == rec.signals.size());
+    CHECK(count(back, "$var ") == rec.signals.size() + 5); // the signals and the positions
+    CHECK(count(back, "$var real 64 ") == 5);
     CHECK(back.find("absolute_counter_110") != std::string::npos);
 }
 

@@ -247,6 +247,19 @@ std::string profile_file_for(const std::string& job_file) {
     return job_file + ".profile.json";
 }
 
+std::string gtkwave_save_file_for(const std::string& trace) {
+    if (!takes_companions(trace) || trace.find_first_of("\n\r") != std::string::npos) {
+        return "";
+    }
+    fs::path save(trace);
+    if (save.filename().empty()) {
+        return ""; // "out/": a folder, which the trace's own writer refuses
+    }
+    save.replace_extension(".gtkw");
+    const std::string name = save.string();
+    return name == trace || !takes_companions(name) ? std::string() : name;
+}
+
 std::string job_option(const std::string& job_out) {
     return job_out.empty() ? "the job description beside -o" : "--job-out";
 }

@@ -77,6 +77,12 @@ std::string job_file_for(const std::string& deck, const std::string& job_out);
 // for DECK.job.json, J.profile.json for J.json, F.profile.json for another name F, when the job
 // description takes companions; "" when it does not.
 std::string profile_file_for(const std::string& job_file);
+// Where the GTKWave save file of a VCD trace goes: beside it, the trace's name with its
+// extension (if any) replaced by ".gtkw" (out.vcd -> out.gtkw, trace -> trace.gtkw), when the
+// trace takes companions and the save file's name is free or a regular file; "" for none (a
+// trace on standard output, a device or a FIFO; a trace itself named *.gtkw; a name with a line
+// break, which the save file cannot quote).
+std::string gtkwave_save_file_for(const std::string& trace);
 // What a generator's summary names for its job description: "--job-out" when given, else "the
 // job description beside -o".
 std::string job_option(const std::string& job_out);

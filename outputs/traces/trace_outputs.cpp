@@ -150,6 +150,13 @@ std::string source_date() {
     return std::string(text.data(), n);
 }
 
+// A position in whole thousandths of an inch, to the nearest (a NaN or an infinity as 0: the
+// axes never report one).
+long long thousandths_of(double inches) {
+    const double t = std::round(inches * 1000.0);
+    return std::isfinite(t) && std::fabs(t) < 1e15 ? static_cast<long long>(t) : 0;
+}
+
 // VCD comment text may hold neither "$end" nor a line break.
 std::string comment_text(std::string_view s) {
     std::string out;
@@ -174,7 +181,12 @@ int scope_rank(const std::string& scope, const std::vector<std::string>& appeara
 // ---------------------------------------------------------------------------------------------
 // VcdWriter
 
-VcdWriter::VcdWriter(std::ostream& out, std::string date) : buf_(out), date_(std::move(date)) {}
+VcdWriter::VcdWriter(std::ostream& out, std::string date, const std::array<double, 5>& initial_in)
+    : buf_(out), date_(std::move(date)) {
+    for (std::size_t k = 0; k < initial_in.size(); ++k) {
+        position_thousandths_.at(k) = thousandths_of(initial_in.at(k));
+    }
+}
 
 void VcdWriter::on_signal_defined(const SignalInfo& info, std::uint32_t initial) {
     if (header_written_) {
@@ -207,6 +219,12 @@ void VcdWriter::write_header() {
             appearance.push_back(v.scope);
         }
     }
+    for (cardreader::Axis a : cardreader::kAxes) { // each axis scope holds its position
+        const std::string axis(cardreader::axis_name(a));
+        if (std::find(appearance.begin(), appearance.end(), axis) == appearance.end()) {
+            appearance.push_back(axis);
+        }
+    }
     std::vector<std::string> scopes = appearance;
     std::stable_sort(scopes.begin(), scopes.end(), [&](const auto& a, const auto& b) {
         return scope_rank(a, appearance) < scope_rank(b, appearance);
@@ -223,19 +241,40 @@ void VcdWriter::write_header() {
              "    One scope per lead-screw axis and one for the cabinet; each name ends in the\n"
              "    patent's reference numeral. Machine time, 1 us per tick.\n$end\n");
     buf_.put("$timescale 1 us $end\n");
-    std::size_t declared = 0;
+    // Identifier codes in the order a reader scans the signals: "!", "\"", ...; then the five
+    // positions.
+    std::size_t codes = 0;
+    for (const std::string& scope : scopes) {
+        for (std::size_t id = 0; id < vars_.size(); ++id) {
+            if (vars_[id].defined && vars_[id].scope == scope) {
+                vars_[id].code = vcd_identifier_code(codes++);
+            }
+        }
+    }
+    for (std::string& code : position_code_) {
+        code = vcd_identifier_code(codes++);
+    }
+    declared_.clear();
     for (const std::string& scope : scopes) {
         buf_.put("$scope module ");
         buf_.put(scope);
         buf_.put(" $end\n");
         std::set<std::string> taken;
+        if (auto axis = cardreader::axis_named(scope)) {
+            const std::string& code = position_code_.at(cardreader::axis_index(*axis));
+            buf_.put("$var real 64 ");
+            buf_.put(code);
+            buf_.put(' ');
+            buf_.put(kPositionReference);
+            buf_.put(" $end\n");
+            taken.emplace(kPositionReference);
+            declared_.push_back({scope, std::string(kPositionReference), "real", 64});
+        }
         for (std::size_t id = 0; id < vars_.size(); ++id) {
             Var& v = vars_[id];
             if (!v.defined || v.scope != scope) {
                 continue;
             }
-            // Identifier codes in the order of declaration: "!", "\"", ... as a reader scans.
-            v.code = vcd_identifier_code(declared++);
             Hot& h = hot_[id];
             std::copy(v.code.begin(), v.code.end(), h.tail.begin());
             h.tail.at(v.code.size()) = '\n';
@@ -245,6 +284,7 @@ void VcdWriter::write_header() {
                 v.reference = fmt::format("{}_{}", v.reference, id); // names that differ in '.'
                 taken.insert(v.reference);
             }
+            declared_.push_back({scope, v.reference, "wire", v.width});
             buf_.put("$var wire ");
             buf_.put_uint(static_cast<std::uint64_t>(v.width));
             buf_.put(' ');
@@ -265,6 +305,9 @@ void VcdWriter::write_header() {
         if (vars_[id].defined) {
             put_value(hot_[id], vars_[id].initial);
         }
+    }
+    for (std::size_t k = 0; k < position_code_.size(); ++k) {
+        put_position(k);
     }
     buf_.put("$end\n");
     last_us_ = 0;
@@ -313,6 +356,48 @@ void VcdWriter::on_signal(double seconds, SignalId id, std::uint32_t /*old_value
     }
     advance_time(seconds);
     put_value(hot_[id], new_value);
+}
+
+// "r8.985 CODE": the thousandths as a decimal, from the integer itself, so that the text is the
+// value compared (never "-0.000").
+void VcdWriter::put_position(std::size_t axis) {
+    const long long q = position_thousandths_.at(axis);
+    const unsigned long long magnitude =
+        q < 0 ? 0ULL - static_cast<unsigned long long>(q) : static_cast<unsigned long long>(q);
+    char* p = buf_.claim(48);
+    *p++ = 'r';
+    if (q < 0) {
+        *p++ = '-';
+    }
+    p = std::to_chars(p, p + 24, magnitude / 1000).ptr;
+    *p++ = '.';
+    const unsigned long long fraction = magnitude % 1000;
+    *p++ = static_cast<char>('0' + fraction / 100);
+    *p++ = static_cast<char>('0' + fraction / 10 % 10);
+    *p++ = static_cast<char>('0' + fraction % 10);
+    *p++ = ' ';
+    buf_.commit(p);
+    buf_.put(position_code_.at(axis));
+    buf_.put('\n');
+}
+
+void VcdWriter::on_motion(double seconds, const std::array<double, 5>& real_in) {
+    if (!header_written_) {
+        write_header();
+    }
+    bool timed = false;
+    for (std::size_t k = 0; k < real_in.size(); ++k) {
+        const long long q = thousandths_of(real_in[k]);
+        if (q == position_thousandths_[k]) {
+            continue; // the same to the thousandth: nothing to write
+        }
+        if (!timed) {
+            advance_time(seconds);
+            timed = true;
+        }
+        position_thousandths_[k] = q;
+        put_position(k);
+    }
 }
 
 void VcdWriter::put_comment(std::string_view text) {
