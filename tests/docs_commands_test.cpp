@@ -9,12 +9,15 @@
 #include "tests/test_support.hpp"
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <regex>
+#include <set>
 #include <sstream>
 
 using namespace parsons::test;
@@ -238,8 +241,108 @@ bool foreign_command(const std::string& line) {
     return std::regex_search(line, foreign) || line.find("| jq") != std::string::npos;
 }
 
+// Figures quoted from a run. A page declares how to get one, once, on a line of its own:
+//   <!-- figure NAME: COMMAND => FILE SELECTOR FORMAT -->
+// (COMMAND runs in the page's scratch folder after the page's commands; SELECTOR is a JSON
+// pointer into FILE, or `rows`, the data rows of a CSV: lines not blank, not `#`, less the
+// header; FORMAT is `int`, `.Nf` or `min` (seconds as whole minutes), a trailing `,` grouping
+// thousands), and quotes it as
+// `<!--f:NAME-->3,958<!--/f-->`, which Markdown shows as the bare figure.
+struct FigureSource {
+    std::string command;
+    std::string file;
+    std::string selector;
+    std::string format;
+};
+
+std::string format_figure(double value, std::string format) {
+    const bool grouped = !format.empty() && format.back() == ',';
+    if (grouped) {
+        format.pop_back();
+    }
+    if (format == "min") { // seconds, as whole minutes
+        value /= 60;
+        format = "int";
+    }
+    std::string text = format == "int" ? std::to_string(std::llround(value))
+                                       : fmt::format(fmt::runtime("{:" + format + "}"), value);
+    if (grouped) {
+        const auto point = text.find('.');
+        auto digits_end = point == std::string::npos ? text.size() : point;
+        const std::size_t first = text.front() == '-' ? 1 : 0;
+        for (auto at = digits_end; at > first + 3; at -= 3) {
+            text.insert(at - 3, ",");
+        }
+    }
+    return text;
+}
+
+double select_figure(const fs::path& file, const std::string& selector) {
+    const std::string bytes = read_bytes(file);
+    if (selector == "rows") {
+        long rows = -1; // the header
+        for (const std::string& l : lines_of(bytes)) {
+            rows += !trim(l).empty() && l.front() != '#' ? 1 : 0;
+        }
+        return static_cast<double>(rows);
+    }
+    return nlohmann::json::parse(bytes).at(nlohmann::json::json_pointer(selector)).get<double>();
+}
+
+// Checks (or, updating, rewrites) every quoted figure of `lines`; the count in `figures`.
+void check_figures(std::vector<std::string>& lines, const std::string& relative,
+                   const Scratch& scratch, bool& changed, int& figures) {
+    static const std::regex declared(
+        R"(^<!-- figure ([a-z0-9_-]+): (.+) => (\S+) (\S+) (\S+) -->$)");
+    static const std::regex quoted(R"(<!--f:([a-z0-9_-]+)-->([^<]*)<!--/f-->)");
+    std::map<std::string, FigureSource> sources;
+    for (const std::string& l : lines) {
+        std::smatch m;
+        if (std::regex_match(l, m, declared)) {
+            sources[m[1]] = {m[2], m[3], m[4], m[5]};
+        }
+    }
+    std::map<std::string, std::string> values;
+    for (const auto& [name, src] : sources) {
+        const ProcessResult r = scratch.run(src.command);
+        INFO(relative << ": figure " << name << ": " << src.command << "\n" << r.output);
+        REQUIRE(r.exit_code == 0);
+        values[name] =
+            format_figure(select_figure(scratch.path(src.file), src.selector), src.format);
+    }
+    std::set<std::string> used;
+    for (std::string& l : lines) {
+        std::string out;
+        auto from = l.cbegin();
+        for (std::sregex_iterator it(l.cbegin(), l.cend(), quoted), end; it != end; ++it) {
+            const std::string name = (*it)[1];
+            INFO(relative << ": figure " << name << " in: " << l);
+            REQUIRE(values.count(name) == 1); // every quoted figure is declared
+            used.insert(name);
+            ++figures;
+            std::string text = (*it)[2];
+            if (updating()) {
+                changed = changed || text != values[name];
+                text = values[name];
+            } else {
+                CHECK(text == values[name]);
+            }
+            out.append(from, (*it)[0].first);
+            out += "<!--f:" + name + "-->" + text + "<!--/f-->";
+            from = (*it)[0].second;
+        }
+        out.append(from, l.cend());
+        l = out;
+    }
+    for (const auto& [name, src] : sources) {
+        INFO(relative << ": figure " << name << " is declared and never quoted");
+        CHECK(used.count(name) == 1);
+    }
+}
+
 struct PageRun {
     int commands = 0;
+    int figures = 0;
     std::vector<std::string> not_run; // "page:line: reason"
 };
 
@@ -300,6 +403,7 @@ void run_page(const std::string& relative, Scratch& scratch, int& pictures, Page
         }
     }
     check_pictures(lines, page, scratch, pictures);
+    check_figures(lines, relative, scratch, changed, run.figures);
     if (updating() && changed) {
         std::ofstream(page, std::ios::binary) << join_lines(lines);
     }
@@ -445,13 +549,14 @@ TEST_CASE("Docs: every command of every page under docs/ runs as written, with t
     }
     CHECK(pages >= 24);
     CHECK(run.commands >= 15);
+    CHECK(run.figures >= 5);
     // What is not run, and why, for the log.
     std::string skipped;
     for (const std::string& s : run.not_run) {
         skipped += "  " + s + "\n";
     }
-    WARN(run.commands << " commands run on " << pages << " pages; " << run.not_run.size()
-                      << " blocks not run:\n"
+    WARN(run.commands << " commands run and " << run.figures << " figures checked on " << pages
+                      << " pages; " << run.not_run.size() << " blocks not run:\n"
                       << skipped);
 }
 
