@@ -20,7 +20,8 @@ fi
 # The program: g++, cmake, make, the four libraries (fmt, CLI11, nlohmann-json, Eigen) and lld,
 # the linker of both builds, some eight times faster than GNU ld on the test program
 # (CMakeLists.txt). Then, for the tests:
-# catch2: the test suite's framework (version 2).
+# catch2: the test suite's framework (version 2). xxd: the docs' terminal sessions dump decks
+# with it (tests/docs_commands_test.cpp).
 # clang and libclang-rt-14-dev: clang's sanitizer runtimes and libFuzzer, for
 # scripts/sanitize.sh and scripts/fuzz.sh (one build, build-sanitize/).
 # gtkwave: its vcd2fst reads every trace the tests write, as GTKWave would; and xvfb: GTKWave
@@ -32,7 +33,7 @@ fi
 # real browser, headless (puppeteer-core drives it; nothing downloads a browser).
 packages=(g++ cmake make lld libfmt-dev libcli11-dev nlohmann-json3-dev libeigen3-dev)
 if ! $program_only; then
-    packages+=(dpkg-dev file lintian catch2
+    packages+=(dpkg-dev file lintian catch2 xxd
                gtkwave xvfb
                clang libclang-rt-14-dev groff-base zsh
                emscripten node-acorn chromium)

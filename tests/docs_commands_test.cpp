@@ -346,6 +346,36 @@ struct PageRun {
     std::vector<std::string> not_run; // "page:line: reason"
 };
 
+// A terminal session in a fenced block: each `$ COMMAND` line runs (its `# comment` may give the
+// exit code), and the lines under it, up to the next `$`, are what it prints ("..." alone on a
+// line standing for any lines).
+void run_session(const std::vector<std::string>& block, const std::string& relative,
+                 const Scratch& scratch, PageRun& run, std::string& last_output) {
+    std::vector<Example> session;
+    for (const std::string& l : block) {
+        if (l.rfind("$ ", 0) == 0) {
+            Example e;
+            const std::string line = l.substr(2);
+            const auto hash = line.find("  #");
+            e.command = trim(line.substr(0, hash));
+            e.comment = hash == std::string::npos ? "" : line.substr(hash);
+            session.push_back(e);
+        } else if (!session.empty()) {
+            session.back().expected.push_back(trim(l) == "..." ? "…" : l);
+        }
+    }
+    for (const Example& e : session) {
+        INFO(relative << ": $ " << e.command);
+        CHECK_FALSE(foreign_command(e.command));
+        const ProcessResult r = scratch.run(e.command);
+        INFO(r.output);
+        CHECK(r.exit_code == documented_exit(e.comment));
+        check_quoted_output(e, r);
+        last_output = r.output;
+        ++run.commands;
+    }
+}
+
 // Runs a page's commands in order in one scratch folder, checks their exit codes and the
 // output they quote, then the fenced blocks (against the output of the command before them,
 // where `fenced_are_output`: README and the tutorial) and the pictures. A block marked not to be
@@ -363,7 +393,16 @@ void run_page(const std::string& relative, Scratch& scratch, int& pictures, Page
                                             [](const auto& l) { return l.rfind("```", 0) == 0; });
             REQUIRE(close != lines.end());
             const auto c = static_cast<std::size_t>(close - lines.begin());
-            if (fenced_are_output && !last_output.empty()) {
+            const std::vector<std::string> block(lines.begin() + static_cast<long>(i) + 1, close);
+            const bool session = std::any_of(block.begin(), block.end(),
+                                             [](const auto& l) { return l.rfind("$ ", 0) == 0; });
+            if (session) {
+                if (const auto reason = not_run_reason(lines, i)) {
+                    run.not_run.push_back(relative + ":" + std::to_string(i + 1) + ": " + *reason);
+                } else {
+                    run_session(block, relative, scratch, run, last_output);
+                }
+            } else if (fenced_are_output && !last_output.empty()) {
                 check_fenced(lines, i, c, last_output, changed);
             }
             i = c;
