@@ -347,6 +347,21 @@ struct PageRun {
     std::vector<std::string> not_run; // "page:line: reason"
 };
 
+// A fenced block right under a block of commands (nothing but blank lines between) quotes
+// their output.
+bool right_after(const std::vector<std::string>& lines, std::size_t commands_end,
+                 std::size_t fence) {
+    if (commands_end == 0 || commands_end > fence) {
+        return false;
+    }
+    for (std::size_t i = commands_end; i < fence; ++i) {
+        if (!trim(lines.at(i)).empty()) {
+            return false;
+        }
+    }
+    return true;
+}
+
 // A terminal session in a fenced block: each `$ COMMAND` line runs (its `# comment` may give the
 // exit code), and the lines under it, up to the next `$`, are what it prints ("..." alone on a
 // line standing for any lines).
@@ -387,6 +402,7 @@ void run_page(const std::string& relative, Scratch& scratch, int& pictures, Page
     std::vector<std::string> lines = lines_of(read_bytes(page));
     std::string last_output;
     bool changed = false;
+    std::size_t commands_end = 0; // the line after the last block of commands run
     for (std::size_t i = 0; i < lines.size(); ++i) {
         const std::string& line = lines.at(i);
         if (line.rfind("```", 0) == 0) {
@@ -403,7 +419,8 @@ void run_page(const std::string& relative, Scratch& scratch, int& pictures, Page
                 } else {
                     run_session(block, relative, scratch, run, last_output);
                 }
-            } else if (fenced_are_output && !last_output.empty()) {
+            } else if ((fenced_are_output || right_after(lines, commands_end, i)) &&
+                       !last_output.empty()) {
                 check_fenced(lines, i, c, last_output, changed);
             }
             i = c;
@@ -428,6 +445,7 @@ void run_page(const std::string& relative, Scratch& scratch, int& pictures, Page
                               << "block <!-- not run: REASON --> or make it runnable");
                 CHECK_FALSE(foreign_command(trim(b)));
             }
+            commands_end = end;
             for (const Example& e : page_commands(join_lines(block))) {
                 const ProcessResult r = scratch.run(e.command);
                 INFO(relative << ": " << e.command << "\n" << r.output);
