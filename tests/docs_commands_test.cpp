@@ -246,8 +246,8 @@ bool foreign_command(const std::string& line) {
 //   <!-- figure NAME: COMMAND => FILE SELECTOR FORMAT -->
 // (COMMAND runs in the page's scratch folder after the page's commands; SELECTOR is a JSON
 // pointer into FILE, or `rows`, the data rows of a CSV: lines not blank, not `#`, less the
-// header; FORMAT is `int`, `.Nf` or `min` (seconds as whole minutes), a trailing `,` grouping
-// thousands), and quotes it as
+// header; FORMAT is `int`, `.Nf`, `±.Nf` (signed, with the typographic minus) or `min`
+// (seconds as whole minutes), a trailing `,` grouping thousands), and quotes it as
 // `<!--f:NAME-->3,958<!--/f-->`, which Markdown shows as the bare figure.
 struct FigureSource {
     std::string command;
@@ -265,8 +265,16 @@ std::string format_figure(double value, std::string format) {
         value /= 60;
         format = "int";
     }
+    // "±.2f": always signed, the minus as the typographic one the pages use (−0.83).
+    const bool signed_figure = format.rfind("±", 0) == 0;
+    if (signed_figure) {
+        format = "+" + format.substr(std::string("±").size());
+    }
     std::string text = format == "int" ? std::to_string(std::llround(value))
                                        : fmt::format(fmt::runtime("{:" + format + "}"), value);
+    if (signed_figure && text.front() == '-') {
+        text = "−" + text.substr(1);
+    }
     if (grouped) {
         const auto point = text.find('.');
         auto digits_end = point == std::string::npos ? text.size() : point;
@@ -304,10 +312,13 @@ void check_figures(std::vector<std::string>& lines, const std::string& relative,
         }
     }
     std::map<std::string, std::string> values;
+    std::set<std::string> ran; // a command several figures share runs once
     for (const auto& [name, src] : sources) {
-        const ProcessResult r = scratch.run(src.command);
-        INFO(relative << ": figure " << name << ": " << src.command << "\n" << r.output);
-        REQUIRE(r.exit_code == 0);
+        if (ran.insert(src.command).second) {
+            const ProcessResult r = scratch.run(src.command);
+            INFO(relative << ": figure " << name << ": " << src.command << "\n" << r.output);
+            REQUIRE(r.exit_code == 0);
+        }
         values[name] =
             format_figure(select_figure(scratch.path(src.file), src.selector), src.format);
     }
