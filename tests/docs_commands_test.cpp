@@ -117,9 +117,9 @@ struct Example {
 };
 
 // The commands of a Markdown page's indented code blocks: lines that begin with
-// `build/cli/parsons`, `parsons` (on the PATH), `mkdir` or `awk` (continued over lines ending in a
-// backslash), with their trailing `# comment`; the lines under a command in the same block are
-// output it must print.
+// `build/cli/parsons`, `parsons` (on the PATH), `mkdir` or `awk`, with or without a `$ ` prompt
+// (continued over lines ending in a backslash), with their trailing `# comment`; the lines under a
+// command in the same block are output it must print.
 std::vector<Example> page_commands(const std::string& markdown) {
     std::vector<Example> out;
     bool in_block = false;
@@ -130,7 +130,8 @@ std::vector<Example> page_commands(const std::string& markdown) {
             in_block = false;
             continue;
         }
-        const std::string line = raw.substr(4);
+        // "$ COMMAND": a terminal session, indented.
+        const std::string line = raw.rfind("    $ ", 0) == 0 ? raw.substr(6) : raw.substr(4);
         if (!pending.empty()) {
             pending += " " + trim(line);
         } else if (line.rfind("build/cli/parsons ", 0) == 0 || line.rfind("parsons ", 0) == 0 ||
