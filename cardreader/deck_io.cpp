@@ -4,6 +4,7 @@
 #include "cardreader/cbn_format.hpp"
 #include "cardreader/deck_error.hpp"
 #include "cardreader/five_card_format.hpp"
+#include "cardreader/listing_fields.hpp"
 #include "cardreader/listing_format.hpp"
 #include "cardreader/tape_format.hpp"
 #include "cardreader/text_format.hpp"
@@ -14,6 +15,7 @@
 #include <bit>
 #include <cctype>
 #include <istream>
+#include <vector>
 
 namespace parsons::cardreader {
 namespace {
@@ -200,6 +202,197 @@ std::optional<DeckFormat> sniff_format(std::string_view head) {
         return DeckFormat::bin; // a short one: its reader says where it ends
     }
     return std::nullopt;
+}
+
+namespace {
+
+constexpr std::size_t kSignatureCardBytes = 160; // a card of .cbn and .bin alike
+
+// Every byte printable ASCII, a tab or a line end (after a UTF-8 byte-order mark), and at
+// least one: what text card images and a listing are made of.
+bool printable_text(std::string_view head) {
+    if (head.starts_with("\xEF\xBB\xBF")) {
+        head.remove_prefix(3);
+    }
+    return !head.empty() && std::all_of(head.begin(), head.end(), [](char c) {
+        const auto u = static_cast<unsigned char>(c);
+        return (u >= 0x20 && u < 0x7F) || c == '\n' || c == '\r' || c == '\t';
+    });
+}
+
+// Printable text whose every line fits a card: 80 columns at most (a tab to the next multiple
+// of eight), or a SIMH line that begins with '~' (~raw holds 320 octal digits). The last line
+// of a head as long as kDeckHeadBytes may be cut short, so it is not measured.
+bool text_card_lines(std::string_view head) {
+    if (!printable_text(head)) {
+        return false;
+    }
+    const bool whole_file = head.size() < kDeckHeadBytes;
+    std::size_t start = 0;
+    while (start < head.size()) {
+        const std::size_t nl = head.find('\n', start);
+        if (nl == std::string_view::npos && !whole_file) {
+            break;
+        }
+        const std::string_view line = head.substr(start, std::min(nl, head.size()) - start);
+        int columns = 0;
+        for (const char c : line) {
+            columns = c == '\t' ? (columns | 7) + 1 : c == '\r' ? columns : columns + 1;
+        }
+        if (columns > kColumns && !line.starts_with('~')) {
+            return false;
+        }
+        start = nl == std::string_view::npos ? head.size() : nl + 1;
+    }
+    return true;
+}
+
+// The number of whole 160-byte cards at the head, each a column-binary card (0 when not all).
+std::size_t cbn_cards_at(std::string_view head) {
+    const std::size_t n = head.size() / kSignatureCardBytes;
+    for (std::size_t k = 0; k < n; ++k) {
+        const auto card = head.substr(k * kSignatureCardBytes, kSignatureCardBytes);
+        if ((static_cast<unsigned char>(card[0]) & 0x80) == 0 || !cbn_card(card)) {
+            return 0;
+        }
+    }
+    return n;
+}
+
+// Every byte of the whole cards, bits 6..0, of odd parity: column binary, or column binary
+// whose card-start marks are missing (a damaged .cbn, which its reader names).
+bool odd_parity_cards(std::string_view head) {
+    const auto bytes = head.substr(0, head.size() / kSignatureCardBytes * kSignatureCardBytes);
+    return !bytes.empty() && std::all_of(bytes.begin(), bytes.end(), [](char c) {
+        return std::popcount(static_cast<unsigned>(static_cast<unsigned char>(c) & 0x7F)) % 2 == 1;
+    });
+}
+
+// The number of whole cards at the head whose words are all .bin words (0 when not all).
+std::size_t bin_cards_at(std::string_view head) {
+    const std::size_t n = head.size() / kSignatureCardBytes;
+    return bin_words(head.substr(0, n * kSignatureCardBytes)) ? n : 0;
+}
+
+// A whole tape card at the head: the blank leader frames before it, or nothing.
+std::optional<std::size_t> tape_card_at(std::string_view head) {
+    const std::size_t leader = std::min(head.find_first_not_of('\0'), head.size());
+    if (head.size() < leader + kTapeDataFrames + 1) {
+        return std::nullopt;
+    }
+    for (std::size_t i = leader; i < leader + kTapeDataFrames; ++i) {
+        const auto f = static_cast<unsigned char>(head[i]);
+        if ((f & kTapeEndOfCard) != 0 || std::popcount(static_cast<unsigned>(f)) % 2 == 0) {
+            return std::nullopt;
+        }
+    }
+    if (static_cast<unsigned char>(head[leader + kTapeDataFrames]) != kTapeEndOfCard) {
+        return std::nullopt;
+    }
+    return leader;
+}
+
+// The line (1-based) of the listing's header, when it is the first line of printable text
+// that is not blank or a comment, as the listing reader wants it; else nothing.
+std::optional<int> listing_header_line(std::string_view head) {
+    if (!printable_text(head)) {
+        return std::nullopt;
+    }
+    if (head.starts_with("\xEF\xBB\xBF")) {
+        head.remove_prefix(3);
+    }
+    int line = 0;
+    std::size_t start = 0;
+    while (start < head.size()) {
+        const std::size_t nl = std::min(head.find('\n', start), head.size());
+        ++line;
+        const std::string_view whole = head.substr(start, nl - start);
+        const std::string_view data = detail::trim(whole.substr(0, whole.find('#')));
+        const std::string_view text = data.ends_with('\r') ? data.substr(0, data.size() - 1) : data;
+        if (!detail::trim(text).empty()) {
+            return detail::split_fields(detail::trim(text)) == detail::split_fields(kListingHeader)
+                       ? std::optional<int>(line)
+                       : std::nullopt;
+        }
+        start = nl + 1;
+    }
+    return std::nullopt;
+}
+
+std::string cards_said(std::size_t n, std::string_view what) {
+    return fmt::format("its first {} bytes are {} whole {} card{}", n * kSignatureCardBytes, n,
+                       what, n == 1 ? "" : "s");
+}
+
+} // namespace
+
+std::optional<ContentFormat> content_outranks(DeckFormat extension, std::string_view head) {
+    const bool text = printable_text(head);
+    const auto header = listing_header_line(head);
+    const std::size_t cbn = cbn_cards_at(head);
+    const std::size_t bin = bin_cards_at(head);
+    const auto tape = tape_card_at(head);
+    const bool comma = head.find(',') != std::string_view::npos;
+    bool fits = false;
+    switch (extension) {
+    case DeckFormat::cbn:
+    case DeckFormat::five: // the same bytes: five cards a step are told by no byte
+        fits = cbn > 0;
+        break;
+    case DeckFormat::bin:
+        fits = bin > 0;
+        break;
+    case DeckFormat::tape:
+        fits = tape.has_value();
+        break;
+    case DeckFormat::listing:
+        fits = text && (header || comma);
+        break;
+    case DeckFormat::text:
+        fits = text && !header;
+        break;
+    }
+    if (fits) {
+        return std::nullopt;
+    }
+    std::vector<ContentFormat> found;
+    if (cbn > 0) {
+        found.push_back(
+            {DeckFormat::cbn, cards_said(cbn, "column-binary") +
+                                  ": a card-start mark (bit 7) on each card's first byte alone and "
+                                  "every byte of odd parity"});
+    }
+    if (bin > 0 && !text && !odd_parity_cards(head)) {
+        found.push_back(
+            {DeckFormat::bin, cards_said(bin, "IBM 1130 binary") +
+                                  ": bits 3..0 of every column's first byte clear, and neither "
+                                  "printable text nor every byte of odd parity as column binary"});
+    }
+    if (tape) {
+        found.push_back({DeckFormat::tape,
+                         fmt::format("{}160 frames with channel 8 clear and odd parity, then an "
+                                     "end-of-card frame (channel 8 alone)",
+                                     *tape == 0 ? std::string()
+                                                : fmt::format("after {} blank leader frame{}, ",
+                                                              *tape, *tape == 1 ? "" : "s"))});
+    }
+    if (header) {
+        found.push_back({DeckFormat::listing, fmt::format("line {} is the listing's header '{}'",
+                                                          *header, kListingHeader)});
+    }
+    if (text && !header && text_card_lines(head)) {
+        found.push_back(
+            {DeckFormat::text,
+             fmt::format("its first {} bytes are printable ASCII in lines of a card each{}",
+                         head.size(),
+                         extension == DeckFormat::listing
+                             ? ", and none holds a comma, as every listing row does"
+                             : ", with no card-start mark or binary byte")});
+    }
+    if (found.size() != 1) {
+        return std::nullopt; // none, or several equally: the extension's reader says what it finds
+    }
+    return found.front();
 }
 
 std::optional<std::string> non_deck_kind(std::string_view head) {

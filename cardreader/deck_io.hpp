@@ -43,6 +43,23 @@ std::optional<DeckFormat> format_for_path(std::string_view path);
 // listing, printable characters text card images, and 16-bit words whose low four bits are
 // all clear the .bin format. Nothing when the bytes fit none of them.
 std::optional<DeckFormat> sniff_format(std::string_view head);
+// How much of a deck's beginning the commands read to tell its format.
+inline constexpr std::size_t kDeckHeadBytes = 4096;
+
+// What a deck plainly is when its extension says another format (docs/deck-formats.md, "When
+// the content outranks the extension"), told from its first bytes (at most kDeckHeadBytes) by
+// signatures that do not guess: whole column-binary cards (a card-start mark on each card's
+// first byte alone, every byte of odd parity), whole .bin cards that are neither text nor of
+// odd parity, a tape card after its leader, the listing's header as the first line that is
+// not a comment, printable lines of 80 columns at most (and, against a listing's extension, no
+// comma). Nothing when the bytes fit the extension's own format, fit no format, or fit more
+// than one: the extension's reader then reads them and names what is wrong. `why` says what
+// in the bytes decided.
+struct ContentFormat {
+    DeckFormat format = DeckFormat::cbn;
+    std::string why;
+};
+std::optional<ContentFormat> content_outranks(DeckFormat extension, std::string_view head);
 // "a PNG image", "a PDF document" ...: what a common file that is no deck is, from its magic
 // number, so that the error says so. Nothing when the bytes look like none of them.
 std::optional<std::string> non_deck_kind(std::string_view head);

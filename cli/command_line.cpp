@@ -55,6 +55,13 @@ std::optional<std::string> gone_stream(const std::system_error& e) {
 
 } // namespace
 
+void add_strict_flag(CLI::App& cmd, bool& strict) {
+    cmd.add_flag("--strict", strict,
+                 "Refuse the G-code words the 1952 machine would ignore (F, S, M7-M9, O, T and "
+                 "M6, G43 H, G64 P, G28 at the end) instead of warning of each (exit 2, naming "
+                 "file, line and word)");
+}
+
 void build_command_line(CLI::App& app, Command& selected, const std::string& version,
                         RunTimeline* timeline) {
     app.description("parsons: an emulator of the 1952 Parsons-Stulen punched-card milling "

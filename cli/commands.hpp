@@ -37,6 +37,11 @@ void add_demo_command(CLI::App& app, Command& selected);
 void add_bench_command(CLI::App& app, Command& selected);
 void add_check_command(CLI::App& app, Command& selected);
 
+// --strict, on every command that reads a G-code program (today gen gcode): the words the
+// reader would ignore with a warning are refused instead (decks::GcodeReading; docs/gcode.md).
+// Defined with the command line (cli/command_line.cpp), so that each such command has it alike.
+void add_strict_flag(CLI::App& cmd, bool& strict);
+
 // What `parsons run` is asked to do (the flags of docs/design-rules.md, Interfaces).
 struct RunRequest {
     std::string input;

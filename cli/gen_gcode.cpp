@@ -33,6 +33,7 @@ struct GcodeFlags {
     decks::GcodeJobOptions o;
     bool no_corner_slowdown = false;
     bool json = false;
+    bool strict = false;
 };
 
 Json gcode_json(const GcodeFlags& f, const decks::GcodeProgram& program,
@@ -102,8 +103,11 @@ ExitCode run_gen_gcode(GcodeFlags f) {
     plan.check();
     const auto profile = load_profile(f.profile);
     const std::string text = read_text_file(f.program);
-    const decks::GcodeProgram program =
-        decks::read_gcode(text, f.program == "-" ? "standard input" : f.program);
+    const decks::GcodeProgram program = decks::read_gcode(
+        text, f.program == "-" ? "standard input" : f.program, {.strict = f.strict});
+    for (const std::string& w : program.warnings) {
+        say(stderr, "parsons: warning: " + w + "\n");
+    }
     decks::GcodeDeck deck;
     try {
         deck = decks::make_gcode_deck(program, f.o, profile);
@@ -127,7 +131,11 @@ void add_gen_gcode_command(CLI::App& gen, Command& selected) {
     auto flags = std::make_shared<GcodeFlags>();
     CLI::App* cmd = gen.add_subcommand(
         "gcode", "A G-code program (G0 G1 G2 G3, G20 G21, G90 G91) as a deck: arcs in chords, "
-                 "each move a staircase within the tolerance, speeds by the slow-down rule");
+                 "each move a staircase within the tolerance, speeds by the slow-down rule. A "
+                 "post-processor's program (LinuxCNC's, grbl's) is read as written: its words "
+                 "for a machine the 1952 one is not (F, S, coolant, O, T M6, G43 H, G64 P, a "
+                 "G28 at the end) are ignored, each kind with one warning on standard error; "
+                 "--strict refuses them");
     cmd->add_option("PROGRAM", flags->program, "The G-code program to read (- for standard input)")
         ->type_name(file_value(kGcodeExtensions))
         ->required();
@@ -151,6 +159,7 @@ void add_gen_gcode_command(CLI::App& gen, Command& selected) {
                   "Do not slow down where the path turns sharply (EP 0636958)");
     cmd->add_option("--profile", flags->profile, "Machine profile (a name or a JSON file)")
         ->type_name(std::string(kProfileValue));
+    add_strict_flag(*cmd, flags->strict);
     add_json_flag(*cmd, flags->json);
     cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was written"}}) +
                 "Examples:\n"
@@ -158,7 +167,9 @@ void add_gen_gcode_command(CLI::App& gen, Command& selected) {
                 "  parsons run bracket.cbn --path bracket-path.csv\n"
                 "  parsons convert bracket.cbn -o bracket-as-cut.ngc   (the path, back to "
                 "G-code)\n"
-                "  parsons gen gcode decks/samples/bracket.ngc --tolerance 0.01 -o coarse.cbn");
+                "  parsons gen gcode decks/samples/bracket.ngc --tolerance 0.01 -o coarse.cbn\n"
+                "  parsons gen gcode tests/gcode/linuxcnc-post.ngc --strict -o b.cbn   (exit 2 "
+                "at its first ignored word)");
     cmd->callback([&selected, flags] { selected = [flags] { return run_gen_gcode(*flags); }; });
 }
 

@@ -2,9 +2,11 @@
 #include "decks/gcode_program.hpp"
 
 #include "cardreader/deck_error.hpp"
+#include "decks/gcode_words.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -18,6 +20,9 @@ namespace {
 using cardreader::DeckError;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
+using gcode_words::g_code;
+using gcode_words::GInfo;
+using gcode_words::Group;
 
 constexpr double kMmPerInch = 25.4;
 // An arc whose end lies further than this from the circle through its start is refused
@@ -30,90 +35,12 @@ struct Word {
     std::string text; // as written, "G41", "X1.5"
 };
 
-// Modal groups of the G words parsons reads; two words of one group on a line are refused.
-enum class Group { motion, plane, units, distance, arc_distance, feed_mode, other };
-
-struct GInfo {
-    Group group;
-    const char* refusal; // nullptr: read; else why it is refused
-};
-
-std::optional<GInfo> g_code(double g) {
-    static const std::map<int, GInfo> codes = {
-        {0, {Group::motion, nullptr}},
-        {10, {Group::motion, nullptr}},
-        {20, {Group::motion, nullptr}},
-        {30, {Group::motion, nullptr}},
-        {40,
-         {Group::other, "dwell: the 1952 machine reads the next card as soon as every axis "
-                        "has stopped; it cannot wait"}},
-        {170, {Group::plane, nullptr}},
-        {180, {Group::plane, "the XZ plane: parsons reads arcs in the XY plane only (G17)"}},
-        {190, {Group::plane, "the YZ plane: parsons reads arcs in the XY plane only (G17)"}},
-        {200, {Group::units, nullptr}},
-        {210, {Group::units, nullptr}},
-        {280,
-         {Group::other, "return to home: the deck's first card starts from the reference "
-                        "zero; write the moves themselves"}},
-        {300, {Group::other, "return to a second home: write the moves themselves"}},
-        {382, {Group::motion, "probing: the 1952 machine has no probe"}},
-        {400, {Group::other, nullptr}},
-        {410,
-         {Group::other, "cutter radius compensation: the deck generator offsets the cutter "
-                        "itself (gen airfoil --cutter-radius); write the cutter-centre path"}},
-        {420,
-         {Group::other, "cutter radius compensation: the deck generator offsets the cutter "
-                        "itself (gen airfoil --cutter-radius); write the cutter-centre path"}},
-        {430, {Group::other, "tool length offset: a 1952 deck runs one cutter, set by hand"}},
-        {490, {Group::other, nullptr}},
-        {530, {Group::other, "machine coordinates: give the program's own and --work-zero"}},
-        {540, {Group::other, nullptr}},
-        {550, {Group::other, "a second work offset: give --work-zero"}},
-        {560, {Group::other, "a work offset: give --work-zero"}},
-        {570, {Group::other, "a work offset: give --work-zero"}},
-        {580, {Group::other, "a work offset: give --work-zero"}},
-        {590, {Group::other, "a work offset: give --work-zero"}},
-        {610, {Group::other, nullptr}},
-        {640, {Group::other, nullptr}},
-        {800, {Group::motion, nullptr}},
-        {810, {Group::motion, "a drilling cycle: write its moves as G0 and G1 lines"}},
-        {820, {Group::motion, "a drilling cycle: write its moves as G0 and G1 lines"}},
-        {830, {Group::motion, "a drilling cycle: write its moves as G0 and G1 lines"}},
-        {840,
-         {Group::motion, "a tapping cycle: the tap card of parsons-extended does that "
-                         "(gen tapping)"}},
-        {900, {Group::distance, nullptr}},
-        {901,
-         {Group::arc_distance, "absolute arc centres: give I and J from the arc's start "
-                               "(G91.1)"}},
-        {910, {Group::distance, nullptr}},
-        {911, {Group::arc_distance, nullptr}},
-        {920, {Group::other, "setting the origin in the program: give --work-zero"}},
-        {930,
-         {Group::feed_mode, "inverse-time feed: the deck's speeds come from the slow-down "
-                            "rule"}},
-        {940, {Group::feed_mode, nullptr}},
-        {950,
-         {Group::feed_mode, "feed per revolution: the deck's speeds come from the slow-down "
-                            "rule"}},
-    };
-    const double tenths = g * 10;
-    if (std::abs(tenths - std::round(tenths)) > 1e-9) {
-        return std::nullopt;
-    }
-    const auto it = codes.find(static_cast<int>(std::lround(tenths)));
-    if (it == codes.end()) {
-        if (g >= 81 && g <= 89 && g == std::floor(g)) {
-            return GInfo{Group::motion, "a canned cycle: write its moves as G0 and G1 lines"};
-        }
-        return std::nullopt;
-    }
-    return it->second;
-}
-
 class Reader {
 public:
-    Reader(std::string_view text, const std::string& file) : text_(text) { program_.file = file; }
+    Reader(std::string_view text, const std::string& file, bool strict)
+        : text_(text), strict_(strict) {
+        program_.file = file;
+    }
 
     GcodeProgram read() {
         std::size_t start = 0;
@@ -132,6 +59,7 @@ public:
             start = nl + 1;
         }
         program_.lines = line_;
+        tell_ignored();
         return std::move(program_);
     }
 
@@ -140,10 +68,72 @@ private:
         throw DeckError::at_line(program_.file, line_, word.empty() ? why : word + ": " + why);
     }
 
-    void ignore(const std::string& kind, const std::string& why) {
-        if (ignored_kinds_.insert(kind).second) {
-            program_.ignored.push_back(fmt::format("{} (first on line {}): {}", kind, line_, why));
+    // A word the 1952 machine has nothing for: told once a kind, at its first line, with the
+    // number of later lines that hold one too (docs/gcode.md); under --strict, refused there.
+    void ignore(const std::string& kind, const std::string& word, const std::string& why) {
+        if (strict_) {
+            refuse(word, why + " (refused under --strict, which ignores nothing)");
         }
+        const auto [it, first] = ignored_.try_emplace(kind);
+        Ignored& seen = it->second;
+        if (first) {
+            seen = {word, why, line_, line_, 0, order_++};
+        } else if (seen.last_line != line_) {
+            seen.last_line = line_;
+            ++seen.later_lines;
+        }
+    }
+
+    // The ignored words, in the order of their first lines: the program's list and the
+    // warnings.
+    void tell_ignored() {
+        std::vector<std::pair<std::string, const Ignored*>> kinds;
+        for (const auto& [kind, seen] : ignored_) {
+            kinds.emplace_back(kind, &seen);
+        }
+        std::sort(kinds.begin(), kinds.end(),
+                  [](const auto& a, const auto& b) { return a.second->order < b.second->order; });
+        for (const auto& [kind, seen] : kinds) {
+            program_.ignored.push_back(
+                fmt::format("{} (first on line {}): {}", kind, seen->first_line, seen->why));
+            program_.warnings.push_back(fmt::format(
+                "{}:{}: {} ignored: {}{}", program_.file, seen->first_line, seen->word, seen->why,
+                seen->later_lines == 0
+                    ? ""
+                    : fmt::format(" (the same on {} later line{}, not told again)",
+                                  seen->later_lines, seen->later_lines == 1 ? "" : "s")));
+        }
+    }
+
+    // A program number as the posts write it, O1234 or O<name>, first on its line (after an N
+    // word) with nothing after it but a comment: read into `words` and `i` moved past it. Any
+    // other O word is LinuxCNC's subroutines and loops (O100 sub, O<x> call), refused.
+    static bool program_number(std::string_view l, std::size_t& i, std::vector<Word>& words) {
+        const bool first =
+            std::all_of(words.begin(), words.end(), [](const Word& w) { return w.letter == 'N'; });
+        std::size_t end = i + 1;
+        if (end < l.size() && l[end] == '<') {
+            end = l.find('>', end);
+            end = end == std::string_view::npos ? end : end + 1;
+        } else {
+            while (end < l.size() && std::isdigit(static_cast<unsigned char>(l[end])) != 0) {
+                ++end;
+            }
+        }
+        if (!first || end == std::string_view::npos || end <= i + 1 ||
+            (end == i + 2 && l[i + 1] == '<')) {
+            return false;
+        }
+        const std::size_t after = l.find_first_not_of(" \t", end);
+        if (after != std::string_view::npos && l[after] != '(' && l[after] != ';') {
+            return false;
+        }
+        Word w;
+        w.letter = 'O';
+        w.text = "O" + std::string(l.substr(i + 1, end - i - 1));
+        words.push_back(w);
+        i = end;
+        return true;
     }
 
     std::vector<Word> words_of(std::string_view l) const {
@@ -178,6 +168,9 @@ private:
                     refuse("(", "a comment that is not closed on its line");
                 }
                 i = close + 1;
+                continue;
+            }
+            if ((c == 'o' || c == 'O') && program_number(l, i, words)) {
                 continue;
             }
             if (c == '#' || c == '[' || c == 'o' || c == 'O') {
@@ -230,6 +223,12 @@ private:
         std::optional<int> spindle;
         bool end_program = false;
         bool has_arc_word = false;
+        std::optional<Word> tool;        // T
+        bool tool_change = false;        // M6
+        std::optional<Word> home;        // G28
+        std::optional<Word> tool_length; // G43, with its H
+        std::optional<Word> blending;    // G64, with its P and Q
+        std::vector<Word> h_p_q;         // H, P and Q: only with G43 and G64
     };
 
     void g_word(const Word& w, LineWords& line) const {
@@ -239,6 +238,14 @@ private:
         }
         if (info->refusal != nullptr) {
             refuse(w.text, info->refusal);
+        }
+        const long tenths = std::lround(w.value * 10);
+        if (tenths == 280) {
+            line.home = w;
+        } else if (tenths == 430) {
+            line.tool_length = w;
+        } else if (tenths == 640) {
+            line.blending = w;
         }
         if (info->group != Group::other) {
             if (const auto it = line.groups.find(info->group); it != line.groups.end()) {
@@ -263,10 +270,9 @@ private:
             }
             line.spindle = m == 3 ? 1 : m == 4 ? 2 : 0;
         } else if (m == 7 || m == 8 || m == 9) {
-            ignore("M7/M8/M9", "coolant: the 1952 card has no column for it");
+            ignore("M7/M8/M9", w.text, "coolant: the 1952 card has no column for it");
         } else if (m == 6) {
-            refuse(w.text, "a tool change: a 1952 deck runs one cutter (condition cards "
-                           "of parsons-extended change tools: gen two-tool)");
+            line.tool_change = true;
         } else if (m == 0 || m == 1) {
             refuse(w.text, "a program stop: the 1952 machine stops only at the end of "
                            "the deck or on a check");
@@ -305,18 +311,31 @@ private:
             if (!(w.value > 0)) {
                 refuse(w.text, "a feed must be positive");
             }
-            ignore("F", "feeds: the deck's speeds are the speed switches', chosen by the "
-                        "slow-down rule, not the program's");
+            ignore("F", w.text,
+                   "feeds: the deck's speeds are the speed switches', chosen by the "
+                   "slow-down rule, not the program's");
             break;
         case 'S':
             if (w.value < 0) {
                 refuse(w.text, "a spindle speed cannot be negative");
             }
-            ignore("S", "spindle speed: the 1952 spindle runs at the speed set on the machine");
+            ignore("S", w.text,
+                   "spindle speed: the 1952 spindle runs at the speed set on the machine");
             break;
         case 'T':
-            refuse(w.text, "a tool: a 1952 deck runs one cutter (condition cards of "
-                           "parsons-extended change tools: gen two-tool)");
+            if (w.value < 0 || w.value != std::floor(w.value) || line.tool) {
+                refuse(w.text, "a tool number is one whole number, 0 or more");
+            }
+            line.tool = w;
+            break;
+        case 'O':
+            ignore("O", w.text, "a program number: the deck is known by its file's name");
+            break;
+        case 'H':
+        case 'P':
+        case 'Q':
+            line.h_p_q.push_back(w);
+            break;
         case 'K':
             refuse(w.text, "K: arcs in the XY plane take I and J only");
         case 'A':
@@ -338,8 +357,81 @@ private:
         for (const Word& w : words) {
             sort_word(w, line);
         }
+        read_setup_words(line);
         read_modes(line);
+        if (line.home) {
+            read_home(line);
+            return;
+        }
         read_move(line);
+    }
+
+    // The words a post writes to set up a machine with a tool changer and path blending:
+    // T and M6, G43 H, G64 P Q. Each is ignored with its reason; H, P and Q on any other line
+    // are refused as before.
+    void read_setup_words(const LineWords& line) {
+        for (const Word& w : line.h_p_q) {
+            const bool with_g43 = w.letter == 'H' && line.tool_length;
+            const bool with_g64 = w.letter != 'H' && line.blending;
+            if (!with_g43 && !with_g64) {
+                refuse(w.text, "not a word parsons reads (docs/gcode.md lists them)");
+            }
+        }
+        auto with_values = [&line](const Word& g, char a, char b) {
+            std::string text = g.text;
+            for (const Word& w : line.h_p_q) {
+                text += w.letter == a || w.letter == b ? " " + w.text : "";
+            }
+            return text;
+        };
+        if (line.tool) {
+            const auto number = static_cast<std::int64_t>(line.tool->value);
+            if (first_tool_ && *first_tool_ != number) {
+                refuse(line.tool->text,
+                       fmt::format("a second tool (the program began with T{}): a 1952 deck "
+                                   "runs one cutter; split the program, one deck a tool "
+                                   "(condition cards of parsons-extended change tools: gen "
+                                   "two-tool)",
+                                   *first_tool_));
+            }
+            first_tool_ = number;
+        }
+        if (line.tool || line.tool_change) {
+            const std::string word = line.tool && line.tool_change ? line.tool->text + " M6"
+                                     : line.tool                   ? line.tool->text
+                                                                   : std::string("M6");
+            ignore("T/M6", word,
+                   fmt::format("the 1952 machine has no tool changer; the deck runs the one "
+                               "cutter set in the spindle by hand{}",
+                               !line.tool && first_tool_
+                                   ? fmt::format(" (the program's T{})", *first_tool_)
+                                   : std::string()));
+        }
+        if (line.tool_length) {
+            ignore("G43", with_values(*line.tool_length, 'H', 'H'),
+                   "tool length offset: the cutter is set by hand to the deck's zero, so the "
+                   "program's Z is the cutter's tip");
+        }
+        if (line.blending) {
+            ignore("G64", with_values(*line.blending, 'P', 'Q'),
+                   "path blending: the 1952 machine stops every axis at the end of each card, "
+                   "an exact stop whatever the program asks");
+        }
+    }
+
+    // G28: a return home, read only after the last move (its X Y Z are the point it passes,
+    // not a move): the deck ends where its last card stops. A move after it is refused there.
+    void read_home(const LineWords& line) {
+        if (line.has_arc_word) {
+            refuse(line.home->text, "a return home takes no I, J or R");
+        }
+        ignore("G28", line.home->text,
+               "a return home after the last move: the deck ends where its last card stops, "
+               "and the operator brings the machine home");
+        home_ = line_;
+        if (line.end_program) {
+            ended_ = true;
+        }
     }
 
     // In the order RS-274 applies them: units, plane, distance, spindle, then the move.
@@ -380,6 +472,13 @@ private:
             return;
         }
         const Word& first = line.axis.begin()->second;
+        if (home_) {
+            throw DeckError::at_line(program_.file, *home_,
+                                     fmt::format("G28: a return home with a move after it (line "
+                                                 "{}): parsons cannot know where home is; write "
+                                                 "the moves themselves",
+                                                 line_));
+        }
         if (motion_ == Mode::none) {
             refuse(first.text, "a move with no motion mode: give G0, G1, G2 or G3 first");
         }
@@ -501,9 +600,22 @@ private:
 
     enum class Mode { none, rapid, linear, arc_cw, arc_ccw };
 
+    struct Ignored {
+        std::string word; // the first, as written
+        std::string why;
+        std::int64_t first_line = 0;
+        std::int64_t last_line = 0;
+        std::int64_t later_lines = 0;
+        int order = 0;
+    };
+
     std::string_view text_;
     GcodeProgram program_;
-    std::set<std::string> ignored_kinds_;
+    bool strict_ = false;
+    std::map<std::string, Ignored> ignored_;
+    int order_ = 0;
+    std::optional<std::int64_t> first_tool_;
+    std::optional<std::int64_t> home_; // the line of a G28
     std::int64_t line_ = 0;
     bool ended_ = false;
     double units_ = 1.0;
@@ -517,8 +629,8 @@ private:
 
 } // namespace
 
-GcodeProgram read_gcode(std::string_view text, const std::string& file) {
-    return Reader(text, file).read();
+GcodeProgram read_gcode(std::string_view text, const std::string& file, const GcodeReading& how) {
+    return Reader(text, file, how.strict).read();
 }
 
 Vector3d point_on(const GcodeMove& move, double f) {

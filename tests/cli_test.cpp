@@ -325,3 +325,87 @@ TEST_CASE("CLI: a --job written for another deck is refused, whatever format the
                   .exit_code == 0);
     }
 }
+
+TEST_CASE("CLI: a deck whose content plainly is another format than its extension says is read "
+          "as what it is, with one warning naming file, both formats and why",
+          "[cli][deck-io]") {
+    TempDir dir;
+    REQUIRE(
+        run_parsons("punch " + q(source_path(kSample)) + " -o " + q(dir.str("s.cbn"))).exit_code ==
+        0);
+    for (const std::string ext : {"txt", "bin", "tape", "csv"}) {
+        REQUIRE(run_parsons("convert " + q(dir.str("s.cbn")) + " -o " + q(dir.str("s." + ext)))
+                    .exit_code == 0);
+    }
+    struct Case {
+        std::string from; // the deck's true file
+        std::string name; // the name it is given
+        std::string extension_says;
+        std::string found;
+        std::string why;
+    };
+    const std::vector<Case> cases = {
+        {"s.txt", "t.cbn", "cbn", "text", "its first "},
+        {"s.cbn", "c.txt", "text", "cbn", "its first 640 bytes are 4 whole column-binary cards"},
+        {"s.bin", "b.cbn", "cbn", "bin", "its first 640 bytes are 4 whole IBM 1130 binary cards"},
+        {"s.cbn", "c.bin", "bin", "cbn", "its first 640 bytes are 4 whole column-binary cards"},
+        {"s.tape", "p.cbn", "cbn", "tape", "160 frames with channel 8 clear and odd parity"},
+        {"s.csv", "l.txt", "text", "listing", "line 1 is the listing's header"},
+        {"s.txt", "t.csv", "listing", "text", "and none holds a comma, as every listing row does"},
+        {"s.cbn", "c.tape", "tape", "cbn", "4 whole column-binary cards"},
+    };
+    const std::string deck = read_bytes(dir.path("s.cbn"));
+    for (const Case& c : cases) {
+        INFO(c.name);
+        write_bytes(dir.path(c.name), read_bytes(dir.path(c.from)));
+        const auto r = parsons::test::run_shell("PARSONS convert " + q(dir.str(c.name)) + " -o " +
+                                                q(dir.str("out.cbn")) + " >/dev/null");
+        CHECK(r.exit_code == 0);
+        const std::string start = "parsons: warning: " + dir.str(c.name) + ": the extension says " +
+                                  c.extension_says + ", but the content is " + c.found + ": ";
+        CHECK(r.output.rfind(start, 0) == 0);
+        CHECK_THAT(r.output, Catch::Matchers::Contains(c.why));
+        CHECK_THAT(r.output, Catch::Matchers::EndsWith("; read as " + c.found + " (--format " +
+                                                       c.extension_says +
+                                                       " reads it as the extension says)\n"));
+        CHECK(parsons::test::lines_of(r.output).size() == 1);
+        CHECK(read_bytes(dir.path("out.cbn")) == deck);
+    }
+    SECTION("run reads such a deck the same way, with the one warning") {
+        REQUIRE(run_parsons("convert " + q(dir.str("s.cbn")) + " -o " + q(dir.str("t.cbn")) +
+                            " --to text")
+                    .exit_code == 0);
+        const auto r =
+            parsons::test::run_shell("PARSONS run " + q(dir.str("t.cbn")) + " --report " +
+                                     q(dir.str("r.json")) + " -q >/dev/null");
+        CHECK(r.exit_code == 0);
+        CHECK(parsons::test::lines_of(r.output).size() == 1);
+    }
+    SECTION("a deck that fits its extension: no warning") {
+        for (const std::string name : {"s.cbn", "s.txt", "s.bin", "s.tape", "s.csv"}) {
+            INFO(name);
+            const auto r = parsons::test::run_shell("PARSONS convert " + q(dir.str(name)) + " -o " +
+                                                    q(dir.str("out.cbn")) + " >/dev/null");
+            CHECK(r.exit_code == 0);
+            CHECK(r.output.empty());
+        }
+    }
+    SECTION("no format or several, or --format given: the extension's reader, its error, exit 2") {
+        write_bytes(dir.path("c.five"), deck); // column binary: a .five's own bytes
+        auto r = run_parsons("convert " + q(dir.str("c.five")) + " -o " + q(dir.str("x.cbn")));
+        CHECK(r.exit_code == 2);
+        CHECK(r.output.rfind("parsons: error: " + dir.str("c.five") + ": card 1, column 76", 0) ==
+              0);
+        write_bytes(dir.path("comma.csv"), "HELLO, 1952\n");
+        r = run_parsons("convert " + q(dir.str("comma.csv")) + " -o " + q(dir.str("x.cbn")));
+        CHECK(r.exit_code == 2);
+        CHECK(r.output.rfind("parsons: error: " + dir.str("comma.csv") + ":1: expected the header",
+                             0) == 0);
+        write_bytes(dir.path("t.cbn"), read_bytes(dir.path("s.txt")));
+        r = run_parsons("convert " + q(dir.str("t.cbn")) + " --format cbn -o " +
+                        q(dir.str("x.cbn")));
+        CHECK(r.exit_code == 2);
+        CHECK(r.output.rfind("parsons: error: " + dir.str("t.cbn") + ": card 1, byte 1", 0) == 0);
+        CHECK_FALSE(std::filesystem::exists(dir.path("x.cbn")));
+    }
+}

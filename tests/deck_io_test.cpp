@@ -99,3 +99,115 @@ TEST_CASE("Deck files: a common file that is no deck is named by its magic numbe
     cbn[0] = static_cast<char>(0xC0);
     CHECK_FALSE(non_deck_kind(cbn));
 }
+
+namespace {
+
+// Two cards (one with holes in every row, one blank) written in `format` (for five cards a
+// step, whose column 76 stays blank, two blank cards).
+std::string two_cards_as(DeckFormat format) {
+    Card full;
+    for (int c = 1; c <= kColumns && format != DeckFormat::five; ++c) {
+        full.set_column(c, static_cast<ColumnWord>((c * 0x111) & 0xFFF));
+    }
+    std::ostringstream out;
+    DeckOptions options;
+    options.format = format;
+    options.file_name = "deck";
+    auto sink = open_card_sink(out, options);
+    sink->write(full);
+    sink->write(Card{});
+    return out.str();
+}
+
+const std::string kListingText = "# a listing\ncard,spindle,axis,motion,speed,slow1,slow2,stop,"
+                                 "check,seq\n1,0,table,+,1,8.785,8.885,8.985,8.985,12\n";
+
+} // namespace
+
+TEST_CASE("Deck files: content outranks the extension when it plainly is another format",
+          "[deck-io]") {
+    struct Case {
+        DeckFormat extension;
+        std::string bytes;
+        DeckFormat found;
+        std::string why;
+    };
+    const std::string cbn = two_cards_as(DeckFormat::cbn);
+    const std::string bin = two_cards_as(DeckFormat::bin);
+    const std::string text = two_cards_as(DeckFormat::text);
+    const std::string tape = std::string(5, '\0') + two_cards_as(DeckFormat::tape);
+    const std::vector<Case> cases = {
+        {DeckFormat::cbn, text, DeckFormat::text,
+         "printable ASCII in lines of a card each, with no card-start"},
+        {DeckFormat::cbn, bin, DeckFormat::bin, "320 bytes are 2 whole IBM 1130 binary cards"},
+        {DeckFormat::cbn, tape, DeckFormat::tape, "after 5 blank leader frames, 160 frames"},
+        {DeckFormat::cbn, kListingText, DeckFormat::listing, "line 2 is the listing's header"},
+        {DeckFormat::five, text, DeckFormat::text, "printable ASCII"},
+        {DeckFormat::bin, cbn, DeckFormat::cbn, "320 bytes are 2 whole column-binary cards"},
+        {DeckFormat::bin, text, DeckFormat::text, "printable ASCII"},
+        {DeckFormat::text, cbn, DeckFormat::cbn, "card-start mark (bit 7) on each card's first"},
+        {DeckFormat::text, bin, DeckFormat::bin, "bits 3..0 of every column's first byte clear"},
+        {DeckFormat::text, kListingText, DeckFormat::listing, "header 'card,spindle,axis,"},
+        {DeckFormat::text, tape, DeckFormat::tape, "end-of-card frame (channel 8 alone)"},
+        {DeckFormat::listing, text, DeckFormat::text, "none holds a comma, as every listing row"},
+        {DeckFormat::listing, cbn, DeckFormat::cbn, "column-binary"},
+        {DeckFormat::tape, cbn, DeckFormat::cbn, "column-binary"},
+        {DeckFormat::tape, "HELLO 1952\n", DeckFormat::text, "first 11 bytes are printable"},
+    };
+    for (const Case& c : cases) {
+        INFO(format_name(c.extension) << " holding " << format_name(c.found));
+        const auto found = content_outranks(c.extension, c.bytes);
+        REQUIRE(found);
+        CHECK(found->format == c.found);
+        CHECK_THAT(found->why, Catch::Matchers::Contains(c.why));
+    }
+}
+
+TEST_CASE("Deck files: content that fits its extension, or no format or several, keeps the "
+          "extension",
+          "[deck-io]") {
+    const std::string cbn = two_cards_as(DeckFormat::cbn);
+    SECTION("each format under its own extension") {
+        for (DeckFormat f :
+             {DeckFormat::cbn, DeckFormat::bin, DeckFormat::text, DeckFormat::tape}) {
+            INFO(format_name(f));
+            CHECK_FALSE(content_outranks(f, two_cards_as(f)));
+        }
+        CHECK_FALSE(content_outranks(DeckFormat::listing, kListingText));
+        CHECK_FALSE(content_outranks(DeckFormat::five, cbn)); // the same bytes as .cbn
+        CHECK_FALSE(content_outranks(DeckFormat::cbn, two_cards_as(DeckFormat::five)));
+    }
+    SECTION("no format, or more than one") {
+        // A listing whose header is mistyped still has commas: the listing reader names it.
+        CHECK_FALSE(content_outranks(DeckFormat::listing, "card,spindel,axis\n1,0,table\n"));
+        CHECK_FALSE(content_outranks(DeckFormat::listing, "HELLO, 1952\n"));
+        // Column binary with its marks lost is of odd parity: no .bin; nor text ('@' a byte),
+        // whose lines hold 80 columns at most: its reader names it.
+        CHECK_FALSE(content_outranks(DeckFormat::cbn, std::string(160, '\x40')));
+        CHECK_FALSE(content_outranks(DeckFormat::cbn, std::string(81, 'A') + "\n"));
+        CHECK(content_outranks(DeckFormat::cbn,
+                               std::string(80, 'A') + "\n~raw" + std::string(320, '0') + "\n"));
+        // Too short to hold one whole card of any binary format.
+        CHECK_FALSE(content_outranks(DeckFormat::text, cbn.substr(0, 100)));
+        CHECK_FALSE(content_outranks(DeckFormat::cbn, std::string("\xC0\x40\x40", 3)));
+        CHECK_FALSE(content_outranks(DeckFormat::cbn, ""));
+        // A .cbn card with a parity error is no format at all.
+        std::string damaged = cbn;
+        damaged[7] = '\x41';
+        CHECK_FALSE(content_outranks(DeckFormat::text, damaged));
+        CHECK_FALSE(content_outranks(DeckFormat::bin, damaged));
+        // Bytes that are .bin cards and a tape card at once: several, so the extension reads.
+        std::string both(161, '\x01');
+        for (std::size_t i = 0; i < 160; i += 2) {
+            both[i] = '\x70'; // low four bits clear (.bin), odd parity (tape)
+        }
+        both[160] = '\x80';
+        both += std::string(159, '\0');
+        CHECK_FALSE(content_outranks(DeckFormat::cbn, both));
+        std::string only_bin = both;
+        only_bin[160] = '\0'; // no end-of-card frame: no tape
+        const auto found = content_outranks(DeckFormat::cbn, only_bin);
+        REQUIRE(found);
+        CHECK(found->format == DeckFormat::bin);
+    }
+}

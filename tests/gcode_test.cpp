@@ -70,8 +70,9 @@ TEST_CASE("G-code: refusals name the file, the line and the word", "[gcode]") {
     const std::vector<Case> cases = {
         {"G20\nG41 X1\n", "p.ngc:2: G41: cutter radius compensation"},
         {"G20\nG42 X1\n", "p.ngc:2: G42: cutter radius compensation"},
-        {"G20\nT2 M6\n", "p.ngc:2: T2: a tool"},
-        {"G20\nM6\n", "p.ngc:2: M6: a tool change"},
+        {"G20\nT1 M6\nG1 X1\nT2 M6\n", "p.ngc:4: T2: a second tool (the program began with T1)"},
+        {"G20\nT1.5\n", "p.ngc:2: T1.5: a tool number is one whole number"},
+        {"G20\nT1 T1\n", "p.ngc:2: T1: a tool number is one whole number"},
         {"G1 X1\n", "p.ngc:1: X1: a move before the units are given"},
         {"G20\n\nX1\n", "p.ngc:3: X1: a move with no motion mode"},
         {"G20\nG1 X1 X2\n", "p.ngc:2: X2: X given twice on one line"},
@@ -89,6 +90,9 @@ TEST_CASE("G-code: refusals name the file, the line and the word", "[gcode]") {
         {"G20\nG1 X1 (comment\n", "p.ngc:2: (: a comment that is not closed"},
         {"G20\n#1=2\n", "p.ngc:2: #: parameters, expressions"},
         {"G20\nO100 sub\n", "p.ngc:2: O: parameters, expressions and subroutines"},
+        {"G20\nO<cut> call\n", "p.ngc:2: O: parameters, expressions and subroutines"},
+        {"G20\nG1 X1 O100\n", "p.ngc:2: O: parameters, expressions and subroutines"},
+        {"G20\nO<cut\n", "p.ngc:2: O: parameters, expressions and subroutines"},
         {"G20\nG1 A10\n", "p.ngc:2: A10: a rotary axis"},
         {"G20\nG1 X1 K1\n", "p.ngc:2: K1: K: arcs in the XY plane take I and J only"},
         {"G20\nG1 X\n", "p.ngc:2: X: a letter with no number"},
@@ -98,9 +102,15 @@ TEST_CASE("G-code: refusals name the file, the line and the word", "[gcode]") {
         {"G20\nG81 X1 Y1 Z-1 R0.1\n", "p.ngc:2: G81: a drilling cycle"},
         {"G20\nG85 X1\n", "p.ngc:2: G85: a canned cycle"},
         {"G20\nG84 X1\n", "p.ngc:2: G84: a tapping cycle"},
-        {"G20\nG28\n", "p.ngc:2: G28: return to home"},
+        {"G20\nG28\nG1 X1\n", "p.ngc:2: G28: a return home with a move after it (line 3)"},
+        {"G20\nG28 G91 Z0\nG90\nX1\n", "p.ngc:2: G28: a return home with a move after it"},
+        {"G20\nG28 I1\n", "p.ngc:2: G28: a return home takes no I, J or R"},
         {"G20\nG92 X0\n", "p.ngc:2: G92: setting the origin"},
-        {"G20\nG43 H1\n", "p.ngc:2: G43: tool length offset"},
+        {"G20\nG1 X1 H1\n", "p.ngc:2: H1: not a word parsons reads"},
+        {"G20\nG1 X1 P0.01\n", "p.ngc:2: P0.01: not a word parsons reads"},
+        {"G20\nG43 P1\n", "p.ngc:2: P1: not a word parsons reads"},
+        {"G20\nG64 H1\n", "p.ngc:2: H1: not a word parsons reads"},
+        {"G20\nG43.1 Z1\n", "p.ngc:2: G43.1: not a G-code parsons reads"},
         {"G20\nG55\n", "p.ngc:2: G55: a second work offset"},
         {"G20\nG93\n", "p.ngc:2: G93: inverse-time feed"},
         {"G20\nG1.5 X1\n", "p.ngc:2: G1.5: not a G-code parsons reads"},
@@ -157,6 +167,19 @@ TEST_CASE("G-code: what is read: units, distances, comments, the end, the spindl
         CHECK_THAT(p.ignored[0], Contains("S (first on line 1)"));
         CHECK_THAT(p.ignored[1], Contains("F (first on line 2)"));
         CHECK_THAT(p.ignored[2], Contains("M7/M8/M9 (first on line 4)"));
+        // One warning a kind, at its first line, counting the later lines that hold one.
+        REQUIRE(p.warnings.size() == 3);
+        CHECK(p.warnings[0] == "p.ngc:1: S1000 ignored: spindle speed: the 1952 spindle runs at "
+                               "the speed set on the machine");
+        CHECK(p.warnings[1] ==
+              "p.ngc:2: F10 ignored: feeds: the deck's speeds are the speed switches', chosen by "
+              "the slow-down rule, not the program's (the same on 1 later line, not told again)");
+        CHECK(p.warnings[2] == "p.ngc:4: M8 ignored: coolant: the 1952 card has no column for it");
+    }
+    SECTION("the modal words that state what parsons assumes are read without a word") {
+        const auto p = read("G17 G40 G49 G54 G61 G80 G90 G94 G91.1\nG20 G1 X1\n");
+        CHECK(p.warnings.empty());
+        CHECK(p.moves.size() == 1);
     }
     SECTION("M3, M4 and M5 set the spindle column of the moves that follow") {
         const auto p = read("G20 G1 X1\nM3\nX2\nM4 X3\nM5\nX4\n");
@@ -444,4 +467,138 @@ TEST_CASE("G-code commands: gen gcode and convert to .ngc, exit codes", "[gcode]
         CHECK(r.exit_code == 2);
         CHECK_THAT(r.output, Contains("--profile is for G-code output"));
     }
+}
+
+namespace {
+
+decks::GcodeProgram read_file(const std::string& relative, decks::GcodeReading how = {}) {
+    return decks::read_gcode(test::read_bytes(test::source_path(relative)), relative, how);
+}
+
+std::string strict_refusal(const std::string& relative) {
+    try {
+        read_file(relative, {.strict = true});
+    } catch (const cardreader::DeckError& e) {
+        return e.what();
+    }
+    return "no refusal";
+}
+
+const std::vector<std::string> kLinuxcncWarnings = {
+    "tests/gcode/linuxcnc-post.ngc:2: O1001 ignored: a program number: the deck is known by its "
+    "file's name",
+    "tests/gcode/linuxcnc-post.ngc:9: G64 P0.001 ignored: path blending: the 1952 machine stops "
+    "every axis at the end of each card, an exact stop whatever the program asks",
+    "tests/gcode/linuxcnc-post.ngc:11: T1 M6 ignored: the 1952 machine has no tool changer; the "
+    "deck runs the one cutter set in the spindle by hand",
+    "tests/gcode/linuxcnc-post.ngc:12: G43 H1 ignored: tool length offset: the cutter is set by "
+    "hand to the deck's zero, so the program's Z is the cutter's tip",
+    "tests/gcode/linuxcnc-post.ngc:13: S1200 ignored: spindle speed: the 1952 spindle runs at the "
+    "speed set on the machine",
+    "tests/gcode/linuxcnc-post.ngc:14: M8 ignored: coolant: the 1952 card has no column for it "
+    "(the same on 1 later line, not told again)",
+    "tests/gcode/linuxcnc-post.ngc:15: F5. ignored: feeds: the deck's speeds are the speed "
+    "switches', chosen by the slow-down rule, not the program's (the same on 3 later lines, not "
+    "told again)",
+};
+
+const std::vector<std::string> kGrblWarnings = {
+    "tests/gcode/grbl-post.ngc:11: T1 ignored: the 1952 machine has no tool changer; the deck "
+    "runs the one cutter set in the spindle by hand",
+    "tests/gcode/grbl-post.ngc:13: S12000 ignored: spindle speed: the 1952 spindle runs at the "
+    "speed set on the machine",
+    "tests/gcode/grbl-post.ngc:15: M8 ignored: coolant: the 1952 card has no column for it (the "
+    "same on 1 later line, not told again)",
+    "tests/gcode/grbl-post.ngc:16: F127 ignored: feeds: the deck's speeds are the speed "
+    "switches', chosen by the slow-down rule, not the program's (the same on 3 later lines, not "
+    "told again)",
+    "tests/gcode/grbl-post.ngc:31: G28 ignored: a return home after the last move: the deck ends "
+    "where its last card stops, and the operator brings the machine home",
+};
+
+} // namespace
+
+TEST_CASE("G-code: programs as LinuxCNC's and grbl's posts write them are the bracket's cut, "
+          "with one warning a kind of ignored word",
+          "[gcode]") {
+    const auto bare = read_file("decks/samples/bracket.ngc");
+    const auto profile = axes::default_profile();
+    const auto bare_deck = decks::make_gcode_deck(bare, {}, profile);
+    struct Post {
+        std::string file;
+        std::vector<std::string> warnings;
+    };
+    for (const Post& post : {Post{"tests/gcode/linuxcnc-post.ngc", kLinuxcncWarnings},
+                             Post{"tests/gcode/grbl-post.ngc", kGrblWarnings}}) {
+        INFO(post.file);
+        const auto p = read_file(post.file);
+        CHECK(p.warnings == post.warnings);
+        // The same moves: kind, ends, centres, sweeps and spindle, to a millionth of an inch
+        // (the grbl program is in millimetres).
+        REQUIRE(p.moves.size() == bare.moves.size());
+        for (std::size_t i = 0; i < p.moves.size(); ++i) {
+            INFO("move " << i + 1);
+            CHECK(p.moves[i].motion == bare.moves[i].motion);
+            CHECK((p.moves[i].from - bare.moves[i].from).norm() < 1e-6);
+            CHECK((p.moves[i].to - bare.moves[i].to).norm() < 1e-6);
+            CHECK((p.moves[i].centre - bare.moves[i].centre).norm() < 1e-6);
+            CHECK(p.moves[i].sweep_rad == Approx(bare.moves[i].sweep_rad).margin(1e-9));
+            CHECK(p.moves[i].spindle == bare.moves[i].spindle);
+        }
+        // And the same deck, card for card.
+        const auto deck = decks::make_gcode_deck(p, {}, profile);
+        CHECK(deck.cards == bare_deck.cards);
+    }
+    SECTION("--strict refuses each at its first ignored word, naming file, line and word") {
+        CHECK_THAT(strict_refusal("tests/gcode/linuxcnc-post.ngc"),
+                   Contains("tests/gcode/linuxcnc-post.ngc:2: O1001: a program number") &&
+                       Contains("(refused under --strict, which ignores nothing)"));
+        CHECK_THAT(strict_refusal("tests/gcode/grbl-post.ngc"),
+                   Contains("tests/gcode/grbl-post.ngc:11: T1: the 1952 machine has no tool "
+                            "changer"));
+        CHECK_THAT(strict_refusal("decks/samples/bracket.ngc"),
+                   Contains("decks/samples/bracket.ngc:5: S1200: spindle speed"));
+        // A program with nothing to ignore reads the same under --strict.
+        CHECK(
+            decks::read_gcode("G20 G90 G17\nG1 X1 Y1\nG2 X2 Y0 R1\nM2\n", "p.ngc", {.strict = true})
+                .moves.size() == 2);
+    }
+    SECTION("what the machine cannot follow is still refused without --strict") {
+        std::string text = test::read_bytes(test::source_path("tests/gcode/linuxcnc-post.ngc"));
+        text.replace(text.find("N50 X3. F12."), 12, "N50 G41 D1 X3.");
+        CHECK_THAT(refusal(text), Contains("p.ngc:16: G41: cutter radius compensation"));
+    }
+}
+
+TEST_CASE("G-code commands: gen gcode reads a post's program with its warnings on standard "
+          "error, and --strict refuses it with exit 2 and no deck",
+          "[gcode][cli]") {
+    test::TempDir dir;
+    auto r =
+        test::run_parsons("gen gcode " + test::q(test::source_path("decks/samples/bracket.ngc")) +
+                          " -o " + test::q(dir.str("bare.cbn")));
+    REQUIRE(r.exit_code == 0);
+    for (const std::string name : {"linuxcnc-post", "grbl-post"}) {
+        INFO(name);
+        // Run from the source tree, so that the warnings name the file as the table above does.
+        const std::string cd = "cd " + test::q(test::source_path("")) + " && ";
+        r = test::run_shell(cd + "PARSONS gen gcode tests/gcode/" + name + ".ngc -o " +
+                            test::q(dir.str(name + ".cbn")) + " >/dev/null");
+        CHECK(r.exit_code == 0);
+        std::string expected;
+        for (const std::string& w : name == "grbl-post" ? kGrblWarnings : kLinuxcncWarnings) {
+            expected += "parsons: warning: " + w + "\n";
+        }
+        CHECK(r.output == expected);
+        CHECK(test::read_bytes(dir.path(name + ".cbn")) == test::read_bytes(dir.path("bare.cbn")));
+
+        r = test::run_shell(cd + "PARSONS gen gcode tests/gcode/" + name + ".ngc --strict -o " +
+                            test::q(dir.str(name + "-strict.cbn")));
+        CHECK(r.exit_code == 2);
+        CHECK_THAT(r.output, Contains("parsons: error: tests/gcode/" + name + ".ngc:"));
+        CHECK_THAT(r.output, Contains("(refused under --strict, which ignores nothing)"));
+        CHECK_FALSE(std::filesystem::exists(dir.path(name + "-strict.cbn")));
+    }
+    r = test::run_parsons("gen gcode --help");
+    CHECK_THAT(r.output, Contains("--strict"));
 }

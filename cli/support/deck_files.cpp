@@ -30,7 +30,7 @@ namespace {
 
 // Where --format auto (the default) finds no extension it knows: the first bytes decide.
 constexpr auto kFormatFromBytes = static_cast<cardreader::DeckFormat>(0xFF);
-constexpr std::size_t kHeadBytes = 4096;
+constexpr std::size_t kHeadBytes = cardreader::kDeckHeadBytes;
 
 } // namespace
 
@@ -152,6 +152,9 @@ InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
     if (auto kind = cardreader::non_deck_kind(head)) {
         throw DeckError::in_file(options_.file_name, "this is " + *kind + ", not a deck of cards");
     }
+    if (!from_bytes && path != "-" && (flags.format.empty() || flags.format == "auto")) {
+        content_outranks_extension(head);
+    }
     if (from_bytes) {
         const auto sniffed = cardreader::sniff_format(head);
         if (!sniffed) {
@@ -173,6 +176,27 @@ InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
         }
     };
     source_ = cardreader::open_card_source(*in_, options_);
+}
+
+// The format the extension gave yields to what the bytes plainly are
+// (cardreader::content_outranks), with one warning a file however often the command opens it
+// (run opens a deck again to check a job file's fingerprint).
+void InputDeck::content_outranks_extension(const std::string& head) {
+    const auto found = cardreader::content_outranks(options_.format, head);
+    if (!found) {
+        return;
+    }
+    static std::set<std::string> said;
+    if (said.insert(options_.file_name).second) {
+        say(stderr, fmt::format("parsons: warning: {}: the extension says {}, but the content is "
+                                "{}: {}; read as {} (--format {} reads it as the extension "
+                                "says)\n",
+                                options_.file_name, cardreader::format_name(options_.format),
+                                cardreader::format_name(found->format), found->why,
+                                cardreader::format_name(found->format),
+                                cardreader::format_name(options_.format)));
+    }
+    options_.format = found->format;
 }
 
 void InputDeck::rewind() {

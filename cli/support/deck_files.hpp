@@ -60,6 +60,8 @@ public:
     void rewind();
 
 private:
+    void content_outranks_extension(const std::string& head);
+
     std::unique_ptr<std::istream> in_;
     double size_bytes_ = 0;
     cardreader::DeckOptions options_;

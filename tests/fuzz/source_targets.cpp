@@ -121,7 +121,8 @@ void fuzz_profile(Bytes input) {
     run_machine(short_deck(), profile, true);
 }
 
-// A G-code program the reader accepts has finite moves, each starting where the one before
+// A G-code program the reader accepts is refused under --strict exactly when it has a warning,
+// and has finite moves, each starting where the one before
 // ended, arcs of a positive sweep no more than a turn whose end is on the circle; a deck made of
 // it (or a clear refusal) has every card punchable, one station apart from the next, and ends
 // where the program ends, to the thousandth.
@@ -131,6 +132,17 @@ void fuzz_gcode(Bytes input) {
         program = decks::read_gcode(as_string(input), "fuzz.ngc");
     } catch (const DeckError&) {
         return;
+    }
+    // --strict refuses exactly the programs that have a word to ignore (a warning).
+    bool strict_reads = true;
+    try {
+        decks::read_gcode(as_string(input), "fuzz.ngc", {.strict = true});
+    } catch (const DeckError&) {
+        strict_reads = false;
+    }
+    if (strict_reads != program.warnings.empty()) {
+        throw Finding(fmt::format("--strict {} a program with {} warnings",
+                                  strict_reads ? "reads" : "refuses", program.warnings.size()));
     }
     Eigen::Vector3d at = Eigen::Vector3d::Zero();
     for (const decks::GcodeMove& m : program.moves) {
