@@ -246,9 +246,11 @@ bool foreign_command(const std::string& line) {
 // Figures quoted from a run. A page declares how to get one, once, on a line of its own:
 //   <!-- figure NAME: COMMAND => FILE SELECTOR FORMAT -->
 // (COMMAND runs in the page's scratch folder after the page's commands; SELECTOR is a JSON
-// pointer into FILE, or `rows`, the data rows of a CSV: lines not blank, not `#`, less the
-// header; FORMAT is `int`, `.Nf`, `±.Nf` (signed, with the typographic minus) or `min`
-// (seconds as whole minutes), a trailing `,` grouping thousands), and quotes it as
+// pointer into FILE, `rows`, the data rows of a CSV (lines not blank, not `#`, less the
+// header), or `event:SIGNAL=NEW#N` in an events stream, the time of the Nth change of SIGNAL to NEW
+// (`...#N.old`: the value it changed from); FORMAT is `int`, `.Nf`, `±.Nf` (signed, with the
+// typographic minus) or `min` (seconds as whole minutes), a trailing `,` grouping thousands), and
+// quotes it as
 // `<!--f:NAME-->3,958<!--/f-->`, which Markdown shows as the bare figure.
 struct FigureSource {
     std::string command;
@@ -295,6 +297,21 @@ double select_figure(const fs::path& file, const std::string& selector) {
             rows += !trim(l).empty() && l.front() != '#' ? 1 : 0;
         }
         return static_cast<double>(rows);
+    }
+    // "event:SIGNAL=NEW#N": the time of the Nth change of SIGNAL to NEW in an events stream;
+    // "...#N.old": the value it changed from.
+    static const std::regex event(R"(^event:([^=]+)=(-?\d+)#(\d+)(\.old)?$)");
+    std::smatch m;
+    if (std::regex_match(selector, m, event)) {
+        int seen = 0;
+        for (const std::string& l : lines_of(bytes)) {
+            const auto e = nlohmann::json::parse(l);
+            if (e.value("signal", "") == std::string(m[1]) && e.contains("new") &&
+                e.at("new") == std::stol(m[2]) && ++seen == std::stoi(m[3])) {
+                return m[4].matched ? e.at("old").get<double>() : e.at("t").get<double>();
+            }
+        }
+        FAIL("no such event in " << file.string() << ": " << selector);
     }
     return nlohmann::json::parse(bytes).at(nlohmann::json::json_pointer(selector)).get<double>();
 }
