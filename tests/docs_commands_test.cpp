@@ -247,7 +247,8 @@ bool foreign_command(const std::string& line) {
 //   <!-- figure NAME: COMMAND => FILE SELECTOR FORMAT -->
 // (COMMAND runs in the page's scratch folder after the page's commands; SELECTOR is a JSON
 // pointer into FILE, `rows`, the data rows of a CSV (lines not blank, not `#`, less the
-// header), or `event:SIGNAL=NEW#N` in an events stream, the time of the Nth change of SIGNAL to NEW
+// header), `lines`, `bytes`, or `event:SIGNAL=NEW#N` in an events stream, the time of the Nth
+// change of SIGNAL to NEW
 // (`...#N.old`: the value it changed from); FORMAT is `int`, `.Nf`, `±.Nf` (signed, with the
 // typographic minus) or `min` (seconds as whole minutes), a trailing `,` grouping thousands), and
 // quotes it as
@@ -266,6 +267,9 @@ std::string format_figure(double value, std::string format) {
     }
     if (format == "min") { // seconds, as whole minutes
         value /= 60;
+        format = "int";
+    } else if (format == "MB") { // bytes, as whole megabytes
+        value /= 1e6;
         format = "int";
     }
     // "±.2f": always signed, the minus as the typographic one the pages use (−0.83).
@@ -291,6 +295,13 @@ std::string format_figure(double value, std::string format) {
 
 double select_figure(const fs::path& file, const std::string& selector) {
     const std::string bytes = read_bytes(file);
+    if (selector == "bytes") {
+        return static_cast<double>(bytes.size());
+    }
+    if (selector == "lines") {
+        return static_cast<double>(
+            std::count_if(bytes.begin(), bytes.end(), [](char c) { return c == '\n'; }));
+    }
     if (selector == "rows") {
         long rows = -1; // the header
         for (const std::string& l : lines_of(bytes)) {
