@@ -36,13 +36,17 @@ constexpr std::size_t kHeadBytes = cardreader::kDeckHeadBytes;
 
 void add_input_flags(CLI::App& cmd, DeckFlags& flags) {
     cmd.add_option(
-        "--format", flags.format,
-        "Input deck format: auto, cbn, bin, text, listing, tape or five (auto, the default: from "
-        "the extension .cbn .bin .txt/.crd/.card/.cards .csv/.lst .tape/.ptp .five, else from "
-        "the first bytes as SIMH tells them; - reads standard input)")->type_name(deck_formats({"auto"}));
-    cmd.add_option("--code", flags.code, "Keypunch code of text card images: 029 or 026")->type_name(code_names())
+           "--format", flags.format,
+           "Input deck format: auto, cbn, bin, text, listing, tape or five (auto, the default: "
+           "from "
+           "the extension .cbn .bin .txt/.crd/.card/.cards .csv/.lst .tape/.ptp .five, else from "
+           "the first bytes as SIMH tells them; - reads standard input)")
+        ->type_name(deck_formats({"auto"}));
+    cmd.add_option("--code", flags.code, "Keypunch code of text card images: 029 or 026")
+        ->type_name(code_names())
         ->capture_default_str();
-    cmd.add_option("--layout", flags.layout, "Card layout (the reader's plugboard)")->type_name(layout_names())
+    cmd.add_option("--layout", flags.layout, "Card layout (the reader's plugboard)")
+        ->type_name(layout_names())
         ->capture_default_str();
 }
 
