@@ -6,6 +6,8 @@
 //
 // PARSONS_UPDATE_DOCS=1 (scripts/docs.sh) rewrites the quoted figures and copies the pictures
 // into docs/images/ instead of comparing them.
+#include "tests/docs_figures.hpp"
+#include "tests/docs_support.hpp"
 #include "tests/test_support.hpp"
 
 #include <catch2/catch.hpp>
@@ -243,144 +245,6 @@ bool foreign_command(const std::string& line) {
     return std::regex_search(line, foreign) || line.find("| jq") != std::string::npos;
 }
 
-// Figures quoted from a run. A page declares how to get one, once, on a line of its own:
-//   <!-- figure NAME: COMMAND => FILE SELECTOR FORMAT -->
-// (COMMAND runs in the page's scratch folder after the page's commands; SELECTOR is a JSON
-// pointer into FILE, `rows`, the data rows of a CSV (lines not blank, not `#`, less the
-// header), `lines`, `bytes`, or `event:SIGNAL=NEW#N` in an events stream, the time of the Nth
-// change of SIGNAL to NEW
-// (`...#N.old`: the value it changed from); FORMAT is `int`, `.Nf`, `±.Nf` (signed, with the
-// typographic minus) or `min` (seconds as whole minutes), a trailing `,` grouping thousands), and
-// quotes it as
-// `<!--f:NAME-->3,958<!--/f-->`, which Markdown shows as the bare figure.
-struct FigureSource {
-    std::string command;
-    std::string file;
-    std::string selector;
-    std::string format;
-};
-
-std::string format_figure(double value, std::string format) {
-    const bool grouped = !format.empty() && format.back() == ',';
-    if (grouped) {
-        format.pop_back();
-    }
-    if (format == "min") { // seconds, as whole minutes
-        value /= 60;
-        format = "int";
-    } else if (format == "MB") { // bytes, as whole megabytes
-        value /= 1e6;
-        format = "int";
-    }
-    // "±.2f": always signed, the minus as the typographic one the pages use (−0.83).
-    const bool signed_figure = format.rfind("±", 0) == 0;
-    if (signed_figure) {
-        format = "+" + format.substr(std::string("±").size());
-    }
-    std::string text = format == "int" ? std::to_string(std::llround(value))
-                                       : fmt::format(fmt::runtime("{:" + format + "}"), value);
-    if (signed_figure && text.front() == '-') {
-        text = "−" + text.substr(1);
-    }
-    if (grouped) {
-        const auto point = text.find('.');
-        auto digits_end = point == std::string::npos ? text.size() : point;
-        const std::size_t first = text.front() == '-' ? 1 : 0;
-        for (auto at = digits_end; at > first + 3; at -= 3) {
-            text.insert(at - 3, ",");
-        }
-    }
-    return text;
-}
-
-double select_figure(const fs::path& file, const std::string& selector) {
-    const std::string bytes = read_bytes(file);
-    if (selector == "bytes") {
-        return static_cast<double>(bytes.size());
-    }
-    if (selector == "lines") {
-        return static_cast<double>(
-            std::count_if(bytes.begin(), bytes.end(), [](char c) { return c == '\n'; }));
-    }
-    if (selector == "rows") {
-        long rows = -1; // the header
-        for (const std::string& l : lines_of(bytes)) {
-            rows += !trim(l).empty() && l.front() != '#' ? 1 : 0;
-        }
-        return static_cast<double>(rows);
-    }
-    // "event:SIGNAL=NEW#N": the time of the Nth change of SIGNAL to NEW in an events stream;
-    // "...#N.old": the value it changed from.
-    static const std::regex event(R"(^event:([^=]+)=(-?\d+)#(\d+)(\.old)?$)");
-    std::smatch m;
-    if (std::regex_match(selector, m, event)) {
-        int seen = 0;
-        for (const std::string& l : lines_of(bytes)) {
-            const auto e = nlohmann::json::parse(l);
-            if (e.value("signal", "") == std::string(m[1]) && e.contains("new") &&
-                e.at("new") == std::stol(m[2]) && ++seen == std::stoi(m[3])) {
-                return m[4].matched ? e.at("old").get<double>() : e.at("t").get<double>();
-            }
-        }
-        FAIL("no such event in " << file.string() << ": " << selector);
-    }
-    return nlohmann::json::parse(bytes).at(nlohmann::json::json_pointer(selector)).get<double>();
-}
-
-// Checks (or, updating, rewrites) every quoted figure of `lines`; the count in `figures`.
-void check_figures(std::vector<std::string>& lines, const std::string& relative,
-                   const Scratch& scratch, bool& changed, int& figures) {
-    static const std::regex declared(
-        R"(^<!-- figure ([a-z0-9_-]+): (.+) => (\S+) (\S+) (\S+) -->$)");
-    static const std::regex quoted(R"(<!--f:([a-z0-9_-]+)-->([^<]*)<!--/f-->)");
-    std::map<std::string, FigureSource> sources;
-    for (const std::string& l : lines) {
-        std::smatch m;
-        if (std::regex_match(l, m, declared)) {
-            sources[m[1]] = {m[2], m[3], m[4], m[5]};
-        }
-    }
-    std::map<std::string, std::string> values;
-    std::set<std::string> ran; // a command several figures share runs once
-    for (const auto& [name, src] : sources) {
-        if (ran.insert(src.command).second) {
-            const ProcessResult r = scratch.run(src.command);
-            INFO(relative << ": figure " << name << ": " << src.command << "\n" << r.output);
-            REQUIRE(r.exit_code == 0);
-        }
-        values[name] =
-            format_figure(select_figure(scratch.path(src.file), src.selector), src.format);
-    }
-    std::set<std::string> used;
-    for (std::string& l : lines) {
-        std::string out;
-        auto from = l.cbegin();
-        for (std::sregex_iterator it(l.cbegin(), l.cend(), quoted), end; it != end; ++it) {
-            const std::string name = (*it)[1];
-            INFO(relative << ": figure " << name << " in: " << l);
-            REQUIRE(values.count(name) == 1); // every quoted figure is declared
-            used.insert(name);
-            ++figures;
-            std::string text = (*it)[2];
-            if (updating()) {
-                changed = changed || text != values[name];
-                text = values[name];
-            } else {
-                CHECK(text == values[name]);
-            }
-            out.append(from, (*it)[0].first);
-            out += "<!--f:" + name + "-->" + text + "<!--/f-->";
-            from = (*it)[0].second;
-        }
-        out.append(from, l.cend());
-        l = out;
-    }
-    for (const auto& [name, src] : sources) {
-        INFO(relative << ": figure " << name << " is declared and never quoted");
-        CHECK(used.count(name) == 1);
-    }
-}
-
 struct PageRun {
     int commands = 0;
     int figures = 0;
@@ -501,7 +365,9 @@ void run_page(const std::string& relative, Scratch& scratch, int& pictures, Page
         }
     }
     check_pictures(lines, page, scratch, pictures);
-    check_figures(lines, relative, scratch, changed, run.figures);
+    check_figures(
+        lines, relative, [&](const std::string& c) { return scratch.run(c); }, scratch.path("."),
+        updating(), changed, run.figures);
     if (updating() && changed) {
         std::ofstream(page, std::ios::binary) << join_lines(lines);
     }
@@ -519,28 +385,6 @@ std::vector<std::string> help_examples(const std::string& help) {
             out.push_back(trim(line));
         } else if (in_examples && trim(line).empty()) {
             in_examples = false;
-        }
-    }
-    return out;
-}
-
-// The subcommands a --help lists (CLI11: a "SUBCOMMANDS:" heading, two-space indented names).
-std::vector<std::string> subcommands(const std::string& help) {
-    std::vector<std::string> out;
-    bool in = false;
-    for (const std::string& line : lines_of(help)) {
-        if (line.find("SUBCOMMANDS:") != std::string::npos ||
-            line.find("Subcommands:") != std::string::npos) {
-            in = true;
-            continue;
-        }
-        if (in) {
-            std::smatch m;
-            if (std::regex_search(line, m, std::regex(R"(^  ([a-z][a-z-]*)\b)"))) {
-                out.push_back(m[1]);
-            } else if (!trim(line).empty()) {
-                in = false;
-            }
         }
     }
     return out;
@@ -628,81 +472,6 @@ TEST_CASE("Docs: every command of the README and the tutorial runs as written, a
         }
     }
     CHECK(pictures >= 5);
-}
-
-namespace {
-
-// The command path and options of an inline command (`parsons run DECK --trace T.vcd`): the
-// words after `parsons` that name commands, then every word that begins with '-' (to its '=').
-struct InlineCommand {
-    std::string path;
-    std::vector<std::string> options;
-};
-
-std::vector<InlineCommand> inline_commands(const std::string& markdown,
-                                           const std::set<std::string>& command_words) {
-    std::vector<InlineCommand> out;
-    static const std::regex span(R"(`(?:build/cli/)?parsons ([^`]+)`)");
-    for (std::sregex_iterator it(markdown.begin(), markdown.end(), span), end; it != end; ++it) {
-        InlineCommand c;
-        std::istringstream words((*it)[1].str());
-        bool in_path = true;
-        for (std::string w; words >> w;) {
-            if (w == "|" || w == "&&" || w == ";" || w.front() == '>' || w.rfind("2>", 0) == 0) {
-                break; // another program's words from here
-            }
-            if (in_path && command_words.count(w) == 1) {
-                c.path += (c.path.empty() ? "" : " ") + w;
-                continue;
-            }
-            in_path = false;
-            const bool number = w.size() > 1 && std::isdigit(static_cast<unsigned char>(w[1]));
-            if (w.size() > 1 && w.front() == '-' && !number && w.find('|') == std::string::npos) {
-                c.options.push_back(w.substr(0, w.find('=')));
-            }
-        }
-        out.push_back(c);
-    }
-    return out;
-}
-
-} // namespace
-
-TEST_CASE("Docs: every inline command of every page names commands and options parsons has",
-          "[docs][cli]") {
-    // The commands, from the program's own --help.
-    std::set<std::string> words;
-    for (const std::string& c : subcommands(run_parsons("--help").output)) {
-        words.insert(c);
-        for (const std::string& s : subcommands(run_parsons(c + " --help").output)) {
-            words.insert(s);
-        }
-    }
-    REQUIRE(words.count("airfoil") == 1);
-    std::map<std::string, std::string> helps;
-    int checked = 0;
-    std::vector<fs::path> pages = {source_path("README.md")};
-    for (const auto& entry : fs::directory_iterator(source_path("docs"))) {
-        if (entry.path().extension() == ".md") {
-            pages.push_back(entry.path());
-        }
-    }
-    for (const fs::path& page : pages) {
-        for (const InlineCommand& c : inline_commands(read_bytes(page), words)) {
-            if (helps.count(c.path) == 0) {
-                helps[c.path] = run_parsons(c.path + " --help").output;
-            }
-            const std::string& help = helps[c.path];
-            for (const std::string& o : c.options) {
-                INFO(page.filename().string() << ": `parsons " << c.path << " ... " << o
-                                              << "`: no such option in its --help");
-                const std::regex listed("(^|[ ,])" + o + "([ ,=]|$)", std::regex::multiline);
-                CHECK(std::regex_search(help, listed));
-                ++checked;
-            }
-        }
-    }
-    CHECK(checked > 80);
 }
 
 TEST_CASE("Docs: every command of every page under docs/ runs as written, with the exit code and "
