@@ -101,6 +101,20 @@ const ParsonsViewer = (() => {
     return `${sig.component}${sig.numeral ? " (" + sig.numeral + ")" : ""}` + (does ? `: ${does}` : "");
   }
 
+  // Every part of the cabinet is reached by keyboard (Tab) and touch, not by the mouse's hover
+  // alone: a focusable button with its name; data-short is the numeral the compact panel of a
+  // wide screen shows in place of the long label (web/exhibit.css).
+  function reachable(e, sig, more = "") {
+    const name = sig.component + (sig.numeral && !sig.component.includes(sig.numeral) ? ` (${sig.numeral})` : "") + more;
+    e.setAttribute("tabindex", "0");
+    e.setAttribute("role", "button");
+    e.setAttribute("aria-label", `${sig.scope === "cabinet" ? "shared" : sig.scope}: ${name}`);
+    const set = /\.contact_set_([ab])$/.exec(sig.name);
+    const dot = /\.([a-z_]+)$/.exec(sig.name);
+    e.dataset.short = sig.numeral ? sig.numeral + (set ? set[1].toUpperCase() : dot && !/\d/.test(dot[1]) ? " " + dot[1] : "")
+      : sig.name.replace(/_/g, " ");
+  }
+
   class Viewer {
     constructor(doc) {
       this.doc = doc;
@@ -315,6 +329,7 @@ const ParsonsViewer = (() => {
         relays.sort((a, b) => a.digit - b.digit);
         for (const r of relays) {
           const lamp = el("span", { class: "relay", "data-signal": r.id, text: String(r.digit) }, row);
+          reachable(lamp, r, `, relay of digit ${r.digit}`);
           this.updaters[r.id] = (v) => lamp.classList.toggle("on", v !== 0);
         }
       }
@@ -325,6 +340,7 @@ const ParsonsViewer = (() => {
       for (const d of dials) {
         const numeral = d.numeral;
         const wrap = el("div", { class: "dial", title: hover(d), "data-signal": d.id, "data-name": d.name }, box);
+        reachable(wrap, d);
         const s = svg("svg", { viewBox: "-22 -22 44 44", width: 44, height: 44 }, wrap);
         svg("circle", { r: 20, class: "face" }, s);
         for (let k = 0; k < 10; k++) {
@@ -345,6 +361,7 @@ const ParsonsViewer = (() => {
       const box = el("div", { class: "singles" }, col);
       for (const s of singles) {
         const lamp = el("span", { class: "lamp" + (/lamp|indicator/.test(s.name) ? " signal-lamp" : ""), title: hover(s), "data-signal": s.id, "data-name": s.name }, box);
+        reachable(lamp, s);
         const label = s.name.replace(/_/g, " ");
         if (s.width > 1) {
           el("span", { class: "label", text: label + " " }, lamp);
