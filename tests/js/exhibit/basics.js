@@ -91,7 +91,10 @@ module.exports = async function basics(t) {
   check(played > 20 && played < 200 && (await seconds()) === played && state === 'paused',
         'play runs machine time at 100x and pause holds it', `${played} s of machine time, ${state}`);
 
-  // ---- field by field: a cell changed is punched at once
+  // ---- field by field: a cell changed is punched at once. The keypunch is in a drawer, closed
+  // on the first view (exhibit/layout.js): open it first.
+  await page.click('#deck-drawer > summary');
+  await page.waitForFunction(() => document.getElementById('deck-drawer').open);
   await page.click('#tab-fields');
   const cells = await page.$$eval('#fields input', (inputs) => inputs.map((i) => [i.getAttribute('aria-label'), i.value]));
   const stopCell = cells.findIndex(([label, v]) => / stop$/.test(label) && v === '8.985');
