@@ -39,6 +39,19 @@ module.exports = async function layout(t) {
   const masthead = await laptop.$eval('.masthead', (e) => e.getBoundingClientRect().height);
   check(masthead <= 80, '1366x768: the masthead is short (its paragraph behind "More")', `${masthead.toFixed(0)} px`);
   await t.shot(laptop, 'first-view-laptop');
+  // At the end the state cell says "completed" and the time is long: still inside, clear of the cabinet.
+  await laptop.click('#to-end');
+  await laptop.waitForSelector('#run-state[data-finished="true"]');
+  const endView = await laptop.evaluate(() => {
+    const s = document.getElementById('run-state').getBoundingClientRect();
+    const p = document.getElementById('panel').getBoundingClientRect();
+    const overlap = !(s.right <= p.left || s.left >= p.right || s.bottom <= p.top || s.top >= p.bottom);
+    return { s: [s.left, s.top, s.right, s.bottom].map(Math.round), overlap, w: innerWidth, h: innerHeight,
+             panelBottom: p.bottom, text: document.getElementById('run-state').textContent };
+  });
+  check(!endView.overlap && endView.s[2] <= endView.w && endView.s[3] <= endView.h && endView.panelBottom <= endView.h,
+        '1366x768 at the end: the state cell in view, clear of the cabinet, the cabinet still in view', JSON.stringify(endView));
+  await t.shot(laptop, 'end-view-laptop');
   // The drawer opens on its summary, and the keypunch is there.
   await laptop.click('#deck-drawer > summary');
   const opened = await laptop.$eval('#listing', (e) => e.getBoundingClientRect().height > 50 && e.value.length > 100);
@@ -49,6 +62,9 @@ module.exports = async function layout(t) {
   // ---- the phone
   const phone = await t.open('phone');
   await phone.waitForFunction(() => !document.getElementById('play').disabled);
+  // The longest state text the run shows: at its end.
+  await phone.click('#to-end');
+  await phone.waitForSelector('#run-state[data-finished="true"]');
   const p = await phone.evaluate(() => {
     const w = window.innerWidth;
     const wide = [...document.querySelectorAll('body *')].filter((e) => e.checkVisibility() &&
