@@ -73,25 +73,27 @@
 
   // The error in the keypunch, and, while the deck cannot run, beside Play too: Play is stopped
   // and says why instead of doing nothing (or playing the previous deck under a red error).
-  function showError(text, stopPlay = true) {
+  // failedLoad: a file or a generation that did not come in; the keypunch keeps its deck.
+  function showError(text, failedLoad = false) {
     text = text ? clean(text) : "";
     deckError.hidden = !text;
     deckError.textContent = text;
     markField(text);
-    if (text && stopPlay) stopForError(text);
-    else if (!text) clearStopForError();
+    if (text) stopForError(text, failedLoad);
+    else clearStopForError();
   }
   let stoppedForError = false;
-  function stopForError(text) {
+  function stopForError(text, failedLoad) {
     viewer.pause();
     ran = false; // Play runs what the keypunch holds now, never silently the previous record
     stoppedForError = true;
     const msg = $("stop-message");
     msg.hidden = false;
     msg.dataset.deckError = "true";
-    msg.textContent = `Cannot run: ${text}`;
+    msg.textContent = failedLoad ? `Not loaded: ${text} The keypunch kept the previous deck: Play runs it.`
+      : `Cannot run: ${text}`;
     const state = $("run-state");
-    state.textContent = "stopped: the deck has an error";
+    state.textContent = failedLoad ? "stopped: the load failed" : "stopped: the deck has an error";
     state.dataset.reason = "deck-error";
   }
   function clearStopForError() {
@@ -321,7 +323,7 @@
     FS.chdir("/work");
     if (c.code !== 0) {
       // The keypunch keeps the previous deck; Play is stopped until the visitor presses it again.
-      showError(c.err);
+      showError(c.err, true);
       return;
     }
     job = null;
@@ -344,7 +346,7 @@
     const g = parsons(["gen", "airfoil", ...args, "-o", "gen/deck.cbn"]);
     if (g.code !== 0) {
       $("gen-output").textContent = "";
-      showError(g.err);
+      showError(g.err, true);
       return;
     }
     // The summary parsons printed, without the progress line it drew on the way.
