@@ -36,7 +36,7 @@
     }
     return { code, out: out.join("\n"), err: err.join("\n") };
   }
-  // For the console and the tests: parsonsCall(["show", "/work/deck.csv"]).
+  // For the console and the tests: parsonsCall(["show", "listing.csv"]) (in /work).
   window.parsonsCall = parsons;
   const FS = M.FS;
   const readText = (path) => FS.readFile(path, { encoding: "utf8" });
@@ -49,26 +49,65 @@
   FS.mkdir("/work/load");
   FS.mkdir("/work/load/in");
   FS.mkdir("/work/gen");
+  // parsons runs in /work and is given names relative to it, so that what it prints names the
+  // deck as the visitor knows it (listing.csv, the loaded file's own name), never /work/...
+  FS.chdir("/work");
 
-  const LISTING = "/work/deck.csv";
-  const DECK = "/work/deck.cbn";
-  const REPORT = "/work/report.json";
+  const LISTING = "listing.csv";
+  const DECK = "deck.cbn";
+  const REPORT = "report.json";
   const MOST_DRAWN_ROWS = 5000; // about 1000 cards
   const listing = $("listing");
   const deckError = $("deck-error");
-  let punched = false;   // /work/deck.cbn holds the listing's cards
+  let punched = false;   // deck.cbn holds the listing's cards
   let ran = false;       // the viewer holds the run of those cards
   let job = null;        // the job description of a generated deck, while its listing is untouched
   let generatedText = null;
+  let deckName = null;   // "sample" or "demo" while the keypunch holds that built-in deck untouched
+  let loadedText = null; // the listing as it was loaded (deckName holds while it is unchanged)
 
-  function showError(text) {
+  // parsons' messages, clean: the progress line it draws on a terminal (\r, then the next
+  // state) is dropped, so that only what parsons said in words stays, one line each.
+  const clean = (text) => text.split("\n").map((l) => l.split("\r").pop().trimEnd())
+    .filter((l) => l.trim() !== "").join("\n");
+
+  // The error in the keypunch, and, while the deck cannot run, beside Play too: Play is stopped
+  // and says why instead of doing nothing (or playing the previous deck under a red error).
+  // failedLoad: a file or a generation that did not come in; the keypunch keeps its deck.
+  function showError(text, failedLoad = false) {
+    text = text ? clean(text) : "";
     deckError.hidden = !text;
-    deckError.textContent = text || "";
+    deckError.textContent = text;
+    markField(text);
+    if (text) stopForError(text, failedLoad);
+    else clearStopForError();
+  }
+  let stoppedForError = false;
+  function stopForError(text, failedLoad) {
+    viewer.pause();
+    ran = false; // Play runs what the keypunch holds now, never silently the previous record
+    stoppedForError = true;
+    const msg = $("stop-message");
+    msg.hidden = false;
+    msg.dataset.deckError = "true";
+    msg.textContent = failedLoad ? `Not loaded: ${text} The keypunch kept the previous deck: Play runs it.`
+      : `Cannot run: ${text}`;
+    const state = $("run-state");
+    state.textContent = failedLoad ? "stopped: the load failed" : "stopped: the deck has an error";
+    state.dataset.reason = "deck-error";
+  }
+  function clearStopForError() {
+    if (!stoppedForError) return;
+    stoppedForError = false;
+    const msg = $("stop-message");
+    if (msg.dataset.deckError) { msg.hidden = true; msg.textContent = ""; delete msg.dataset.deckError; }
+    const state = $("run-state");
+    if (state.dataset.reason === "deck-error") { state.textContent = "not run"; state.dataset.reason = ""; }
   }
 
   // ---- the keypunch: every change is punched and drawn at once
 
-  function punchListing() {
+  function punchListing(fromField = false) {
     FS.writeFile(LISTING, listing.value);
     punched = false;
     ran = false;
@@ -77,13 +116,16 @@
     // A long deck is shown but not drawn: a picture a card would fill the page's memory.
     const rows = listing.value.split("\n").filter((l) => l.trim() && !l.trimStart().startsWith("#")).length;
     const draw = rows <= MOST_DRAWN_ROWS;
-    const shown = parsons(["show", LISTING, ...(draw ? ["--svg", "/work/cards"] : [])]);
+    const shown = parsons(["show", LISTING, ...(draw ? ["--svg", "cards"] : [])]);
     $("deck-show").textContent = shown.out;
-    drawCards(draw);
     if (shown.code !== 0) {
+      // The cards of the last good listing stay, marked as not what the listing says now.
+      $("cards").classList.add("stale");
       showError(shown.err);
       return false;
     }
+    $("cards").classList.remove("stale");
+    drawCards(draw);
     const p = parsons(["punch", LISTING, "-o", DECK]);
     if (p.code !== 0) {
       showError(p.err);
@@ -93,32 +135,71 @@
     punched = true;
     if (job && listing.value !== generatedText) job = null; // edited: no longer the generated deck
     setDownloads();
-    if ($("fields").hidden === false) buildFields();
+    // A cell edited keeps its table (and the visitor's place in it); a new listing rebuilds it.
+    if ($("fields").hidden === false && !fromField) buildFields();
     return true;
   }
 
+  // The card pictures: a figure per card at once (cheap), its picture made only when it scrolls
+  // into view; a card whose picture did not change keeps its figure (one field edited redraws
+  // one card). The pictures stay in the in-memory files until the next punch.
+  const shownSvg = new Map(); // card file -> its SVG text, as drawn or to be drawn
+  const cardsSeen = new IntersectionObserver((entries) => {
+    for (const e of entries) if (e.isIntersecting) { cardsSeen.unobserve(e.target); drawCard(e.target); }
+  }, { rootMargin: "200px" });
+  function drawCard(fig) {
+    const svg = shownSvg.get(fig.dataset.file);
+    if (svg === undefined) return;
+    let img = fig.querySelector("img");
+    if (!img) {
+      img = document.createElement("img");
+      img.alt = `card ${fig.dataset.file.replace(/\D/g, "").replace(/^0+/, "")} as punched`;
+      fig.prepend(img);
+    } else URL.revokeObjectURL(img.src);
+    img.src = URL.createObjectURL(new Blob([svg], { type: "image/svg+xml" }));
+    fig.dataset.drawn = "true";
+  }
+  function dropCard(fig) {
+    cardsSeen.unobserve(fig);
+    const img = fig.querySelector("img");
+    if (img) URL.revokeObjectURL(img.src);
+    shownSvg.delete(fig.dataset.file);
+    fig.remove();
+  }
   function drawCards(draw) {
     const box = $("cards");
-    for (const img of box.querySelectorAll("img")) URL.revokeObjectURL(img.src);
-    box.textContent = "";
+    const note = box.querySelector("p.more");
+    if (note) note.remove();
     if (!draw) {
+      for (const fig of [...box.querySelectorAll("figure")]) dropCard(fig);
       box.textContent = `A deck this long is not drawn here (more than ${MOST_DRAWN_ROWS} rows); ` +
         "parsons show --svg draws every card.";
       return;
     }
+    if (!box.querySelector("figure")) box.textContent = "";
     const files = FS.readdir("/work/cards").filter((f) => f.endsWith(".svg")).sort();
-    for (const f of files.slice(0, 200)) {
-      const fig = document.createElement("figure");
-      const img = document.createElement("img");
-      img.alt = f;
-      img.src = URL.createObjectURL(new Blob([FS.readFile(`/work/cards/${f}`)], { type: "image/svg+xml" }));
-      const cap = document.createElement("figcaption");
-      cap.textContent = f.replace(".svg", "");
-      fig.append(img, cap);
-      box.appendChild(fig);
+    const wanted = new Set(files.slice(0, 200));
+    for (const fig of [...box.querySelectorAll("figure")]) if (!wanted.has(fig.dataset.file)) dropCard(fig);
+    let before = box.firstElementChild;
+    for (const f of wanted) {
+      const svg = readText(`/work/cards/${f}`);
+      let fig = box.querySelector(`figure[data-file="${f}"]`);
+      if (!fig) {
+        fig = document.createElement("figure");
+        fig.dataset.file = f;
+        const cap = document.createElement("figcaption");
+        cap.textContent = f.replace(".svg", "");
+        fig.append(cap);
+        box.insertBefore(fig, before);
+      } else before = fig.nextElementSibling;
+      if (shownSvg.get(f) === svg) continue;
+      shownSvg.set(f, svg);
+      if (fig.dataset.drawn) drawCard(fig); // in view already: its new picture now
+      else cardsSeen.observe(fig);
     }
     if (files.length > 200) {
       const more = document.createElement("p");
+      more.className = "more";
       more.textContent = `… and ${files.length - 200} more cards (download the deck to see them all).`;
       box.appendChild(more);
     }
@@ -130,8 +211,10 @@
     typing = setTimeout(punchListing, 250);
   });
 
-  function setListing(text) {
+  function setListing(text, name = null) {
     listing.value = text;
+    deckName = name;
+    loadedText = text;
     punchListing();
   }
 
@@ -151,6 +234,7 @@
         for (const c of cells) { const th = document.createElement("th"); th.textContent = c; tr.appendChild(th); }
         return;
       }
+      tr.dataset.line = String(n);
       cells.forEach((c, i) => {
         const td = tr.insertCell();
         const input = document.createElement("input");
@@ -158,18 +242,46 @@
         input.setAttribute("aria-label", `line ${n + 1} ${header[i] || ""}`);
         input.dataset.line = String(n);
         input.dataset.cell = String(i);
+        input.dataset.column = header[i] || "";
         input.addEventListener("change", () => {
           const all = listing.value.split("\n");
           const row = all[n].split(",");
           row[i] = input.value;
           all[n] = row.join(",");
           listing.value = all.join("\n");
-          punchListing();
+          punchListing(true);
         });
         td.appendChild(input);
       });
     });
     box.appendChild(table);
+    markField(deckError.hidden ? "" : deckError.textContent);
+  }
+
+  // In field-by-field mode the error stands under the row of the bad cell, the cell marked
+  // aria-invalid: parsons names the line (listing.csv:15:) and the field or its value.
+  function markField(text) {
+    const box = $("fields");
+    for (const bad of box.querySelectorAll('[aria-invalid="true"]')) bad.removeAttribute("aria-invalid");
+    for (const old of box.querySelectorAll("tr.field-error")) old.remove();
+    const m = text && text.match(new RegExp(`${LISTING.replace(".", "\\.")}:(\\d+):\\s*(.*)`));
+    if (!m) return;
+    const tr = box.querySelector(`tr[data-line="${Number(m[1]) - 1}"]`);
+    if (!tr) return;
+    const inputs = [...tr.querySelectorAll("input")];
+    const said = m[2].toLowerCase();
+    const quoted = (said.match(/'([^']*)'/) || [])[1];
+    const cell = inputs.find((i) => i.dataset.column && new RegExp(`\\b${i.dataset.column.toLowerCase()}\\b`).test(said)) ||
+      inputs.find((i) => quoted !== undefined && i.value.trim() === quoted) || inputs[0];
+    cell.setAttribute("aria-invalid", "true");
+    const row = tr.parentNode.insertRow(tr.rowIndex + 1);
+    row.className = "field-error";
+    const td = row.insertCell();
+    td.colSpan = inputs.length;
+    td.id = "field-error";
+    td.setAttribute("role", "alert");
+    td.textContent = text;
+    cell.setAttribute("aria-describedby", "field-error");
   }
   function tab(which) {
     $("tab-listing").setAttribute("aria-selected", String(which === "listing"));
@@ -183,30 +295,39 @@
 
   // ---- decks in: the samples, the demo deck, a file
 
-  $("load-sample").addEventListener("click", () => {
+  const SAMPLE = "/share/parsons/samples/patent-example.csv";
+  function loadSample() {
     job = null;
-    setListing(readText("/share/parsons/samples/patent-example.csv"));
-  });
+    setListing(readText(SAMPLE), "sample");
+  }
+  $("load-sample").addEventListener("click", loadSample);
 
   // The deck `parsons demo` generates and runs: NACA 2412, 6 in chord, cutter radius 0.25 in,
   // scallop 0.002 in.
-  $("load-demo").addEventListener("click", () => generate(["--naca", "2412", "--chord", "6", "--cutter-radius", "0.25", "--scallop", "0.002"]));
+  const DEMO = ["--naca", "2412", "--chord", "6", "--cutter-radius", "0.25", "--scallop", "0.002"];
+  const loadDemo = () => generate(DEMO, "demo");
+  $("load-demo").addEventListener("click", loadDemo);
 
   $("load-file").addEventListener("change", async (e) => {
     const file = e.target.files[0];
     if (!file) return;
-    const name = file.name.replace(/[^A-Za-z0-9._-]/g, "_") || "deck";
-    const path = `/work/load/in/${name}`; // its own folder: never the converted listing's name
-    FS.writeFile(path, new Uint8Array(await file.arrayBuffer()));
-    job = null;
+    // Its own folder, under its own name (a file name never holds "/"): parsons' messages
+    // name it as the visitor chose it.
+    const name = file.name.replace(/\//g, "_") || "deck";
+    clearFolder("/work/load/in");
+    FS.writeFile(`/work/load/in/${name}`, new Uint8Array(await file.arrayBuffer()));
+    e.target.value = "";
     // Any deck format in; the keypunch holds its listing (parsons convert reads it).
-    const c = parsons(["convert", path, "-o", "/work/load/as-listing.csv"]);
+    FS.chdir("/work/load/in");
+    const c = parsons(["convert", name, "-o", "../as-listing.csv"]);
+    FS.chdir("/work");
     if (c.code !== 0) {
-      showError(c.err);
+      // The keypunch keeps the previous deck; Play is stopped until the visitor presses it again.
+      showError(c.err, true);
       return;
     }
-    setListing(readText("/work/load/as-listing.csv"));
-    e.target.value = "";
+    job = null;
+    setListing(readText("/work/load/as-listing.csv"), null);
   });
 
   // ---- the generator
@@ -220,23 +341,24 @@
   }
   source.addEventListener("change", () => { $("gen-naca-label").hidden = source.value !== "naca"; });
 
-  function generate(args) {
+  function generate(args, name = null) {
     clearFolder("/work/gen");
-    const g = parsons(["gen", "airfoil", ...args, "-o", "/work/gen/deck.cbn"]);
-    $("gen-output").textContent = g.out;
+    const g = parsons(["gen", "airfoil", ...args, "-o", "gen/deck.cbn"]);
     if (g.code !== 0) {
-      showError(g.err);
-      $("gen-output").textContent = g.err;
+      $("gen-output").textContent = "";
+      showError(g.err, true);
       return;
     }
-    const c = parsons(["convert", "/work/gen/deck.cbn", "-o", "/work/gen/deck.csv"]);
+    // The summary parsons printed, without the progress line it drew on the way.
+    $("gen-output").textContent = clean(g.out);
+    const c = parsons(["convert", "gen/deck.cbn", "-o", "gen/deck.csv"]);
     if (c.code !== 0) {
       showError(c.err);
       return;
     }
     generatedText = readText("/work/gen/deck.csv");
-    job = "/work/gen/deck.cbn.job.json";
-    setListing(generatedText);
+    job = "gen/deck.cbn.job.json";
+    setListing(generatedText, name);
   }
 
   $("gen-form").addEventListener("submit", (e) => {
@@ -273,6 +395,8 @@
       motion: M.motion().slice(),
     };
     const report = JSON.parse(readText(REPORT));
+    // Play pressed after a failed load runs the deck the keypunch kept: the error is done with.
+    showError("");
     viewer.load(header, arrays, report);
     window.parsonsTiming.runMs = t1 - t0;
     window.parsonsTiming.loadMs = performance.now() - t1;
@@ -281,6 +405,75 @@
     return true;
   }
   viewer.beforePlay = () => (ran ? true : runDeck());
+
+  // ---- the state as a URL: the deck and the instant (#deck=sample&t=12.5)
+  // A built-in deck by its name; any other listing deflated (CompressionStream, in the browser)
+  // and base64url-encoded, "z" in front; t the machine time in seconds.
+
+  const b64url = (bytes) => {
+    let bin = "";
+    for (let i = 0; i < bytes.length; i += 0x8000) bin += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+    return btoa(bin).replace(/\+/g, "-").replace(/\//g, "_").replace(/=+$/, "");
+  };
+  const unb64url = (text) => Uint8Array.from(atob(text.replace(/-/g, "+").replace(/_/g, "/")), (c) => c.charCodeAt(0));
+  async function through(bytes, stream) {
+    return new Uint8Array(await new Response(new Blob([bytes]).stream().pipeThrough(stream)).arrayBuffer());
+  }
+  async function shareHash() {
+    const deck = deckName && listing.value === loadedText ? deckName
+      : "z" + b64url(await through(new TextEncoder().encode(listing.value), new CompressionStream("deflate-raw")));
+    const t = viewer.loaded && ran ? viewer.t : 0;
+    return `#deck=${deck}&t=${t}`;
+  }
+  $("share").addEventListener("click", async () => {
+    if (!ran && !runDeck()) return;
+    const hash = await shareHash();
+    history.replaceState(null, "", hash);
+    const url = location.href;
+    let note = $("share-note");
+    if (!note) {
+      note = document.createElement("p");
+      note.id = "share-note";
+      note.className = "note";
+      note.setAttribute("aria-live", "polite");
+      $("share").closest(".controls").after(note);
+    }
+    let copied = false;
+    try { await navigator.clipboard.writeText(url); copied = true; } catch (e) { /* not allowed here: shown below */ }
+    note.textContent = `${copied ? "Copied" : "This instant"}: `;
+    const a = document.createElement("a");
+    a.href = url;
+    a.textContent = url.length > 120 ? `${url.slice(0, 117)}…` : url;
+    note.append(a);
+    note.dataset.url = url;
+  });
+
+  // Opened with such a hash: that deck, run, the viewer at that instant. false when the hash
+  // names no deck (the page then starts as always).
+  async function openShared() {
+    const q = new URLSearchParams(location.hash.slice(1));
+    const deck = q.get("deck");
+    if (!deck) return false;
+    if (deck === "sample") loadSample();
+    else if (deck === "demo") loadDemo();
+    else if (deck.startsWith("z")) {
+      let text;
+      try {
+        text = new TextDecoder().decode(await through(unb64url(deck.slice(1)), new DecompressionStream("deflate-raw")));
+      } catch (e) {
+        showError("This link's deck could not be read (it was cut short?); the sample deck is in the keypunch.");
+        loadSample();
+        return true;
+      }
+      job = null;
+      setListing(text, null);
+    } else return false;
+    if (!runDeck()) return true;
+    const t = Math.min(Math.max(Number(q.get("t")) || 0, 0), viewer.finish);
+    if (typeof viewer.seek === "function") viewer.seek(t);
+    else { viewer.reset(false); viewer.advanceTo(t); }
+    return true;
+  }
 
   // "To the end": the time from the press to the finished view (tests/js/browser_bench.js).
   $("to-end").addEventListener("click", () => {
@@ -313,22 +506,25 @@
     if (ran || runDeck()) download("report.json", FS.readFile(REPORT), "application/json");
   });
   $("dl-trace").addEventListener("click", () => {
-    const r = parsons(["run", DECK, "-q", "--trace", "/work/trace.vcd"]);
+    const r = parsons(["run", DECK, "-q", "--trace", "trace.vcd"]);
     if (r.code !== 0 && r.code !== 3) {
       showError(r.err);
       return;
     }
-    download("trace.vcd", FS.readFile("/work/trace.vcd"), "text/plain");
+    download("trace.vcd", FS.readFile("trace.vcd"), "text/plain");
   });
 
   // ---- ready
 
   for (const id of ["load-sample", "load-demo", "load-file", "gen-go"]) $(id).disabled = false;
-  $("load-sample").click();
-  // The sample deck is run at once, so that the cabinet stands ready at its first card and the
-  // browser has compiled the machine's hot code fully before a visitor's first press.
-  runDeck();
+  if (!(await openShared())) {
+    $("load-sample").click();
+    // The sample deck is run at once, so that the cabinet stands ready at its first card and the
+    // browser has compiled the machine's hot code fully before a visitor's first press.
+    runDeck();
+  }
   viewer.enable(true);
+  $("share").disabled = false;
   status.dataset.state = "ready";
   status.textContent = "The machine is ready: the patent's example deck is in the keypunch. Press Play.";
   window.parsonsReadyAt = performance.now();
