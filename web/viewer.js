@@ -257,6 +257,8 @@ const ParsonsViewer = (() => {
           ci++;
         }
       }
+      // The sound (web/sound.js) hears the changes applied while playing, not a jump.
+      if (this.onChanges && this.playing && ci > this.ci) this.onChanges(this.ci, ci, t);
       this.ci = ci;
       let mi = this.mi;
       const records = motion.length / 8;
