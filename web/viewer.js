@@ -7,69 +7,6 @@
 const ParsonsViewer = (() => {
   const SVG = "http://www.w3.org/2000/svg";
 
-  // What each part does, by its patent numeral (docs/patent-map.md), for the hover.
-  const LEGEND = {
-    "104": "Absolute counter, inches digit: a ten-position stepping switch stepped by the inch impulses of commutator 96. With 106, 108 and 110 it reads where the part is, through the instrument shaft.",
-    "106": "Absolute counter, tenths digit: stepped by commutator 98; carries into 104.",
-    "108": "Absolute counter, hundredths digit: stepped by commutator 100; carries into 106.",
-    "110": "Absolute counter, thousandths digit: stepped once for every 0.001 inch impulse of commutator 102.",
-    "310": "Increment counter (112), inches digit: counts the impulses of this move toward the slow-down point.",
-    "312": "Increment counter (112), tenths digit.",
-    "314": "Increment counter (112), hundredths digit.",
-    "316": "Increment counter (112), thousandths digit: one step per impulse.",
-    "350": "Absolute storage, inches digit: ten holding relays; the brushes close the relay of the digit punched for the stop position, and it holds for the whole move.",
-    "352": "Absolute storage, tenths digit of the stop position.",
-    "354": "Absolute storage, hundredths digit of the stop position.",
-    "356": "Absolute storage, thousandths digit of the stop position.",
-    "318": "Incremental storage, inches digit: the holding relays of the slow-down increment read from the card.",
-    "320": "Incremental storage, tenths digit of the slow-down increment.",
-    "322": "Incremental storage, hundredths digit of the slow-down increment.",
-    "324": "Incremental storage, thousandths digit of the slow-down increment.",
-    "122'": "Absolute comparer (122′): conducts when the absolute counters equal the stored stop position.",
-    "122''": "Incremental comparer (122″): conducts when the increment counter equals the stored increment: time to slow down.",
-    "236": "Speed switch: the card sets the start speed; it steps once per impulse of stepping relay 256 toward off (0), each step a slower motor speed.",
-    "238": "The speed switch's off contact: closed when 236 stands on off and the axis is stopped.",
-    "256": "Stepping relay: each impulse from a comparer steps speed switch 236 one position.",
-    "257": "The channel from the comparers to stepping relay 256.",
-    "258": "Delay device: a timed hold in channel 260 so the speed switch does not step twice on one comparer closing.",
-    "270": "Lamp: the absolute comparer conducting while 236 stands on off. Lit at every stop; the operator checks it against 272.",
-    "272": "Lamp: the incremental comparer conducting while 236 stands on off. Lit at every stop.",
-    "268": "Indicator: lights when the check at a stop finds the position wrong (the balancing circuit unbalanced) and the machine stops.",
-    "204": "Master switch: the cabinet's power to the motors. The electromagnet opens it when a check fails: the machine stops.",
-    "265": "Electromagnet: opens master switch 204 when balancing circuit 266 is unbalanced.",
-    "266": "Balancing circuit: compares the counters with the check field of the card at every stop (1 = unbalanced).",
-    "280": "Stepping shaft: steps through the card's sequence pattern, starting the axes whose pattern marks its position.",
-    "278": "The stepping shaft's motor.",
-    "274": "The impulse channel to stepping shaft 280's motor.",
-    "276": "The circuit to motor 278.",
-    "284": "Unit counting simultaneous impulses: the shaft steps only when every axis of this step has stopped.",
-    "288": "Single-impulse device: breaks circuit 276 after it has delivered its impulse, until channel 302.",
-    "290": "Zeroizing contact: at the end of a card, clears the storages for the next.",
-    "292": "Zeroizing circuit.",
-    "294": "Channel clearing the absolute storage.",
-    "298": "Channel clearing the incremental storage and counter.",
-    "300": "Channel opening the sequence contacts.",
-    "302": "Channel actuating device 288 to close circuit 274 again.",
-    "304": "Channel indexing the card reader to the next card.",
-    "134": "Card reader: its brushes sense the holes of one card and pick the storage relays; then the card is checked and the axes start in their sequence.",
-    "165": "Spindle control (column 1 of the card): 0 off, 1 forward, 2 reverse.",
-    "214": "Reversing control: the direction the motor drives the lead screw (the card's motion sign).",
-    "224": "Sequence switch: its contacts 226–234 say in which step of shaft 280 this axis moves.",
-    "226": "Sequence contact: this axis moves in step 1 of the stepping shaft.",
-    "228": "Sequence contact: step 2.",
-    "230": "Sequence contact: step 3.",
-    "232": "Sequence contact: step 4.",
-    "234": "Sequence contact: step 5.",
-    "96": "Commutator 96 (inches): two contact sets, each changes over at every impulse it sends; a missed impulse shows as the two disagreeing.",
-    "98": "Commutator 98 (tenths).",
-    "100": "Commutator 100 (hundredths).",
-    "102": "Commutator 102 (thousandths): an impulse every 0.001 inch of the instrument shaft.",
-    "38": "Motor of the table lead screw.",
-    "50": "Motor of the cross-slide screw.",
-    "46": "Motor of the vertical screws.",
-    "44": "Motor of the fixture's transverse screw (swivel).",
-    "40": "Motor of the sine-plate screws (tilt).",
-  };
 
   function b64(text, Type) {
     const bin = atob(text);
@@ -97,7 +34,7 @@ const ParsonsViewer = (() => {
 
   // The part's name and numeral (as the C++ defines the signal) and what it does.
   function hover(sig) {
-    const does = LEGEND[sig.numeral] || "";
+    const does = ParsonsParts.LEGEND[sig.numeral] || "";
     return `${sig.component}${sig.numeral ? " (" + sig.numeral + ")" : ""}` + (does ? `: ${does}` : "");
   }
 
@@ -132,11 +69,26 @@ const ParsonsViewer = (() => {
       for (const b of doc.querySelectorAll(".speeds button")) {
         b.addEventListener("click", () => this.chooseSpeed(b.dataset.speed));
       }
+      $("step-event").addEventListener("click", () => this.stepEvent());
+      // The slider is the whole record; dragging it seeks, and playing moves it.
+      const scrub = $("scrub");
+      scrub.addEventListener("input", () => { if (this.ready()) this.seek(Number(scrub.value)); });
       this.enable(false);
+      if (typeof ParsonsTour !== "undefined") this.tour = new ParsonsTour.Tour(this, doc);
+    }
+
+    // The value signal change k found: the change before it of the same signal, or the initial.
+    valueBefore(k) {
+      const { change_id, change_v } = this.a;
+      const id = change_id[k];
+      for (let j = k - 1; j >= 0; j--) if (change_id[j] === id) return change_v[j];
+      return this.h.signals[id].initial;
     }
 
     enable(on) {
-      for (const id of ["play", "pause", "single-card", "restart"]) this.$(id).disabled = !on;
+      for (const id of ["play", "pause", "single-card", "restart", "step-event", "scrub", "tour-start"]) {
+        this.$(id).disabled = !on;
+      }
     }
 
     ready() {
@@ -158,6 +110,7 @@ const ParsonsViewer = (() => {
                    arrays.motion.length ? arrays.motion[arrays.motion.length - 8] : 0);
       this.buildPanel();
       this.buildPositions();
+      this.$("scrub").max = String(this.finish);
       this.prepareMachine();
       this.loaded = true;
       this.enable(true);
@@ -241,7 +194,7 @@ const ParsonsViewer = (() => {
 
     // Applies every recorded change up to machine time t, then draws.
     advanceTo(t) {
-      const { change_t, change_id, change_v, motion } = this.a;
+      const { change_t, change_id, change_v } = this.a;
       const dirty = this.dirty || (this.dirty = new Set());
       const values = this.values;
       let ci = this.ci;
@@ -260,6 +213,13 @@ const ParsonsViewer = (() => {
       // The sound (web/sound.js) hears the changes applied while playing, not a jump.
       if (this.onChanges && this.playing && ci > this.ci) this.onChanges(this.ci, ci, t);
       this.ci = ci;
+      this.clockTo(t);
+      this.render();
+    }
+
+    // The clock, the motion records and the card in the reader at machine time t.
+    clockTo(t) {
+      const motion = this.a.motion;
       let mi = this.mi;
       const records = motion.length / 8;
       while (mi < records && motion[mi * 8] <= t) mi++;
@@ -268,7 +228,42 @@ const ParsonsViewer = (() => {
       while (this.cardIndex + 1 < cards.length && cards[this.cardIndex + 1].t <= t) this.cardIndex++;
       this.t = t;
       this.finished = t >= this.finish;
+    }
+
+    // Machine time t at once, forwards or back: the record applied from the start up to t (the
+    // same changes playing applies, so the same state), then drawn.
+    seek(t) {
+      if (!this.loaded) return;
+      this.playing = false;
+      const to = Math.min(Math.max(0, t), this.finish);
+      if (to < this.t || this.finished) this.reset(false);
+      this.advanceTo(to);
+    }
+
+    // One relay event: the next recorded change alone (of several at one instant, the next of
+    // them), drawn, and said in words.
+    stepEvent() {
+      if (!this.ready()) return;
+      this.playing = false;
+      if (this.finished) this.reset(false);
+      const { change_t, change_id, change_v } = this.a;
+      const i = this.ci;
+      const note = this.$("event-note");
+      if (i >= change_t.length) {
+        this.advanceTo(this.finish);
+        note.textContent = "The record has no more events.";
+        return;
+      }
+      const id = change_id[i];
+      this.values[id] = change_v[i];
+      (this.dirty || (this.dirty = new Set())).add(id);
+      this.ci = i + 1;
+      this.clockTo(change_t[i]);
       this.render();
+      const sig = this.h.signals[id];
+      note.textContent = `${change_t[i].toFixed(6)} s: ${sig.scope === "cabinet" ? "" : sig.scope + ", "}` +
+        `${sig.component}${sig.numeral ? " " + sig.numeral : ""} → ${change_v[i]}`;
+      note.dataset.change = String(i);
     }
 
     // ---- the cabinet
@@ -311,14 +306,20 @@ const ParsonsViewer = (() => {
         if (banks.size) this.buildBanks(col, banks);
         if (singles.length) this.buildSingles(col, singles);
       }
-      el("p", { class: "explain", id: "explain", text: "Hover over a part of the cabinet." }, panel);
-      if (!this.hoverBound) {
-        this.hoverBound = true;
-        panel.addEventListener("mouseover", (e) => {
-          const t = e.target.closest("[title]");
-          if (t) this.$("explain").textContent = t.getAttribute("title");
-        });
+      if (!this.partsBound) {
+        // A part clicked, tapped, or pressed with Enter or Space tells its story in #part-info.
+        this.partsBound = true;
+        const choose = (e) => {
+          const part = e.target.closest("[data-signal]");
+          if (!part) return;
+          e.preventDefault();
+          this.showPart(part);
+        };
+        panel.addEventListener("click", choose);
+        panel.addEventListener("keydown", (e) => { if (e.key === "Enter" || e.key === " ") choose(e); });
       }
+      this.shownPart = null;
+      this.$("part-info").hidden = true;
     }
 
     buildBanks(col, banks) {
@@ -374,6 +375,54 @@ const ParsonsViewer = (() => {
           this.updaters[s.id] = (x) => lamp.classList.toggle("on", x !== 0);
         }
       }
+    }
+
+    // ---- a part's story: what it is, what it does, the patent's words, and its state now
+
+    // part: a relay (its bank is the part), a dial or a lamp of the panel.
+    showPart(el0) {
+      const part = el0.classList.contains("relay") ? el0.closest(".bank") : el0;
+      const id = Number(el0.dataset.signal);
+      const sig = this.h.signals[id];
+      const box = this.$("part-info");
+      for (const old of this.doc.querySelectorAll("#panel .chosen")) old.classList.remove("chosen");
+      part.classList.add("chosen");
+      this.shownPart = part;
+      this.shownSignal = id;
+      box.textContent = "";
+      const where = sig.scope === "cabinet" ? "the shared cabinet" : `the ${sig.scope} axis`;
+      const bank = part.classList.contains("bank");
+      el("h3", { text: `${bank ? "storage bank" : sig.component} ${sig.numeral} · ${where}` }, box);
+      el("p", { text: ParsonsParts.LEGEND[sig.numeral] || "" }, box);
+      const [fig, words] = ParsonsParts.passage(sig.numeral);
+      if (words) el("blockquote", { text: `“${words}”` }, box);
+      el("p", { class: "fig", text: `US 2,820,187, ${fig}` }, box);
+      this.partState = el("p", { class: "live" }, box);
+      const close = el("button", { type: "button", class: "close", text: "Close" }, box);
+      close.addEventListener("click", () => {
+        box.hidden = true;
+        part.classList.remove("chosen");
+        this.shownPart = null;
+        el0.focus();
+      });
+      box.hidden = false;
+      this.renderPart();
+    }
+
+    renderPart() {
+      const part = this.shownPart;
+      if (!part) return;
+      let now;
+      if (part.classList.contains("bank")) {
+        const closed = [...part.querySelectorAll(".relay")].filter((r) => this.values[Number(r.dataset.signal)] !== 0)
+          .map((r) => r.textContent);
+        now = closed.length ? `relay${closed.length > 1 ? "s" : ""} ${closed.join(", ")} closed` : "every relay open";
+      } else {
+        const v = this.values[this.shownSignal];
+        now = part.classList.contains("dial") || this.h.signals[this.shownSignal].width > 1 ? `stands at ${v}`
+          : v ? "closed (on)" : "open (off)";
+      }
+      this.partState.textContent = `Now, at ${this.t.toFixed(3)} s: ${now}.`;
     }
 
     // ---- positions: the counters as the operator reads them, the recorded real positions
@@ -572,6 +621,9 @@ const ParsonsViewer = (() => {
 
     renderState() {
       const $ = this.$;
+      const scrub = $("scrub");
+      if (this.doc.activeElement !== scrub || this.playing) scrub.value = String(this.t);
+      this.renderPart();
       const mt = $("machine-time");
       mt.textContent = `${this.t.toFixed(3)} s of ${this.finish.toFixed(3)} s`;
       mt.dataset.seconds = String(this.t);
@@ -623,5 +675,5 @@ const ParsonsViewer = (() => {
     return viewer;
   }
 
-  return { Viewer, replayFromPage, LEGEND };
+  return { Viewer, replayFromPage };
 })();
