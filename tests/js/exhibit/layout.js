@@ -52,6 +52,25 @@ module.exports = async function layout(t) {
   check(!endView.overlap && endView.s[2] <= endView.w && endView.s[3] <= endView.h && endView.panelBottom <= endView.h,
         '1366x768 at the end: the state cell in view, clear of the cabinet, the cabinet still in view', JSON.stringify(endView));
   await t.shot(laptop, 'end-view-laptop');
+  // A deck error does not hide in the closed drawer: the drawer opens to show it.
+  const bad = await laptop.evaluate(() => {
+    const l = document.getElementById('listing');
+    const good = l.value;
+    l.value = good.replace('1,0,table,+,1,8.785', '1,0,table,+,7,8.785');
+    l.dispatchEvent(new Event('input'));
+    return good;
+  });
+  await laptop.waitForFunction(() => !document.getElementById('deck-error').hidden, { timeout: 10000 }).catch(() => {});
+  const errorShown = await laptop.evaluate(() => document.getElementById('deck-drawer').open &&
+                                           document.getElementById('deck-error').checkVisibility());
+  check(errorShown, 'a deck error opens the drawer: it is seen, not hidden in the closed drawer');
+  await laptop.evaluate((good) => {
+    const l = document.getElementById('listing');
+    l.value = good;
+    l.dispatchEvent(new Event('input'));
+    document.getElementById('deck-drawer').open = false;
+  }, bad);
+  await laptop.waitForFunction(() => document.getElementById('deck-error').hidden);
   // The drawer opens on its summary, and the keypunch is there.
   await laptop.click('#deck-drawer > summary');
   const opened = await laptop.$eval('#listing', (e) => e.getBoundingClientRect().height > 50 && e.value.length > 100);
