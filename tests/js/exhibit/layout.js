@@ -81,6 +81,8 @@ module.exports = async function layout(t) {
   // ---- the phone
   const phone = await t.open('phone');
   await phone.waitForFunction(() => !document.getElementById('play').disabled);
+  await t.shot(phone, 'first-view-phone');
+  await t.shot(phone, 'first-view-phone-full', true);
   // The longest state text the run shows: at its end.
   await phone.click('#to-end');
   await phone.waitForSelector('#run-state[data-finished="true"]');
@@ -110,7 +112,6 @@ module.exports = async function layout(t) {
   check(p.targets > 500 && p.smallCount === 0, '390x844: every panel part and control is at least 24x24 CSS px',
         `${p.smallCount} of ${p.targets} smaller`);
   check(p.controlsFirst && p.play <= 844, '390x844: the controls come first, Play in the first screen', `Play ends at ${p.play.toFixed(0)}`);
-  await t.shot(phone, 'first-view-phone');
-  await t.shot(phone, 'first-view-phone-full', true);
+  await t.shot(phone, 'end-view-phone');
   await phone.close();
 };
