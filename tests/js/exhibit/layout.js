@@ -39,6 +39,19 @@ module.exports = async function layout(t) {
   const masthead = await laptop.$eval('.masthead', (e) => e.getBoundingClientRect().height);
   check(masthead <= 80, '1366x768: the masthead is short (its paragraph behind "More")', `${masthead.toFixed(0)} px`);
   await t.shot(laptop, 'first-view-laptop');
+  // With a tour caption of six lines above it (web/tour.js fills #tour), the cabinet stays in view.
+  const withCaption = await laptop.evaluate(() => {
+    const tour = document.getElementById('tour');
+    const was = [tour.hidden, tour.innerHTML];
+    tour.hidden = false;
+    tour.innerHTML = '<p>' + Array(6).fill('A caption line of the tour, in plain words.').join('<br>') + '</p>';
+    const p = document.getElementById('panel').getBoundingClientRect();
+    const c = tour.getBoundingClientRect();
+    [tour.hidden, tour.innerHTML] = was;
+    return { panelBottom: Math.round(p.bottom), captionBottom: Math.round(c.bottom), captionTop: Math.round(c.top), h: innerHeight };
+  });
+  check(withCaption.panelBottom <= withCaption.h && withCaption.captionTop > 0 && withCaption.captionBottom <= withCaption.h,
+        '1366x768: a six-line tour caption and the cabinet in view together', JSON.stringify(withCaption));
   // At the end the state cell says "completed" and the time is long: still inside, clear of the cabinet.
   await laptop.click('#to-end');
   await laptop.waitForSelector('#run-state[data-finished="true"]');
