@@ -126,5 +126,12 @@ module.exports = async function layout(t) {
         `${p.smallCount} of ${p.targets} smaller`);
   check(p.controlsFirst && p.play <= 844, '390x844: the controls come first, Play in the first screen', `Play ends at ${p.play.toFixed(0)}`);
   await t.shot(phone, 'end-view-phone');
+  // The drawer open, field by field: still nothing wider than the phone.
+  await phone.click('#deck-drawer > summary');
+  await phone.click('#tab-fields');
+  await phone.waitForFunction(() => document.querySelectorAll('#fields input').length > 10);
+  const drawerWidth = await phone.evaluate(() => document.scrollingElement.scrollWidth);
+  check(drawerWidth <= 390, '390x844, the drawer open field by field: no sideways scrolling of the page', `${drawerWidth} px`);
+  await t.shot(phone, 'drawer-phone');
   await phone.close();
 };
