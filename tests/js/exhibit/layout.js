@@ -39,6 +39,19 @@ module.exports = async function layout(t) {
   const masthead = await laptop.$eval('.masthead', (e) => e.getBoundingClientRect().height);
   check(masthead <= 80, '1366x768: the masthead is short (its paragraph behind "More")', `${masthead.toFixed(0)} px`);
   await t.shot(laptop, 'first-view-laptop');
+  // With a tour caption of six lines above it (web/tour.js fills #tour), the cabinet stays in view.
+  const withCaption = await laptop.evaluate(() => {
+    const tour = document.getElementById('tour');
+    const was = [tour.hidden, tour.innerHTML];
+    tour.hidden = false;
+    tour.innerHTML = '<p>' + Array(6).fill('A caption line of the tour, in plain words.').join('<br>') + '</p>';
+    const p = document.getElementById('panel').getBoundingClientRect();
+    const c = tour.getBoundingClientRect();
+    [tour.hidden, tour.innerHTML] = was;
+    return { panelBottom: Math.round(p.bottom), captionBottom: Math.round(c.bottom), captionTop: Math.round(c.top), h: innerHeight };
+  });
+  check(withCaption.panelBottom <= withCaption.h && withCaption.captionTop > 0 && withCaption.captionBottom <= withCaption.h,
+        '1366x768: a six-line tour caption and the cabinet in view together', JSON.stringify(withCaption));
   // At the end the state cell says "completed" and the time is long: still inside, clear of the cabinet.
   await laptop.click('#to-end');
   await laptop.waitForSelector('#run-state[data-finished="true"]');
@@ -52,6 +65,25 @@ module.exports = async function layout(t) {
   check(!endView.overlap && endView.s[2] <= endView.w && endView.s[3] <= endView.h && endView.panelBottom <= endView.h,
         '1366x768 at the end: the state cell in view, clear of the cabinet, the cabinet still in view', JSON.stringify(endView));
   await t.shot(laptop, 'end-view-laptop');
+  // A deck error does not hide in the closed drawer: the drawer opens to show it.
+  const bad = await laptop.evaluate(() => {
+    const l = document.getElementById('listing');
+    const good = l.value;
+    l.value = good.replace('1,0,table,+,1,8.785', '1,0,table,+,7,8.785');
+    l.dispatchEvent(new Event('input'));
+    return good;
+  });
+  await laptop.waitForFunction(() => !document.getElementById('deck-error').hidden, { timeout: 10000 }).catch(() => {});
+  const errorShown = await laptop.evaluate(() => document.getElementById('deck-drawer').open &&
+                                           document.getElementById('deck-error').checkVisibility());
+  check(errorShown, 'a deck error opens the drawer: it is seen, not hidden in the closed drawer');
+  await laptop.evaluate((good) => {
+    const l = document.getElementById('listing');
+    l.value = good;
+    l.dispatchEvent(new Event('input'));
+    document.getElementById('deck-drawer').open = false;
+  }, bad);
+  await laptop.waitForFunction(() => document.getElementById('deck-error').hidden);
   // The drawer opens on its summary, and the keypunch is there.
   await laptop.click('#deck-drawer > summary');
   const opened = await laptop.$eval('#listing', (e) => e.getBoundingClientRect().height > 50 && e.value.length > 100);
@@ -62,6 +94,8 @@ module.exports = async function layout(t) {
   // ---- the phone
   const phone = await t.open('phone');
   await phone.waitForFunction(() => !document.getElementById('play').disabled);
+  await t.shot(phone, 'first-view-phone');
+  await t.shot(phone, 'first-view-phone-full', true);
   // The longest state text the run shows: at its end.
   await phone.click('#to-end');
   await phone.waitForSelector('#run-state[data-finished="true"]');
@@ -91,7 +125,13 @@ module.exports = async function layout(t) {
   check(p.targets > 500 && p.smallCount === 0, '390x844: every panel part and control is at least 24x24 CSS px',
         `${p.smallCount} of ${p.targets} smaller`);
   check(p.controlsFirst && p.play <= 844, '390x844: the controls come first, Play in the first screen', `Play ends at ${p.play.toFixed(0)}`);
-  await t.shot(phone, 'first-view-phone');
-  await t.shot(phone, 'first-view-phone-full', true);
+  await t.shot(phone, 'end-view-phone');
+  // The drawer open, field by field: still nothing wider than the phone.
+  await phone.click('#deck-drawer > summary');
+  await phone.click('#tab-fields');
+  await phone.waitForFunction(() => document.querySelectorAll('#fields input').length > 10);
+  const drawerWidth = await phone.evaluate(() => document.scrollingElement.scrollWidth);
+  check(drawerWidth <= 390, '390x844, the drawer open field by field: no sideways scrolling of the page', `${drawerWidth} px`);
+  await t.shot(phone, 'drawer-phone');
   await phone.close();
 };
