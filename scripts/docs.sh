@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates the figures the README and the tutorial quote (the output blocks under their
 # commands, the tutorial's card count and machine time) and the pictures in docs/images/ from
-# the binary: the docs test runs every documented command in a scratch folder and, with
+# the binary and the exhibit page: the docs test runs every documented command in a scratch folder and, with
 # PARSONS_UPDATE_DOCS=1, writes what it got instead of comparing. Review the diff, then commit.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,4 +15,12 @@ trap 'rm -rf "$shot"' EXIT
 (cd "$shot" && "$OLDPWD/build/cli/parsons" demo >/dev/null)
 chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars --window-size=1366,1100 \
     --screenshot="$PWD/docs/images/demo-index.png" "file://$shot/out/demo/index.html" 2>/dev/null
+# The exhibit page's pictures (docs/web.md): the screenshots its browser test keeps, at a
+# laptop's 1366 x 768 and a phone's 390 x 844, copied under the names the page shows.
+scripts/build-web.sh
+node tests/js/browser_test.js build-wasm/site build/cli/parsons build-wasm/browser-test >/dev/null
+for pair in first-view-laptop:web-first-view first-view-phone:web-phone tour-laptop:web-tour \
+            part-info-laptop:web-part-info error-field-laptop:web-error-field demo-deck:web-demo-deck; do
+    cp "build-wasm/browser-test/${pair%%:*}.png" "docs/images/${pair##*:}.png"
+done
 git status --short README.md docs/

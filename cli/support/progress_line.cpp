@@ -10,7 +10,14 @@
 
 namespace parsons::cli {
 
+// The exhibit page's stderr (web/parsons_web.cpp) is emscripten's terminal emulation, which says
+// it is a terminal; its lines go into the page, where a carriage return cannot redraw a line and
+// the bar would pile up in front of the next message. So no progress line there.
+#ifdef __EMSCRIPTEN__
+ProgressLine::ProgressLine(bool /*wanted*/) : enabled_(false) {}
+#else
 ProgressLine::ProgressLine(bool wanted) : enabled_(wanted && isatty(fileno(stderr)) != 0) {}
+#endif
 
 ProgressLine::~ProgressLine() {
     clear();

@@ -53,9 +53,12 @@ std::string replay_page(const RunTimeline& timeline, const nlohmann::json& repor
     std::string page(web_assets::replay_html);
     // The slots are filled last to first in the template, so no filled text is searched.
     nlohmann::json run = {{"deck", deck_name}, {"report", report}};
+    fill(page, "/*sound-js*/", web_assets::sound_js);
     fill(page, "<!--run-json-->", script_safe(axes::json_text(run)));
     fill(page, "<!--timeline-json-->", script_safe(timeline.embedded_json()));
+    fill(page, "/*tour-js*/", web_assets::tour_js);
     fill(page, "/*viewer-js*/", web_assets::viewer_js);
+    fill(page, "/*parts-js*/", web_assets::parts_js);
     fill(page, "<!--viewer-->",
          between(web_assets::index_html, "<!--viewer:begin-->", "<!--viewer:end-->"));
     fill(page, "/*exhibit-css*/", web_assets::exhibit_css);

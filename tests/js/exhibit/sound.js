@@ -7,6 +7,7 @@
 // so the check sees every context made and every sound scheduled.
 'use strict';
 
+const path = require('path');
 const { watchPage } = require('../web_support');
 
 const CAP = 12; // web/sound.js MAX_SOURCES
@@ -163,13 +164,31 @@ module.exports = async function sound(t) {
   check(made === 1, 'the AudioContext is made once', `${made} contexts`);
   await page.click('#sound');
 
-  // ---- the --html replay carries no sound.js: its stylesheet hides the button
-  const hidden = await page.evaluate(() => {
-    document.body.classList.add('replay');
-    const d = getComputedStyle(document.getElementById('sound')).display;
-    document.body.classList.remove('replay');
-    return d;
-  });
-  check(hidden === 'none', 'the replay page hides the Sound button', hidden);
   await page.close();
+
+  // ---- the --html replay carries the sound too: pressed and played, it schedules sounds
+  const html = path.join(t.workDir, 'sound-replay.html');
+  const r = t.parsons(['run', path.join(t.SOURCE, 'decks', 'samples', 'patent-example.csv'), '-q', '--html', html]);
+  check(r.status === 0, 'run --html writes the replay', r.stderr);
+  const replay = await browser.newPage();
+  await replay.setViewport(SCREENS.laptop);
+  watchPage(replay, problems);
+  await replay.evaluateOnNewDocument(() => {
+    const audio = { made: 0, starts: 0 };
+    window.__audio = audio;
+    const Native = window.AudioContext;
+    window.AudioContext = class extends Native { constructor(...a) { super(...a); audio.made++; } };
+    const start = AudioBufferSourceNode.prototype.start;
+    AudioBufferSourceNode.prototype.start = function (...a) { audio.starts++; return start.apply(this, a); };
+  });
+  await replay.goto(`file://${html}`);
+  const shown = await replay.$eval('#sound', (b) => getComputedStyle(b).display !== 'none');
+  await replay.click('#sound');
+  await replay.click('.speeds [data-speed="100"]');
+  await replay.click('#play');
+  await new Promise((res) => setTimeout(res, 800));
+  await replay.click('#pause');
+  const heard = await replay.evaluate(() => window.__audio);
+  check(shown && heard.made === 1 && heard.starts > 0, 'the --html replay plays the sound too', JSON.stringify(heard));
+  await replay.close();
 };
