@@ -169,15 +169,20 @@ TEST_CASE("Replay page: every slot filled, the run embedded whole, no name break
           "[timeline][html]") {
     RunTimeline timeline;
     run_orders(two_cards(), parsons::axes::default_profile(), &timeline);
-    const std::string name = "</script><!--viewer-->&deck";
-    const std::string page =
-        parsons::cli::replay_page(timeline, nlohmann::json{{"status", "completed"}}, name);
+    // Typed with its folders: the page carries the file name alone (issue 31), which can hold
+    // no '/', so no "</script"; a '<' and a slot's text still must not break the page.
+    const std::string name = "<script><!--viewer-->&deck";
+    const std::string typed = "/home/visitor/my decks/" + name;
+    const std::string page = parsons::cli::replay_page(
+        timeline, nlohmann::json{{"status", "completed"}, {"deck", typed}}, typed);
+    CHECK(page.find("/home/visitor") == std::string::npos);
+    CHECK(page.find("my decks") == std::string::npos);
     for (const char* slot : {"<!--title-->", "/*exhibit-css*/", "<!--viewer-->", "/*viewer-js*/",
                              "<!--timeline-json-->", "<!--run-json-->"}) {
         INFO(slot);
         CHECK(page.find(slot) == std::string::npos);
     }
-    CHECK(page.find("&lt;/script&gt;&lt;!--viewer--&gt;&amp;deck") != std::string::npos);
+    CHECK(page.find("parsons replay: &lt;script&gt;&lt;!--viewer--&gt;&amp;deck") != std::string::npos);
     CHECK(page.find(name) == std::string::npos);
     CHECK(page.find("id=\"viewer\"") != std::string::npos);
     CHECK(page.find("ParsonsViewer.replayFromPage(document)") != std::string::npos);
@@ -196,15 +201,19 @@ TEST_CASE("Replay page: every slot filled, the run embedded whole, no name break
     const auto from = page.find(open) + open.size();
     const auto json = nlohmann::json::parse(page.substr(from, page.find("</script>", from) - from));
     CHECK(json["changes"] == timeline.change_times().size());
-    CHECK(json["arrays"]["change_t"].get<std::string>().size() ==
-          (timeline.change_times().size() * 8 + 2) / 3 * 4);
-    CHECK(json["arrays"]["motion"].get<std::string>().size() ==
-          (timeline.motion().size() * 8 + 2) / 3 * 4);
+    const std::string packed = parsons::cli::packed_record(
+        timeline.change_times(), timeline.change_ids(), timeline.change_values(), timeline.motion());
+    CHECK(json["arrays"]["encoding"] == "xor1");
+    CHECK(json["arrays"]["packed"] == b64(packed));
+    // Packed, a few bytes a number: well under the raw arrays' 24 bytes a change and 64 a record.
+    CHECK(packed.size() * 4 <
+          timeline.change_times().size() * 16 + timeline.motion().size() * 8);
     const std::string run_open = "<script type=\"application/json\" id=\"parsons-run\">";
     const auto run_from = page.find(run_open) + run_open.size();
     const auto run =
         nlohmann::json::parse(page.substr(run_from, page.find("</script>", run_from) - run_from));
     CHECK(run["deck"] == name);
+    CHECK(run["report"]["deck"] == name);
 }
 
 TEST_CASE("Run --html: the page of a completed run, of a stop, and of a generated deck's cut",

@@ -8,11 +8,63 @@ const ParsonsViewer = (() => {
   const SVG = "http://www.w3.org/2000/svg";
 
 
-  function b64(text, Type) {
+  function b64bytes(text) {
     const bin = atob(text);
     const bytes = new Uint8Array(bin.length);
     for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
-    return new Type(bytes.buffer);
+    return bytes;
+  }
+
+  // The record `parsons run --html` packs (packed_record in outputs/replay/run_timeline.cpp):
+  // ids as zigzag varints of their difference, values as varints, then the times and the
+  // motion record's eight columns each as the bits XORed with the previous number's, written
+  // as the low bytes that differ, their count a nibble. Read back bit for bit.
+  function unpack(bytes, changes, records, stride) {
+    let p = 0;
+    const varint = () => {
+      let n = 0, shift = 0, b;
+      do { b = bytes[p++]; n += (b & 0x7f) * 2 ** shift; shift += 7; } while (b & 0x80);
+      return n;
+    };
+    const change_id = new Uint32Array(changes);
+    let id = 0;
+    for (let i = 0; i < changes; i++) {
+      const z = varint();
+      id += z % 2 ? -(z + 1) / 2 : z / 2;
+      change_id[i] = id;
+    }
+    const change_v = new Uint32Array(changes);
+    for (let i = 0; i < changes; i++) change_v[i] = varint();
+    // A column of `count` numbers into `out` (a Uint32Array over the Float64Array: two words a
+    // number, the low first, as typed arrays are on every browser's machine), every `step`th
+    // number from `first`.
+    const column = (out, first, step, count) => {
+      const nib = p;
+      p += (count + 1) >> 1;
+      let lo = 0, hi = 0;
+      for (let i = 0; i < count; i++) {
+        const n = (bytes[nib + (i >> 1)] >> ((i & 1) * 4)) & 15;
+        if (n > 0) {
+          let xlo = 0, xhi = 0;
+          for (let k = 0; k < n; k++) {
+            if (k < 4) xlo |= bytes[p++] << (8 * k);
+            else xhi |= bytes[p++] << (8 * (k - 4));
+          }
+          lo = (lo ^ xlo) >>> 0;
+          hi = (hi ^ xhi) >>> 0;
+        }
+        const at = (first + i * step) * 2;
+        out[at] = lo;
+        out[at + 1] = hi;
+      }
+    };
+    const change_t = new Float64Array(changes);
+    column(new Uint32Array(change_t.buffer), 0, 1, changes);
+    const motion = new Float64Array(records * stride);
+    const motionWords = new Uint32Array(motion.buffer);
+    for (let c = 0; c < stride; c++) column(motionWords, c, stride, records);
+    if (p !== bytes.length) throw new Error("the embedded record does not unpack whole");
+    return { change_t, change_id, change_v, motion };
   }
 
   function el(tag, attrs, parent) {
@@ -663,17 +715,15 @@ const ParsonsViewer = (() => {
   function replayFromPage(doc) {
     const timeline = JSON.parse(doc.getElementById("parsons-timeline").textContent);
     const run = JSON.parse(doc.getElementById("parsons-run").textContent);
-    const arrays = {
-      change_t: b64(timeline.arrays.change_t, Float64Array),
-      change_id: b64(timeline.arrays.change_id, Uint32Array),
-      change_v: b64(timeline.arrays.change_v, Uint32Array),
-      motion: b64(timeline.arrays.motion, Float64Array),
-    };
+    const t0 = performance.now();
+    const arrays = unpack(b64bytes(timeline.arrays.packed), timeline.changes,
+                          timeline.motion_records, 8);
+    window.parsonsUnpackMs = performance.now() - t0; // printed by the browser check
     const viewer = new Viewer(doc);
     viewer.load(timeline, arrays, run.report);
     window.parsonsViewer = viewer;
     return viewer;
   }
 
-  return { Viewer, replayFromPage };
+  return { Viewer, replayFromPage, unpack };
 })();

@@ -5,6 +5,7 @@
 
 #include "cardreader/card_svg.hpp"
 
+#include <filesystem>
 #include <stdexcept>
 #include <string_view>
 
@@ -49,10 +50,18 @@ void fill(std::string& page, std::string_view slot, std::string_view text) {
 } // namespace
 
 std::string replay_page(const RunTimeline& timeline, const nlohmann::json& report,
-                        const std::string& deck_name) {
+                        const std::string& deck_path) {
+    // The deck's file name only: the page is made to be passed on, and the folders it was run
+    // from (a home directory, a build tree) are nobody's business (issue 31, item 4).
+    const std::string deck_name = std::filesystem::path(deck_path).filename().string();
     std::string page(web_assets::replay_html);
     // The slots are filled last to first in the template, so no filled text is searched.
     nlohmann::json run = {{"deck", deck_name}, {"report", report}};
+    auto& embedded = run["report"];
+    if (const auto deck = embedded.find("deck"); // the report names it as typed
+        embedded.is_object() && deck != embedded.end() && deck->is_string()) {
+        *deck = std::filesystem::path(deck->get<std::string>()).filename().string();
+    }
     fill(page, "/*sound-js*/", web_assets::sound_js);
     fill(page, "<!--run-json-->", script_safe(axes::json_text(run)));
     fill(page, "<!--timeline-json-->", script_safe(timeline.embedded_json()));

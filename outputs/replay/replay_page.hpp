@@ -12,7 +12,8 @@
 
 namespace parsons::cli {
 
+// `deck_path` as the visitor typed it; the page carries its file name only.
 std::string replay_page(const RunTimeline& timeline, const nlohmann::json& report,
-                        const std::string& deck_name);
+                        const std::string& deck_path);
 
 } // namespace parsons::cli

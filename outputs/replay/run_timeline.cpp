@@ -14,14 +14,69 @@ namespace parsons::cli {
 
 namespace {
 
-template <typename T>
-std::string base64_of(const std::vector<T>& values) {
-    static_assert(std::endian::native == std::endian::little,
-                  "the embedded arrays are little-endian, as the viewer's typed arrays read them");
-    return base64(reinterpret_cast<const unsigned char*>(values.data()), values.size() * sizeof(T));
+// The packed record (`run --html`): the arrays written exactly, a few bytes a number, so the
+// demo deck's page stays under 1 MB (raw typed arrays made it 2.3 MB). The viewer's unpack()
+// (web/viewer.js) reads it back bit for bit. Layout, in order:
+//   signal ids: zigzag varint of the difference from the previous id (ids cluster by axis);
+//   new values: varint;
+//   times, then each of the motion record's eight columns: the number's bits XORed with the
+//   previous number's of the same column (0 before the first), written as its low nonzero
+//   bytes, little-endian; how many (0..8) is a nibble, two a byte, all nibbles before the bytes.
+// A repeated number (most times repeat: several relays move at one instant; the angles and
+// idle axes rarely change) costs half a byte; a changed one its differing low bytes.
+void put_varint(std::string& out, std::uint64_t n) {
+    while (n >= 0x80) {
+        out += static_cast<char>((n & 0x7f) | 0x80);
+        n >>= 7;
+    }
+    out += static_cast<char>(n);
+}
+
+// `count` doubles, from `values` every `stride`th from `first`.
+void put_xor_column(std::string& out, const std::vector<double>& values, std::size_t first,
+                    std::size_t stride, std::size_t count) {
+    std::string nibbles((count + 1) / 2, '\0');
+    std::string bytes;
+    std::uint64_t previous = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const auto bits = std::bit_cast<std::uint64_t>(values[first + i * stride]);
+        std::uint64_t x = bits ^ previous;
+        previous = bits;
+        unsigned n = 0;
+        for (; x != 0; x >>= 8, ++n) {
+            bytes += static_cast<char>(x & 0xff);
+        }
+        nibbles[i / 2] = static_cast<char>(static_cast<unsigned char>(nibbles[i / 2]) |
+                                           (n << ((i % 2) * 4)));
+    }
+    out += nibbles;
+    out += bytes;
 }
 
 } // namespace
+
+std::string packed_record(const std::vector<double>& change_t,
+                          const std::vector<std::uint32_t>& change_id,
+                          const std::vector<std::uint32_t>& change_v,
+                          const std::vector<double>& motion) {
+    std::string out;
+    std::int64_t previous_id = 0;
+    for (const std::uint32_t id : change_id) {
+        const std::int64_t d = static_cast<std::int64_t>(id) - previous_id;
+        previous_id = id;
+        put_varint(out, d >= 0 ? static_cast<std::uint64_t>(d) << 1
+                               : (static_cast<std::uint64_t>(-d) << 1) - 1);
+    }
+    for (const std::uint32_t v : change_v) {
+        put_varint(out, v);
+    }
+    put_xor_column(out, change_t, 0, 1, change_t.size());
+    const std::size_t records = motion.size() / RunTimeline::kMotionRecord;
+    for (std::size_t c = 0; c < RunTimeline::kMotionRecord; ++c) {
+        put_xor_column(out, motion, c, RunTimeline::kMotionRecord, records);
+    }
+    return out;
+}
 
 std::string base64(const unsigned char* data, std::size_t size) {
     static constexpr char kDigits[] =
@@ -207,10 +262,10 @@ std::string RunTimeline::header_text(bool with_signals) const {
 }
 
 std::string RunTimeline::embedded_json() const {
-    const nlohmann::json arrays = {{"change_t", base64_of(change_t_)},
-                                   {"change_id", base64_of(change_id_)},
-                                   {"change_v", base64_of(change_v_)},
-                                   {"motion", base64_of(motion_)}};
+    const std::string packed = packed_record(change_t_, change_id_, change_v_, motion_);
+    const nlohmann::json arrays = {
+        {"encoding", "xor1"},
+        {"packed", base64(reinterpret_cast<const unsigned char*>(packed.data()), packed.size())}};
     std::string text = header_text();
     text.replace(text.size() - 1, 1, ",\"arrays\":" + arrays.dump() + "}");
     return text;

@@ -61,8 +61,8 @@ public:
     // (inches), then the swivel's and the tilt's fixture angle (degrees).
     const std::vector<double>& motion() const { return motion_; }
 
-    // Header and arrays in one JSON document, the arrays as base64 of their little-endian
-    // bytes (what `run --html` embeds).
+    // Header and arrays in one JSON document, the arrays packed (packed_record) as base64
+    // (what `run --html` embeds).
     std::string embedded_json() const;
 
 private:
@@ -89,6 +89,13 @@ private:
     std::array<double, 2> angle_screws_{};
     std::array<double, 2> angles_{};
 };
+
+// The record's four arrays packed exactly, a few bytes a number (layout in run_timeline.cpp,
+// read by unpack() in web/viewer.js).
+std::string packed_record(const std::vector<double>& change_t,
+                          const std::vector<std::uint32_t>& change_id,
+                          const std::vector<std::uint32_t>& change_v,
+                          const std::vector<double>& motion);
 
 // The bytes of `data` as base64 (RFC 4648, with padding).
 std::string base64(const unsigned char* data, std::size_t size);

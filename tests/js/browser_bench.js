@@ -59,6 +59,7 @@ function timeNative(args) {
   const browser = await launchChromium(path.join(workDir, 'profile'));
   const first = [];
   const firstRun = [];
+  const firstLoad = [];
   const again = [];
   const ready = [];
   const toEnd = async (page) => {
@@ -82,6 +83,7 @@ function timeNative(args) {
       const timing = await toEnd(page);
       first.push(timing.toEndMs);
       firstRun.push(timing.runMs);
+      firstLoad.push(timing.loadMs);
       // Then pressed again, as a visitor does: the deck loaded anew and run again each time.
       for (let k = 0; k < RUNS; k++) again.push((await toEnd(page)).toEndMs);
       if (errors.length) throw new Error(errors.join('\n'));
@@ -105,6 +107,7 @@ function timeNative(args) {
   row('native CLI, every change as JSON (--events)', nativeEvents, true);
   row('page "to the end", first press after loading', f);
   row('  of which the WebAssembly run', median(firstRun));
+  row('  of which the record copied and the view loaded', median(firstLoad));
   row('page "to the end", pressed again', a);
   const ratio = (page, native) => `${(page / native).toFixed(2)}x`;
   console.log(`  page / native report only: first press ${ratio(f, nativePlain)} ` +

@@ -8,6 +8,7 @@ const fs = require('fs');
 const http = require('http');
 const os = require('os');
 const path = require('path');
+const zlib = require('zlib');
 const puppeteer = require('puppeteer-core');
 
 const TYPES = {
@@ -19,8 +20,25 @@ const TYPES = {
   '.svg': 'image/svg+xml',
 };
 
+const COMPRESSED = new Set(['.html', '.js', '.css', '.wasm', '.svg']);
+
 // Serves the files of `root` on 127.0.0.1 (`port`, or a free one); resolves to { url, close }.
 function startServer(root, port = 0) {
+  const gzipped = new Map(); // file -> { mtime, bytes }
+  const gzipOf = (file) => {
+    const mtime = fs.statSync(file).mtimeMs;
+    let hit = gzipped.get(file);
+    if (!hit || hit.mtime !== mtime) {
+      hit = { mtime, bytes: zlib.gzipSync(fs.readFileSync(file), { level: 9 }) };
+      gzipped.set(file, hit);
+    }
+    return hit;
+  };
+  // The site's own files compressed before the first visitor, so no page waits for it.
+  for (const name of fs.readdirSync(root)) {
+    const file = path.join(path.resolve(root), name);
+    if (COMPRESSED.has(path.extname(name)) && fs.statSync(file).isFile()) gzipOf(file);
+  }
   const server = http.createServer((req, res) => {
     const name = decodeURIComponent(new URL(req.url, 'http://localhost').pathname);
     const file = path.resolve(root, '.' + path.normalize(name === '/' ? '/index.html' : name));
@@ -29,7 +47,19 @@ function startServer(root, port = 0) {
       res.end('not found');
       return;
     }
-    res.writeHead(200, { 'Content-Type': TYPES[path.extname(file)] || 'application/octet-stream' });
+    const type = TYPES[path.extname(file)] || 'application/octet-stream';
+    // The module and the scripts compressed when the browser takes gzip (every browser does):
+    // parsons_web.wasm goes from MiB to a third of it (docs/web.md says how any server should
+    // do this). `Vary` tells caches the answer depends on Accept-Encoding.
+    if (COMPRESSED.has(path.extname(file)) && /\bgzip\b/.test(req.headers['accept-encoding'] || '')) {
+      // Compressed once a file (and again when it changes), not at every request.
+      const hit = gzipOf(file);
+      res.writeHead(200, { 'Content-Type': type, 'Content-Encoding': 'gzip', Vary: 'Accept-Encoding',
+                           'Content-Length': hit.bytes.length });
+      res.end(hit.bytes);
+      return;
+    }
+    res.writeHead(200, { 'Content-Type': type, Vary: 'Accept-Encoding' });
     fs.createReadStream(file).pipe(res);
   });
   return new Promise((resolve) => {
