@@ -70,7 +70,8 @@ module.exports = async function freeze(t) {
 
   // ---- one field of the generated demo deck edited
   await page.click('#load-demo');
-  await page.waitForFunction(() => document.querySelectorAll('#cards figure').length === 93);
+  await page.waitForFunction(() => document.getElementById('cards').dataset.state === 'drawn' &&
+                             document.querySelectorAll('#cards figure').length === 93);
   await page.click('#tab-fields');
   // The figures and pictures as they are, marked, so that the edit shows what it re-created.
   await page.$eval('#cards', (b) => { b.scrollTop = 0; });
@@ -115,7 +116,8 @@ module.exports = async function freeze(t) {
   const heapFirst = await heapMB();
   for (let i = 0; i < 10; i++) {
     await page.click('#load-demo');
-    await page.waitForFunction(() => document.querySelectorAll('#cards figure').length === 93 &&
+    await page.waitForFunction(() => document.getElementById('cards').dataset.state === 'drawn' &&
+                               document.querySelectorAll('#cards figure').length === 93 &&
                                document.getElementById('deck-error').hidden);
     await page.$eval('#cards', (b) => { b.scrollTop = b.scrollHeight; });
     await new Promise((r) => setTimeout(r, 150));

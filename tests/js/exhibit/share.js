@@ -18,6 +18,8 @@ async function state(page) {
 }
 
 async function shareNow(page) {
+  // The note of an earlier share is forgotten first: the wait below is for this one.
+  await page.evaluate(() => { const n = document.getElementById('share-note'); if (n) delete n.dataset.url; });
   await page.click('#share');
   await page.waitForFunction(() => document.getElementById('share-note') &&
                              document.getElementById('share-note').dataset.url === location.href);
@@ -73,7 +75,8 @@ module.exports = async function share(t) {
 
   // ---- the demo deck by name
   await page.click('#load-demo');
-  await page.waitForFunction(() => document.querySelectorAll('#cards figure').length === 93);
+  await page.waitForFunction(() => document.getElementById('cards').dataset.state === 'drawn' &&
+                             document.querySelectorAll('#cards figure').length === 93);
   await page.click('#single-card');
   await page.waitForFunction(() => document.getElementById('run-state').textContent === 'paused', { timeout: 60000 });
   hash = await shareNow(page);
