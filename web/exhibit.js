@@ -107,25 +107,23 @@
 
   // ---- the keypunch: every change is punched and drawn at once
 
-  function punchListing(fromField = false) {
+  // now: the pictures at once (the first view), not in the task after the next frame.
+  function punchListing(fromField = false, now = false) {
     FS.writeFile(LISTING, listing.value);
     punched = false;
     ran = false;
     setDownloads();
-    clearFolder("/work/cards");
-    // A long deck is shown but not drawn: a picture a card would fill the page's memory.
-    const rows = listing.value.split("\n").filter((l) => l.trim() && !l.trimStart().startsWith("#")).length;
-    const draw = rows <= MOST_DRAWN_ROWS;
-    const shown = parsons(["show", LISTING, ...(draw ? ["--svg", "cards"] : [])]);
+    const shown = parsons(["show", LISTING]);
     $("deck-show").textContent = shown.out;
     if (shown.code !== 0) {
       // The cards of the last good listing stay, marked as not what the listing says now.
+      pictureToken++;
       $("cards").classList.add("stale");
+      $("cards").dataset.state = "stale";
       showError(shown.err);
       return false;
     }
     $("cards").classList.remove("stale");
-    drawCards(draw);
     const p = parsons(["punch", LISTING, "-o", DECK]);
     if (p.code !== 0) {
       showError(p.err);
@@ -137,7 +135,27 @@
     setDownloads();
     // A cell edited keeps its table (and the visitor's place in it); a new listing rebuilds it.
     if ($("fields").hidden === false && !fromField) buildFields();
+    if (now) drawPictures(listing.value);
+    else {
+      // The pictures (parsons show --svg, ~1,000 <text> a card) in a task of their own after the
+      // next frame: the page answers the press first. A newer punch supersedes this one.
+      const token = ++pictureToken;
+      const text = listing.value;
+      $("cards").dataset.state = "drawing";
+      requestAnimationFrame(() => setTimeout(() => { if (token === pictureToken) drawPictures(text); }, 0));
+    }
     return true;
+  }
+  let pictureToken = 0;
+  function drawPictures(text) {
+    FS.writeFile(LISTING, text);
+    clearFolder("/work/cards");
+    // A long deck is shown but not drawn: a picture a card would fill the page's memory.
+    const rows = text.split("\n").filter((l) => l.trim() && !l.trimStart().startsWith("#")).length;
+    const draw = rows <= MOST_DRAWN_ROWS;
+    if (draw) parsons(["show", LISTING, "--svg", "cards"]);
+    drawCards(draw);
+    $("cards").dataset.state = "drawn";
   }
 
   // The card pictures: a figure per card at once (cheap), its picture made only when it scrolls
@@ -211,11 +229,11 @@
     typing = setTimeout(punchListing, 250);
   });
 
-  function setListing(text, name = null) {
+  function setListing(text, name = null, now = false) {
     listing.value = text;
     deckName = name;
     loadedText = text;
-    punchListing();
+    punchListing(false, now);
   }
 
   // Field by field: the listing's rows as a table of cells; the listing stays what is punched.
@@ -296,9 +314,9 @@
   // ---- decks in: the samples, the demo deck, a file
 
   const SAMPLE = "/share/parsons/samples/patent-example.csv";
-  function loadSample() {
+  function loadSample(now = false) {
     job = null;
-    setListing(readText(SAMPLE), "sample");
+    setListing(readText(SAMPLE), "sample", now === true);
   }
   $("load-sample").addEventListener("click", loadSample);
 
@@ -518,7 +536,7 @@
 
   for (const id of ["load-sample", "load-demo", "load-file", "gen-go"]) $(id).disabled = false;
   if (!(await openShared())) {
-    $("load-sample").click();
+    loadSample(true);
     // The sample deck is run at once, so that the cabinet stands ready at its first card and the
     // browser has compiled the machine's hot code fully before a visitor's first press.
     runDeck();

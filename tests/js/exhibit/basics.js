@@ -187,7 +187,8 @@ module.exports = async function basics(t) {
   await page.select('#gen-source', 'clarky');
   await page.$eval('#gen-scallop', (e) => { e.value = '0.003'; });
   await page.click('#gen-go');
-  await page.waitForFunction(() => /clarky/i.test(document.getElementById('gen-output').textContent));
+  await page.waitForFunction(() => /clarky/i.test(document.getElementById('gen-output').textContent) &&
+                             document.getElementById('cards').dataset.state === 'drawn');
   const genCards = await page.$$eval('#cards figure', (figs) => figs.length);
   const nativeGen = path.join(workDir, 'clarky.cbn');
   const g = parsons(['gen', 'airfoil', '--dat', 'clarky', '--chord', '6', '--cutter-radius', '0.25',

@@ -4,6 +4,10 @@
 // load stops Play on the old deck; no message names the page's internal /work/ files.
 'use strict';
 
+// The keypunch may sit in a drawer (a <details>, closed on the first view): opened, as a
+// visitor opens it before pressing its buttons.
+const openDrawer = (page) => page.evaluate(() => { const d = document.getElementById('deck-drawer'); if (d) d.open = true; });
+
 const fs = require('fs');
 const path = require('path');
 
@@ -19,6 +23,7 @@ module.exports = async function errors(t) {
 
   // ---- after a generation, a generator error is one clean line: the CLI's, nothing before it
   let page = await t.open('laptop');
+  await openDrawer(page);
   await page.click('#load-demo');
   await page.waitForFunction(() => /cards\s+93/.test(document.getElementById('gen-output').textContent));
   const summary = await page.$eval('#gen-output', (e) => e.textContent);
@@ -38,6 +43,7 @@ module.exports = async function errors(t) {
   // ---- field by field: the bad cell, its message beside it, on a laptop and a phone
   for (const screen of ['laptop', 'phone']) {
     page = await t.open(screen);
+    await openDrawer(page);
     await page.click('#tab-fields');
     const figsBefore = await page.$$eval('#cards figure', (f) => f.length);
     const speed = await page.evaluate(() => [...document.querySelectorAll('#fields input')]
@@ -97,6 +103,7 @@ module.exports = async function errors(t) {
 
   // ---- a failed load while the old deck plays: Play stops, the old deck is kept and says so
   page = await t.open('laptop');
+  await openDrawer(page);
   const goodCbn = path.join(workDir, 'err-good.cbn');
   parsons(['punch', sampleFile, '-o', goodCbn]);
   const bytes = fs.readFileSync(goodCbn);

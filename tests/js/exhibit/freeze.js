@@ -4,6 +4,10 @@
 // The figures are printed; the limit is the issue's, with its honest margin.
 'use strict';
 
+// The keypunch may sit in a drawer (a <details>, closed on the first view): opened, as a
+// visitor opens it before pressing its buttons.
+const openDrawer = (page) => page.evaluate(() => { const d = document.getElementById('deck-drawer'); if (d) d.open = true; });
+
 // Time from the visitor's action (the click, or the field's change event) to the first frame
 // after the page's work: a rAF asked for at the start of the event, in its capture phase, runs
 // only once every handler of that event has returned. The longest task in the 2 s after
@@ -29,6 +33,7 @@ async function figures(page) {
 module.exports = async function freeze(t) {
   const { check } = t;
   const page = await t.open('laptop');
+  await openDrawer(page);
   const cdp = await page.target().createCDPSession();
   const heapMB = async () => {
     await cdp.send('HeapProfiler.collectGarbage');
@@ -43,7 +48,7 @@ module.exports = async function freeze(t) {
   await page.click('#load-demo');
   let f = await figures(page);
   console.log(`Demo deck: next frame ${f.frameMs.toFixed(0)} ms after the click; longest task after it ${f.longest.toFixed(0)} ms`);
-  check(f.frameMs < 1000 && f.longest < 1000, 'Demo deck reaches the next frame within 1 s', `${f.frameMs.toFixed(0)} ms`);
+  check(f.frameMs < 1000 && f.longest < 1000, 'Demo deck reaches the next frame within 1 s', `next frame ${f.frameMs.toFixed(0)} ms, longest task ${f.longest.toFixed(0)} ms`);
   let [figs, imgs] = await cardsDrawn();
   check(figs === 93 && imgs > 0 && imgs < figs, 'the demo deck\'s 93 cards are placed; only those in view are drawn',
         `${figs} figures, ${imgs} pictures`);
@@ -61,11 +66,12 @@ module.exports = async function freeze(t) {
   await page.click('#gen-go');
   f = await figures(page);
   console.log(`Generate (clarky): next frame ${f.frameMs.toFixed(0)} ms after the click; longest task after it ${f.longest.toFixed(0)} ms`);
-  check(f.frameMs < 1000 && f.longest < 1000, 'Generate reaches the next frame within 1 s', `${f.frameMs.toFixed(0)} ms`);
+  check(f.frameMs < 1000 && f.longest < 1000, 'Generate reaches the next frame within 1 s', `next frame ${f.frameMs.toFixed(0)} ms, longest task ${f.longest.toFixed(0)} ms`);
 
   // ---- one field of the generated demo deck edited
   await page.click('#load-demo');
-  await page.waitForFunction(() => document.querySelectorAll('#cards figure').length === 93);
+  await page.waitForFunction(() => document.getElementById('cards').dataset.state === 'drawn' &&
+                             document.querySelectorAll('#cards figure').length === 93);
   await page.click('#tab-fields');
   // The figures and pictures as they are, marked, so that the edit shows what it re-created.
   await page.$eval('#cards', (b) => { b.scrollTop = 0; });
@@ -79,6 +85,7 @@ module.exports = async function freeze(t) {
     const i = [...document.querySelectorAll('#fields input')].findIndex((x) => / stop$/.test(x.getAttribute('aria-label')));
     return i;
   });
+  await page.evaluate((i) => { window.__field = document.querySelectorAll('#fields input')[i]; }, at);
   await probe(page, 'change');
   const newStop = await page.evaluate((i) => {
     const input = document.querySelectorAll('#fields input')[i];
@@ -89,7 +96,7 @@ module.exports = async function freeze(t) {
   }, at);
   f = await figures(page);
   console.log(`one field edited (stop ${newStop}): next frame ${f.frameMs.toFixed(0)} ms after its change event; longest task after it ${f.longest.toFixed(0)} ms`);
-  check(f.frameMs < 1000 && f.longest < 1000, 'one field edited reaches the next frame within 1 s', `${f.frameMs.toFixed(0)} ms`);
+  check(f.frameMs < 1000 && f.longest < 1000, 'one field edited reaches the next frame within 1 s', `next frame ${f.frameMs.toFixed(0)} ms, longest task ${f.longest.toFixed(0)} ms`);
   const kept = await page.evaluate(() => {
     const now = [...document.querySelectorAll('#cards figure')];
     const same = now.filter((x, i) => x === window.__before[i]).length;
@@ -98,7 +105,10 @@ module.exports = async function freeze(t) {
   });
   check(kept.same === kept.total && kept.redrawn.length === 1 && kept.redrawn[0] === 'card-0001.svg',
         'one field edited redraws its one card; the other figures stay', JSON.stringify(kept));
-  const focusKept = await page.evaluate((i) => document.querySelectorAll('#fields input')[i].value, at);
+  const focusKept = await page.evaluate((i) => {
+    const input = document.querySelectorAll('#fields input')[i];
+    return input === window.__field ? input.value : 'a new table';
+  }, at);
   check(focusKept === newStop, 'the field table stays as it was (not rebuilt) with the new value', focusKept);
   await page.click('#tab-listing');
 
@@ -106,7 +116,8 @@ module.exports = async function freeze(t) {
   const heapFirst = await heapMB();
   for (let i = 0; i < 10; i++) {
     await page.click('#load-demo');
-    await page.waitForFunction(() => document.querySelectorAll('#cards figure').length === 93 &&
+    await page.waitForFunction(() => document.getElementById('cards').dataset.state === 'drawn' &&
+                               document.querySelectorAll('#cards figure').length === 93 &&
                                document.getElementById('deck-error').hidden);
     await page.$eval('#cards', (b) => { b.scrollTop = b.scrollHeight; });
     await new Promise((r) => setTimeout(r, 150));

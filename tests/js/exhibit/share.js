@@ -4,6 +4,10 @@
 // same instant: machine time, card and positions equal.
 'use strict';
 
+// The keypunch may sit in a drawer (a <details>, closed on the first view): opened, as a
+// visitor opens it before pressing its buttons.
+const openDrawer = (page) => page.evaluate(() => { const d = document.getElementById('deck-drawer'); if (d) d.open = true; });
+
 async function state(page) {
   return page.evaluate(() => ({
     listing: document.getElementById('listing').value,
@@ -14,6 +18,8 @@ async function state(page) {
 }
 
 async function shareNow(page) {
+  // The note of an earlier share is forgotten first: the wait below is for this one.
+  await page.evaluate(() => { const n = document.getElementById('share-note'); if (n) delete n.dataset.url; });
   await page.click('#share');
   await page.waitForFunction(() => document.getElementById('share-note') &&
                              document.getElementById('share-note').dataset.url === location.href);
@@ -25,6 +31,7 @@ module.exports = async function share(t) {
 
   // ---- the sample deck, two cards in
   let page = await t.open('laptop');
+  await openDrawer(page);
   await page.click('.speeds [data-speed="100"]');
   for (const expected of ['1 (number 0001)', '2 (number 0002)']) {
     await page.click('#single-card');
@@ -37,6 +44,7 @@ module.exports = async function share(t) {
         'Share puts the built-in deck by name and the machine time in the address', hash);
   await t.shot(page, 'share-laptop');
   let there = await t.open('phone', `${hash}`);
+  await openDrawer(there);
   let opened = await state(there);
   check(opened.listing === here.listing, 'the shared address opens the same deck');
   check(opened.seconds === here.seconds && opened.card === here.card && opened.positions === here.positions,
@@ -58,6 +66,7 @@ module.exports = async function share(t) {
   check(/^#deck=z[A-Za-z0-9_-]+&t=\d/.test(hash), 'a deck of the visitor\'s own travels compressed in the address',
         `${hash.length} characters for a listing of ${edited.length}`);
   there = await t.open('laptop', hash);
+  await openDrawer(there);
   opened = await state(there);
   check(opened.listing === edited, 'the shared address opens the visitor\'s listing, unchanged');
   check(opened.seconds === here.seconds && opened.card === here.card && opened.positions === here.positions,
@@ -66,13 +75,15 @@ module.exports = async function share(t) {
 
   // ---- the demo deck by name
   await page.click('#load-demo');
-  await page.waitForFunction(() => document.querySelectorAll('#cards figure').length === 93);
+  await page.waitForFunction(() => document.getElementById('cards').dataset.state === 'drawn' &&
+                             document.querySelectorAll('#cards figure').length === 93);
   await page.click('#single-card');
   await page.waitForFunction(() => document.getElementById('run-state').textContent === 'paused', { timeout: 60000 });
   hash = await shareNow(page);
   here = await state(page);
   check(/^#deck=demo&t=/.test(hash), 'the demo deck is shared by name', hash);
   there = await t.open('laptop', hash);
+  await openDrawer(there);
   opened = await state(there);
   check(opened.listing === here.listing && opened.seconds === here.seconds && opened.positions === here.positions,
         'the demo deck opens at the same instant', `${here.seconds} -> ${opened.seconds}`);
