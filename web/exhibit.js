@@ -298,7 +298,10 @@
     td.colSpan = inputs.length;
     td.id = "field-error";
     td.setAttribute("role", "alert");
-    td.textContent = text;
+    // The words in a block that stays at the visible left of a table scrolled sideways (phone).
+    const words = document.createElement("div");
+    words.textContent = text;
+    td.append(words);
     cell.setAttribute("aria-describedby", "field-error");
   }
   function tab(which) {

@@ -59,9 +59,11 @@ module.exports = async function errors(t) {
       cell.scrollIntoView({ block: 'center' });
       const c = cell.getBoundingClientRect();
       const m = document.querySelector('#fields tr.field-error').getBoundingClientRect();
+      // The words themselves, within the screen's width (a table scrolled sideways on a phone).
+      const w = (document.querySelector('#fields tr.field-error td > div') || document.querySelector('#fields tr.field-error')).getBoundingClientRect();
       const invalid = [...document.querySelectorAll('#fields [aria-invalid="true"]')];
       const style = getComputedStyle(cell);
-      return { gap: m.top - c.bottom, inView: m.top >= 0 && m.bottom <= innerHeight, invalid: invalid.length,
+      return { gap: m.top - c.bottom, inView: m.top >= 0 && m.bottom <= innerHeight && w.left >= -1 && w.right <= innerWidth + 1, invalid: invalid.length,
                isCell: invalid[0] === cell, outline: style.outlineStyle, text: document.querySelector('#fields tr.field-error').textContent,
                described: cell.getAttribute('aria-describedby') };
     }, speed);
