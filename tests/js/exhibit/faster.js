@@ -82,8 +82,9 @@ module.exports = async function faster(t) {
   // The issue's 400 ms is not met yet on the shared 2-core machine (460-1500 ms, median ~600,
   // measured with other builds running): held here against a regression only, printed above.
   check(readyMs > 0 && readyMs < 2500, 'the first view is ready within 2.5 s', `${readyMs.toFixed(0)} ms`);
-  await page.click('#load-demo');
-  await page.waitForFunction(() => document.querySelectorAll('#cards img').length > 50);
+  // The button is in the deck's drawer, closed on the first view: pressed as a script would.
+  await page.$eval('#load-demo', (b) => b.click());
+  await page.waitForFunction(() => document.querySelectorAll('#cards figure').length > 50);
   await page.click('#to-end');
   await page.waitForSelector('#run-state[data-finished="true"]');
   const timing = await page.evaluate(() => window.parsonsTiming);

@@ -168,8 +168,8 @@ module.exports = async function sound(t) {
 
   // ---- the --html replay carries the sound too: pressed and played, it schedules sounds
   const html = path.join(t.workDir, 'sound-replay.html');
-  const r = t.parsons(['run', path.join(t.SOURCE, 'decks', 'samples', 'patent-example.csv'), '-q', '--html', html]);
-  check(r.status === 0, 'run --html writes the replay', r.stderr);
+  const written = t.parsons(['run', path.join(t.SOURCE, 'decks', 'samples', 'patent-example.csv'), '-q', '--html', html]);
+  check(written.status === 0, 'run --html writes the replay', written.stderr);
   const replay = await browser.newPage();
   await replay.setViewport(SCREENS.laptop);
   watchPage(replay, problems);
