@@ -99,6 +99,14 @@ module.exports = async function teach(t) {
   check(/relays 7, 8, 9 closed/.test(bank.text), 'bank 352 shows relays 7, 8 and 9 closed, as the patent\'s example', bank.text.slice(-80));
   check(/Fig\. 12/.test(bank.text) && /An impulse over channel 360 will cause relays Nos\. 7, 8 and 9 in bank 352 to close/.test(bank.text),
         'bank 352 quotes the patent\'s passage of Fig. 12');
+  // The incremental banks hold the check number, thousandths in 318 and inches in 324 (Fig. 11's
+  // 0.485), as relaylogic/storage.cpp wires them; the counters 310 (thousandths) to 316 (inches).
+  const inc = await page.$$eval('#panel [data-scope="table"] [data-bank^="incremental_storage_3"], #panel [data-scope="table"] [data-name^="increment_counter_3"]',
+                                (b) => Object.fromEntries(b.map((e) => [e.dataset.bank || e.dataset.name, e.getAttribute('title')])));
+  check(/thousandths/.test(inc.incremental_storage_318) && /inches/.test(inc.incremental_storage_324) &&
+        /thousandths/.test(inc.increment_counter_310) && /inches/.test(inc.increment_counter_316) &&
+        Object.entries(inc).every(([k, x]) => !k.startsWith('incremental_storage') || (/check number/.test(x) && !/slow-down increment/.test(x))),
+        'the incremental banks hold the check number, 318 and 310 the thousandths, 324 and 316 the inches', JSON.stringify(inc).slice(0, 300));
   await t.shot(page, 'part-info-laptop');
   // The part's state follows the machine: at the end every holding relay is open again.
   await page.click('#to-end');
