@@ -49,7 +49,7 @@ int call(const std::string& args_json, bool record) {
 // The run's header without its signals, and the signals alone: the page asks for them only
 // when the header's signals_signature is new to it (a new machine profile).
 std::string timeline_header() {
-    return g_timeline ? g_timeline->header_text(false) : "null";
+    return g_timeline ? g_timeline->page_header_text() : "null";
 }
 std::string timeline_signals() {
     return g_timeline ? g_timeline->signals_text() : "null";

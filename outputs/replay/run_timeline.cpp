@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <bit>
 #include <cstring>
 
 namespace parsons::cli {
@@ -39,15 +38,17 @@ void put_xor_column(std::string& out, const std::vector<double>& values, std::si
     std::string bytes;
     std::uint64_t previous = 0;
     for (std::size_t i = 0; i < count; ++i) {
-        const auto bits = std::bit_cast<std::uint64_t>(values[first + i * stride]);
+        // memcpy, not std::bit_cast: the WebAssembly build's libc++ (emscripten 3.1.6) has none.
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &values[first + i * stride], sizeof bits);
         std::uint64_t x = bits ^ previous;
         previous = bits;
         unsigned n = 0;
         for (; x != 0; x >>= 8, ++n) {
             bytes += static_cast<char>(x & 0xff);
         }
-        nibbles[i / 2] = static_cast<char>(static_cast<unsigned char>(nibbles[i / 2]) |
-                                           (n << ((i % 2) * 4)));
+        nibbles[i / 2] =
+            static_cast<char>(static_cast<unsigned char>(nibbles[i / 2]) | (n << ((i % 2) * 4)));
     }
     out += nibbles;
     out += bytes;
@@ -238,23 +239,31 @@ std::string RunTimeline::signals_text() const {
     return signals_text_;
 }
 
-std::string RunTimeline::header_text(bool with_signals) const {
+nlohmann::json RunTimeline::header_fields() const {
     nlohmann::json axes = nlohmann::json::array();
     for (std::size_t i = 0; i < cardreader::kAxisCount; ++i) {
         axes.push_back(cardreader::axis_name(static_cast<cardreader::Axis>(i)));
     }
-    const nlohmann::json rest = {{"axes", std::move(axes)},
-                                 {"signals_signature", fmt::format("{:016x}", signals_hash_)},
-                                 {"cards", cards_},
-                                 {"conditions", conditions_},
-                                 {"stop", stop_},
-                                 {"design", design_},
-                                 {"finish", finish_},
-                                 {"final_values", last_values_},
-                                 {"changes", change_t_.size()},
-                                 {"motion_records", motion_.size() / kMotionRecord},
-                                 {"truncated", truncated_}};
-    std::string text = axes::json_text(rest);
+    nlohmann::json rest = {{"axes", std::move(axes)},
+                           {"signals_signature", fmt::format("{:016x}", signals_hash_)},
+                           {"cards", cards_},
+                           {"conditions", conditions_},
+                           {"stop", stop_},
+                           {"design", design_},
+                           {"finish", finish_},
+                           {"final_values", last_values_},
+                           {"changes", change_t_.size()},
+                           {"motion_records", motion_.size() / kMotionRecord},
+                           {"truncated", truncated_}};
+    return rest;
+}
+
+std::string RunTimeline::page_header_text() const {
+    return header_fields().dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+std::string RunTimeline::header_text(bool with_signals) const {
+    std::string text = axes::json_text(header_fields());
     if (with_signals) { // {"signals":[...], then the rest's keys
         text.replace(0, 1, "{\"signals\":" + signals_text() + ",");
     }

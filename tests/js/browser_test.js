@@ -73,13 +73,14 @@ for (const n of only) {
   const browser = await launchChromium(path.join(workDir, 'profile'));
   const problems = [];
   const t = { browser, server, site, parsonsExe, workDir, SOURCE, SCREENS, problems, check, parsons, compareRun };
-  // The live page on a screen of SCREENS, watched for errors, once it says it is ready.
+  // The live page on a screen of SCREENS, watched for errors, once its first view is whole (the
+  // sample deck punched, drawn and run: body[data-settled]).
   t.open = async (screen = 'laptop', query = '') => {
     const page = await browser.newPage();
     await page.setViewport(SCREENS[screen]);
     watchPage(page, problems);
     await page.goto(`${server.url}/index.html${query}`);
-    await page.waitForSelector('#machine-status[data-state="ready"]', { timeout: 30000 });
+    await page.waitForSelector('body[data-settled="true"]', { timeout: 30000 });
     return page;
   };
   // A screenshot kept with the others: WORK_DIR/NAME.png (the docs script copies some).

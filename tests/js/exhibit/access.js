@@ -191,6 +191,6 @@ module.exports = async function access(t) {
   await again.goto(`${t.server.url}/index.html`);
   const flag = await again.evaluate(() => document.body.dataset.reducedMotion);
   check(flag === 'true', 'a page opened under prefers-reduced-motion says so from the start', String(flag));
-  await again.waitForSelector('#machine-status[data-state="ready"]', { timeout: 30000 });
+  await again.waitForSelector('body[data-settled="true"]', { timeout: 30000 });
   await again.close();
 };

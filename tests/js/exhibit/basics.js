@@ -29,7 +29,7 @@ module.exports = async function basics(t) {
 
   // ---- first view
   await page.goto(`${server.url}/index.html`);
-  await page.waitForSelector('#machine-status[data-state="ready"]', { timeout: 30000 });
+  await page.waitForSelector('body[data-settled="true"]', { timeout: 30000 });
   const readyMs = await page.evaluate(() => window.parsonsReadyAt);
   const wasmBytes = fs.statSync(path.join(site, 'parsons_web.wasm')).size;
   console.log(`first view interactive ${readyMs.toFixed(0)} ms after navigation; ` +

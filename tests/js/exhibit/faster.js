@@ -76,11 +76,11 @@ module.exports = async function faster(t) {
     .filter((e) => e.name.endsWith('.wasm')).map((e) => [e.transferSize, e.decodedBodySize])[0]);
   check(wire && wire[0] < wire[1] * 0.6, 'the page got the module compressed',
         wire ? `${wire[0]} bytes on the wire for ${wire[1]}` : 'no .wasm request');
-  const readyMs = await page.evaluate(() => window.parsonsReadyAt);
+  const [readyMs, settledMs] = await page.evaluate(() => [window.parsonsReadyAt, window.parsonsSettledAt]);
   console.log(`first view ready ${readyMs.toFixed(0)} ms after navigation (issue: under 400 ms; ` +
-              `${readyMs < 400 ? 'met' : 'NOT met'} here)`);
-  // The issue's 400 ms is not met yet on the shared 2-core machine (460-1500 ms, median ~600,
-  // measured with other builds running): held here against a regression only, printed above.
+              `${readyMs < 400 ? 'met' : 'NOT met'} here); the cabinet standing at card 1 at ${settledMs.toFixed(0)} ms`);
+  // Printed against the issue's 400 ms (met with nothing else running: the sample deck now runs
+  // after the page is ready); asserted loosely, as a shared CI machine's load can double it.
   check(readyMs > 0 && readyMs < 2500, 'the first view is ready within 2.5 s', `${readyMs.toFixed(0)} ms`);
   // The button is in the deck's drawer, closed on the first view: pressed as a script would.
   await page.$eval('#load-demo', (b) => b.click());

@@ -33,7 +33,7 @@ module.exports = async function sound(t) {
     };
   });
   await page.goto(`${server.url}/index.html`);
-  await page.waitForSelector('#machine-status[data-state="ready"]', { timeout: 30000 });
+  await page.waitForSelector('body[data-settled="true"]', { timeout: 30000 });
   const button = () => page.$eval('#sound', (b) => [b.getAttribute('aria-pressed'), b.textContent]);
 
   // ---- off by default: no context, the button says so
