@@ -139,6 +139,12 @@ TEST_CASE("Timeline: replaying the record from the initial values ends where the
     CHECK(h["changes"] == timeline.change_times().size());
     CHECK(std::is_sorted(timeline.change_times().begin(), timeline.change_times().end()));
     CHECK(h["axes"] == nlohmann::json({"table", "cross", "vertical", "swivel", "tilt"}));
+
+    // The live page's header (nlohmann's number text, not json_text's shortest) holds the same
+    // values, number for number, without the signals.
+    nlohmann::json without = h;
+    without.erase("signals");
+    CHECK(nlohmann::json::parse(timeline.page_header_text()) == without);
 }
 
 TEST_CASE("Timeline: a stop is recorded with its reason, card and lamps", "[timeline]") {
