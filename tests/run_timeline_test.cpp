@@ -188,7 +188,8 @@ TEST_CASE("Replay page: every slot filled, the run embedded whole, no name break
         INFO(slot);
         CHECK(page.find(slot) == std::string::npos);
     }
-    CHECK(page.find("parsons replay: &lt;script&gt;&lt;!--viewer--&gt;&amp;deck") != std::string::npos);
+    CHECK(page.find("parsons replay: &lt;script&gt;&lt;!--viewer--&gt;&amp;deck") !=
+          std::string::npos);
     CHECK(page.find(name) == std::string::npos);
     CHECK(page.find("id=\"viewer\"") != std::string::npos);
     CHECK(page.find("ParsonsViewer.replayFromPage(document)") != std::string::npos);
@@ -207,14 +208,14 @@ TEST_CASE("Replay page: every slot filled, the run embedded whole, no name break
     const auto from = page.find(open) + open.size();
     const auto json = nlohmann::json::parse(page.substr(from, page.find("</script>", from) - from));
     CHECK(json["changes"] == timeline.change_times().size());
-    const std::string packed = parsons::cli::packed_record(
-        timeline.change_times(), timeline.change_ids(), timeline.change_values(), timeline.motion());
+    const std::string packed =
+        parsons::cli::packed_record(timeline.change_times(), timeline.change_ids(),
+                                    timeline.change_values(), timeline.motion());
     CHECK(json["arrays"]["encoding"] == "xor1");
     CHECK(json["arrays"]["packed"] == b64(packed));
     // Packed, a few bytes a number: under a third of the raw arrays' 16 bytes a change and 64 a
     // motion record (a quarter on this run, a fifth on the demo deck).
-    CHECK(packed.size() * 3 <
-          timeline.change_times().size() * 16 + timeline.motion().size() * 8);
+    CHECK(packed.size() * 3 < timeline.change_times().size() * 16 + timeline.motion().size() * 8);
     const std::string run_open = "<script type=\"application/json\" id=\"parsons-run\">";
     const auto run_from = page.find(run_open) + run_open.size();
     const auto run =
