@@ -67,7 +67,7 @@ function timeNative(args) {
     // A fresh deck: the press runs it. The button waits in the keypunch's drawer, closed on the
     // first view, so it is pressed as the DOM presses it.
     await page.$eval('#load-demo', (b) => b.click());
-    await page.waitForFunction(() => document.querySelectorAll('#cards img').length > 50);
+    await page.waitForFunction(() => document.querySelectorAll('#cards figure').length > 50);
     await page.click('#to-end');
     await page.waitForSelector('#run-state[data-finished="true"]');
     return page.evaluate(() => window.parsonsTiming);
