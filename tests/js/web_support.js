@@ -18,6 +18,7 @@ const TYPES = {
   '.wasm': 'application/wasm',
   '.png': 'image/png',
   '.svg': 'image/svg+xml',
+  '.md': 'text/plain; charset=utf-8',
 };
 
 const COMPRESSED = new Set(['.html', '.js', '.css', '.wasm', '.svg']);

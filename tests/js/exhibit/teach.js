@@ -187,6 +187,15 @@ module.exports = async function teach(t) {
   console.log(`machine seconds a wall second: 0.01x ${r001.toFixed(4)}, 0.1x ${r01.toFixed(3)}, 1x ${r1.toFixed(2)}`);
   check(r001 > 0 && r001 <= 0.0125 && r01 > 0.05 && r01 <= 0.125 && r1 > 0.5 && r1 <= 1.25,
         'the speeds 0.01x and 0.1x play that much slower than 1x');
+
+  // ---- the docs the page links to: the tour and the patent map, served beside it
+  const docs = await page.evaluate(async () => Promise.all(['doc-tour', 'doc-patent-map'].map(async (id) => {
+    const r = await fetch(document.getElementById(id).href);
+    return [r.status, (await r.text()).split('\n')[0]];
+  })));
+  check(docs[0][0] === 200 && docs[0][1] === '# A tour: the sample deck, relay by relay' &&
+        docs[1][0] === 200 && docs[1][1] === '# Patent numerals → code',
+        'the page links to the tour and the patent map in the docs', JSON.stringify(docs));
   await page.close();
 
   // ---- the phone: the tour's caption is readable
