@@ -116,4 +116,16 @@ function pageResult(page) {
   });
 }
 
-module.exports = { startServer, launchChromium, watchPage, nativeReport, pageResult, tmp: os.tmpdir };
+// WORK_DIR/NAME: the deck `sample` punched by the native CLI, with a card-start mark put inside
+// card 2 at column 11, so that reading it fails there. Its path.
+function badCbn(exe, sample, workDir, name) {
+  const good = path.join(workDir, `${name}.good.cbn`);
+  childProcess.spawnSync(exe, ['punch', sample, '-o', good]);
+  const bytes = fs.readFileSync(good);
+  bytes[181] = 0xbf; // card 2, column 11: a card-start mark inside the card
+  const bad = path.join(workDir, name);
+  fs.writeFileSync(bad, bytes);
+  return bad;
+}
+
+module.exports = { startServer, launchChromium, watchPage, nativeReport, pageResult, badCbn, tmp: os.tmpdir };

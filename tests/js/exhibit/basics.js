@@ -6,7 +6,7 @@
 
 const fs = require('fs');
 const path = require('path');
-const { watchPage, nativeReport, pageResult } = require('../web_support');
+const { watchPage, nativeReport, pageResult, badCbn: makeBadCbn } = require('../web_support');
 
 module.exports = async function basics(t) {
   const { browser, server, site, workDir, parsonsExe, problems, check, parsons, compareRun, SOURCE } = t;
@@ -129,12 +129,7 @@ module.exports = async function basics(t) {
   await page.screenshot({ path: path.join(workDir, 'bad-card.png') });
 
   // ---- a bad card in a loaded deck file: card and column, in the CLI's words
-  const goodCbn = path.join(workDir, 'good.cbn');
-  parsons(['punch', sampleFile, '-o', goodCbn]);
-  const bytes = fs.readFileSync(goodCbn);
-  bytes[181] = 0xbf; // card 2, column 11: a card-start mark inside the card
-  const badCbn = path.join(workDir, 'bad.cbn');
-  fs.writeFileSync(badCbn, bytes);
+  const badCbn = makeBadCbn(parsonsExe, sampleFile, workDir, 'bad.cbn');
   const input = await page.$('#load-file');
   await input.uploadFile(badCbn);
   await page.waitForFunction(() => /card 2/.test(document.getElementById('deck-error').textContent));

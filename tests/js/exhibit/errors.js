@@ -8,8 +8,8 @@
 // visitor opens it before pressing its buttons.
 const openDrawer = (page) => page.evaluate(() => { const d = document.getElementById('deck-drawer'); if (d) d.open = true; });
 
-const fs = require('fs');
 const path = require('path');
+const { badCbn: makeBadCbn } = require('../web_support');
 
 const MESSAGES = ['#deck-error', '#stop-message', '#gen-output', '#fields tr.field-error', '#deck-show', '#run-state'];
 async function messages(page) {
@@ -106,12 +106,7 @@ module.exports = async function errors(t) {
   // ---- a failed load while the old deck plays: Play stops, the old deck is kept and says so
   page = await t.open('laptop');
   await openDrawer(page);
-  const goodCbn = path.join(workDir, 'err-good.cbn');
-  parsons(['punch', sampleFile, '-o', goodCbn]);
-  const bytes = fs.readFileSync(goodCbn);
-  bytes[181] = 0xbf; // card 2, column 11: a card-start mark inside the card
-  const badCbn = path.join(workDir, 'my bad deck.cbn');
-  fs.writeFileSync(badCbn, bytes);
+  const badCbn = makeBadCbn(t.parsonsExe, sampleFile, workDir, 'my bad deck.cbn');
   await page.click('.speeds [data-speed="100"]');
   await page.click('#play');
   await page.waitForFunction(() => Number(document.getElementById('machine-time').dataset.seconds) > 5);
