@@ -85,7 +85,7 @@
   let stoppedForError = false;
   function stopForError(text, failedLoad) {
     viewer.pause();
-    ran = false; // Play runs what the keypunch holds now, never silently the previous record
+    notRun(); // Play runs what the keypunch holds now, never silently the previous record
     stoppedForError = true;
     const msg = $("stop-message");
     msg.hidden = false;
@@ -111,7 +111,7 @@
   function punchListing(fromField = false, now = false) {
     FS.writeFile(LISTING, listing.value);
     punched = false;
-    ran = false;
+    notRun();
     setDownloads();
     const shown = parsons(["show", LISTING]);
     $("deck-show").textContent = shown.out;
@@ -135,6 +135,7 @@
     setDownloads();
     // A cell edited keeps its table (and the visitor's place in it); a new listing rebuilds it.
     if ($("fields").hidden === false && !fromField) buildFields();
+    runSoon();
     if (now) drawPictures(listing.value);
     else {
       // The pictures (parsons show --svg, ~1,000 <text> a card) in a task of their own after the
@@ -393,7 +394,26 @@
 
   window.parsonsTiming = {};
   const signalsCache = { signature: null, signals: null };
-  function runDeck() {
+  // The viewer no longer holds the run of the keypunch's deck; a run planned is called off.
+  function notRun() {
+    ran = false;
+    runToken++;
+    $("run-state").dataset.ran = "false";
+  }
+  // The deck just punched is run in a task after the next frame, behind its card pictures, so
+  // that the cabinet stands at its first card and Play, One card and To the end start at once
+  // (docs/web.md). Not while the viewer plays or the tour is open (the visitor is watching the
+  // record they show): then the next press runs it, as it does when pressed before this task.
+  let runToken = 0;
+  function runSoon() {
+    const token = ++runToken;
+    requestAnimationFrame(() => setTimeout(() => {
+      if (token !== runToken || ran || !punched || viewer.playing || !$("tour").hidden) return;
+      runDeck(false);
+    }, 0));
+  }
+  // pressed: a press is waiting for this run (the timing says whether the press ran the deck).
+  function runDeck(pressed = true) {
     if (!punched && !punchListing()) return false;
     const t0 = performance.now();
     const r = parsons(["run", DECK, "-q", "--report", REPORT, ...(job ? ["--job", job] : [])], true);
@@ -421,7 +441,9 @@
     viewer.load(header, arrays, report);
     window.parsonsTiming.runMs = t1 - t0;
     window.parsonsTiming.loadMs = performance.now() - t1;
+    window.parsonsTiming.runOnPress = pressed;
     ran = true;
+    $("run-state").dataset.ran = "true";
     setDownloads();
     return true;
   }
@@ -489,7 +511,7 @@
       job = null;
       setListing(text, null);
     } else return false;
-    if (!runDeck()) return true;
+    if (!runDeck(false)) return true;
     const t = Math.min(Math.max(Number(q.get("t")) || 0, 0), viewer.finish);
     if (typeof viewer.seek === "function") viewer.seek(t);
     else { viewer.reset(false); viewer.advanceTo(t); }
@@ -545,12 +567,12 @@
   status.dataset.state = "ready";
   status.textContent = "The machine is ready: the patent's example deck is in the keypunch. Press Play.";
   window.parsonsReadyAt = performance.now();
-  // The sample deck is run once the page has answered (after the next frame, behind its card
-  // pictures), so that the cabinet stands at its first card and the browser has compiled the
-  // machine's hot code fully before a visitor's first press; a press before that runs it itself.
-  // body[data-settled] says the first view is whole (the tests wait for it).
+  // The sample deck is run once the page has answered (runSoon, after the next frame, behind
+  // its card pictures), so that the cabinet stands at its first card and the browser has
+  // compiled the machine's hot code before a visitor's first press; a press before that runs it
+  // itself. body[data-settled] says the first view is whole (the tests wait for it).
   const settle = () => {
-    if (!ran) runDeck();
+    if (!ran) runDeck(false);
     window.parsonsSettledAt = performance.now();
     document.body.dataset.settled = "true";
   };

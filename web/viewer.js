@@ -164,6 +164,9 @@ const ParsonsViewer = (() => {
       this.buildPositions();
       this.$("scrub").max = String(this.finish);
       this.prepareMachine();
+      this.wholePath = null;
+      const record = arrays;
+      setTimeout(() => { if (this.a === record) this.drawWholePath(); }, 0);
       this.loaded = true;
       this.enable(true);
       this.reset(!this.quietLoad);
@@ -532,6 +535,25 @@ const ParsonsViewer = (() => {
       const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
       this.toPx = (x, y) => [w / 2 + (x - cx) * scale, hgt / 2 - (y - cy) * scale];
       this.scale = scale;
+      // Every recorded point in pixels, once a record, and which of them the picture draws:
+      // those a third of a pixel or more from the last drawn (a picture cannot show the others;
+      // the point the tool stands at is always drawn as well).
+      const n = m.length / 8;
+      const px = new Float64Array(2 * n);
+      const drawn = new Uint8Array(n);
+      let lx = 0, ly = 0;
+      for (let k = 0; k < n; k++) {
+        const x = w / 2 + (m[k * 8 + 1] - cx) * scale, y = hgt / 2 - (m[k * 8 + 2] - cy) * scale;
+        px[2 * k] = x;
+        px[2 * k + 1] = y;
+        if (k === 0 || Math.abs(x - lx) + Math.abs(y - ly) >= 0.33) {
+          drawn[k] = 1;
+          lx = x;
+          ly = y;
+        }
+      }
+      this.pathPx = px;
+      this.pathDrawn = drawn;
       if (!this.layers || this.layers[0].width !== w || this.layers[0].height !== hgt) {
         this.layers = [0, 1].map(() => {
           const c = document.createElement("canvas");
@@ -577,40 +599,53 @@ const ParsonsViewer = (() => {
       }
     }
 
+    // The path from recorded point `from` to `last` onto the two layers: the band the cutter
+    // sweeps and its centre, through the points prepareMachine chose.
+    strokePath(layers, from, last) {
+      const [band, centre] = layers.map((c) => c.getContext("2d"));
+      const r = this.h.design ? this.h.design.cutter_radius_in || 0 : 0;
+      const px = this.pathPx, drawn = this.pathDrawn;
+      const stroke = (g) => {
+        g.beginPath();
+        g.moveTo(px[2 * from], px[2 * from + 1]);
+        for (let k = from + 1; k < last; k++) if (drawn[k]) g.lineTo(px[2 * k], px[2 * k + 1]);
+        g.lineTo(px[2 * last], px[2 * last + 1]);
+        g.stroke();
+      };
+      if (r > 0) {
+        band.strokeStyle = "#b9d3e6";
+        band.lineWidth = 2 * r * this.scale;
+        band.lineCap = band.lineJoin = "round";
+        stroke(band);
+      }
+      centre.strokeStyle = "#0b3d66";
+      centre.lineWidth = 1.2;
+      stroke(centre);
+    }
+
+    // The whole path, drawn once a record in a task of its own after the load (this.load): a
+    // jump to the end (To the end, the slider at its end, a shared instant at the end) copies it
+    // instead of stroking every point in the press. The same strokes as drawing it as it runs.
+    drawWholePath() {
+      const records = this.a.motion.length / 8;
+      if (this.wholePath || records < 2) return;
+      this.wholePath = this.layers.map((l) => {
+        const c = this.doc.createElement("canvas");
+        c.width = l.width;
+        c.height = l.height;
+        return c;
+      });
+      this.strokePath(this.wholePath, 0, records - 1);
+    }
+
     drawMachine() {
       const m = this.a.motion;
-      const [band, centre] = this.layers.map((c) => c.getContext("2d"));
       const r = this.h.design ? this.h.design.cutter_radius_in || 0 : 0;
       const from = Math.max(0, this.drawnMotion - 1);
       if (this.mi > from + 1) {
-        // The recorded points from the last drawn on, leaving out those within a third of a
-        // pixel of the one before (a picture cannot show them; the last always stays).
-        const pts = [];
-        let [lx, ly] = this.toPx(m[from * 8 + 1], m[from * 8 + 2]);
-        pts.push(lx, ly);
-        for (let k = from + 1; k < this.mi; k++) {
-          const [x, y] = this.toPx(m[k * 8 + 1], m[k * 8 + 2]);
-          if (Math.abs(x - lx) + Math.abs(y - ly) >= 0.33 || k === this.mi - 1) {
-            pts.push(x, y);
-            lx = x;
-            ly = y;
-          }
-        }
-        const stroke = (g) => {
-          g.beginPath();
-          g.moveTo(pts[0], pts[1]);
-          for (let i = 2; i < pts.length; i += 2) g.lineTo(pts[i], pts[i + 1]);
-          g.stroke();
-        };
-        if (r > 0) {
-          band.strokeStyle = "#b9d3e6";
-          band.lineWidth = 2 * r * this.scale;
-          band.lineCap = band.lineJoin = "round";
-          stroke(band);
-        }
-        centre.strokeStyle = "#0b3d66";
-        centre.lineWidth = 1.2;
-        stroke(centre);
+        if (from === 0 && this.mi === m.length / 8 && this.wholePath) {
+          this.layers.forEach((l, i) => l.getContext("2d").drawImage(this.wholePath[i], 0, 0));
+        } else this.strokePath(this.layers, from, this.mi - 1);
         this.drawnMotion = this.mi;
       }
       const canvas = this.$("from-above");
@@ -691,7 +726,6 @@ const ParsonsViewer = (() => {
         stopMsg.hidden = !stop;
         if (stop) stopMsg.textContent = `parsons: machine stop: ${stop.reason}: ${stop.message}` + (stop.lamps && stop.lamps.length ? ` (lamps: ${stop.lamps.join(", ")})` : "");
         if (this.h.truncated) stopMsg.hidden = false, stopMsg.textContent += " The deck is longer than the page records: the playback ends early; the report is whole.";
-        if (this.onFinished) this.onFinished();
       } else {
         state.textContent = this.playing ? "running" : this.t > 0 ? "paused" : "ready";
         state.dataset.reason = "";
@@ -708,6 +742,8 @@ const ParsonsViewer = (() => {
           : this.mi > 0 && axis === "tilt" ? `${m[k + 7].toFixed(3)}°` : "";
       });
       this.drawMachine();
+      // The finished view is whole: the cabinet, the positions and the picture drawn.
+      if (this.finished && this.onFinished) this.onFinished();
     }
   }
 
