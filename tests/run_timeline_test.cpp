@@ -183,7 +183,8 @@ TEST_CASE("Replay page: every slot filled, the run embedded whole, no name break
         timeline, nlohmann::json{{"status", "completed"}, {"deck", typed}}, typed);
     CHECK(page.find("/home/visitor") == std::string::npos);
     CHECK(page.find("my decks") == std::string::npos);
-    for (const char* slot : {"<!--title-->", "/*exhibit-css*/", "<!--viewer-->", "/*viewer-js*/",
+    for (const char* slot : {"<!--title-->", "/*exhibit-css*/", "<!--viewer-->", "/*parts-js*/",
+                             "/*cabinet-js*/", "/*viewer-js*/", "/*tour-js*/", "/*sound-js*/",
                              "<!--timeline-json-->", "<!--run-json-->"}) {
         INFO(slot);
         CHECK(page.find(slot) == std::string::npos);

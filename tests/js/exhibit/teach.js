@@ -127,12 +127,20 @@ module.exports = async function teach(t) {
       const v = window.parsonsViewer;
       const k = v.ci - 1;
       const sig = v.h.signals[v.a.change_id[k]];
-      return { ci: v.ci, t: v.t, changeT: v.a.change_t[k], component: sig.component, value: v.a.change_v[k],
-               shown: v.values[v.a.change_id[k]], note: document.getElementById('event-note').textContent };
+      // The panel's part of that signal as drawn: a dial's position, a relay's or lamp's light.
+      const part = document.querySelector(`#panel [data-signal="${v.a.change_id[k]}"]`);
+      const drawn = !part ? null : part.classList.contains('dial') ? Number(part.dataset.value)
+        : part.classList.contains('on') ? 'on' : 'off';
+      const value = v.a.change_v[k];
+      return { ci: v.ci, t: v.t, changeT: v.a.change_t[k], component: sig.component, value,
+               shown: v.values[v.a.change_id[k]], note: document.getElementById('event-note').textContent,
+               drawn, want: part && part.classList.contains('dial') ? value : value ? 'on' : 'off' };
     });
     check(after.ci === before + 1 && after.t === after.changeT && after.shown === after.value &&
+          after.drawn === after.want &&
           after.note.includes(after.component) && after.note.endsWith(`→ ${after.value}`),
-          `one relay event applies exactly the next change (${i + 1})`, `${before} -> ${after.ci}: ${after.note}`);
+          `one relay event applies exactly the next change and the panel draws it (${i + 1})`,
+          `${before} -> ${after.ci}: ${after.note}; drawn ${after.drawn}, recorded ${after.want}`);
   }
 
   // ---- the time slider: the middle of the record, forwards and then back from the end, stands
@@ -169,6 +177,30 @@ module.exports = async function teach(t) {
     return [Number(document.getElementById('scrub').value), window.parsonsViewer.t];
   });
   check(Math.abs(follows[0] - follows[1]) < 1e-6 && follows[1] > mid, 'the slider follows playback', JSON.stringify(follows));
+  // Played frame by frame at 10x (each frame's changes drawn, not the whole panel at once as
+  // after a long jump), every part of the panel stands where the recorded changes say.
+  const played = await page.evaluate(async () => {
+    const ci0 = window.parsonsViewer.ci;
+    document.querySelector('.speeds [data-speed="10"]').click();
+    document.getElementById('play').click();
+    await new Promise((r) => setTimeout(r, 400));
+    document.getElementById('pause').click();
+    const v = window.parsonsViewer;
+    const last = new Map();
+    for (let k = 0; k < v.a.change_t.length && v.a.change_t[k] <= v.t; k++) last.set(v.a.change_id[k], v.a.change_v[k]);
+    const wrong = [];
+    let parts = 0;
+    for (const d of document.querySelectorAll('#panel [data-signal]')) {
+      const id = Number(d.dataset.signal);
+      const want = last.has(id) ? last.get(id) : v.h.signals[id].initial;
+      const drawn = d.classList.contains('dial') ? Number(d.dataset.value) === want : d.classList.contains('on') === (want !== 0);
+      parts++;
+      if (!drawn) wrong.push(`${d.closest('[data-scope]').dataset.scope}.${d.dataset.name || d.closest('[data-bank]').dataset.bank}`);
+    }
+    return { wrong, parts, changed: v.ci - ci0 };
+  });
+  check(played.wrong.length === 0 && played.changed > 0,
+        'played frame by frame, every part of the panel stands at the recorded state', JSON.stringify(played).slice(0, 300));
 
   // ---- speeds below 1x: machine time over a wall-clock interval
   const rate = async (speed, ms) => {
