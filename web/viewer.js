@@ -1,12 +1,11 @@
 // The viewer of the exhibit page (web/index.html) and of `parsons run --html`: it plays a run
-// that the C++ emulator recorded (cli/run_timeline.hpp) on machine time. It computes nothing
-// of the machine: it applies the recorded signal changes in order and draws them, the relays
-// as lamps, the stepping switches as dials, and the recorded positions as the cutter's path.
+// that the C++ emulator recorded (outputs/replay/run_timeline.hpp) on machine time. It computes
+// nothing of the machine: it applies the recorded signal changes in order and draws them, on
+// the cabinet's panel (web/cabinet.js: relays as lamps, stepping switches as dials) and as the
+// machine from above (the recorded positions as the cutter's path).
 "use strict";
 
 const ParsonsViewer = (() => {
-
-
   function b64bytes(text) {
     const bin = atob(text);
     const bytes = new Uint8Array(bin.length);
