@@ -238,6 +238,19 @@ module.exports = async function teach(t) {
   check(box[0] >= 0 && box[1] <= 390, 'the tour\'s caption fits the phone', JSON.stringify(box));
   await phone.$eval('#tour', (e) => e.scrollIntoView());
   await t.shot(phone, 'tour-phone');
+  // A deck loaded while the tour is open is not run behind it: the tour's instant and record stay
+  // until the visitor's next press.
+  const atStop = await phone.evaluate(() => [window.parsonsViewer.t, window.parsonsViewer.finish]);
+  await phone.$eval('#load-demo', (b) => b.click());
+  await phone.waitForFunction(() => document.querySelectorAll('#cards figure').length > 50);
+  await new Promise((r) => setTimeout(r, 300));
+  const kept = await phone.evaluate(() => ({
+    t: window.parsonsViewer.t, finish: window.parsonsViewer.finish,
+    stop: document.getElementById('tour').dataset.stop, open: !document.getElementById('tour').hidden,
+    ran: document.getElementById('run-state').dataset.ran,
+  }));
+  check(kept.open && kept.stop === '1' && kept.t === atStop[0] && kept.finish === atStop[1] && kept.ran === 'false',
+        'a deck loaded while the tour is open leaves the tour on its record until the next press', JSON.stringify(kept));
   await phone.close();
 
   // ---- the --html replay carries the tour and the parts' stories
