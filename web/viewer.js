@@ -331,12 +331,14 @@ const ParsonsViewer = (() => {
       for (const p of design) grow(p[0], p[1]);
       if (!isFinite(x0)) { x0 = 0; x1 = 1; y0 = 0; y1 = 1; }
       const r = this.h.design ? this.h.design.cutter_radius_in || 0 : 0;
+      this.radius = r; // the cutter's, inches (0: no design, no band)
       const pad = Math.max(0.1, r * 1.5, 0.05 * Math.max(x1 - x0, y1 - y0));
       const canvas = this.$("from-above");
       const w = canvas.width, hgt = canvas.height;
       const scale = Math.min((w - 20) / (x1 - x0 + 2 * pad), (hgt - 20) / (y1 - y0 + 2 * pad));
       const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
-      this.toPx = (x, y) => [w / 2 + (x - cx) * scale, hgt / 2 - (y - cy) * scale];
+      const pxX = (x) => w / 2 + (x - cx) * scale, pxY = (y) => hgt / 2 - (y - cy) * scale;
+      this.toPx = (x, y) => [pxX(x), pxY(y)];
       this.scale = scale;
       // Every recorded point in pixels, once a record, and which of them the picture draws:
       // those a third of a pixel or more from the last drawn (a picture cannot show the others;
@@ -346,7 +348,7 @@ const ParsonsViewer = (() => {
       const drawn = new Uint8Array(n);
       let lx = 0, ly = 0;
       for (let k = 0; k < n; k++) {
-        const x = w / 2 + (m[k * 8 + 1] - cx) * scale, y = hgt / 2 - (m[k * 8 + 2] - cy) * scale;
+        const x = pxX(m[k * 8 + 1]), y = pxY(m[k * 8 + 2]);
         px[2 * k] = x;
         px[2 * k + 1] = y;
         if (k === 0 || Math.abs(x - lx) + Math.abs(y - ly) >= 0.33) {
@@ -406,7 +408,7 @@ const ParsonsViewer = (() => {
     // sweeps and its centre, through the points prepareMachine chose.
     strokePath(layers, from, last) {
       const [band, centre] = layers.map((c) => c.getContext("2d"));
-      const r = this.h.design ? this.h.design.cutter_radius_in || 0 : 0;
+      const r = this.radius;
       const px = this.pathPx, drawn = this.pathDrawn;
       const stroke = (g) => {
         g.beginPath();
@@ -443,7 +445,7 @@ const ParsonsViewer = (() => {
 
     drawMachine() {
       const m = this.a.motion;
-      const r = this.h.design ? this.h.design.cutter_radius_in || 0 : 0;
+      const r = this.radius;
       const from = Math.max(0, this.drawnMotion - 1);
       if (this.mi > from + 1) {
         if (from === 0 && this.mi === m.length / 8 && this.wholePath) {

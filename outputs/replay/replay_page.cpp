@@ -39,6 +39,11 @@ std::string_view between(std::string_view text, std::string_view begin, std::str
     return text.substr(from + begin.size(), to - from - begin.size());
 }
 
+// A path's last part: the page names a deck by its file name only.
+std::string file_name(const std::string& path) {
+    return std::filesystem::path(path).filename().string();
+}
+
 void fill(std::string& page, std::string_view slot, std::string_view text) {
     const auto at = page.find(slot);
     if (at == std::string::npos) {
@@ -53,14 +58,14 @@ std::string replay_page(const RunTimeline& timeline, const nlohmann::json& repor
                         const std::string& deck_path) {
     // The deck's file name only: the page is made to be passed on, and the folders it was run
     // from (a home directory, a build tree) are nobody's business (issue 31, item 4).
-    const std::string deck_name = std::filesystem::path(deck_path).filename().string();
+    const std::string deck_name = file_name(deck_path);
     std::string page(web_assets::replay_html);
     // The slots are filled last to first in the template, so no filled text is searched.
     nlohmann::json run = {{"deck", deck_name}, {"report", report}};
     auto& embedded = run["report"];
     if (const auto deck = embedded.find("deck"); // the report names it as typed
         embedded.is_object() && deck != embedded.end() && deck->is_string()) {
-        *deck = std::filesystem::path(deck->get<std::string>()).filename().string();
+        *deck = file_name(deck->get<std::string>());
     }
     fill(page, "/*sound-js*/", web_assets::sound_js);
     fill(page, "<!--run-json-->", script_safe(axes::json_text(run)));
