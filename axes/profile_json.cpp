@@ -2,6 +2,7 @@
 #include "axes/profile_values.hpp"
 
 #include "axes/json_text.hpp"
+#include "axes/profile_relations.hpp"
 #include "axes/screw_error_table.hpp"
 #include "axes/spindle_json.hpp"
 
@@ -17,73 +18,25 @@ namespace {
 
 using nlohmann::json;
 using profile_values::flag;
-using profile_values::number_in;
-using profile_values::whole_in;
+using profile_values::number;
+using profile_values::whole;
 
-// A screw-error table a real screw can have: positions along a screw of a few feet, errors of
-// thousandths left after compensating cam 160. Far beyond, the interpolation overflows.
-constexpr double kScrewPositionLimitIn = 1000;
-constexpr double kScrewErrorLimitIn = 1;
-
-// Machine time is a double. Durations of a minute at most, speeds of 0.1 to 1000 in/min and
-// accelerations of 0.001 in/s2 or more keep a deck of 9999 cards under 1e9 s, where it still
-// resolves a microsecond; at 1e15 s it cannot tell one impulse from the next.
-constexpr double kMaxDurationS = 60;
-constexpr double kMinSpeedInPerMin = 0.1;
-constexpr double kMaxSpeedInPerMin = 1000;
-constexpr double kMinAccelerationInPerS2 = 0.001;
-// Backlash in nut 78: a worn nut might have a few thousandths; a tenth of an inch is no nut.
-constexpr double kMostBacklashIn = 0.1;
-
-double positive(const json& j, const std::string& key) {
-    if (!j.is_number()) {
-        throw ProfileError(fmt::format("{}: expected a number", key));
-    }
-    const double v = j.get<double>();
-    if (!(v > 0) || !std::isfinite(v)) {
-        throw ProfileError(fmt::format("{}: must be a positive number, not {}", key, j.dump()));
-    }
-    return v;
-}
-
-double within(const json& j, const std::string& key, double least, double most) {
-    const double v = positive(j, key);
-    if (v < least || v > most) {
-        throw ProfileError(
-            fmt::format("{}: must lie between {} and {}, not {}", key, least, most, j.dump()));
-    }
-    return v;
-}
-
-double duration(const json& j, const std::string& key) {
-    return within(j, key, 0, kMaxDurationS);
-}
-
-double finite(const json& j, const std::string& key) {
-    if (!j.is_number() || !std::isfinite(j.get<double>())) {
-        throw ProfileError(fmt::format("{}: expected a number", key));
-    }
-    return j.get<double>();
-}
-
-ErrorPoints error_points(const json& value, const std::string& k) {
+// [[position, error], ...] of the table `table` ("lead_error_in") of an axis, at `k`.
+ErrorPoints error_points(const json& value, const std::string& table, const std::string& k) {
     if (!value.is_array()) {
         throw ProfileError(fmt::format("{}: expected [[position, error], ...]", k));
     }
     ErrorPoints points;
-    for (const auto& pair : value) {
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const json& pair = value.at(i);
         if (!pair.is_array() || pair.size() != 2) {
             throw ProfileError(fmt::format("{}: expected [[position, error], ...]", k));
         }
-        const double x = finite(pair.at(0), k);
-        const double e = finite(pair.at(1), k);
+        const std::string at = fmt::format("{}[{}]", k, i);
+        const double x = number(pair.at(0), "axes.*." + table + "[][0]", at + "[0]");
+        const double e = number(pair.at(1), "axes.*." + table + "[][1]", at + "[1]");
         if (!points.empty() && x <= points.back().first) {
             throw ProfileError(fmt::format("{}: positions must increase", k));
-        }
-        if (std::abs(x) > kScrewPositionLimitIn || std::abs(e) > kScrewErrorLimitIn) {
-            throw ProfileError(fmt::format(
-                "{}: [{}, {}]: positions must lie within +-{} in and errors within +-{} in", k, x,
-                e, kScrewPositionLimitIn, kScrewErrorLimitIn));
         }
         points.emplace_back(x, e);
     }
@@ -102,18 +55,13 @@ json points_json(const ErrorPoints& points) {
 bool apply_chain_key(const std::string& key, const json& value, AxisProfile& a,
                      const std::string& k) {
     if (key == "lead_error_in") {
-        a.lead_error_in = error_points(value, k);
+        a.lead_error_in = error_points(value, key, k);
     } else if (key == "instrument_error_in") {
-        a.instrument_error_in = error_points(value, k);
+        a.instrument_error_in = error_points(value, key, k);
     } else if (key == "cam_160_in") {
-        a.cam_160_in = error_points(value, k);
+        a.cam_160_in = error_points(value, key, k);
     } else if (key == "backlash_in") {
-        if (!value.is_number() || !(value.get<double>() >= 0) ||
-            value.get<double>() > kMostBacklashIn) {
-            throw ProfileError(fmt::format("{}: must be a number from 0 to {} in, not {}", k,
-                                           kMostBacklashIn, value.dump()));
-        }
-        a.backlash_in = value.get<double>();
+        a.backlash_in = number(value, "axes.*.backlash_in", k);
     } else {
         return false;
     }
@@ -133,76 +81,47 @@ void apply_axis(const json& j, AxisProfile& a, const std::string& where) {
     }
     for (const auto& [key, value] : j.items()) {
         const std::string k = where + "." + key;
+        const std::string row = "axes.*." + key; // the key's row in axes/profile_keys.cpp
         if (key == "speed_in_per_min") {
             if (!value.is_array() || value.size() != 3) {
                 throw ProfileError(fmt::format("{}: expected three speeds [1, 2, 3]", k));
             }
             for (std::size_t i = 0; i < 3; ++i) {
-                a.speed_in_per_min.at(i) = within(value.at(i), fmt::format("{}[{}]", k, i),
-                                                  kMinSpeedInPerMin, kMaxSpeedInPerMin);
+                a.speed_in_per_min.at(i) =
+                    number(value.at(i), row + "[]", fmt::format("{}[{}]", k, i));
             }
         } else if (key == "acceleration_in_per_s2") {
-            a.acceleration_in_per_s2 = within(value, k, kMinAccelerationInPerS2, HUGE_VAL);
+            a.acceleration_in_per_s2 = number(value, row, k);
         } else if (key == "braking_in_per_s2") {
-            a.braking_in_per_s2 = within(value, k, kMinAccelerationInPerS2, HUGE_VAL);
+            a.braking_in_per_s2 = number(value, row, k);
         } else if (key == "travel_min_in") {
-            a.travel_min_in = finite(value, k);
+            a.travel_min_in = number(value, row, k);
         } else if (key == "travel_max_in") {
-            a.travel_max_in = finite(value, k);
+            a.travel_max_in = number(value, row, k);
         } else if (key == "soft_limits_in") {
             if (value.is_null()) {
                 a.soft_limits = false;
             } else if (value.is_array() && value.size() == 2) {
                 a.soft_limits = true;
-                a.soft_min_in = finite(value.at(0), k + "[0]");
-                a.soft_max_in = finite(value.at(1), k + "[1]");
+                a.soft_min_in = number(value.at(0), row + "[0]", k + "[0]");
+                a.soft_max_in = number(value.at(1), row + "[1]", k + "[1]");
             } else {
                 throw ProfileError(fmt::format("{}: expected [min, max] in inches, or null", k));
             }
         } else if (key == "screw_lead_in_per_rev") {
-            a.screw_lead_in_per_rev = positive(value, k);
+            a.screw_lead_in_per_rev = number(value, row, k);
         } else if (key == "pivot_to_screw_in") {
-            a.pivot_to_screw_in = positive(value, k);
+            a.pivot_to_screw_in = number(value, row, k);
         } else if (key == "level_in") {
-            a.level_in = finite(value, k);
+            a.level_in = number(value, row, k);
         } else if (key == "screw_error_in") {
-            a.screw_error_in = error_points(value, k);
+            a.screw_error_in = error_points(value, key, k);
         } else if (!apply_chain_key(key, value, a, k) && key != "name") {
             throw ProfileError(fmt::format("{}: unknown key", k));
         }
     }
-    if (a.travel_min_in >= a.travel_max_in) {
-        throw ProfileError(fmt::format("{}: travel_min_in must be below travel_max_in", where));
-    }
-    if (a.soft_limits && a.soft_min_in >= a.soft_max_in) {
-        throw ProfileError(
-            fmt::format("{}: soft_limits_in: the minimum must be below the maximum", where));
-    }
-    // The part's position must grow with the screw's (1 + the error's slope > 0), or a limit
-    // could be passed and found again further on: for each table, and for what the measuring
-    // chain makes of them together, whichever chain counts and whichever screw cam 160
-    // corrects (lead screw 22, or shaft 74 under cam_160_on_instrument_shaft).
-    const std::array<std::pair<const char*, ScrewErrorTable>, 6> tables = {{
-        {"screw_error_in", ScrewErrorTable(a.screw_error_in)},
-        {"lead_error_in", ScrewErrorTable(a.lead_error_in)},
-        {"lead_error_in - cam_160_in",
-         ScrewErrorTable::sum({{&a.lead_error_in, 1}, {&a.cam_160_in, -1}})},
-        {"screw_error_in + instrument_error_in",
-         ScrewErrorTable::sum({{&a.screw_error_in, 1}, {&a.instrument_error_in, 1}})},
-        {"screw_error_in + instrument_error_in - cam_160_in",
-         ScrewErrorTable::sum(
-             {{&a.screw_error_in, 1}, {&a.instrument_error_in, 1}, {&a.cam_160_in, -1}})},
-        {"screw_error_in + lead_error_in - cam_160_in",
-         ScrewErrorTable::sum(
-             {{&a.screw_error_in, 1}, {&a.lead_error_in, 1}, {&a.cam_160_in, -1}})},
-    }};
-    for (const auto& [what, table] : tables) {
-        if (auto x = table.falls_after()) {
-            throw ProfileError(fmt::format("{}: {}: the error falls faster than the screw "
-                                           "advances after {} in",
-                                           where, what, *x));
-        }
-    }
+    // The relations between an axis's keys are checked with the others, once every key is
+    // read (axes/profile_relations.cpp).
 }
 
 json axis_json(const AxisProfile& a) {
@@ -241,7 +160,7 @@ void apply_actions(ActionTimes& a, const json& j) {
         if (field == nullptr) {
             throw ProfileError(fmt::format("{}: unknown key", k));
         }
-        *field = duration(value, k);
+        *field = number(value, k, k);
     }
 }
 
@@ -257,17 +176,14 @@ std::vector<Tool> tools_from(const json& j) {
         if (!t.is_object() || !t.contains("number") || !t.contains("radius_in") || t.size() != 2) {
             throw ProfileError(fmt::format("{}: expected {{\"number\": N, \"radius_in\": R}}", k));
         }
-        const json& n = t.at("number");
-        if (!n.is_number_integer() || n.get<std::int64_t>() < 1 || n.get<std::int64_t>() > 99) {
-            throw ProfileError(fmt::format("{}.number: expected a tool number 1..99", k));
-        }
-        const int number = n.get<int>();
+        const int number = static_cast<int>(whole(t.at("number"), "tools[].number", k + ".number"));
         for (const Tool& other : tools) {
             if (other.number == number) {
                 throw ProfileError(fmt::format("{}.number: tool {} is listed twice", k, number));
             }
         }
-        tools.push_back(Tool{number, positive(t.at("radius_in"), k + ".radius_in")});
+        tools.push_back(Tool{number, profile_values::number(t.at("radius_in"), "tools[].radius_in",
+                                                            k + ".radius_in")});
     }
     return tools;
 }
@@ -290,11 +206,7 @@ bool apply_reading(MachineProfile& p, const std::string& key, const json& value)
     } else if (key == "tools") {
         p.tools = tools_from(value);
     } else if (key == "first_tool") {
-        if (!value.is_number_integer() || value.get<std::int64_t>() < 1 ||
-            value.get<std::int64_t>() > 99) {
-            throw ProfileError("first_tool: expected a tool number 1..99");
-        }
-        p.first_tool = value.get<int>();
+        p.first_tool = static_cast<int>(whole(value, key, key));
     } else {
         return false;
     }
@@ -324,54 +236,45 @@ void put_readings(json& j, const MachineProfile& p) {
 
 // ---- Press synchronisation (EP 0436887; axes/press.hpp, docs/press-sync.md) ----
 
-// The press's numbers: key, field, range (ends open or closed).
+// The press's numbers: key and field (their ranges: "press.KEY" in axes/profile_keys.cpp).
 struct PressNumber {
     const char* key;
     double PressProfile::*field;
-    double least;
-    bool least_open;
-    double most;
-    bool most_open;
 };
-using profile_values::kNoEnd;
 const std::array<PressNumber, 11> kPressNumbers = {{
-    {"strokes_per_min", &PressProfile::strokes_per_min, 0.1, false, 120, false},
-    {"start_angle_deg", &PressProfile::start_angle_deg, 0, false, 360, true},
-    {"stroke_in", &PressProfile::stroke_in, 0, true, kNoEnd, false},
-    {"rod_in", &PressProfile::rod_in, 0, true, kNoEnd, false},
-    {"pressing_from_deg", &PressProfile::pressing_from_deg, 0, false, 360, false},
-    {"pressing_to_deg", &PressProfile::pressing_to_deg, 0, false, 360, false},
-    {"pressing_slowdown", &PressProfile::pressing_slowdown, 0, false, 0.9, false},
-    {"drift_per_cycle", &PressProfile::drift_per_cycle, -0.1, false, 0.1, false},
-    {"variation", &PressProfile::variation, 0, false, 0.5, false},
-    {"change_angle_deg", &PressProfile::change_angle_deg, 0, false, 360, true},
-    {"change_factor", &PressProfile::change_factor, 0, true, 4, false},
+    {"strokes_per_min", &PressProfile::strokes_per_min},
+    {"start_angle_deg", &PressProfile::start_angle_deg},
+    {"stroke_in", &PressProfile::stroke_in},
+    {"rod_in", &PressProfile::rod_in},
+    {"pressing_from_deg", &PressProfile::pressing_from_deg},
+    {"pressing_to_deg", &PressProfile::pressing_to_deg},
+    {"pressing_slowdown", &PressProfile::pressing_slowdown},
+    {"drift_per_cycle", &PressProfile::drift_per_cycle},
+    {"variation", &PressProfile::variation},
+    {"change_angle_deg", &PressProfile::change_angle_deg},
+    {"change_factor", &PressProfile::change_factor},
 }};
-// A stop or change this many revolutions on is beyond any run (and 360 x it stays exact).
-constexpr std::int64_t kMostCycles = 1000000000;
-// 360 x pulses_per_degree must fit the four decades of position register 14 (<= 9999).
-constexpr std::int64_t kMostPulsesPerDegree = 27;
 
 void apply_press_key(PressProfile& p, const std::string& key, const json& value,
                      const std::string& k) {
     for (const PressNumber& n : kPressNumbers) {
         if (key == n.key) {
-            p.*n.field = number_in(value, k, n.least, n.least_open, n.most, n.most_open);
+            p.*n.field = number(value, k, k);
             return;
         }
     }
     if (key == "pulses_per_degree") {
-        p.pulses_per_degree = static_cast<int>(whole_in(value, k, 1, kMostPulsesPerDegree));
+        p.pulses_per_degree = static_cast<int>(whole(value, k, k));
     } else if (key == "reverse") {
         p.reverse = flag(value, k);
     } else if (key == "seed") {
-        p.seed = static_cast<unsigned>(whole_in(value, k, 0, 4294967295LL));
+        p.seed = static_cast<unsigned>(whole(value, k, k));
     } else if (key == "change_cycle") {
-        p.change_cycle = static_cast<int>(whole_in(value, k, 0, kMostCycles));
+        p.change_cycle = static_cast<int>(whole(value, k, k));
     } else if (key == "stop_cycle") {
-        p.stop_cycle = static_cast<int>(whole_in(value, k, 0, kMostCycles));
+        p.stop_cycle = static_cast<int>(whole(value, k, k));
     } else if (key == "stop_angle_deg") {
-        p.stop_angle_deg = number_in(value, k, 0, false, 360, true);
+        p.stop_angle_deg = number(value, k, k);
     } else {
         throw ProfileError(fmt::format("{}: unknown key", k));
     }
@@ -383,16 +286,6 @@ void apply_press(PressProfile& p, const json& j) {
     }
     for (const auto& [key, value] : j.items()) {
         apply_press_key(p, key, value, "press." + key);
-    }
-    if (!(p.rod_in > p.stroke_in / 2)) {
-        throw ProfileError(fmt::format("press.rod_in: the connecting rod ({} in) must be longer "
-                                       "than the crank throw, stroke_in / 2 ({} in)",
-                                       p.rod_in, p.stroke_in / 2));
-    }
-    if (!(p.pressing_from_deg < p.pressing_to_deg)) {
-        throw ProfileError(fmt::format("press.pressing_from_deg: must be below pressing_to_deg "
-                                       "({} is not below {})",
-                                       p.pressing_from_deg, p.pressing_to_deg));
     }
 }
 
@@ -418,20 +311,16 @@ void apply_sync_drive(SyncDrive& d, const json& j) {
     for (const auto& [key, value] : j.items()) {
         const std::string k = "sync_drive." + key;
         if (key == "max_in_per_min") {
-            d.max_in_per_min = within(value, k, kMinSpeedInPerMin, kMaxSpeedInPerMin);
+            d.max_in_per_min = number(value, k, k);
         } else if (key == "acceleration_in_per_s2") {
-            d.acceleration_in_per_s2 = within(value, k, kMinAccelerationInPerS2, HUGE_VAL);
+            d.acceleration_in_per_s2 = number(value, k, k);
         } else if (key == "position_gain_per_s") {
-            d.position_gain_per_s = within(value, k, 0, 100);
+            d.position_gain_per_s = number(value, k, k);
         } else {
             throw ProfileError(fmt::format("{}: unknown key", k));
         }
     }
 }
-
-// The longest processor 17 may wait for the crank: an hour (a press of 0.1 strokes a minute
-// takes ten minutes a revolution).
-constexpr double kMostSyncTimeoutS = 3600;
 
 bool apply_press_sync(MachineProfile& p, const std::string& key, const json& value) {
     if (key == "press_sync") {
@@ -441,10 +330,9 @@ bool apply_press_sync(MachineProfile& p, const std::string& key, const json& val
     } else if (key == "sync_drive") {
         apply_sync_drive(p.sync_drive, value);
     } else if (key == "speed_sample_s") {
-        // A reference block from a millisecond (the relays' own time) to a second.
-        p.speed_sample_s = within(value, key, 0.001, 1.0);
+        p.speed_sample_s = number(value, key, key);
     } else if (key == "sync_timeout_s") {
-        p.sync_timeout_s = within(value, key, 0, kMostSyncTimeoutS);
+        p.sync_timeout_s = number(value, key, key);
     } else {
         return false;
     }
@@ -510,30 +398,30 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
                 apply_axis(settings, *it, "axes." + axis);
             }
         } else if (key == "reader_cycle_s") {
-            p.reader_cycle_s = duration(value, key);
+            p.reader_cycle_s = number(value, key, key);
         } else if (key == "first_bank_s") {
-            p.first_bank_s = duration(value, key);
+            p.first_bank_s = number(value, key, key);
         } else if (key == "second_bank_s") {
-            p.second_bank_s = duration(value, key);
+            p.second_bank_s = number(value, key, key);
         } else if (key == "feed_gap_s") {
-            p.feed_gap_s = duration(value, key);
+            p.feed_gap_s = number(value, key, key);
         } else if (key == "ribbon_feed") {
             if (!value.is_boolean()) {
                 throw ProfileError("ribbon_feed: expected true or false");
             }
             p.ribbon_feed = value.get<bool>();
         } else if (key == "relay_operate_s") {
-            p.relay_operate_s = duration(value, key);
+            p.relay_operate_s = number(value, key, key);
         } else if (key == "relay_release_s") {
-            p.relay_release_s = duration(value, key);
+            p.relay_release_s = number(value, key, key);
         } else if (key == "stepping_switch_step_s") {
-            p.stepping_switch_step_s = duration(value, key);
+            p.stepping_switch_step_s = number(value, key, key);
         } else if (key == "max_stepping_rate_per_s") {
-            p.max_stepping_rate_per_s = positive(value, key);
+            p.max_stepping_rate_per_s = number(value, key, key);
         } else if (key == "delay_258_s") {
-            p.delay_258_s = duration(value, key);
+            p.delay_258_s = number(value, key, key);
         } else if (key == "sequence_shaft_step_s") {
-            p.sequence_shaft_step_s = duration(value, key);
+            p.sequence_shaft_step_s = number(value, key, key);
         } else if (key == "count_hundredths_at_speed_1") {
             if (!value.is_boolean()) {
                 throw ProfileError("count_hundredths_at_speed_1: expected true or false");
@@ -561,34 +449,7 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
             throw ProfileError(fmt::format("{}: unknown key", key));
         }
     }
-    if (!(p.first_bank_s + p.relay_operate_s < p.second_bank_s &&
-          p.second_bank_s + 3 * p.stepping_switch_step_s <= p.reader_cycle_s)) {
-        throw ProfileError("first_bank_s + relay_operate_s < second_bank_s and second_bank_s + 3 "
-                           "stepping_switch_step_s <= reader_cycle_s must hold (the two brush "
-                           "banks sense the card, its relays pick and the speed switches step "
-                           "within one card cycle)");
-    }
-    if (!(p.feed_gap_s < p.first_bank_s)) {
-        throw ProfileError("feed_gap_s < first_bank_s must hold (the gap between two cards "
-                           "passes the brushes before the first bank senses the card)");
-    }
-    if (p.press_sync) {
-        // Position register 14 and speed register 11 are stepping switches: the press's
-        // pulses, at its fastest, must come no faster than they step.
-        const PressProfile& press = p.press;
-        const double fastest = press.strokes_per_min * 6.0 * press.pulses_per_degree *
-                               (1 + press.variation) * std::max(1.0, press.change_factor);
-        if (fastest > p.max_stepping_rate_per_s) {
-            throw ProfileError(fmt::format(
-                "press.strokes_per_min: {} strokes a minute at {} pulses a degree give up to "
-                "{:.0f} detector pulses a second (with variation and change_factor), faster than "
-                "the stepping switches of registers 14 and 11 follow (max_stepping_rate_per_s "
-                "{}): at most {:.2f} strokes a minute",
-                press.strokes_per_min, press.pulses_per_degree, fastest, p.max_stepping_rate_per_s,
-                press.strokes_per_min * p.max_stepping_rate_per_s / fastest));
-        }
-    }
-    check_spindle_sync(p);
+    check_profile_relations(p);
     return p;
 }
 

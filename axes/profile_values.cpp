@@ -1,6 +1,7 @@
 #include "axes/profile_values.hpp"
 
 #include "axes/profile_json.hpp"
+#include "axes/profile_keys.hpp"
 
 #include <fmt/format.h>
 
@@ -17,28 +18,28 @@ bool flag(const json& j, const std::string& key) {
     return j.get<bool>();
 }
 
-double number_in(const json& j, const std::string& key, double least, bool least_open, double most,
-                 bool most_open) {
-    const bool ok = j.is_number() && std::isfinite(j.get<double>()) &&
-                    (least_open ? j.get<double>() > least : j.get<double>() >= least) &&
-                    (most_open ? j.get<double>() < most : j.get<double>() <= most);
-    if (!ok) {
-        const std::string above = fmt::format("{} {}", least_open ? "above" : "at least", least);
-        const std::string below =
-            std::isinf(most) ? ""
-                             : fmt::format(" and {} {}", most_open ? "below" : "at most", most);
-        throw ProfileError(
-            fmt::format("{}: must be a number {}{}, not {}", key, above, below, j.dump()));
+double number(const json& j, std::string_view table_key, const std::string& where) {
+    const KeyRange& r = profile_key_range(table_key);
+    if (!j.is_number() || !in_range(r, j.get<double>())) {
+        const std::string range = range_words(r);
+        throw ProfileError(fmt::format("{}: must be a number{}{}, not {}", where,
+                                       range == "any" ? "" : " ", range == "any" ? "" : range,
+                                       j.dump()));
     }
     return j.get<double>();
 }
 
-std::int64_t whole_in(const json& j, const std::string& key, std::int64_t least,
-                      std::int64_t most) {
-    // 64 bits on every target (long is 32 on WebAssembly): a seed runs to 2^32 - 1.
-    if (!j.is_number_integer() || j.get<std::int64_t>() < least || j.get<std::int64_t>() > most) {
-        throw ProfileError(fmt::format("{}: must be a whole number from {} to {}, not {}", key,
-                                       least, most, j.dump()));
+std::int64_t whole(const json& j, std::string_view table_key, const std::string& where) {
+    const KeyRange& r = profile_key_range(table_key);
+    // 64 bits on every target (long is 32 on WebAssembly): a seed runs to 2^32 - 1. An unsigned
+    // integer past 2^63 is refused by its sign bit or by its size, never wrapped into range.
+    const bool ok = j.is_number_integer() &&
+                    !(j.is_number_unsigned() &&
+                      j.get<std::uint64_t>() > static_cast<std::uint64_t>(INT64_MAX)) &&
+                    in_range(r, static_cast<double>(j.get<std::int64_t>()));
+    if (!ok) {
+        throw ProfileError(
+            fmt::format("{}: must be a whole number {}, not {}", where, range_words(r), j.dump()));
     }
     return j.get<std::int64_t>();
 }

@@ -16,11 +16,6 @@ namespace parsons::axes {
 
 // Applies "spindle_sync" or "spindle" to p; false for any other key (p unchanged).
 bool apply_spindle_sync(MachineProfile& p, const std::string& key, const nlohmann::json& value);
-// The checks that need the whole profile, once every key is applied: with spindle_sync on,
-// encoder 32's edges at max_rpm (times a lasting change above 1) must come no faster than
-// interface 33's stepping switches follow (the error names spindle.max_rpm and the most it can
-// be), and the motor must turn less than half a revolution a sample (spindle.sample_s).
-void check_spindle_sync(const MachineProfile& p);
 // Writes "spindle_sync" and "spindle" into the profile's JSON object.
 void put_spindle_sync(nlohmann::json& j, const MachineProfile& p);
 

@@ -532,9 +532,10 @@ TEST_CASE("Profile: braking below 0.001 in/s2, the least an axis may have, is re
           "[cabinet][profile][mutation]") {
     using parsons::axes::default_profile;
     using parsons::axes::profile_from_json;
-    CHECK_THROWS_WITH(profile_from_json(R"({"axes": {"cross": {"braking_in_per_s2": 0.0009}}})",
-                                        default_profile()),
-                      Catch::Contains("braking_in_per_s2: must lie between 0.001 and"));
+    CHECK_THROWS_WITH(
+        profile_from_json(R"({"axes": {"cross": {"braking_in_per_s2": 0.0009}}})",
+                          default_profile()),
+        Catch::Contains("braking_in_per_s2: must be a number at least 0.001, not 0.0009"));
     const auto least = profile_from_json(R"({"axes": {"cross": {"braking_in_per_s2": 0.001}}})",
                                          default_profile());
     CHECK(least.axes.at(1).braking_in_per_s2 == 0.001);
@@ -542,7 +543,7 @@ TEST_CASE("Profile: braking below 0.001 in/s2, the least an axis may have, is re
     CHECK_THROWS_WITH(
         profile_from_json(R"({"axes": {"cross": {"acceleration_in_per_s2": 0.0009}}})",
                           default_profile()),
-        Catch::Contains("acceleration_in_per_s2: must lie between 0.001 and"));
+        Catch::Contains("acceleration_in_per_s2: must be a number at least 0.001, not 0.0009"));
     CHECK_NOTHROW(profile_from_json(R"({"axes": {"cross": {"acceleration_in_per_s2": 0.001}}})",
                                     default_profile()));
 }
