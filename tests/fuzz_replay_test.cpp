@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <random>
 #include <set>
@@ -199,5 +200,35 @@ TEST_CASE("Never lose a file: random command lines of every command that writes,
         }
         INFO("line " << i);
         CHECK_NOTHROW(cli->run({bytes.data(), bytes.size()}));
+    }
+}
+
+TEST_CASE("Fuzz replay: every kept command line of hostile option values ends with exit 0, 2 or "
+          "3, in its own scratch folder",
+          "[fuzz][argv]") {
+    replay("argv");
+}
+
+TEST_CASE("Command line: random command lines of every command's options, from the completion's "
+          "definitions, with hostile values (NaN, infinities, hex, huge numbers, empty and long "
+          "words, folders, missing files): exit 0, 2 or 3, never 1 or a signal (the argv target, "
+          "a fixed sample)",
+          "[fuzz][argv]") {
+    const parsons::fuzz::FuzzTarget* argv = parsons::fuzz::fuzz_target_named("argv");
+    REQUIRE(argv != nullptr);
+    const char* lines_asked = std::getenv("PARSONS_ARGV_LINES");
+#ifdef PARSONS_SANITIZE
+    const int lines = lines_asked != nullptr ? std::atoi(lines_asked) : 60;
+#else
+    const int lines = lines_asked != nullptr ? std::atoi(lines_asked) : 300;
+#endif
+    std::mt19937 rng(53);
+    for (int i = 0; i < lines; ++i) {
+        std::vector<std::uint8_t> bytes(2 + rng() % 20);
+        for (auto& b : bytes) {
+            b = static_cast<std::uint8_t>(rng());
+        }
+        INFO("line " << i);
+        CHECK_NOTHROW(argv->run({bytes.data(), bytes.size()}));
     }
 }

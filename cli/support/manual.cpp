@@ -375,6 +375,29 @@ std::vector<std::pair<std::string, const CLI::App*>> command_paths(const CLI::Ap
     return out;
 }
 
+std::vector<CommandWords> command_words(const CLI::App& app) {
+    std::vector<CommandWords> out;
+    for (const auto& [path, a] : command_paths(app)) {
+        CommandWords w;
+        w.path = path;
+        w.has_subcommands = !subcommands_of(*a).empty();
+        for (const CLI::Option* o : named_options(*a)) {
+            for (const std::string& n : option_names(*o)) {
+                if (takes_value(*o)) {
+                    w.valued.emplace_back(n, o->get_type_name());
+                } else {
+                    w.flags.push_back(n);
+                }
+            }
+        }
+        for (const CLI::Option* o : positional_options(*a)) {
+            w.positionals.push_back(o->get_type_name());
+        }
+        out.push_back(std::move(w));
+    }
+    return out;
+}
+
 std::vector<std::string> option_names(const CLI::Option& option) {
     std::vector<std::string> names;
     for (const std::string& s : option.get_snames()) {

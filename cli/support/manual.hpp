@@ -28,6 +28,17 @@ std::string bash_completion(const CLI::App& app);
 // `#compdef parsons`: the same, with each option's and command's description.
 std::string zsh_completion(const CLI::App& app);
 
+// Each command's words as the completion reads them (the same options, hidden ones left out):
+// for tests/fuzz/argv_target.cpp, which builds command lines of them.
+struct CommandWords {
+    std::string path;               // "gen airfoil"; "" for the program
+    std::vector<std::string> flags; // the names of options that take no value
+    std::vector<std::pair<std::string, std::string>> valued; // option name, its value's type name
+    std::vector<std::string> positionals; // each positional's type name, in order
+    bool has_subcommands = false;
+};
+std::vector<CommandWords> command_words(const CLI::App& app);
+
 // Every command path of the program ("", "run", "gen airfoil", ...) with its app, depth first.
 std::vector<std::pair<std::string, const CLI::App*>> command_paths(const CLI::App& app);
 // The names an option is typed by: "--report", "-o", ... (none for a positional).

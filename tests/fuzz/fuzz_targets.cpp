@@ -5,7 +5,7 @@
 namespace parsons::fuzz {
 namespace {
 
-constexpr std::array<FuzzTarget, 11> kTargets = {{
+constexpr std::array<FuzzTarget, 12> kTargets = {{
     {"cbn", "column-binary decks (.cbn), as SIMH writes them", fuzz_cbn},
     {"bin", "IBM 1130 binary decks (.bin)", fuzz_bin},
     {"text", "80-column text card images, in 029 and 026 code", fuzz_text},
@@ -19,6 +19,10 @@ constexpr std::array<FuzzTarget, 11> kTargets = {{
      fuzz_machine},
     {"cli", "command lines whose outputs name inputs, other outputs, links, - and /dev/null",
      fuzz_cli},
+    {"argv",
+     "command lines of every command's options, from the completion's definitions, "
+     "with hostile values",
+     fuzz_argv},
 }};
 
 } // namespace

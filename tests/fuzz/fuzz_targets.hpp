@@ -62,7 +62,11 @@ void fuzz_airfoil(Bytes input);
 void fuzz_profile(Bytes input);
 void fuzz_gcode(Bytes input);
 void fuzz_machine(Bytes input);
-void fuzz_cli(Bytes input); // cli_target.cpp
+void fuzz_cli(Bytes input);  // cli_target.cpp
+void fuzz_argv(Bytes input); // argv_target.cpp
+// The command line (after "parsons") the argv target makes of an input; `non_finite` (may be
+// null) is set to the last number option given NaN or an infinity.
+std::vector<std::string> argv_command_line(Bytes input, std::string* non_finite = nullptr);
 
 // The deck the machine target makes of an input, the profile it runs it with and (if asked)
 // the faults of its spindle byte (for the tests that its seeds reach what they are for).
