@@ -4,6 +4,7 @@
 // report, and from the moment the stopped card was fed, the same trace, event for event.
 #include "tests/card_support.hpp"
 #include "tests/machine_support.hpp"
+#include "tests/tap_support.hpp"
 #include "tests/test_support.hpp"
 
 #include "axes/state_json.hpp"
@@ -281,4 +282,32 @@ TEST_CASE("Resume: a state that is not one, or a deck too short for it, is refus
                             " --fault feed-twice:1");
     CHECK(both.exit_code == 2);
     CHECK_THAT(both.output, Catch::Contains("carries its machine profile and faults"));
+}
+
+TEST_CASE("Resume: a saved state carries the holes tapped before it, so a resumed run reports "
+          "them as the run it goes on from did",
+          "[resume][tapping][cli]") {
+    // Card 2 taps; card 3 moves the vertical 0.100 in with a check of 0.099: the machine stops
+    // there, saving its state. Resumed on the same deck, it reads card 3 again and stops again:
+    // the report must still hold card 2's hole (the property test found them dropped).
+    TempDir dir;
+    write_bytes(dir.path("deck.csv"), deck_with("2,tap,1,vertical,reverse,0.600,0.05000,240\n") +
+                                          motion_rows(3, "1.100", "0.099"));
+    const std::string deck = q(dir.str("deck.csv"));
+    const auto stopped =
+        run_parsons("run " + deck + " --profile parsons-extended --save-state " +
+                    q(dir.str("state.json")) + " --report " + q(dir.str("first.json")) + " -q");
+    REQUIRE(stopped.exit_code == 3);
+    const json first = read_json(dir.path("first.json"));
+    REQUIRE(first["stop"]["card"] == 3);
+    REQUIRE(first["tapping"]["holes"].size() == 1);
+    CHECK(first["tapping"]["holes"][0]["completed"] == true);
+    CHECK(read_json(dir.path("state.json"))["resume"]["tapping"]["holes"].size() == 1);
+
+    const auto resumed = run_parsons("run " + deck + " --resume " + q(dir.str("state.json")) +
+                                     " --report " + q(dir.str("resumed.json")) + " -q");
+    CHECK(resumed.exit_code == 3);
+    const json again = read_json(dir.path("resumed.json"));
+    CHECK(again["stop"] == first["stop"]);
+    CHECK(again["tapping"] == first["tapping"]);
 }

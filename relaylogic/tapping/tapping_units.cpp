@@ -20,6 +20,65 @@ std::uint32_t thousandths(double x) {
     return static_cast<std::uint32_t>(std::lround(std::clamp(x, 0.0, 4e6) * 1000));
 }
 
+// A hole's record in a saved state: a resumed run reports the holes tapped before the card it
+// resumes at, as an uninterrupted run does (found by the property test, tests/property_test.cpp).
+nlohmann::json hole_json(const HoleRecord& h) {
+    nlohmann::json samples = nlohmann::json::array();
+    for (const TapSample& s : h.samples) {
+        samples.push_back({exact(s.t), exact(s.tool_revs), exact(s.feed_in)});
+    }
+    return {{"card", h.card},
+            {"number", h.number},
+            {"tool_called", h.tool_called},
+            {"tool", h.tool},
+            {"tap_pitch_in", h.tap_pitch_in ? exact(*h.tap_pitch_in) : nlohmann::json(nullptr)},
+            {"head_ratio", exact(h.head_ratio)},
+            {"ratio_used", exact(h.ratio_used)},
+            {"pitch_ordered_in", exact(h.pitch_ordered_in)},
+            {"rpm", h.rpm},
+            {"axis", static_cast<int>(cardreader::axis_index(h.axis))},
+            {"sense", h.sense},
+            {"start_in", exact(h.start_in)},
+            {"depth_in", exact(h.depth_in)},
+            {"deepest_in", exact(h.deepest_in)},
+            {"end_in", exact(h.end_in)},
+            {"start_s", exact(h.start_s)},
+            {"reverse_s", exact(h.reverse_s)},
+            {"end_s", exact(h.end_s)},
+            {"completed", h.completed},
+            {"samples", samples}};
+}
+
+HoleRecord hole_from_json(const nlohmann::json& j) {
+    HoleRecord h;
+    h.card = j.at("card").get<std::int64_t>();
+    h.number = j.at("number").get<int>();
+    h.tool_called = j.at("tool_called").get<int>();
+    h.tool = j.at("tool").get<int>();
+    if (!j.at("tap_pitch_in").is_null()) {
+        h.tap_pitch_in = exact(j.at("tap_pitch_in"));
+    }
+    h.head_ratio = exact(j.at("head_ratio"));
+    h.ratio_used = exact(j.at("ratio_used"));
+    h.pitch_ordered_in = exact(j.at("pitch_ordered_in"));
+    h.rpm = j.at("rpm").get<int>();
+    h.axis = cardreader::kAxes.at(static_cast<std::size_t>(
+        std::clamp(j.at("axis").get<int>(), 0, static_cast<int>(cardreader::kAxisCount) - 1)));
+    h.sense = j.at("sense").get<int>();
+    h.start_in = exact(j.at("start_in"));
+    h.depth_in = exact(j.at("depth_in"));
+    h.deepest_in = exact(j.at("deepest_in"));
+    h.end_in = exact(j.at("end_in"));
+    h.start_s = exact(j.at("start_s"));
+    h.reverse_s = exact(j.at("reverse_s"));
+    h.end_s = exact(j.at("end_s"));
+    h.completed = j.at("completed").get<bool>();
+    for (const auto& s : j.at("samples")) {
+        h.samples.push_back({exact(s.at(0)), exact(s.at(1)), exact(s.at(2))});
+    }
+    return h;
+}
+
 } // namespace
 
 void TappingUnits::install(Tracer& tracer, const axes::MachineProfile& profile) {
@@ -458,6 +517,10 @@ nlohmann::json TappingUnits::save() const {
                   {"data_valid", bus_.data_valid},   {"data_ratio", exact(bus_.data_ratio)},
                   {"tool_ready", bus_.tool_ready}};
     j["phase"] = static_cast<int>(phase_);
+    j["holes"] = nlohmann::json::array();
+    for (const HoleRecord& h : holes_) {
+        j["holes"].push_back(hole_json(h));
+    }
     return j;
 }
 
@@ -482,6 +545,13 @@ void TappingUnits::load(const nlohmann::json& j) {
                                  "between cards)");
     }
     phase_ = Phase::idle;
+    // (a state saved before the holes were kept has none: the resumed run reports its own)
+    holes_.clear();
+    if (j.contains("holes")) {
+        for (const auto& h : j.at("holes")) {
+            holes_.push_back(hole_from_json(h));
+        }
+    }
     show();
 }
 
