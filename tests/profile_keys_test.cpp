@@ -349,7 +349,7 @@ const RelationEdge kEdges[] = {
 } // namespace profile_keys_test
 
 TEST_CASE("Profile: each relation between keys is refused at its exact edge, naming its key, and "
-          "held a step inside it; every relation has its edge here",
+          "held a step inside it, and every relation has its edge here",
           "[profile][profile-keys][relations]") {
     using namespace profile_keys_test;
     std::set<std::string_view> edged;
