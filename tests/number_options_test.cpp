@@ -22,14 +22,15 @@ using parsons::test::TempDir;
 
 namespace {
 
-struct CommandLine {
+struct NumberCommandLine {
     CLI::App app;
     parsons::cli::Command selected;
-    CommandLine() { parsons::cli::build_command_line(app, selected, "parsons test"); }
+    NumberCommandLine() { parsons::cli::build_command_line(app, selected, "parsons test"); }
 };
 
 // The words of a command path ("gen airfoil"), then `more`.
-std::vector<std::string> words_of(const std::string& path, const std::vector<std::string>& more) {
+std::vector<std::string> number_command_words(const std::string& path,
+                                              const std::vector<std::string>& more) {
     std::vector<std::string> words;
     std::istringstream in(path);
     std::string w;
@@ -43,7 +44,7 @@ std::vector<std::string> words_of(const std::string& path, const std::vector<std
 // Parses `parsons WORDS` on a fresh command line; the ValidationError's message, or "" when the
 // parse got past every value (a required option missing is no concern here).
 std::string validation_error(const std::vector<std::string>& words) {
-    CommandLine cl;
+    NumberCommandLine cl;
     std::vector<std::string> reversed(words.rbegin(), words.rend()); // CLI11 takes them reversed
     try {
         cl.app.parse(reversed);
@@ -55,7 +56,7 @@ std::string validation_error(const std::vector<std::string>& words) {
     return "";
 }
 
-bool is_number_type(const std::string& type) {
+bool number_option_type(const std::string& type) {
     const std::string base = type.substr(0, type.find(':'));
     return base == "INT" || base == "UINT" || base == "FLOAT";
 }
@@ -110,19 +111,20 @@ TEST_CASE("Number rule: decimal and finite, or the reason it is not", "[cli][num
 TEST_CASE("Number rule: every number option of every command refuses NaN, infinities, overflow "
           "and hexadecimal, naming the option",
           "[cli][numbers]") {
-    CommandLine cl;
+    NumberCommandLine cl;
     int options = 0;
     for (const auto& [path, app] : parsons::cli::command_paths(cl.app)) {
         for (const CLI::Option* o : app->get_options({})) {
             if (o->get_positional() || o->get_items_expected_max() == 0 ||
-                !is_number_type(o->get_type_name())) {
+                !number_option_type(o->get_type_name())) {
                 continue;
             }
             ++options;
             const std::string name = o->get_name(false, true);
             for (const char* value : {"nan", "NaN", "inf", "-inf", "1e400", "0x6", "0x1p3"}) {
                 INFO("parsons " << path << " " << name << " " << value);
-                const std::string error = validation_error(words_of(path, {name, value}));
+                const std::string error =
+                    validation_error(number_command_words(path, {name, value}));
                 CHECK(error.find(name) != std::string::npos);
             }
         }
@@ -134,13 +136,13 @@ TEST_CASE("Number rule: every number option of every command refuses NaN, infini
 TEST_CASE("Number rule: a number option takes decimal numbers as written, a whole number's "
           "leading zeros as decimal",
           "[cli][numbers]") {
-    CommandLine cl;
+    NumberCommandLine cl;
     // Reversed, as CLI11 takes a vector; -o is required and left out: the values are read first.
     CHECK_THROWS_AS(cl.app.parse(std::vector<std::string>{"010", "--rows", "tapping", "gen"}),
                     CLI::RequiredError);
     CLI::App* tapping = cl.app.get_subcommand("gen")->get_subcommand("tapping");
     CHECK(tapping->get_option("--rows")->as<int>() == 10); // not octal 8
-    CommandLine airfoil;
+    NumberCommandLine airfoil;
     CHECK_THROWS_AS(airfoil.app.parse(std::vector<std::string>{"1.5e-1", "--scallop", ".5",
                                                                "--chord", "airfoil", "gen"}),
                     CLI::RequiredError);
