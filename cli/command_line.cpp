@@ -1,6 +1,7 @@
 #include "cli/command_line.hpp"
 
 #include "cli/exit_codes.hpp"
+#include "cli/support/number_rule.hpp"
 #include "outputs/output_file.hpp"
 
 #include "cardreader/deck_error.hpp"
@@ -8,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <exception>
@@ -79,6 +81,7 @@ void build_command_line(CLI::App& app, Command& selected, const std::string& ver
     add_gen_command(app, selected);
     add_demo_command(app, selected);
     add_bench_command(app, selected);
+    apply_number_rule(app);
 }
 
 int command_line_main(int argc, char** argv, const std::string& version, RunTimeline* timeline) {
@@ -120,9 +123,11 @@ int command_line_main(int argc, char** argv, const std::string& version, RunTime
             }
             return write_error(fmt::format("{} (see '{} --help')", e.what(), command));
         }
-        app.exit(e); // --help: the help text, exit 0
+        errno = 0;
+        app.exit(e);                  // --help and --version: their text, exit 0
+        const int seen_errno = errno; // a failed write through std::cout (a full disk)
         try {
-            finish_standard_output();
+            finish_standard_output(seen_errno);
         } catch (const BrokenPipe& gone) {
             return broken_pipe(gone.output());
         } catch (const cardreader::DeckError& error) {

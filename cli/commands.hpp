@@ -66,6 +66,10 @@ struct RunRequest {
     bool quiet = false;
     bool impulse_level = false;
     DeckFlags deck;
+    // Not a flag: a run that stops or whose proof objects on purpose (the demo's press job on
+    // speed alone, its tapping with a stale ratio): the exit code says so as ever, and the
+    // caller tells the finding in its own story, so nothing is said on standard error.
+    bool finding_expected = false;
     // Not a flag: where an embedder (the WebAssembly page, web/parsons_web.cpp) wants the run
     // recorded for its viewer; null from the command line.
     RunTimeline* timeline = nullptr;

@@ -384,6 +384,7 @@ ExitCode run_press_demo(const std::string& dir, std::vector<DemoSection>& sectio
         run.plot = deck + ".plot.svg";
         run.html = deck + ".replay.html";
         run.quiet = true;
+        run.finding_expected = speed_only; // the collision is told below and in the index
         relaylogic::RunResult result;
         const ExitCode code = run_in_order(run, &result);
         const auto report = nlohmann::json::parse(read_text_file(run.report));
@@ -443,6 +444,7 @@ TappingRun run_tapping(const std::string& deck, const std::string& out,
     run.html = replay ? out + ".replay.html" : "";
     run.faults = faults;
     run.quiet = true;
+    run.finding_expected = !faults.empty(); // a stale ratio's wrong pitch, told in the story
     TappingRun r;
     r.code = run_in_order(run);
     r.block = nlohmann::json::parse(read_text_file(run.report)).at("tapping");
@@ -573,7 +575,10 @@ ExitCode run_demo(const std::string& dir) {
 }
 
 // --out /dev/null (any character device): the demo reads back what it writes (its job files and
-// reports), so it writes into a scratch folder of its own and removes it at the end.
+// reports), so it writes into a scratch folder of its own and removes it at the end; its index
+// page then goes to the device, as `run --report DEVICE` sends its report: /dev/null takes it,
+// a device that cannot take it (/dev/full: no space left on device) is an output that cannot be
+// written, exit 2, as for run.
 ExitCode run_demo_into(const std::string& out) {
     FilePlan plan; // it reads nothing of the user's: "-" is the one folder refused
     plan.write_folder("--out", out, [](const std::string&) { return false; });
@@ -583,8 +588,13 @@ ExitCode run_demo_into(const std::string& out) {
     }
     const ScratchFolder scratch("parsons-demo");
     const ExitCode code = run_demo(scratch.path());
-    fmt::print("(--out {}: the demo wrote into the scratch folder {} and removed it)\n", out,
-               scratch.path());
+    if (code != ExitCode::ok) {
+        return code;
+    }
+    write_file(out, read_text_file(scratch.path() + "/index.html"));
+    fmt::print("(--out {}: the demo wrote into the scratch folder {}, sent its index page to {} "
+               "and removed the folder)\n",
+               out, scratch.path(), out);
     return code;
 }
 

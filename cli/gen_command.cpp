@@ -560,16 +560,25 @@ ExitCode run_two_tool(const TwoToolFlags& f) {
     return ExitCode::ok;
 }
 
+// --dat: a coordinate file, or a bundled airfoil by name (both offered by the completion).
+void add_dat_option(CLI::App& cmd, std::string& dat) {
+    std::string names;
+    for (std::string_view name : kBundledAirfoils) {
+        names += (names.empty() ? "" : ", ") + std::string(name);
+    }
+    cmd.add_option("--dat", dat,
+                   "Airfoil coordinate file (Selig or Lednicer .dat), or a bundled one by name: " +
+                       names)
+        ->type_name(file_value({"dat"}) + "|" + std::string(kAirfoilValue));
+}
+
 void add_two_tool_command(CLI::App& gen, Command& selected) {
     auto flags = std::make_shared<TwoToolFlags>();
     CLI::App* cmd = gen.add_subcommand(
         "two-tool", "A template roughed with one tool and finished with another; the tool "
                     "change tripped by a condition card (an addition after EP 0640901)");
     cmd->add_option("--naca", flags->naca, "NACA 4-digit section, e.g. 2412");
-    cmd->add_option("--dat", flags->dat,
-                    "Airfoil coordinate file (Selig or Lednicer .dat), or a bundled one by name: "
-                    "clarky, e387, n63412, naca0012, naca2412, naca63412_lednicer")
-        ->type_name(file_value({"dat"}));
+    add_dat_option(*cmd, flags->dat);
     cmd->add_flag("--closed-te", flags->closed_te, "NACA: closed trailing edge (a4 = 0.1036)");
     cmd->add_option("--chord", flags->chord_in, "Chord, inches")->capture_default_str();
     cmd->add_option("--stations", flags->stations, "Stations per pass")->capture_default_str();
@@ -626,10 +635,7 @@ void add_gen_command(CLI::App& app, Command& selected) {
     CLI::App* cmd = gen->add_subcommand(
         "airfoil", "A template deck for an airfoil: stations, cutter offset, one card a station");
     cmd->add_option("--naca", flags->naca, "NACA 4-digit section, e.g. 2412");
-    cmd->add_option("--dat", flags->dat,
-                    "Airfoil coordinate file (Selig or Lednicer .dat), or a bundled one by name: "
-                    "clarky, e387, n63412, naca0012, naca2412, naca63412_lednicer")
-        ->type_name(file_value({"dat"}));
+    add_dat_option(*cmd, flags->dat);
     cmd->add_flag("--closed-te", flags->closed_te, "NACA: closed trailing edge (a4 = 0.1036)");
     cmd->add_option("--chord", flags->chord_in, "Chord (the wing's root chord), inches")
         ->capture_default_str();

@@ -63,7 +63,8 @@ namespace {
 struct TappingFlags {
     decks::TappingOptions o;
     std::string ratio_source = "transferred";
-    int rpm = 0; // 0: the fastest each tap allows
+    int rpm = 0;
+    bool rpm_given = false; // no --rpm: the fastest each tap allows
     std::string output;
     std::string to;
     std::string job_out;
@@ -127,7 +128,7 @@ ExitCode run_tapping(TappingFlags f) {
                                     f.ratio_source));
     }
     f.o.ratio_source = *source;
-    if (f.rpm != 0) {
+    if (f.rpm_given) { // --rpm 0 is judged as any S, not taken as not given
         f.o.rpm = f.rpm;
     }
     refuse_json_beside_standard_output("gen tapping", f.json, "--job-out", f.job_out);
@@ -173,8 +174,10 @@ void add_tapping_command(CLI::App& gen, Command& selected) {
     cmd->add_option("--tools", o.tools, "The tools of the rows, in turn (each a head with a tap)")
         ->delimiter(',')
         ->capture_default_str();
-    cmd->add_option("--rpm", flags->rpm,
-                    "Motor 27's speed S for every hole (default: the fastest each tap allows)");
+    const CLI::Option* rpm =
+        cmd->add_option("--rpm", flags->rpm,
+                        "Motor 27's speed S for every hole, 1 to 9999 rev/min (default: the "
+                        "fastest each tap allows)");
     cmd->add_option("--tolerance", o.tolerance_percent,
                     "The thread proof's tolerance, percent of the pitch")
         ->capture_default_str();
@@ -200,7 +203,10 @@ void add_tapping_command(CLI::App& gen, Command& selected) {
                 "  parsons gen tapping -o plate.csv\n"
                 "  parsons run plate.csv --thread-proof plate.csv.job.json\n"
                 "  parsons gen tapping --ratio-source stored -o plate-stored.csv");
-    cmd->callback([&selected, flags] { selected = [flags] { return run_tapping(*flags); }; });
+    cmd->callback([&selected, flags, rpm] {
+        flags->rpm_given = rpm->count() > 0;
+        selected = [flags] { return run_tapping(*flags); };
+    });
 }
 
 } // namespace parsons::cli

@@ -145,13 +145,26 @@ private:
     bool restored_ = false;
 };
 
+// A saved state is the JSON object marked "parsons_state" (docs/reliability.md); any other file
+// (a run report, a profile) is refused as what it is not, before a key of it is read.
 nlohmann::json read_state(const std::string& file) {
     const std::string text = read_text_file(file, "cannot open the saved state");
+    nlohmann::json state;
     try {
-        return nlohmann::json::parse(text);
+        state = nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
-        throw DeckError::in_file(file, fmt::format("not valid JSON at byte {}", e.byte));
+        throw DeckError::in_file(
+            file, fmt::format("not a saved state: not valid JSON at byte {}", e.byte));
     }
+    if (!state.is_object() || !state.contains("parsons_state")) {
+        const bool report = state.is_object() && state.contains("schema_version") &&
+                            state.contains("stop") && state.contains("cards");
+        throw DeckError::in_file(
+            file, fmt::format("not a saved state{} (--resume takes the file 'parsons run DECK "
+                              "--save-state FILE' wrote, marked \"parsons_state\")",
+                              report ? ": it is a run report" : ""));
+    }
+    return state;
 }
 
 } // namespace
@@ -431,14 +444,18 @@ ExitCode verdict(const relaylogic::RunResult& result,
         return interrupted_exit(operator_stop);
     }
     if (result.stop) {
-        fmt::print(stderr, "parsons: machine stop: {}: {}\n",
-                   relaylogic::stop_reason_name(result.stop->reason), result.stop->message);
-        say_how_to_resume(f);
+        if (!f.finding_expected) {
+            fmt::print(stderr, "parsons: machine stop: {}: {}\n",
+                       relaylogic::stop_reason_name(result.stop->reason), result.stop->message);
+            say_how_to_resume(f);
+        }
         return ExitCode::machine_stop;
     }
     for (const auto& output : outputs) {
         if (const std::string objection = output->objection(); !objection.empty()) {
-            fmt::print(stderr, "{}", objection);
+            if (!f.finding_expected) {
+                fmt::print(stderr, "{}", objection);
+            }
             return ExitCode::machine_stop;
         }
     }

@@ -436,19 +436,16 @@ public:
     // The last card shown, as the reader decoded it.
     const DecodeResult& last() const { return last_; }
 
-    // A deck run refuses, or one with bad punches: refused as a DeckError (exit 2).
+    // A deck run refuses (a deck error, as run refuses it before any axis moves): refused as a
+    // DeckError (exit 2), after the deck is shown. A bad punch is not refused: the reader stops
+    // the machine on it, a machine stop like any other, which show tells (the card's BAD PUNCH
+    // line, the summary's stop) and `check` judges (exit 3; docs/stop-codes.md).
     void refuse() const {
-        if (first_deck_error_ && !first_bad_) {
+        if (first_deck_error_) {
             throw DeckError(*first_deck_error_ +
                             (deck_errors_ > 1
                                  ? fmt::format(" (and {} more deck errors)", deck_errors_ - 1)
                                  : std::string{}));
-        }
-        if (first_bad_) {
-            throw DeckError(*first_bad_ +
-                            (bad_cards_ > 1 ? fmt::format(" (and {} more cards with bad punches)",
-                                                          bad_cards_ - 1)
-                                            : std::string{}));
         }
     }
 
@@ -473,15 +470,10 @@ private:
 
     void bad_punch(const DecodeResult& decoded) {
         ++bad_cards_;
-        const std::string where =
-            DeckError::at_card_column(f_.input, index_, decoded.bad_punch->column,
-                                      decoded.bad_punch->what)
-                .what();
         if (text_) {
             fmt::print("  BAD PUNCH: column {}: {} (the reader stops the machine here)\n",
                        decoded.bad_punch->column, decoded.bad_punch->what);
         }
-        first_bad_ = first_bad_.value_or(where);
         reviewer_.skip();
     }
 
@@ -543,7 +535,6 @@ private:
     std::int64_t notes_ = 0;
     std::optional<std::string> first_deck_error_;
     std::int64_t deck_errors_ = 0;
-    std::optional<std::string> first_bad_;
     std::int64_t bad_cards_ = 0;
     DecodeResult last_;
 };
@@ -612,7 +603,7 @@ ExitCode run_show(const ShowFlags& f) {
     if (f.json) {
         doc["cards"] = std::move(cards);
         doc["svg_dir"] = f.svg_dir.empty() ? Json(nullptr) : Json(f.svg_dir);
-        // A deck with bad punches is still shown whole, then refused (exit 2), as the text is.
+        // A deck with deck errors is still shown whole, then refused (exit 2), as the text is.
         print_json_document(doc);
     } else if (!f.svg_dir.empty()) {
         fmt::print("card pictures: {} .. card-{:04}.svg\n",
@@ -635,12 +626,14 @@ void add_show_command(CLI::App& app, Command& selected) {
                     "Write one picture per card, DIR/card-0001.svg, ... (created if missing)")
         ->type_name(std::string(kDirValue));
     cmd->add_option("--profile", flags->profile,
-                    "Machine profile JSON, for the coast estimate (see 'parsons profile')")
+                    "Machine profile (a built-in name or a JSON file; see 'parsons profile'): the "
+                    "cards are sensed and the deck run as under it, for the notes and the stop")
         ->type_name(std::string(kProfileValue));
     add_json_flag(*cmd, flags->json);
     add_input_flags(*cmd, flags->deck);
-    cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was shown (its warnings do not "
-                                                "change the code; 'parsons check' judges)"}}) +
+    cmd->footer(exit_codes_help({{ExitCode::ok, "the deck was shown (its warnings, its bad "
+                                                "punches and the machine's stop do not change "
+                                                "the code; 'parsons check' judges)"}}) +
                 "Examples:\n"
                 "  parsons show decks/samples/patent-example.csv\n"
                 "  parsons show decks/samples/patent-example.csv --svg cards\n"

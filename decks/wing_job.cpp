@@ -220,8 +220,10 @@ WingDeck make_wing_deck(const Airfoil& airfoil, const WingOptions& o,
     Vector3d lo = Vector3d::Constant(1e9);
     Vector3d hi = Vector3d::Constant(-1e9);
     double top = -1e9;
+    bool finite = true; // false: a point overflowed (inf - inf is NaN, which min and max skip)
     for (const Setting& s : settings) {
         for (const Vector3d& p : {s.root, s.tip}) {
+            finite = finite && p.allFinite();
             lo = lo.cwiseMin(p);
             hi = hi.cwiseMax(p);
         }
@@ -230,15 +232,26 @@ WingDeck make_wing_deck(const Airfoil& airfoil, const WingOptions& o,
         for (double y : {0.0, o.span_in}) {
             const Section sec = section_at(o, y);
             for (double u : stations_u(24, Spacing::cosine)) {
-                top = std::max(top, (s.rotation * point_on(airfoil, sec, u)).z());
+                const double z = (s.rotation * point_on(airfoil, sec, u)).z();
+                finite = finite && std::isfinite(z);
+                top = std::max(top, z);
             }
         }
     }
     top += o.cutter_radius_in + 0.1;
+    finite = finite && std::isfinite(top);
     hi.z() = std::max(hi.z(), top);
     deck.zero = Vector3d::Constant(o.margin_in) - lo;
     const Vector3d extent = hi - lo;
     const double room = 9.999 - 2 * o.margin_in;
+    if (!finite || !extent.allFinite()) { // a span or chord near the largest double
+        throw JobError(fmt::format(
+            "wing: a root chord of {} in, a tip chord of {} in (taper {}), a span of {} in and a "
+            "cutter radius of {} in make a job too large to lay out, more than the {:.3f} in the "
+            "counters leave: use a smaller wing",
+            fixed(o.root_chord_in), fixed(o.root_chord_in * o.taper), o.taper, fixed(o.span_in),
+            fixed(o.cutter_radius_in), room));
+    }
     if (extent.maxCoeff() > room) {
         throw JobError(fmt::format("wing: the job spans {} x {} x {} in (cross, table, "
                                    "vertical), more than the {:.3f} in the counters leave: use a "

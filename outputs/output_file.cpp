@@ -429,9 +429,17 @@ std::FILE* message_stream() {
     return g_standard_output_taken ? stderr : stdout;
 }
 
-void finish_standard_output() {
+namespace {
+// The errno of the last write to standard output that say() saw fail (0: none).
+int g_standard_output_errno = 0;
+} // namespace
+
+void finish_standard_output(int seen_errno) {
     errno = 0;
     if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0) {
+        if (errno == 0) {
+            errno = seen_errno != 0 ? seen_errno : g_standard_output_errno;
+        }
         if (reader_gone(stdout)) {
             throw BrokenPipe("standard output");
         }
@@ -446,8 +454,13 @@ bool reader_gone(std::FILE* stream) {
 
 bool say(std::FILE* stream, const std::string& text) {
     // A stream that is gone takes nothing, and says nothing.
+    errno = 0;
     const bool put = std::fputs(text.c_str(), stream) >= 0;
-    return std::fflush(stream) == 0 && put && std::ferror(stream) == 0;
+    const bool said = std::fflush(stream) == 0 && put && std::ferror(stream) == 0;
+    if (!said && stream == stdout && errno != 0) {
+        g_standard_output_errno = errno;
+    }
+    return said;
 }
 
 } // namespace parsons::cli

@@ -150,8 +150,12 @@ void give_up_on_signal(const volatile std::sig_atomic_t* flag);
 void stop_on_broken_pipe(volatile std::sig_atomic_t* flag);
 
 // Standard output as the process ends: flushes it; throws DeckError ("standard output: ...")
-// when it cannot be written (a full disk), and BrokenPipe when its reader went away.
-void finish_standard_output();
+// when it cannot be written (a full disk: "no space left on device"), and BrokenPipe when its
+// reader went away. A write that failed before (CLI11's --help and --version through std::cout,
+// say()) set the stream's error and an errno that later calls may have cleared: `seen_errno`
+// (the errno just after such a write) or the one say() kept names the cause, EIO only when
+// nothing does.
+void finish_standard_output(int seen_errno = 0);
 
 // True when `stream` (stdout or stderr) failed because its reader went away: errno is EPIPE,
 // or its descriptor is a pipe or FIFO whose reading end is closed.

@@ -4,5 +4,5 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPARSONS_BUILD_TESTS=ON >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPARSONS_BUILD_TESTS=ON -DPARSONS_REQUIRE_JS_TESTS=ON >/dev/null
 cmake --build build --parallel "$(nproc 2>/dev/null || echo 2)"

@@ -95,7 +95,9 @@ TEST_CASE("CLI: show tells, from a run, the shared-bank equality and the stop it
         std::string::npos);
 }
 
-TEST_CASE("CLI: a bad punch in a deck is named by card and column, exit 2", "[cli][bad-input]") {
+TEST_CASE("CLI: a bad punch is named by card and column: show tells the reader's stop (exit 0), "
+          "check and run stop (exit 3), a listing cannot hold it (exit 2)",
+          "[cli][bad-input]") {
     TempDir dir;
     REQUIRE(
         run_parsons("punch " + q(source_path(kSample)) + " -o " + q(dir.str("s.bin"))).exit_code ==
@@ -105,12 +107,23 @@ TEST_CASE("CLI: a bad punch in a deck is named by card and column, exit 2", "[cl
     const std::size_t i = 160 + 2 * 12 + 1;
     bytes[i] = static_cast<char>(bytes[i] | 0x01); // word bit 4 = row 5
     write_bytes(dir.path("bad.bin"), bytes);
-    // parsons-safe's reader refuses a double punch: show names it, exit 2.
+    // parsons-safe's reader refuses a double punch: a machine stop (bad_punch). show tells it
+    // and exits 0 (it shows; docs/stop-codes.md), check and run exit 3, never 2 (the file was
+    // read).
     auto shown = run_parsons("show " + q(dir.str("bad.bin")) + " --profile parsons-safe");
-    CHECK(shown.exit_code == 2);
-    CHECK(shown.output.find("parsons: error: " + dir.str("bad.bin") +
-                            ": card 2, column 13: double punch (rows 3 and 5) in table stop") !=
+    CHECK(shown.exit_code == 0);
+    CHECK(shown.output.find("BAD PUNCH: column 13: double punch (rows 3 and 5) in table stop (the "
+                            "reader stops the machine here)") != std::string::npos);
+    CHECK(shown.output.find("1 with bad punches; the machine stops at card 2") !=
           std::string::npos);
+    CHECK(shown.output.find("parsons: error:") == std::string::npos);
+    for (const char* judge : {"check", "run"}) {
+        INFO(judge);
+        const auto judged =
+            run_parsons(std::string(judge) + " " + q(dir.str("bad.bin")) + " --profile parsons-safe");
+        CHECK(judged.exit_code == 3);
+        CHECK(judged.output.find("bad_punch: card 2, column 13: double punch") != std::string::npos);
+    }
     // parsons-1952's reader closes two relays, as run does (rule 12): no bad punch.
     auto read = run_parsons("show " + q(dir.str("bad.bin")));
     CHECK(read.exit_code == 0);
@@ -255,7 +268,7 @@ TEST_CASE("CLI: show judges the card after a bad one against the bad card's numb
     // parsons-safe's reader refuses the card: the run stops there, and card 3's advice is not
     // judged from numbers nobody read.
     auto shown = run_parsons("show " + q(dir.str("bad.bin")) + " --profile parsons-safe");
-    CHECK(shown.exit_code == 2);
+    CHECK(shown.exit_code == 0);
     CHECK(shown.output.find("4 cards read, 0 notes, 1 with bad punches; the machine stops at card "
                             "2") != std::string::npos);
 }

@@ -118,7 +118,8 @@ TEST_CASE("Exit codes: CLI11's own messages are worded as ours, name the help to
         {"run deck.cbn --no-such-option",
          "The following argument was not expected: --no-such-option (see 'parsons run --help')"},
         {"gen airfoil --naca 2412 --stations many -o x.cbn",
-         "Could not convert: --stations = many (see 'parsons gen airfoil --help')"},
+         "--stations: 'many' is not a number: give a whole number such as 3 (see 'parsons gen "
+         "airfoil --help')"},
         {"check a.cbn b.cbn", "(see 'parsons check --help')"},
         {"bench --runs 0", "(see 'parsons bench --help')"},
         {"", "A subcommand is required (see 'parsons --help')"}};

@@ -228,16 +228,18 @@ TEST_CASE("Show --json: each note of the text is in the document, on its card, w
     CHECK(close.doc()["cards"][0]["warnings"][0]["kind"] == "observed in the run");
 }
 
-TEST_CASE("Show --json: a card with a bad punch is given by its column, then the error, exit 2",
+TEST_CASE("Show --json: a card with a bad punch is given by its column, the reader's stop told, "
+          "exit 0",
           "[cli][json][show][bad-punch]") {
     TempDir dir;
     const std::string bad = sample_with_row5(dir, 2, 13); // table stop: rows 3 and 5
     const auto r = run_split(dir, "show " + q(bad) + " --json --profile parsons-safe");
     INFO(r.out << r.err);
-    CHECK(r.exit_code == 2); // as the text: shown whole, then refused
-    CHECK(r.err.find("parsons: error: " + bad + ": card 2, column 13: double punch") !=
-          std::string::npos);
+    CHECK(r.exit_code == 0); // as the text: shown, the stop told; check judges (exit 3)
+    CHECK(r.err.empty());
     const json doc = r.doc();
+    CHECK(doc["runs_through"] == false);
+    CHECK(doc["cards"][1]["stop"]["reason"] == "bad_punch");
     CHECK(doc["cards_read"] == 4);
     CHECK(doc["bad_punch_cards"] == 1);
     const json& card = doc["cards"][1];

@@ -311,6 +311,11 @@ TEST_CASE("Manual: the bash completion offers each value as its type says, after
     CHECK(complete("parsons run a.cbn --profile \"\"", 4) ==
           "[b.json][parsons-1952][parsons-extended][parsons-safe][sub]");
     CHECK(complete("parsons gen airfoil --chord \"\"", 4).empty());
+    // --dat: a .dat file, or a bundled airfoil by name.
+    CHECK(complete("parsons gen airfoil --dat \"\"", 4) ==
+          "[clarky][e387][n63412][naca0012][naca2412][naca63412_lednicer][sub]");
+    CHECK(complete("parsons gen two-tool --dat n", 4) == "[n63412][naca0012][naca2412]"
+                                                         "[naca63412_lednicer]");
     CHECK(complete("parsons run a.cbn --limit \"\"", 4).empty());
     CHECK(complete("parsons demo --out \"\"", 3) == "[sub]");
     CHECK(complete("parsons punch \"\"", 2) == "[e.csv][sub]");

@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <system_error>
 
 namespace parsons::cli {
 namespace {
@@ -62,6 +63,28 @@ json profile_differences(const axes::MachineProfile& applied, const axes::Machin
     return out;
 }
 
+namespace {
+
+// What a --profile that names no file is told: the built-in names, since a mistyped name is
+// the likelier slip (or "" when the file exists and read_text_file is to say why it cannot
+// be opened).
+std::string not_a_profile(const std::string& file) {
+    std::error_code ec;
+    if (std::filesystem::exists(file, ec)) {
+        return "";
+    }
+    std::string names;
+    for (std::size_t i = 0; i < axes::kBuiltinProfiles.size(); ++i) {
+        names += (i == 0                                   ? ""
+                  : i + 1 == axes::kBuiltinProfiles.size() ? " or "
+                                                           : ", ") +
+                 std::string(axes::kBuiltinProfiles.at(i));
+    }
+    return fmt::format("no such profile: neither a built-in profile ({}) nor a file", names);
+}
+
+} // namespace
+
 std::string AppliedProfile::file_read(const std::string& name) {
     // A built-in profile by name (parsons-1952, parsons-safe), unless a file of that name exists.
     if (name.empty() || (axes::builtin_profile(name) && !std::filesystem::exists(name))) {
@@ -78,7 +101,7 @@ AppliedProfile AppliedProfile::load(const std::string& file) {
         a.profile_ = *builtin;
         a.named_ = a.profile_;
     } else {
-        const std::string text = read_text_file(file);
+        const std::string text = read_text_file(file, not_a_profile(file));
         a.named_ = named_base(text);
         try {
             a.profile_ = axes::profile_from_json(text, a.named_);

@@ -1,4 +1,6 @@
 #include "cli/support/deck_files.hpp"
+
+#include "cli/support/number_rule.hpp"
 #include "cli/support/value_names.hpp"
 
 #include "cardreader/layout.hpp"
@@ -319,17 +321,10 @@ std::vector<cardreader::Axis> apply_limits(axes::MachineProfile& profile,
                       "' (table, cross, vertical, swivel or tilt)");
         }
         auto number = [&](const std::string& text) {
-            std::size_t used = 0;
-            double v = 0;
-            try {
-                v = std::stod(text, &used);
-            } catch (const std::exception&) {
-                used = 0;
+            if (const auto problem = number_problem(text, NumberKind::real)) {
+                throw bad(*problem);
             }
-            if (used == 0 || used != text.size() || !std::isfinite(v)) {
-                throw bad("'" + text + "' is not a number of inches");
-            }
-            return v;
+            return std::strtod(text.c_str(), nullptr);
         };
         const double lo = number(spec.substr(eq + 1, colon - eq - 1));
         const double hi = number(spec.substr(colon + 1));

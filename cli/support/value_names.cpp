@@ -48,6 +48,10 @@ void read_alternative(const std::string& alt, ValueChoices& choices) {
             add_unique(choices.words, name);
         }
         add_unique(choices.extensions, "json");
+    } else if (alt == kAirfoilValue) {
+        for (std::string_view name : kBundledAirfoils) {
+            add_unique(choices.words, std::string(name));
+        }
     } else if (alt == kDirValue) {
         choices.folders = true;
     } else if (alt == "FILE") {

@@ -6,6 +6,7 @@
 //   DIR            a folder
 //   DECK           a deck in any format parsons reads (the extensions of cardreader/deck_io)
 //   PROFILE        a built-in machine profile's name, or a JSON file
+//   AIRFOIL        a bundled airfoil's name (kBundledAirfoils; --dat takes FILE.dat|AIRFOIL)
 //   {a,b,c}        one of these words (CLI::IsMember shows its set the same way, after a ':')
 // Anything else (INT, FLOAT, TEXT, AXIS=MIN:MAX, ...) is typed, not chosen: nothing is offered.
 // docs/install.md ("Shell completion").
@@ -23,6 +24,11 @@ namespace parsons::cli {
 inline constexpr std::string_view kDeckValue = "DECK";
 inline constexpr std::string_view kProfileValue = "PROFILE";
 inline constexpr std::string_view kDirValue = "DIR";
+inline constexpr std::string_view kAirfoilValue = "AIRFOIL";
+// The airfoils parsons ships (decks/airfoils/NAME.dat, installed in share/parsons/airfoils),
+// which --dat takes by name; tests/manual_test.cpp holds this list to the folder.
+inline constexpr std::array<std::string_view, 6> kBundledAirfoils = {
+    "clarky", "e387", "n63412", "naca0012", "naca2412", "naca63412_lednicer"};
 // The names a G-code program goes by (convert writes G-code to a file of one of them).
 inline constexpr std::array<std::string_view, 3> kGcodeExtensions = {"ngc", "nc", "gcode"};
 
