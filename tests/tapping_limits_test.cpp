@@ -144,7 +144,7 @@ TEST_CASE("Tap limits: over a sweep of encoder edges and S within what the profi
             }
             // Open, not this rule's: at 6 edges, S 815 (pitch 0.01472, forward from 0) the net
             // edges are all read right and the depth called stops at 0.500, yet the feed runs
-            // on to 0.598 (issue 53's report says so; a defect of the feed, left to be mended).
+            // on to 0.598 (a defect of the feed found here, reported on issue 53, not yet mended).
             if (ppr == 6 && rpm == 815) {
                 continue;
             }
