@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace parsons::relaylogic {
 namespace {
@@ -80,6 +81,35 @@ HoleRecord hole_from_json(const nlohmann::json& j) {
 }
 
 } // namespace
+
+int net_edges(int reading_change, int edges, int ppr, int last_sense) {
+    const int r = ((reading_change % ppr) + ppr) % ppr; // d modulo ppr, 0 .. ppr - 1
+    // The candidates r + k ppr within [-edges, edges] with edges - d even: the first at or above
+    // -edges, then a revolution apart.
+    const int lowest = r - ((r + edges) / ppr) * ppr;
+    int best = 0;
+    bool found = false;
+    for (int d = lowest; d <= edges; d += ppr) {
+        if ((edges - d) % 2 != 0) {
+            continue;
+        }
+        // Of two, the one in device 13's sense; of more (beyond what the profile allows), the
+        // least in that sense.
+        const bool agrees = d == 0 || (d > 0) == (last_sense > 0);
+        const bool best_agrees = best == 0 || (best > 0) == (last_sense > 0);
+        if (!found || (agrees && !best_agrees) ||
+            (agrees == best_agrees && std::abs(d) < std::abs(best))) {
+            best = d;
+            found = true;
+        }
+    }
+    if (found) {
+        return best;
+    }
+    // No value agrees (a count lost between the registers: never with encoder 32's edges): the
+    // nearest to no motion.
+    return r > ppr / 2 ? r - ppr : r;
+}
 
 void TappingUnits::install(Tracer& tracer, const axes::MachineProfile& profile) {
     if (!profile.spindle_sync) {
@@ -343,14 +373,11 @@ bool TappingUnits::sample(double t, int counter, double real_in, bool feed_at_re
     const int ppr = p.encoder_pulses_per_rev;
     speed_33_->sample();
     const int edges = speed_33_->stored(); // n: the motor's speed S over the last sample
-    // d: the net edges since the last sample, from the counter's two readings (less than half
-    // a revolution a sample: the profile keeps it so).
-    int d = (counter_33_->value() - last_counter_33_) % ppr;
-    if (d > ppr / 2) {
-        d -= ppr;
-    } else if (d < -ppr / 2) {
-        d += ppr;
-    }
+    // d: the net edges since the last sample, from the counter's two readings, the sample's
+    // edges and device 13's sense (net_edges: at most half a revolution a sample, which the
+    // profile keeps).
+    const int d =
+        net_edges(counter_33_->value() - last_counter_33_, edges, ppr, device_13_->last_sense());
     last_counter_33_ = counter_33_->value();
     const int sense = order_.motion == cardreader::Motion::forward ? +1 : -1;
     int moved = (counter - start_counter_) % 10000;

@@ -96,6 +96,17 @@ struct TappingResult {
     bool used = false; // the deck used it (a tap card was read): the report shows it only then
 };
 
+// The net edges d of encoder 32 over one sample of interface 33, as the NC reads them. Register
+// 14 counts modulo a revolution (device 16: ppr edges), so its two readings a sample apart give
+// d only modulo ppr: `reading_change` is the later reading less the earlier. Register 11 counts
+// every edge of the sample whichever its sense, `edges` = forward + backward, while d = forward
+// - backward: so |d| <= edges and edges - d is even (twice the backward ones). d is the value
+// agreeing with all three; of two (edges exactly half a revolution, +-edges), the one in the
+// sense device 13 judged the last edge (the sample turned one way only: an edge the other way
+// would make |d| < edges). Exact whenever a sample holds at most half a revolution of edges (an
+// odd ppr: at most a whole one), which the profile's check keeps (axes/spindle_json.cpp).
+int net_edges(int reading_change, int edges, int ppr, int last_sense);
+
 // What the synchronous operation control asks of the feed axis's follower drive.
 struct FeedCommand {
     int direction = +1;          // along the axis: +1 forward (counters up), -1 reverse
