@@ -8,9 +8,12 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <fcntl.h>
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <sys/wait.h>
 
 #include <unistd.h>
@@ -146,6 +149,39 @@ std::size_t count(const std::string& text, const std::string& what) {
 
 bool running_as_root() {
     return geteuid() == 0;
+}
+
+std::optional<std::filesystem::path> make_device_node(const std::filesystem::path& dir,
+                                                      const std::string& name, unsigned major,
+                                                      unsigned minor) {
+    const std::filesystem::path node = dir / name;
+    if (::mknod(node.c_str(), S_IFCHR | 0666, makedev(major, minor)) != 0) {
+        return std::nullopt; // EPERM: not root, or no CAP_MKNOD
+    }
+    ::chmod(node.c_str(), 0666); // whatever the umask: a user the test runs as may write it
+    // On a folder mounted nodev the node is made but cannot be opened: no use to a test.
+    const int fd = ::open(node.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0) {
+        ::unlink(node.c_str());
+        return std::nullopt;
+    }
+    ::close(fd);
+    return node;
+}
+
+std::string node_kind(const std::filesystem::path& p) {
+    struct stat st {};
+    if (::lstat(p.c_str(), &st) != 0) {
+        return "absent";
+    }
+    if (S_ISCHR(st.st_mode)) {
+        return fmt::format("character device {}:{}", major(st.st_rdev), minor(st.st_rdev));
+    }
+    return S_ISREG(st.st_mode)    ? "regular file"
+           : S_ISDIR(st.st_mode)  ? "folder"
+           : S_ISLNK(st.st_mode)  ? "symbolic link"
+           : S_ISFIFO(st.st_mode) ? "FIFO"
+                                  : "other";
 }
 
 std::string source_path(const std::string& relative) {

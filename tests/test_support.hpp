@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -63,6 +64,16 @@ std::vector<std::string> lines_of(const std::string& text);
 std::size_t count(const std::string& text, const std::string& what);
 // Whether the tests run as root, for whom a file's permissions do not stop a write.
 bool running_as_root();
+// A character device node of the test's own, `dir`/`name` made with mknod (major, minor: 1, 3 is
+// a null device, 1, 7 a full one), so that no test writes the machine's real /dev/null or
+// /dev/full; std::nullopt when the system does not permit it (not root, no CAP_MKNOD, or a
+// folder on a nodev mount: a node there could not be written), and the test says so and skips.
+std::optional<std::filesystem::path> make_device_node(const std::filesystem::path& dir,
+                                                      const std::string& name, unsigned major,
+                                                      unsigned minor);
+// What a path is, for a check that the real /dev/null is untouched: its kind and device numbers
+// ("character device 1:3"), or "absent", "regular file" and so on; never follows a link.
+std::string node_kind(const std::filesystem::path& p);
 std::string source_path(const std::string& relative); // a file of the source tree
 
 // Random orders a layout can hold (a second slow-down only where the layout has the field).
