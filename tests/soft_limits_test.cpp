@@ -132,15 +132,9 @@ TEST_CASE("Soft limits: parsons check lists no card whose move ends exactly on a
     TempDir dir;
     // Up to 0.500, down 0.400 to 0.100, up 0.400 to 0.500 again: each end exactly on a limit of
     // table=0.1:0.5 (0.5 - 0.4 is not 0.1 in binary: the cards are counted in thousandths).
-    write_bytes(dir.path("edge.csv"), std::string(kHeader) +
-                                          "1,0,table,+,3,,,0.500,0.500,1
-                                          " +
-                                          idle_rest(1) +
-                                          "2,0,table,-,3,,,0.100,0.400,1
-                                          " +
-                                          idle_rest(2) +
-                                          "3,0,table,+,3,,,0.500,0.400,1
-                                          " +
+    write_bytes(dir.path("edge.csv"), std::string(kHeader) + "1,0,table,+,3,,,0.500,0.500,1\n" +
+                                          idle_rest(1) + "2,0,table,-,3,,,0.100,0.400,1\n" +
+                                          idle_rest(2) + "3,0,table,+,3,,,0.500,0.400,1\n" +
                                           idle_rest(3));
     const std::string deck = q(dir.str("edge.csv"));
     const auto on = run_parsons("check " + deck + " --limit table=0.1:0.5");
