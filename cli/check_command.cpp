@@ -86,11 +86,11 @@ public:
         }
         if (o.kind == CardKind::tap) {
             const TapOrder& t = o.tap;
-            judge(o, t.axis, (t.motion == Motion::forward ? 1 : -1) * t.depth / 1000.0, true);
+            judge(o, t.axis, (t.motion == Motion::forward ? 1 : -1) * std::int64_t{t.depth}, true);
         } else if (o.kind == CardKind::motion) {
             for (Axis a : kAxes) {
                 const AxisOrder& x = o.axis(a);
-                judge(o, a, (x.motion == Motion::forward ? 1 : -1) * x.check / 1000.0, false);
+                judge(o, a, (x.motion == Motion::forward ? 1 : -1) * std::int64_t{x.check}, false);
             }
         }
     }
@@ -98,11 +98,13 @@ public:
     std::vector<Finding> found;
 
 private:
-    // The axis moves `move` inches from where the cards have put it; a tap comes back.
-    void judge(const CardOrders& o, Axis a, double move, bool returns) {
+    // The axis moves `move` thousandths from where the cards have put it; a tap comes back.
+    // Counted in thousandths, as the cards punch them: 0.500 - 0.400 ends on 0.100 exactly.
+    void judge(const CardOrders& o, Axis a, std::int64_t move, bool returns) {
         const auto& p = profile_.axes.at(axis_index(a));
-        double& pos = at_.at(axis_index(a));
-        const double to = pos + move;
+        std::int64_t& at = at_.at(axis_index(a));
+        const double from = static_cast<double>(at) / 1000.0;
+        const double to = static_cast<double>(at + move) / 1000.0;
         std::string past;
         double limit = 0;
         const char* limit_kind = "";
@@ -119,19 +121,20 @@ private:
         if (!past.empty() && known_) {
             Finding f{index_, o.number, "limit", a,
                       fmt::format("{} {} {:+.3f} in, from {:.3f} to {:.3f} in, past {}",
-                                  axis_name(a), returns ? "taps" : "moves", move, pos, to, past)};
-            f.extra["from_in"] = counter_reading(pos);
+                                  axis_name(a), returns ? "taps" : "moves",
+                                  static_cast<double>(move) / 1000.0, from, to, past)};
+            f.extra["from_in"] = counter_reading(from);
             f.extra["to_in"] = counter_reading(to);
             f.extra["limit_in"] = counter_reading(limit);
             f.extra["limit_kind"] = limit_kind;
             found.push_back(std::move(f));
         }
-        pos = returns ? pos : to;
+        at = returns ? at : at + move;
     }
 
     const axes::MachineProfile& profile_;
     DeckReviewer reviewer_;
-    std::array<double, kAxisCount> at_{};
+    std::array<std::int64_t, kAxisCount> at_{}; // thousandths from the reference zero
     std::int64_t index_ = 0;
     bool known_ = true; // false after a card the reader could not read: positions unknown
 };

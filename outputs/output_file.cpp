@@ -359,8 +359,19 @@ void OutputFile::commit() {
     if (::close(fd) != 0 && errno != EINTR) {
         throw DeckError::in_file(name, "cannot write: " + reason(errno));
     }
-    if (kind_ == Kind::replaced_file && ::rename(temp_path_.c_str(), target_.c_str()) != 0) {
-        throw DeckError::in_file(name, "cannot put the file in place: " + reason(errno));
+    if (kind_ == Kind::replaced_file) {
+        // The last look before the rename: a name that is not, or no longer, a regular file of
+        // its own (a device, a FIFO, a socket, a folder made there since it was opened) is never
+        // replaced, whatever the checks before decided. The temporary file goes (destructor).
+        struct stat st {};
+        if (lstat(target_.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+            throw DeckError::in_file(name, "is no longer a regular file (something else now "
+                                           "stands under its name): not replaced, nothing "
+                                           "written");
+        }
+        if (::rename(temp_path_.c_str(), target_.c_str()) != 0) {
+            throw DeckError::in_file(name, "cannot put the file in place: " + reason(errno));
+        }
     }
     committed_ = true;
     unregister_temporary(temp_slot_); // renamed: nothing of ours left to remove

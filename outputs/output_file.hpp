@@ -14,9 +14,11 @@
 //   device                   |                                         |
 //
 // So a file that is ours is either whole or not there at all (a truncated deck never looks
-// whole), and nothing that is not ours is ever removed or renamed: the only file the writer
-// ever deletes is its own temporary file, created exclusively. Every failed write, standard
-// output included, is a DeckError naming the output and the system's reason (exit 2).
+// whole), and nothing that is not ours is ever removed or renamed (commit() looks once more
+// before its rename: a name that is by then anything but a regular file is never replaced): the
+// only file the writer ever deletes is its own temporary file, created exclusively. Every failed
+// write, standard output included, is a DeckError naming the output and the system's reason (exit
+// 2).
 #pragma once
 
 #include <cerrno>

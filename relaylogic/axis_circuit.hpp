@@ -83,6 +83,11 @@ struct AxisCircuit {
     // (count_hundredths_at_speed_1).
     std::int64_t wrong_way = 0;
     std::int64_t thousandths_uncounted = 0;
+    // Where the motion cards read so far put the part, in thousandths from the reference zero:
+    // the sum of their checks, each in the sense of its motion column (tap cards come back;
+    // the other later cards move no axis by the 1952 columns). A tally of the deck's orders for
+    // the summary, no part of the 1952 machine: nothing in the run reads it.
+    std::int64_t ordered = 0;
     cardreader::AxisOrder order;
 
 private:

@@ -195,6 +195,7 @@ void ControlCabinet::relays_pick() {
     for (auto& c : circuits_) {
         c->order = orders_.axis(c->axis);
         c->set_direction(c->order.motion);
+        c->ordered += (c->order.motion == cardreader::Motion::forward ? 1 : -1) * c->order.check;
         std::array<int, 3> numbers{};
         std::size_t count = 0;
         for (const auto& sd : c->order.slow_down) {

@@ -162,6 +162,8 @@ RunResult ControlCabinet::result() const {
         a.commutator_in = static_cast<double>(c.plant.commutator_index()) / 1000.0;
         a.chain = c.plant.chain_figures();
         a.wrong_way = c.wrong_way;
+        a.ordered_in = static_cast<double>(c.ordered) / 1000.0;
+        a.counted_in = static_cast<double>(c.absolute_counter.unwrapped_value()) / 1000.0;
         a.thousandths_uncounted = c.thousandths_uncounted;
         for (std::size_t k = 0; k < 4; ++k) {
             a.skipped_steps += c.absolute_counter.stepping_switch(k).skipped() ? 1 : 0;

@@ -188,6 +188,7 @@ json AxisCircuit::save() const {
                 {"contact_set_b", contact_set_b},
                 {"wrong_way", wrong_way},
                 {"thousandths_uncounted", thousandths_uncounted},
+                {"ordered", ordered},
                 {"order", o}};
 }
 
@@ -210,6 +211,10 @@ void AxisCircuit::load(const json& j) {
     wrong_way = j.contains("wrong_way") ? read<std::int64_t>(j, "wrong_way") : 0;
     thousandths_uncounted =
         j.contains("thousandths_uncounted") ? read<std::int64_t>(j, "thousandths_uncounted") : 0;
+    // States saved before the cards' orders were tallied: the counters' own count, as if every
+    // card before had ended where it ordered.
+    ordered = j.contains("ordered") ? read<std::int64_t>(j, "ordered")
+                                    : absolute_counter.unwrapped_value();
     const json& o = member(j, "order");
     order.motion = read<std::string>(o, "motion") == "-" ? cardreader::Motion::reverse
                                                          : cardreader::Motion::forward;

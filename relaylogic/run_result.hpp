@@ -36,6 +36,12 @@ struct AxisResult {
     axes::ChainFigures chain;
     std::int64_t wrong_way = 0;
     std::int64_t thousandths_uncounted = 0;
+    // Where the motion cards read put the part (the sum of their checks, each in its motion's
+    // sense, from the reference zero), and what the counters counted, their turns included:
+    // 10 in apart when a card ran its axis a whole turn of the counters past its number, which
+    // no 1952 check can see (outputs/report/run_report.hpp, counter_turns_unseen).
+    double ordered_in = 0;
+    double counted_in = 0;
 };
 
 struct CardTiming {

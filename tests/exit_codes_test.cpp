@@ -162,7 +162,7 @@ TEST_CASE("Exit codes: each command returns 0 when it did its work and 2 on inpu
         {"convert", "convert " + missing + " -o " + q(dir.str("c.bin"))},
         {"gen airfoil", "gen airfoil --dat " + missing + " -o " + q(dir.str("g2.cbn"))},
         {"profile", "profile --profile " + missing},
-        {"demo", "demo --out /dev/null/demo"},
+        {"demo", "demo --out " + q(dir.str("deck.cbn") + "/demo")}, // under a file: no folder
         {"bench", "bench --runs 1000"}};
     for (const auto& [command, args] : bad) {
         const auto r = run_parsons(args);
@@ -183,12 +183,17 @@ TEST_CASE("Exit codes: run returns 3 on a machine stop, 130 on Ctrl-C and 143 on
 
     write_bytes(dir.path("long.csv"), long_listing(4000));
     const std::string deck = q(dir.str("long.cbn"));
+    // The trace goes to a null device of the test's own (never the machine's /dev/null), or,
+    // where mknod is not permitted, to a file of its own.
+    const std::string trace = q(parsons::test::make_device_node(dir.path(""), "null", 1, 3)
+                                    .value_or(dir.path("trace.vcd"))
+                                    .string());
     REQUIRE(run_parsons("punch " + q(dir.str("long.csv")) + " -o " + deck).exit_code == 0);
     // About three seconds of work at the impulse level with a trace (400 cards ran through in
     // 0.3 s on a fast machine): the signal comes first.
     for (const auto& [signal, code] : std::map<std::string, int>{{"INT", 130}, {"TERM", 143}}) {
         const auto r = run_shell("timeout --preserve-status -s " + signal + " 0.3 PARSONS run " +
-                                 deck + " --impulse-level --trace /dev/null -q");
+                                 deck + " --impulse-level --trace " + trace + " -q");
         INFO("SIG" << signal << ":\n" << r.output);
         CHECK(r.exit_code == code);
         CHECK(r.output.find("the operator stopped the run") != std::string::npos);

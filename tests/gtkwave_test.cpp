@@ -404,8 +404,14 @@ TEST_CASE("GTKWave save file: a trace on standard output, /dev/null or a FIFO wr
     CHECK(to_stdout.exit_code == 0);
     CHECK(read_bytes(s.dir.path("got.vcd")).rfind("$version parsons $end", 0) == 0);
     fs::remove(s.dir.path("got.vcd"));
-    CHECK(s.run("--trace /dev/null").exit_code == 0);
-    CHECK_FALSE(fs::exists("/dev/null.gtkw"));
+    // A null device of the test's own (never the machine's /dev/null, issue 53).
+    if (const auto null = test::make_device_node(s.dir.path(""), "null", 1, 3)) {
+        CHECK(s.run("--trace null").exit_code == 0);
+        CHECK(test::node_kind(*null) == "character device 1:3");
+        fs::remove(*null); // the names before and after are compared below
+    } else {
+        WARN("the character device case skipped: mknod is not permitted here");
+    }
     const auto fifo = run_shell("cd " + q(s.dir.str("")) +
                                 " && { cat pipe > got.vcd & PARSONS run deck.cbn -q --trace pipe; "
                                 "rc=$?; wait; exit $rc; }");

@@ -24,6 +24,7 @@
 
 using parsons::cli::OutputFile;
 using parsons::cli::write_file;
+using parsons::test::make_device_node;
 using parsons::test::q;
 using parsons::test::read_bytes;
 using parsons::test::run_parsons;
@@ -121,6 +122,52 @@ TEST_CASE("Output writer: a regular file is replaced whole and keeps its permiss
           (fs::perms::owner_read | fs::perms::owner_write));
 }
 
+TEST_CASE("Output writer: a name that became a device, a FIFO or a folder while the output was "
+          "written is not replaced, and nothing is left beside it",
+          "[output][never-lose]") {
+    // The writer chose a temporary file for a new name (or a regular file); by the time it
+    // commits, something else stands there. The last look before the rename keeps it.
+    TempDir dir;
+    auto became = [&dir](const std::string& name, const std::function<void(const fs::path&)>& make,
+                         mode_t kind) {
+        INFO(name);
+        {
+            OutputFile out(dir.str(name));
+            out.stream() << big_output();
+            make(dir.path(name));
+            CHECK_THROWS_WITH(out.commit(), Catch::Contains(dir.str(name)) &&
+                                                Catch::Contains("is no longer a regular file") &&
+                                                Catch::Contains("not replaced"));
+        }
+        CHECK(kind_of(dir.path(name)) == kind);
+        CHECK(names_in(dir.path("")).size() == 1); // no temporary file beside it
+        fs::remove(dir.path(name));
+    };
+    became(
+        "fifo", [](const fs::path& p) { REQUIRE(mkfifo(p.c_str(), 0600) == 0); }, S_IFIFO);
+    became(
+        "folder", [](const fs::path& p) { fs::create_directory(p); }, S_IFDIR);
+    write_bytes(dir.path("was-a-file"), "old");
+    became(
+        "was-a-file",
+        [](const fs::path& p) {
+            fs::remove(p);
+            REQUIRE(mkfifo(p.c_str(), 0600) == 0);
+        },
+        S_IFIFO);
+    if (make_device_node(dir.path(""), "probe", 1, 3)) {
+        fs::remove(dir.path("probe"));
+        became(
+            "null",
+            [&dir](const fs::path& p) {
+                REQUIRE(make_device_node(dir.path(""), p.filename().string(), 1, 3));
+            },
+            S_IFCHR);
+    } else {
+        WARN("the character device case skipped: mknod is not permitted here");
+    }
+}
+
 TEST_CASE("Output writer: a file named like its temporary file is not ours and stays", "[output]") {
     TempDir dir;
     const std::string lookalike = ".r.json.partial-" + std::to_string(getpid());
@@ -202,19 +249,25 @@ TEST_CASE("Output writer: a FIFO whose reader went away is a broken pipe naming 
 
 TEST_CASE("Output writer: a character device is written straight through and stays a device",
           "[output]") {
-    write_file("/dev/null", big_output());
-    CHECK(kind_of("/dev/null") == S_IFCHR);
-    CHECK_THROWS_WITH(write_file("/dev/full", big_output()),
-                      Catch::Contains("/dev/full") && Catch::Contains("No space left on device"));
-    CHECK(kind_of("/dev/full") == S_IFCHR);
-    if (running_as_root()) {
-        TempDir dir;
-        const fs::path null = dir.path("null");
-        REQUIRE(mknod(null.c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0);
-        write_file(null.string(), "discarded");
-        CHECK(kind_of(null) == S_IFCHR);
-        CHECK(names_in(dir.path("")) == std::vector<std::string>{"null"});
+    // Devices of the test's own (mknod), never the machine's /dev/null or /dev/full (issue 53).
+    TempDir dir;
+    const auto null = make_device_node(dir.path(""), "null", 1, 3);
+    const auto full = make_device_node(dir.path(""), "full", 1, 7);
+    if (!null || !full) {
+        WARN("skipped: mknod is not permitted here (not root, or no CAP_MKNOD), and the test "
+             "writes no device but its own");
+        return;
     }
+    write_file(null->string(), big_output());
+    CHECK(kind_of(*null) == S_IFCHR);
+    write_file(null->string(), "discarded");
+    CHECK(kind_of(*null) == S_IFCHR);
+    CHECK_THROWS_WITH(write_file(full->string(), big_output()),
+                      Catch::Contains(full->string()) &&
+                          Catch::Contains("No space left on device"));
+    CHECK(kind_of(*full) == S_IFCHR);
+    // Nothing beside them: no temporary file, no companion.
+    CHECK(names_in(dir.path("")) == std::vector<std::string>{"full", "null"});
 }
 
 TEST_CASE("Output writer: a Unix socket that listens gets the whole output", "[output]") {
@@ -360,18 +413,16 @@ TEST_CASE("CLI: every output goes into a FIFO, through a link and into a device 
         CHECK(kind_of(link) == S_IFLNK);
         CHECK(read_bytes(dir.path("targets/t")) == expected);
 
-        // A character device: a null device of our own where we may make one, else /dev/null.
-        std::string device_out = "/dev/null";
-        fs::path device = "/dev/null";
-        if (running_as_root()) {
-            device_out = in_dir ? "dev-dir" : "null";
-            device = dir.path(in_dir ? "dev-dir/" + c.file_in_dir : "null");
-            fs::create_directories(device.parent_path());
-            REQUIRE(mknod(device.c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0);
-        }
-        if (!in_dir || running_as_root()) {
+        // A character device: a null device of our own where we may make one (never the
+        // machine's /dev/null), else none.
+        const std::string device_out = in_dir ? "dev-dir" : "null";
+        const fs::path device = dir.path(in_dir ? "dev-dir/" + c.file_in_dir : "null");
+        fs::create_directories(device.parent_path());
+        if (make_device_node(device.parent_path(), device.filename().string(), 1, 3)) {
             CHECK(run_shell(command(device_out)).exit_code == c.exit_code);
             CHECK(kind_of(device) == S_IFCHR);
+        } else {
+            WARN("the character device case skipped: mknod is not permitted here");
         }
         for (const char* name : {"ref", "fifo", "link", "null", "from-fifo", "fifo-dir", "link-dir",
                                  "dev-dir", "targets"}) {

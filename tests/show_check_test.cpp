@@ -1,12 +1,14 @@
 // `parsons show` and `parsons check` do not mislead (issue 11, item 6; issue 29): what they say
 // the machine does is what a run of the deck does, told from its relays; and the run report's
 // position error counts the counters' wrap-arounds.
+#include "outputs/report/machine_story.hpp"
 #include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <string>
@@ -156,4 +158,159 @@ TEST_CASE("Report: a correct move below zero wraps the counter and leaves no pos
     CHECK(table.counter_in == Approx(9.9));
     CHECK(table.real_in == Approx(-0.1).margin(0.0006));
     CHECK(std::abs(table.error_in) < 0.0006);
+}
+
+namespace {
+
+// The story of a run (outputs/report/machine_story.hpp) heard from signals made by hand: the
+// table's motor 38 and the inches switch 104 of its absolute counter, each turn of which is one
+// phrase of the table's tale ("the counters passed 9.999 ...").
+struct HeardStory {
+    cli::MachineStory story;
+    relaylogic::SignalId motor = 0;
+    relaylogic::SignalId inches = 1;
+    double t = 0;
+
+    HeardStory() {
+        story.on_signal_defined({motor, "table", "motor_38", "motor 38", "38", 1}, 0);
+        story.on_signal_defined({inches, "table", "absolute_counter_104", "switch 104", "104", 4},
+                                0);
+    }
+    // Card `index` (number `index`) read; the table's motor starts (one phrase) and its
+    // counters go round `turns` times (one phrase each).
+    void card(std::int64_t index, int turns) {
+        story.on_card(t, index, test::idle_card(static_cast<int>(index), {0, 0, 0, 0, 0}));
+        story.on_signal(t += 1, motor, 0, 1);
+        for (int i = 0; i < turns; ++i) {
+            story.on_signal(t += 1, inches, 9, 0);
+        }
+    }
+    std::vector<std::string> stop(std::int64_t card, std::optional<cardreader::Axis> axis) {
+        relaylogic::StopInfo s;
+        s.reason =
+            axis ? relaylogic::StopReason::limit_switch : relaylogic::StopReason::sequence_stall;
+        s.card = card;
+        s.card_number = static_cast<int>(card);
+        s.axis = axis;
+        s.message = "stopped";
+        story.on_stop(t, s);
+        story.on_finish(t);
+        return story.stop_chain();
+    }
+};
+
+} // namespace
+
+TEST_CASE("Stop chain: an axis's tale is shortened only where that leaves out two events or more, "
+          "never one",
+          "[check][story]") {
+    // Its first 4 phrases and last 8 are told; 13 phrases are told whole (a "... 1 more events
+    // ..." would hide one event behind a line as long as it), 14 leave out 2.
+    HeardStory whole;
+    whole.card(1, 12); // 13 phrases
+    const auto told = whole.stop(1, cardreader::Axis::table);
+    REQUIRE(told.size() == 2);
+    CHECK(count(told[0], "the counters passed 9.999") == 12);
+    CHECK(told[0].find("more events") == std::string::npos);
+
+    HeardStory shortened;
+    shortened.card(1, 13); // 14 phrases
+    const auto cut = shortened.stop(1, cardreader::Axis::table);
+    REQUIRE(cut.size() == 2);
+    CHECK(count(cut[0], "the counters passed 9.999") == 11);
+    // The head (the motor and 3 turns), the line that stands for the 2 left out, the tail (8).
+    const std::string turn = "the counters passed 9.999 and counted on from 0.000, 10 inches on";
+    CHECK_THAT(cut[0], Catch::EndsWith("at 0.000; " + turn + "; " + turn + "; " + turn +
+                                       "; ... 2 more events ...; " + turn + "; " + turn + "; " +
+                                       turn + "; " + turn + "; " + turn + "; " + turn + "; " +
+                                       turn + "; " + turn));
+}
+
+TEST_CASE("Stop chain: the card before the stop's card is told first, then the stop's card, then "
+          "the stop",
+          "[check][story]") {
+    HeardStory s;
+    s.card(1, 1);
+    s.card(2, 2);
+    const auto chain = s.stop(2, cardreader::Axis::table);
+    REQUIRE(chain.size() == 3);
+    CHECK(chain[0].rfind("card 1 (number 0001), table: motor 38 started", 0) == 0);
+    CHECK(count(chain[0], "the counters passed") == 1);
+    CHECK(chain[1].rfind("card 2 (number 0002), table: motor 38 started", 0) == 0);
+    CHECK(count(chain[1], "the counters passed") == 2);
+    CHECK(chain[2].rfind("the machine stopped: limit_switch: stopped", 0) == 0);
+}
+
+TEST_CASE("Stop chain: a stop of no axis is told from its own card alone, not the card before",
+          "[check][story]") {
+    HeardStory s;
+    s.card(1, 1);
+    s.card(2, 0);
+    const auto chain = s.stop(2, std::nullopt);
+    REQUIRE(chain.size() == 2);
+    CHECK(chain[0].rfind("card 2 (number 0002), table: motor 38 started", 0) == 0);
+    CHECK(chain[1].rfind("the machine stopped: sequence_stall: stopped", 0) == 0);
+    for (const std::string& line : chain) {
+        CHECK(line.find("card 1 (number 0001)") == std::string::npos);
+    }
+}
+
+TEST_CASE("Check, show and the summary: an axis that ends a whole turn of its counters from where "
+          "its cards put it is warned of, from the run's own count",
+          "[check][show][report][cli]") {
+    TempDir dir;
+    // Card 2 moves the table 0.003 from 0.001 on speed 1, its slow-downs 0.002 and 0.003: the
+    // motor has barely started when slow-down 1 steps 236, and delay 258 (0.150 s) still holds
+    // channel 257 open as the counters pass 0.003 and 0.004. The table runs on, round the
+    // counters, until they read 0.003 and 0.004 again: 10 inches on. Every 1952 check agrees
+    // (the counters read the card's number, the increment counter its check).
+    write_bytes(dir.path("turn.csv"),
+                std::string(kHeader) + "1,0,table,+,3,,,0.001,0.001,1\n" + idle_rest(1) +
+                    "2,0,table,+,1,0.002,0.003,0.004,0.003,1\n" + idle_rest(2));
+    const std::string deck = q(dir.str("turn.csv"));
+    const std::string said = "ends +10.000 in from where its cards put it: the cards ordered "
+                             "0.004 in, the part is at 10.00425 in; its counters read 0.004, the "
+                             "card's number, having gone round once more than the cards ordered";
+    const auto run = run_parsons("run " + deck);
+    INFO(run.output);
+    CHECK(run.exit_code == 0); // the machine completes: faithful to the relays
+    CHECK_THAT(run.output, Catch::Contains("warning: table " + said));
+    CHECK(count(run.output, "from where its cards put it") == 1);
+
+    const auto check = run_parsons("check " + deck);
+    INFO(check.output);
+    CHECK(check.exit_code == 0);
+    CHECK_THAT(check.output, Catch::Contains("card 2 (number 0002): observed: table: " + said));
+    CHECK_THAT(check.output, Catch::Contains("1 observed"));
+    const auto json = nlohmann::json::parse(run_parsons("check " + deck + " --json").output);
+    bool found = false;
+    for (const auto& f : json["findings"]) {
+        if (f["kind"] == "observed" && f["axis"] == "table" && f["card"] == 2 && f["number"] == 2 &&
+            f["message"].get<std::string>().rfind("ends +10.000 in", 0) == 0) {
+            found = true;
+        }
+    }
+    CHECK(found);
+
+    const auto show = run_parsons("show " + deck);
+    INFO(show.output);
+    CHECK_THAT(show.output, Catch::Contains(said));
+
+    SECTION("a deck that crosses zero both ways and ends where its cards put it is not warned "
+            "of") {
+        // 9.000 forward, 9.400 back through zero (the part at -0.400, the counters at 9.600),
+        // and 9.900 forward through zero again to 9.500.
+        write_bytes(dir.path("ok.csv"), std::string(kHeader) + "1,0,table,+,3,,,9.000,9.000,1\n" +
+                                            idle_rest(1) + "2,0,table,-,3,,,9.600,9.400,1\n" +
+                                            idle_rest(2) + "3,0,table,+,3,,,9.500,9.900,1\n" +
+                                            idle_rest(3));
+        const auto ok = run_parsons("run " + q(dir.str("ok.csv")));
+        INFO(ok.output);
+        CHECK(ok.exit_code == 0);
+        CHECK(count(ok.output, "warning") == 0);
+        const auto quiet = run_parsons("check " + q(dir.str("ok.csv")));
+        INFO(quiet.output);
+        CHECK(quiet.exit_code == 0);
+        CHECK(count(quiet.output, "observed:") == 0);
+    }
 }

@@ -126,6 +126,40 @@ TEST_CASE("Soft limits: a move that ends exactly on the limit is allowed, one 0.
     }
 }
 
+TEST_CASE("Soft limits: parsons check lists no card whose move ends exactly on a soft limit, and "
+          "names the limit a card passes",
+          "[softlimit][check][cli][mutation]") {
+    TempDir dir;
+    // Up to 0.500, down 0.400 to 0.100, up 0.400 to 0.500 again: each end exactly on a limit of
+    // table=0.1:0.5 (0.5 - 0.4 is not 0.1 in binary: the cards are counted in thousandths).
+    write_bytes(dir.path("edge.csv"), std::string(kHeader) + "1,0,table,+,3,,,0.500,0.500,1\n" +
+                                          idle_rest(1) + "2,0,table,-,3,,,0.100,0.400,1\n" +
+                                          idle_rest(2) + "3,0,table,+,3,,,0.500,0.400,1\n" +
+                                          idle_rest(3));
+    const std::string deck = q(dir.str("edge.csv"));
+    const auto on = run_parsons("check " + deck + " --limit table=0.1:0.5");
+    INFO(on.output);
+    CHECK_THAT(on.output, Catch::Contains("3 cards checked: 0 moves past a limit"));
+    CHECK(count(on.output, "past a limit:") == 0);
+    // A thousandth inside at the top: cards 1 and 3 pass it, each named by the maximum it passes.
+    const auto over = run_parsons("check " + deck + " --limit table=0.1:0.499");
+    INFO(over.output);
+    CHECK_THAT(over.output, Catch::Contains("card 1 (number 0001): past a limit: table moves "
+                                            "+0.500 in, from 0.000 to 0.500 in, past its soft "
+                                            "limit 0.499 in (movement range 0.100 .. 0.499 in)"));
+    CHECK_THAT(over.output, Catch::Contains("card 3 (number 0003): past a limit: table moves "
+                                            "+0.400 in, from 0.100 to 0.500 in, past its soft "
+                                            "limit 0.499 in"));
+    CHECK_THAT(over.output, Catch::Contains("3 cards checked: 2 moves past a limit"));
+    // And a thousandth inside at the bottom: card 2, named by the minimum.
+    const auto under = run_parsons("check " + deck + " --limit table=0.101:0.5");
+    INFO(under.output);
+    CHECK_THAT(under.output, Catch::Contains("card 2 (number 0002): past a limit: table moves "
+                                             "-0.400 in, from 0.500 to 0.100 in, past its soft "
+                                             "limit 0.101 in"));
+    CHECK_THAT(under.output, Catch::Contains("3 cards checked: 1 move past a limit"));
+}
+
 TEST_CASE(
     "Soft limits: --limit AXIS=A:A, an empty range, is refused, and the least range is 0.001 in",
     "[softlimit][cli][mutation]") {

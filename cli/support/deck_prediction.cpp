@@ -1,8 +1,10 @@
 #include "cli/support/deck_prediction.hpp"
 
 #include "cli/support/applied_profile.hpp"
+#include "outputs/report/run_report.hpp"
 
 #include "cardreader/deck_error.hpp"
+#include "cardreader/layout.hpp"
 #include "relaylogic/control_cabinet.hpp"
 
 namespace parsons::cli {
@@ -18,6 +20,25 @@ std::vector<relaylogic::Fault> parse_faults(const std::vector<std::string>& spec
     }
     return faults;
 }
+
+namespace {
+
+// What the run's result says that the story, told from the relay events, does not: an axis that
+// ends whole turns of its counters from where its cards put it. The note goes on the last card,
+// its number from the card times the prediction records for it (the run's summary says the
+// same, outputs/report/run_report.hpp).
+void add_result_notes(Prediction& p) {
+    const relaylogic::RunResult& r = p.result;
+    for (cardreader::Axis a : cardreader::kAxes) {
+        std::string turns = counter_turns_warning(r, a);
+        if (!turns.empty()) {
+            const int number = r.cards.empty() ? -1 : r.cards.back().number;
+            p.notes.push_back({r.cards_read, number, a, std::move(turns)});
+        }
+    }
+}
+
+} // namespace
 
 Prediction predict_deck(const PredictionRequest& request, InputDeck& deck) {
     AppliedProfile applied = AppliedProfile::load(request.profile);
@@ -42,6 +63,7 @@ Prediction predict_deck(const PredictionRequest& request, InputDeck& deck) {
     p.layout = deck.options().layout->name;
     p.chain = story.stop_chain();
     p.notes = story.notes();
+    add_result_notes(p);
     deck.rewind();
     return p;
 }

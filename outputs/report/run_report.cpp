@@ -398,8 +398,38 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
                              "was left to catch it",
                              axis_name(a), x.counter_in, *x.last_stop_in));
         }
+        if (const std::string turns = counter_turns_warning(r, a); !turns.empty()) {
+            line(fmt::format("  warning: {} {}", axis_name(a), turns));
+        }
     }
     return out;
+}
+
+std::int64_t counter_turns_unseen(const relaylogic::RunResult& r, Axis a) {
+    if (!r.completed) {
+        return 0;
+    }
+    const auto& x = r.axes.at(cardreader::axis_index(a));
+    const std::int64_t apart = std::llround((x.counted_in - x.ordered_in) * 1000.0);
+    // To the nearest whole turn: what is left over (a coast past the stop) has its own warning.
+    return (apart >= 0 ? apart + 5000 : apart - 5000) / 10000;
+}
+
+std::string counter_turns_warning(const relaylogic::RunResult& r, Axis a) {
+    const std::int64_t turns = counter_turns_unseen(r, a);
+    if (turns == 0) {
+        return "";
+    }
+    const auto& x = r.axes.at(cardreader::axis_index(a));
+    const std::int64_t n = turns < 0 ? -turns : turns;
+    const std::string times = n == 1 ? "once" : n == 2 ? "twice" : fmt::format("{} times", n);
+    return fmt::format("ends {:+.3f} in from where its cards put it: the cards ordered {:.3f} in, "
+                       "the part is at {:.5f} in; its counters read {:.3f}, the card's number, "
+                       "having gone round {} more than the cards ordered: a number passed "
+                       "unseen (while delay 258 held channel 257 open, say) let the axis run on "
+                       "until the counters read it again, which no 1952 check can see",
+                       static_cast<double>(turns) * 10.0, x.ordered_in, x.real_in, x.counter_in,
+                       times);
 }
 
 } // namespace parsons::cli

@@ -25,4 +25,15 @@ nlohmann::json report_json(const relaylogic::RunResult& result, const axes::Mach
 std::string summary_text(const relaylogic::RunResult& result, const std::string& deck,
                          const std::string& profile_name);
 
+// Whole turns of an axis's counters (10 in each) that a run which completed counted beyond what
+// its cards ordered: a card ran the axis past its number and on round the counters until they
+// read it again (an equality missed while delay 258 held channel 257 open, say). The counters
+// then read the card's number, and no 1952 check can see the difference. From the run's own
+// result: its counters' count (AxisResult::counted_in) against the cards' orders
+// (AxisResult::ordered_in). 0 for a run that stopped: the stop is what it says.
+std::int64_t counter_turns_unseen(const relaylogic::RunResult& result, cardreader::Axis axis);
+// The warning for them, without "warning: " and the axis's name ("ends +10.000 in from where
+// its cards put it: ..."), or "" when there are none. The summary, `check` and `show` say it.
+std::string counter_turns_warning(const relaylogic::RunResult& result, cardreader::Axis axis);
+
 } // namespace parsons::cli

@@ -1,10 +1,14 @@
 // The cli target: random command lines of the commands that write files (run, convert, punch,
 // show, gen), each output option given a name from a small vocabulary: the files the command
 // reads, spelled five ways (as given, with ./, through sub/.., a hard link, a symbolic link),
-// new names, an existing file with a hard and a symbolic link to it, a dangling link, "-" and
-// /dev/null. They run in a scratch folder of inputs made once. Whatever the command line:
+// new names, an existing file with a hard and a symbolic link to it, a dangling link, "-" and a
+// null device. They run in a scratch folder of inputs made once. The null device is a node of
+// the scratch folder's own (mknod 1, 3), never the machine's /dev/null: a writer gone wrong must
+// not break the machine it runs on (issue 53); where mknod is not permitted (not root) the name
+// is left out of the vocabulary. Whatever the command line:
 //
 //   - no input changes (bytes, inode, links), and no output writer's temporary file stays;
+//   - the null device stays a character device, and nothing appears beside it;
 //   - a command line whose outputs name one of its inputs, or one file twice (a generated deck's
 //     job description included), is refused: exit 2;
 //   - no command line is an internal error (exit 1), and none crashes or hangs.
@@ -28,6 +32,7 @@
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 #include <vector>
 
@@ -171,6 +176,7 @@ std::string read_text(const fs::path& p) {
 struct Workshop {
     fs::path dir;
     std::map<std::string, std::string> protected_files; // name -> what it must stay
+    bool has_null = false;                              // dir/null is a null device of our own
 
     Workshop() {
         std::string name = (fs::temp_directory_path() / "parsons-fuzz-cli-XXXXXX").string();
@@ -202,6 +208,17 @@ struct Workshop {
             fs::create_symlink(f, dir / ("soft-" + f));
         }
         restore_outputs();
+        // The null device of our own: made, and writable, or left out.
+        const fs::path null = dir / "null";
+        if (::mknod(null.c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0) {
+            const int fd = ::open(null.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+            has_null = fd >= 0;
+            if (fd >= 0) {
+                ::close(fd);
+            } else {
+                ::unlink(null.c_str()); // a nodev mount: of no use
+            }
+        }
         for (const auto& entry : fs::directory_iterator(dir)) {
             const std::string n = entry.path().filename().string();
             if (!entry.is_directory() && n.rfind("old", 0) != 0 && n.rfind("dangling", 0) != 0) {
@@ -251,6 +268,9 @@ struct Workshop {
             if (n.find(".partial-") != std::string::npos) {
                 throw Finding(fmt::format("cli: {} left the temporary file {}", line, n));
             }
+            if (has_null && n.rfind("null.", 0) == 0) {
+                throw Finding(fmt::format("cli: {} wrote {} beside the null device", line, n));
+            }
             if (entry.path().parent_path() == dir && !protected_files.count(n) && n != "sub") {
                 written.push_back(entry.path());
             }
@@ -278,7 +298,7 @@ private:
 
 // The names an output of `t` may be given.
 std::vector<Name> vocabulary(const Template& t, const std::vector<std::string>& reads,
-                             const std::string& s) {
+                             const std::string& s, bool has_null) {
     std::vector<Name> names;
     for (const std::string& f : reads) {
         const std::string id = "input " + f;
@@ -296,9 +316,11 @@ std::vector<Name> vocabulary(const Template& t, const std::vector<std::string>& 
         {s + "/old.csv", "old.csv", "old.csv.job.json"},
         {s + "/old-hard.csv", "old.csv", "old-hard.csv.job.json"},
         {s + "/old-soft.csv", "old.csv", "old-soft.csv.job.json"},
-        {"-", "standard output", ""},
-        {"/dev/null", "", ""}};
+        {"-", "standard output", ""}};
     names.insert(names.end(), others.begin(), others.end());
+    if (has_null) {
+        names.push_back({s + "/null", "", ""});
+    }
     (void)t;
     return names;
 }
@@ -330,7 +352,7 @@ void fuzz_cli(Bytes input) {
         i += with_value ? 1 : 0;
     }
     // Each output: left out (not when required) or a name of the vocabulary.
-    const std::vector<Name> names = vocabulary(t, reads, s);
+    const std::vector<Name> names = vocabulary(t, reads, s, workshop.has_null);
     std::vector<std::pair<std::string, Name>> given;
     for (std::size_t i = 0; i < t.outputs.size(); ++i) {
         const std::uint8_t b = bytes.next();
