@@ -1,13 +1,20 @@
 // Errors in deck files: every one names the file and where in it (line, card, column, byte).
 //
 // Readers throw DeckError; the CLI turns it into exit code 2 with the message as written here.
-// The factories own the wording so that every reader says "where" the same way.
+// The factories own the wording so that every reader says "where" the same way. No message
+// carries a raw control byte to the terminal: every factory writes a byte below 0x20 (but the
+// line end and the tab), DEL, and a byte that is no part of UTF-8 text as \xNN (visible_text).
 #pragma once
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace parsons::cardreader {
+
+// `text` with each control byte (below 0x20 but '\n' and '\t', DEL, a C1 control U+0080 ..
+// U+009F) and each byte that is no part of valid UTF-8 written visibly as \xNN; the rest as is.
+std::string visible_text(std::string_view text);
 
 class DeckError : public std::runtime_error {
 public:

@@ -20,10 +20,11 @@
 namespace parsons::cardreader {
 namespace {
 
-// Refuses a deck with no cards at all: an empty file is a mistake, not an empty job.
-class NonEmptySource : public CardSource {
+// Refuses a deck with no cards at all (an empty file is a mistake, not an empty job) and the
+// card past kMaxDeckCards (five cards a step: the step, whose five cards share one number).
+class BoundedSource : public CardSource {
 public:
-    NonEmptySource(std::unique_ptr<CardSource> inner, std::string file, bool empty_file)
+    BoundedSource(std::unique_ptr<CardSource> inner, std::string file, bool empty_file)
         : inner_(std::move(inner)), file_(std::move(file)), empty_file_(empty_file) {}
 
     std::optional<Card> next() override {
@@ -35,6 +36,17 @@ public:
                                                   "header, comments, blank lines or blank tape");
         }
         any_ = true;
+        if (card && ++read_ > kMaxDeckCards) {
+            const std::int64_t step = inner_->cards_a_step();
+            const std::string which = step == 1 ? fmt::format("card {}", read_)
+                                                : fmt::format("step {} (cards {}-{})", read_,
+                                                              (read_ - 1) * step + 1, read_ * step);
+            throw DeckError::in_file(
+                file_, fmt::format("{}: a deck holds at most 9,999 {} (a card's number is four "
+                                   "digits, columns 77-80: a longer deck would repeat card "
+                                   "numbers); cut the deck in two",
+                                   which, step == 1 ? "cards" : "steps"));
+        }
         return card;
     }
     int cards_a_step() const override { return inner_->cards_a_step(); }
@@ -44,6 +56,7 @@ private:
     std::string file_;
     bool empty_file_ = false;
     bool any_ = false;
+    std::int64_t read_ = 0;
 };
 
 } // namespace
@@ -455,7 +468,7 @@ std::unique_ptr<CardSource> open_card_source(std::istream& in, const DeckOptions
         inner = make_five_card_source(in, options.file_name, *options.layout);
         break;
     }
-    return std::make_unique<NonEmptySource>(std::move(inner), options.file_name, empty_file);
+    return std::make_unique<BoundedSource>(std::move(inner), options.file_name, empty_file);
 }
 
 std::unique_ptr<CardSink> open_card_sink(std::ostream& out, const DeckOptions& options) {

@@ -77,6 +77,11 @@ private:
     std::uint64_t hash_ = 0xcbf29ce484222325ULL;
 };
 
+// A card's number is four digits (columns 77-80): a deck holds at most 9,999 cards. Every
+// reader open_card_source makes refuses the card past that (DeckError naming it), so that no
+// input, however long (/dev/zero, an endless pipe), is read without bound.
+inline constexpr std::int64_t kMaxDeckCards = 9999;
+
 class CardSource {
 public:
     virtual ~CardSource() = default;

@@ -26,6 +26,8 @@ std::string describe_char(int ch) {
 // monitor program, which the 1952 machine does not have: they are passed over and the reader
 // reads on, as sim_card.c does (with a warning when cards follow), so they are never written.
 constexpr ColumnWord kEndOfRecord = 07;
+// The longest line read (a ~raw card is 324 characters): past it, no card image.
+constexpr std::size_t kMaxTextLineBytes = 4096;
 
 bool only_column_1(const Card& card, ColumnWord word) {
     if (card.column(1) != word) {
@@ -78,7 +80,26 @@ private:
         }
         ++line_;
         std::string line;
+        if (line_ == 1 && ch == 0xEF && buf_.sgetc() == 0xBB) {
+            // A UTF-8 byte-order mark (an editor's "UTF-8 with BOM"): read past, as the
+            // listing and the G-code reader read past one (docs/deck-formats.md).
+            buf_.sbumpc();
+            if (buf_.sgetc() != 0xBF) {
+                throw DeckError::at_line_column(file_, line_, 1,
+                                                "bytes 0xef 0xbb begin a byte-order mark that "
+                                                "does not end (0xef 0xbb 0xbf)");
+            }
+            buf_.sbumpc();
+            ch = buf_.sbumpc();
+        }
         for (; ch != traits::eof() && ch != '\n'; ch = buf_.sbumpc()) {
+            if (line.size() >= kMaxTextLineBytes) {
+                throw DeckError::at_line(
+                    file_, line_,
+                    fmt::format("line is longer than {} bytes: no card image is (an endless line "
+                                "or not a text deck)",
+                                kMaxTextLineBytes));
+            }
             if (ch == '\r') {
                 const int after = buf_.sgetc();
                 if (after == '\n' || after == traits::eof()) {
@@ -173,15 +194,13 @@ private:
         int col = 0; // columns filled so far
         for (char c : line) {
             const int ch = static_cast<unsigned char>(c);
-            if (ch == '\t') {
-                col = (col | 7) + 1;
-                if (col > kColumns) {
-                    throw too_long();
-                }
-                continue;
-            }
             if (col >= kColumns) {
-                throw too_long();
+                past_column_80();
+                break;
+            }
+            if (ch == '\t') {
+                col = std::min((col | 7) + 1, kColumns);
+                continue;
             }
             int folded = (ch >= 'a' && ch <= 'z') ? ch - 'a' + 'A' : ch;
             auto punches = punches_for(static_cast<char>(folded), code_);
@@ -197,10 +216,16 @@ private:
         return card;
     }
 
-    DeckError too_long() const {
-        return DeckError::at_line_column(
-            file_, line_, kColumns + 1,
-            "line is longer than 80 columns (a card has 80; nothing is cut off silently)");
+    // Text past column 80 is dropped, as SIMH's sim_card.c drops it; the first line that has
+    // some is told (a card has 80 columns: a sequence number or a note beyond them).
+    void past_column_80() {
+        if (told_past_80_ || !warn_) {
+            return;
+        }
+        told_past_80_ = true;
+        warn_(fmt::format("{}:{}: text past column 80 dropped, as SIMH drops it (a card has 80 "
+                          "columns); the same on any later line, not told again",
+                          file_, line_));
     }
 
     // An end-of-file mark on this line: said when a card comes after it (not at the deck's end).
@@ -225,6 +250,7 @@ private:
     std::function<void(const std::string&)> warn_;
     std::int64_t line_ = 0;
     std::optional<std::string> mark_; // the warning of a mark no card has followed yet
+    bool told_past_80_ = false;
 };
 
 class TextSink : public CardSink {

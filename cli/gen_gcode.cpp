@@ -102,11 +102,11 @@ ExitCode run_gen_gcode(GcodeFlags f) {
     plan.write("-o", f.output);
     plan.check();
     const auto profile = load_profile(f.profile);
-    const std::string text = read_text_file(f.program);
+    const std::string text = read_text_input(f.program);
     const decks::GcodeProgram program = decks::read_gcode(
         text, f.program == "-" ? "standard input" : f.program, {.strict = f.strict});
     for (const std::string& w : program.warnings) {
-        say(stderr, "parsons: warning: " + w + "\n");
+        say(stderr, "parsons: warning: " + cardreader::visible_text(w) + "\n");
     }
     decks::GcodeDeck deck;
     try {

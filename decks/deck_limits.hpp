@@ -9,6 +9,8 @@
 // span it would need; the limits here are the ones that do not depend on the layout.
 #pragma once
 
+#include "cardreader/deck_io.hpp"
+
 #include <cstdint>
 #include <string>
 
@@ -17,7 +19,7 @@ namespace parsons::decks {
 // A card's number is four digits (columns 77-80 of every card kind): a deck of more than 9,999
 // cards would repeat card numbers, so the card-number check could not tell a card lost from
 // the card 10,000 places on, and an operator could not put a dropped deck back in order.
-inline constexpr std::int64_t kMaxDeckCards = 9999;
+inline constexpr std::int64_t kMaxDeckCards = cardreader::kMaxDeckCards;
 
 // The machine moves in impulses of 0.001 in (one step of a counter's lowest decade).
 inline constexpr double kImpulseIn = 0.001;

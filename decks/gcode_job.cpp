@@ -18,6 +18,10 @@ namespace {
 using Eigen::Vector3d;
 
 constexpr double kCounterMaxIn = 9.999;
+// Arithmetic dust (inches): an incremental (G91) program in millimetres that comes back to its
+// start adds up to -5e-17 in, not 0; so little is no excursion below zero (it shifted the work
+// zero by the margin, 0.5 in).
+constexpr double kDustIn = 1e-9;
 // A move that arrives at a sharp turn runs fast to this far before it, and the rest at the
 // lowest speed (inches).
 constexpr double kCornerApproachIn = 0.05;
@@ -182,12 +186,12 @@ void place_work_zero(const std::vector<Design>& design, const GcodeProgram& prog
         double zero = 0;
         if (o.work_zero_in) {
             zero = (*o.work_zero_in)[k];
-        } else if (lo[k] < 0 || hi[k] > kCounterMaxIn) {
+        } else if (lo[k] < -kDustIn || hi[k] > kCounterMaxIn + kDustIn) {
             zero = o.margin_in - lo[k];
         }
         deck.work_zero_in[k] = zero;
-        if (lo[k] + zero < 0 || hi[k] + zero > kCounterMaxIn + 0.0005) {
-            const bool low = lo[k] + zero < 0;
+        if (lo[k] + zero < -kDustIn || hi[k] + zero > kCounterMaxIn + 0.0005) {
+            const bool low = lo[k] + zero < -kDustIn;
             throw JobError(fmt::format(
                 "{}:{}: {} reaches {:.4f} in, {:.4f} in on the counters, which hold 0 to 9.999 in "
                 "(the program spans {:.4f} to {:.4f} in; work zero {:.4f} in{})",

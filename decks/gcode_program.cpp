@@ -37,10 +37,18 @@ struct Word {
 
 class Reader {
 public:
-    Reader(std::string_view text, const std::string& file, bool strict)
-        : text_(text), strict_(strict) {
+    Reader(std::string_view text, const std::string& file, bool strict,
+           std::optional<double> retract_z = std::nullopt)
+        : text_(text), strict_(strict), retract_z_(retract_z) {
         program_.file = file;
+        if (text_.starts_with("\xEF\xBB\xBF")) {
+            text_.remove_prefix(3); // a UTF-8 byte-order mark: read past (docs/gcode.md)
+        }
     }
+
+    // Whether the program holds a G53 retract to machine zero (read as the tool up: a rapid
+    // to the highest Z the program reaches, known once the whole program is read).
+    bool retracts() const { return retracted_; }
 
     GcodeProgram read() {
         std::size_t start = 0;
@@ -136,7 +144,7 @@ private:
         return true;
     }
 
-    std::vector<Word> words_of(std::string_view l) const {
+    std::vector<Word> words_of(std::string_view l) {
         std::vector<Word> words;
         std::size_t i = 0;
         auto skip_blanks = [&] {
@@ -145,6 +153,14 @@ private:
             }
         };
         skip_blanks();
+        if (i < l.size() && (l[i] == '$' || l[i] == '?')) {
+            // grbl's own commands ($H home, $X unlock, $$ settings, $J= jog) and its status
+            // query '?': sent to grbl, not moves of the program.
+            ignore("$/?", std::string(l.substr(i, std::min<std::size_t>(12, l.size() - i))),
+                   "a grbl command or status query ($H, $X, $$, $J=, ?), not a move of the "
+                   "program: the line is skipped");
+            return words;
+        }
         if (i < l.size() && l[i] == '%') {
             ++i;
             skip_blanks();
@@ -226,6 +242,7 @@ private:
         std::optional<Word> tool;        // T
         bool tool_change = false;        // M6
         std::optional<Word> home;        // G28
+        std::optional<Word> machine;     // G53
         std::optional<Word> tool_length; // G43, with its H
         std::optional<Word> blending;    // G64, with its P and Q
         std::vector<Word> h_p_q;         // H, P and Q: only with G43 and G64
@@ -236,10 +253,14 @@ private:
         if (!info) {
             refuse(w.text, "not a G-code parsons reads (docs/gcode.md lists them)");
         }
+        const long tenths = std::lround(w.value * 10);
+        if (tenths == 530) {
+            line.machine = w; // G53: read only as Fusion's retract, G53 G0 Z0 (read_retract)
+            return;
+        }
         if (info->refusal != nullptr) {
             refuse(w.text, info->refusal);
         }
-        const long tenths = std::lround(w.value * 10);
         if (tenths == 280) {
             line.home = w;
         } else if (tenths == 430) {
@@ -359,6 +380,10 @@ private:
         }
         read_setup_words(line);
         read_modes(line);
+        if (line.machine) {
+            read_retract(line);
+            return;
+        }
         if (line.home) {
             read_home(line);
             return;
@@ -432,6 +457,38 @@ private:
         if (line.end_program) {
             ended_ = true;
         }
+    }
+
+    // G53 G0 Z0: Fusion's retract to machine zero, the vertical slide at the top of its travel.
+    // The deck knows only the program's frame, so it is read as the tool up: a rapid to the
+    // highest Z the program reaches (retract_z_), with a warning. Any other G53 is refused.
+    void read_retract(LineWords& line) {
+        const Word& g53 = *line.machine;
+        const auto z = line.axis.find('Z');
+        const bool rapid = line.groups.count(Group::motion) != 0
+                               ? std::lround(line.groups[Group::motion].value * 10) == 0
+                               : motion_ == Mode::rapid;
+        if (!rapid || line.axis.size() != 1 || z == line.axis.end() || z->second.value != 0 ||
+            line.end_program) {
+            refuse(g53.text, "machine coordinates: give the program's own and --work-zero (a "
+                             "G53 is read only as the retract G53 G0 Z0, the tool up)");
+        }
+        if (incremental_) {
+            refuse(g53.text, "a retract to machine zero under G91: give it under G90");
+        }
+        ignore("G53", g53.text + " G0 " + z->second.text,
+               "a retract to machine zero: read as the tool up, a rapid to the highest Z the "
+               "program reaches (the deck knows only the program's frame)");
+        retracted_ = true;
+        if (!retract_z_) {
+            return; // the first reading: the highest Z is not known yet
+        }
+        const double saved = units_;
+        units_ = 1.0;
+        line.machine.reset();
+        line.axis['Z'].value = *retract_z_;
+        read_move(line);
+        units_ = saved;
     }
 
     // In the order RS-274 applies them: units, plane, distance, spindle, then the move.
@@ -616,6 +673,8 @@ private:
     int order_ = 0;
     std::optional<std::int64_t> first_tool_;
     std::optional<std::int64_t> home_; // the line of a G28
+    std::optional<double> retract_z_;  // inches: where a G53 G0 Z0 takes the tool
+    bool retracted_ = false;
     std::int64_t line_ = 0;
     bool ended_ = false;
     double units_ = 1.0;
@@ -630,7 +689,18 @@ private:
 } // namespace
 
 GcodeProgram read_gcode(std::string_view text, const std::string& file, const GcodeReading& how) {
-    return Reader(text, file, how.strict).read();
+    Reader first(text, file, how.strict);
+    GcodeProgram program = first.read();
+    if (!first.retracts()) {
+        return program;
+    }
+    // A G53 retract goes to the highest Z of the program (under G90 every Z is one the program
+    // gives, so the second reading's highest Z is the first's).
+    double top = 0;
+    for (const GcodeMove& m : program.moves) {
+        top = std::max({top, m.from.z(), m.to.z()});
+    }
+    return Reader(text, file, how.strict, top).read();
 }
 
 Vector3d point_on(const GcodeMove& move, double f) {

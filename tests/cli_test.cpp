@@ -152,7 +152,7 @@ TEST_CASE("CLI: bad input files give exit 2, a message naming where, and no outp
          "160 bytes"},
         {"nomark.cbn", std::string(160, '\x40'),
          "nomark.cbn: card 1, byte 1 (offset 0x0): no card-start mark"},
-        {"long.txt", std::string(81, 'A') + "\n", "long.txt:1:81: line is longer than 80 columns"},
+        {"long.txt", std::string(4097, 'A') + "\n", "long.txt:1: line is longer than 4096 bytes"},
         {"odd.txt", "AB{\n", "odd.txt:1:3: '{' is not a character of the IBM 029 keypunch"},
         {"empty.cbn", "", "empty.cbn: empty file: the deck has no cards"},
         {"axis.csv", header + "1,0,tabel,+,3,,,1.000,1.000,1\n",

@@ -1,6 +1,11 @@
 #include "cardreader/deck_error.hpp"
 #include "cardreader/deck_io.hpp"
 
+#include "cardreader/orders.hpp"
+#include "tests/test_support.hpp"
+
+#include <sys/stat.h>
+
 #include <catch2/catch.hpp>
 
 #include <random>
@@ -211,3 +216,112 @@ TEST_CASE("Deck files: content that fits its extension, or no format or several,
         CHECK(found->format == DeckFormat::bin);
     }
 }
+
+// A deck holds at most 9,999 cards (docs/deck-formats.md, "How long a deck may be").
+namespace parsons_limit {
+using namespace parsons;
+using Catch::Matchers::Contains;
+namespace {
+
+std::vector<Card> limit_cards(std::int64_t n) {
+    std::mt19937 rng(53);
+    const Card card = encode(test::random_orders(rng, fig8_layout()), fig8_layout()).card;
+    return std::vector<Card>(static_cast<std::size_t>(n), card);
+}
+
+// How many cards the reader gives from `bytes`, or its DeckError.
+std::string limit_read_all(const std::string& bytes, DeckFormat format) {
+    std::istringstream in(bytes);
+    DeckOptions options;
+    options.format = format;
+    options.file_name = "d";
+    auto source = open_card_source(in, options);
+    std::int64_t n = 0;
+    try {
+        while (source->next()) {
+            ++n;
+        }
+    } catch (const DeckError& e) {
+        return e.what();
+    }
+    return std::to_string(n) + " cards";
+}
+
+} // namespace
+
+TEST_CASE("Deck limit: 9,999 cards are read and card 10,000 is refused by name, in every format",
+          "[deck-io][deck-limit]") {
+    for (const DeckFormat f : {DeckFormat::cbn, DeckFormat::bin, DeckFormat::text,
+                               DeckFormat::listing, DeckFormat::tape}) {
+        INFO(format_name(f));
+        CHECK(limit_read_all(test::deck_bytes(limit_cards(9999), f), f) == "9999 cards");
+        CHECK_THAT(limit_read_all(test::deck_bytes(limit_cards(10000), f), f),
+                   Contains("d: card 10000: a deck holds at most 9,999 cards"));
+    }
+    SECTION(".five: five cards a step share one number: 9,999 steps, step 10,000 refused") {
+        const DeckFormat f = DeckFormat::five;
+        CHECK(limit_read_all(test::deck_bytes(limit_cards(9999), f), f) == "9999 cards");
+        CHECK_THAT(limit_read_all(test::deck_bytes(limit_cards(10000), f), f),
+                   Contains("d: step 10000 (cards 49996-50000): a deck holds at most 9,999 steps"));
+    }
+}
+
+TEST_CASE("Deck limit: a text line with no end is refused at its line, in bounded memory",
+          "[deck-io][deck-limit]") {
+    CHECK(limit_read_all(std::string(4096, 'A') + "\n", DeckFormat::text) == "1 cards");
+    CHECK_THAT(limit_read_all(std::string(4097, 'A'), DeckFormat::text),
+               Contains("d:1: line is longer than 4096 bytes"));
+}
+
+TEST_CASE("Deck limit: standard input, a FIFO and a device are judged at card 10,000 in bounded "
+          "memory and time",
+          "[deck-io][deck-limit][cli]") {
+    test::TempDir dir;
+    // Under a memory limit of 300 MB: once, all of /dev/zero was kept (3.3 GB after 8 s).
+    const std::string limit = "ulimit -v 300000; ";
+    SECTION("an endless text deck on standard input") {
+        const auto r = test::run_shell(limit + "yes X | timeout 60 PARSONS run - -q");
+        CHECK(r.exit_code == 2);
+        CHECK_THAT(r.output, Contains("standard input: card 10000: a deck holds at most 9,999"));
+    }
+    SECTION("an endless listing on standard input") {
+        const auto r = test::run_shell(
+            limit + "(echo card,spindle,axis,motion,speed,slow1,slow2,stop,check,seq; n=0; "
+                    "while :; do echo \"$((n % 10000)),,table,+,3,,,0.001,0.001,5\"; n=$((n+1)); "
+                    "done) | timeout 120 PARSONS check -");
+        CHECK(r.exit_code == 2);
+        CHECK_THAT(r.output, Contains("standard input: card 10000: a deck holds at most 9,999"));
+    }
+    SECTION("/dev/zero (blank .bin cards for ever), read, never written") {
+        for (const std::string command : {"show", "run", "check"}) {
+            const auto r = test::run_shell(limit + "timeout 60 PARSONS " + command + " /dev/zero" +
+                                           (command == "run" ? " -q" : ""));
+            INFO(command << ": " << r.output);
+            CHECK(r.exit_code == 2);
+            CHECK_THAT(r.output, Contains("/dev/zero: card 10000: a deck holds at most 9,999"));
+        }
+    }
+    SECTION("endless comments: refused past 64 MiB, in bounded memory") {
+        const auto r = test::run_shell(limit + "yes '# x' | timeout 60 PARSONS run - --format "
+                                               "listing -q");
+        CHECK(r.exit_code == 2);
+        CHECK_THAT(r.output, Contains("standard input: more than 64 MiB read and still no end"));
+    }
+    SECTION("an endless line on a FIFO the test makes") {
+        const std::string fifo = dir.str("deck.txt");
+        REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+        const auto r = test::run_shell(limit + "(tr '\\0' A < /dev/zero > " + test::q(fifo) +
+                                       " &) ; timeout 60 PARSONS show " + test::q(fifo));
+        CHECK(r.exit_code == 2);
+        CHECK_THAT(r.output, Contains("deck.txt:1: line is longer than 4096 bytes"));
+    }
+    SECTION("9,999 cards from a pipe are a deck: run reads it whole") {
+        test::write_bytes(dir.path("d.txt"), test::deck_bytes(limit_cards(9999), DeckFormat::text));
+        const auto r =
+            test::run_shell(limit + "cat " + test::q(dir.str("d.txt")) + " | PARSONS show -");
+        CHECK(r.exit_code != 2);
+        CHECK_THAT(r.output, !Contains("at most 9,999"));
+    }
+}
+
+} // namespace parsons_limit

@@ -602,3 +602,149 @@ TEST_CASE("G-code commands: gen gcode reads a post's program with its warnings o
     r = test::run_parsons("gen gcode --help");
     CHECK_THAT(r.output, Contains("--strict"));
 }
+
+TEST_CASE("G-code: a second tool is refused whatever its number, higher or lower than the first's",
+          "[gcode]") {
+    CHECK_THAT(refusal("G20\nT3 M6\nG1 X1\nT5 M6\n"),
+               Contains("p.ngc:4: T5: a second tool (the program began with T3)"));
+    CHECK_THAT(refusal("G20\nT3 M6\nG1 X1\nT1 M6\n"),
+               Contains("p.ngc:4: T1: a second tool (the program began with T3)"));
+    // The same tool again is no second tool.
+    CHECK(read("G20\nT3 M6\nG1 X1\nT3 M6\nG1 X2\n").moves.size() == 2);
+}
+
+TEST_CASE("G-code: a program number followed by a ';' comment is a program number", "[gcode]") {
+    const auto p = read("O1234 ; the bracket\nG20 G1 X1\n");
+    REQUIRE(p.moves.size() == 1);
+    REQUIRE(p.ignored.size() == 1);
+    CHECK_THAT(p.ignored[0], Contains("O (first on line 1)"));
+    CHECK(read("N5 O<part>;x\nG20 G1 X1\n").ignored.size() == 1);
+    // Anything else after it is LinuxCNC's subroutines, refused.
+    CHECK_THAT(refusal("O1234 sub\n"), Contains("p.ngc:1: O: parameters"));
+}
+
+TEST_CASE("G-code: a UTF-8 byte-order mark at the start of a program is read past", "[gcode]") {
+    const auto p = read("\xEF\xBB\xBFG20 G1 X1\n");
+    REQUIRE(p.moves.size() == 1);
+    CHECK(p.moves[0].to == Vector3d(1, 0, 0));
+    // Only at the start: elsewhere the bytes are no G-code, named visibly.
+    CHECK_THAT(refusal("G20\n\xEF\xBB\xBFG1 X1\n"), Contains("p.ngc:2: \\xef: not a G-code word"));
+}
+
+TEST_CASE("G-code: Fusion's retract G53 G0 Z0 is the tool up to the program's highest Z, with a "
+          "warning",
+          "[gcode]") {
+    const auto p = read("G21 G90\nG0 Z15\nG1 Z-1 F100\nG1 X10\nG53 G0 Z0.\nG0 X0\n");
+    REQUIRE(p.moves.size() == 5);
+    CHECK(p.moves[3].line == 5);
+    CHECK(p.moves[3].motion == decks::GcodeMotion::rapid);
+    CHECK(p.moves[3].to.z() == Approx(15 / 25.4));
+    CHECK(p.moves[3].to.x() == Approx(10 / 25.4));
+    CHECK(p.moves[4].from.z() == Approx(15 / 25.4)); // the tool stays up
+    REQUIRE(p.warnings.size() == 2);
+    CHECK_THAT(p.warnings[1], Contains("p.ngc:5: G53 G0 Z0. ignored: a retract to machine zero: "
+                                       "read as the tool up"));
+    SECTION("a program that never rises above its zero: the tool up is Z 0") {
+        const auto q = read("G20\nG1 Z-0.1\nG53 G0 Z0\n");
+        REQUIRE(q.moves.size() == 2);
+        CHECK(q.moves[1].to.z() == 0);
+    }
+    SECTION("any other G53 is refused, and the retract under --strict") {
+        CHECK_THAT(refusal("G20\nG53 G0 X0\n"), Contains("p.ngc:2: G53: machine coordinates"));
+        CHECK_THAT(refusal("G20\nG53 G0 Z-2\n"), Contains("p.ngc:2: G53: machine coordinates"));
+        CHECK_THAT(refusal("G20\nG53 G1 Z0\n"), Contains("p.ngc:2: G53: machine coordinates"));
+        CHECK_THAT(refusal("G20 G91\nG53 G0 Z0\n"), Contains("p.ngc:2: G53: a retract"));
+        try {
+            decks::read_gcode("G20\nG1 Z-1\nG53 G0 Z0\n", "p.ngc", {.strict = true});
+            FAIL("no refusal");
+        } catch (const cardreader::DeckError& e) {
+            CHECK_THAT(e.what(), Contains("p.ngc:3: G53 G0 Z0: a retract to machine zero"));
+        }
+    }
+}
+
+TEST_CASE("G-code: grbl's $ commands and ? queries are skipped with a warning", "[gcode]") {
+    const auto p = read("$H\n$X\n?\nG20 G1 X1\n$$\n");
+    REQUIRE(p.moves.size() == 1);
+    REQUIRE(p.warnings.size() == 1);
+    CHECK_THAT(p.warnings[0], Contains("p.ngc:1: $H ignored: a grbl command or status query"));
+    CHECK_THAT(p.warnings[0], Contains("the same on 3 later lines"));
+    CHECK_THAT(refusal("G20 G1 X1 $H\n"), Contains("p.ngc:1: $: not a G-code word"));
+}
+
+TEST_CASE("G-code commands: gen gcode - reads the program from standard input, as --help says",
+          "[gcode][cli]") {
+    test::TempDir dir;
+    const std::string sample = test::source_path("decks/samples/bracket.ngc");
+    auto r = test::run_shell("PARSONS gen gcode - -o " + test::q(dir.str("in.cbn")) + " < " +
+                             test::q(sample));
+    REQUIRE(r.exit_code == 0);
+    r = test::run_parsons("gen gcode " + test::q(sample) + " -o " + test::q(dir.str("file.cbn")));
+    REQUIRE(r.exit_code == 0);
+    CHECK(test::read_bytes(dir.path("in.cbn")) == test::read_bytes(dir.path("file.cbn")));
+    r = test::run_shell("printf 'G20\\nG41 X1\\n' | PARSONS gen gcode - -o " +
+                        test::q(dir.str("x.cbn")));
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Contains("standard input:2: G41"));
+}
+
+TEST_CASE("G-code commands: a folder is refused as a folder, by every command that reads a file",
+          "[gcode][cli]") {
+    test::TempDir dir;
+    std::filesystem::create_directory(dir.path("prog.ngc"));
+    auto r = test::run_parsons("gen gcode " + test::q(dir.str("prog.ngc")) + " -o " +
+                               test::q(dir.str("x.cbn")));
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Contains(dir.str("prog.ngc") + ": is a directory"));
+    CHECK_THAT(r.output, !Contains("nothing to punch"));
+    std::filesystem::create_directory(dir.path("deck.cbn"));
+    for (const std::string command : {"run", "check", "show"}) {
+        r = test::run_parsons(command + " " + test::q(dir.str("deck.cbn")));
+        INFO(command);
+        CHECK(r.exit_code == 2);
+        CHECK_THAT(r.output, Contains(dir.str("deck.cbn") + ": is a directory"));
+    }
+    r = test::run_parsons("convert " + test::q(dir.str("deck.cbn")) + " -o " +
+                          test::q(dir.str("y.csv")));
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Contains(dir.str("deck.cbn") + ": is a directory"));
+    r = test::run_parsons("run " + test::q(test::source_path(test::kSample)) + " --profile " +
+                          test::q(dir.str("deck.cbn")));
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Contains(dir.str("deck.cbn") + ": is a directory"));
+}
+
+TEST_CASE("G-code commands: a program that begins with a byte-order mark makes the deck the "
+          "program without one makes",
+          "[gcode][cli]") {
+    test::TempDir dir;
+    const std::string sample = test::source_path("decks/samples/bracket.ngc");
+    test::write_bytes(dir.path("bom.ngc"), "\xEF\xBB\xBF" + test::read_bytes(sample));
+    auto r = test::run_parsons("gen gcode " + test::q(dir.str("bom.ngc")) + " -o " +
+                               test::q(dir.str("bom.cbn")));
+    REQUIRE(r.exit_code == 0);
+    r = test::run_parsons("gen gcode " + test::q(sample) + " -o " + test::q(dir.str("b.cbn")));
+    REQUIRE(r.exit_code == 0);
+    CHECK(test::read_bytes(dir.path("bom.cbn")) == test::read_bytes(dir.path("b.cbn")));
+}
+
+TEST_CASE("G-code deck: an incremental millimetre program that comes back to its start keeps the "
+          "work zero of its absolute twin",
+          "[gcode]") {
+    // Y +1 mm, +5 mm, -6 mm adds up to -2.8e-17 in, not 0: once read as a dip below zero, it
+    // moved the cross slide's work zero by the margin, 0.5 in.
+    const auto incremental = read("G21 G91\nG1 Y1\nY5\nY-6\nX10\n");
+    const auto absolute = read("G21 G90\nG1 Y1\nY6\nY0\nX10\n");
+    REQUIRE(incremental.moves.size() == 4);
+    CHECK(incremental.moves[2].to.y() < 0); // the dust the rule is about
+    decks::GcodeJobOptions o;
+    const auto profile = axes::default_profile();
+    const auto a = decks::make_gcode_deck(incremental, o, profile);
+    const auto b = decks::make_gcode_deck(absolute, o, profile);
+    CHECK(a.work_zero_in.y() == 0);
+    CHECK(a.work_zero_in == b.work_zero_in);
+    REQUIRE(a.cards.size() == b.cards.size());
+    // A real dip below zero, however small on the counters, still moves it by the margin.
+    const auto dip = decks::make_gcode_deck(read("G21 G91\nG1 Y1\nY-1.001\nX10\n"), o, profile);
+    CHECK(dip.work_zero_in.y() == Approx(0.5 + 0.001 / 25.4));
+}

@@ -75,16 +75,57 @@ TEST_CASE("Text cards: CRLF line ends read the same as LF", "[text]") {
     CHECK(text_error("AB\rCD\n") == "deck.txt:1:3: carriage return inside a line");
 }
 
-TEST_CASE("Text cards: a line over 80 columns is an error naming file and line",
+TEST_CASE("Text cards: text past column 80 is dropped as SIMH drops it, with one warning naming "
+          "the line",
           "[text][bad-input]") {
     const std::string eighty(80, 'X');
-    CHECK(read_text(eighty + "\n").size() == 1);
-    CHECK(text_error("OK\n" + eighty + "Y\n") ==
-          "deck.txt:2:81: line is longer than 80 columns (a card has 80; nothing is cut off "
-          "silently)");
-    CHECK(text_error(std::string(79, ' ') + "\tX\n") ==
-          "deck.txt:1:81: line is longer than 80 columns (a card has 80; nothing is cut off "
-          "silently)");
+    std::vector<std::string> warnings;
+    const auto cards = read_text("OK\n" + eighty + "\n" + eighty + "{}~ seq 0010\n" +
+                                     std::string(79, ' ') + "\tX\n" + eighty + "Y\n",
+                                 KeypunchCode::ibm029, &warnings);
+    REQUIRE(cards.size() == 5);
+    CHECK(cards[2] == cards[1]); // the 80 columns, the rest dropped unread ('{' and '~' too)
+    CHECK(cards[3].column(80) == 0);
+    CHECK(cards[3].column(79) == 0);
+    CHECK(cards[4] == cards[1]);
+    REQUIRE(warnings.size() == 1);
+    CHECK(warnings[0] == "deck.txt:3: text past column 80 dropped, as SIMH drops it (a card has 80 "
+                         "columns); the same on any later line, not told again");
+    warnings.clear();
+    read_text(eighty + "\n", KeypunchCode::ibm029, &warnings);
+    CHECK(warnings.empty()); // exactly 80 columns is a whole card
+    SECTION("a line of more than 4,096 bytes is no card image") {
+        CHECK(text_error(std::string(4096, 'A') + "\n") == "no error");
+        CHECK(text_error("A\n" + std::string(4097, 'A')) ==
+              "deck.txt:2: line is longer than 4096 bytes: no card image is (an endless line or "
+              "not a text deck)");
+    }
+}
+
+TEST_CASE("Text cards: a UTF-8 byte-order mark at the start is read past, as in a listing",
+          "[text]") {
+    CHECK(read_text("\xEF\xBB\xBF"
+                    "AB\nC\n") == read_text("AB\nC\n"));
+    CHECK(read_text("\xEF\xBB\xBF") == read_text("\n")); // the mark alone: one blank line
+    // Only at the start: elsewhere its first byte is no keypunch character.
+    CHECK(text_error("A\n\xEF\xBB\xBF\n") ==
+          "deck.txt:2:1: byte 0xef is not a character of the IBM 029 keypunch");
+    CHECK(text_error("\xEF\xBB"
+                     "A\n") ==
+          "deck.txt:1:1: bytes 0xef 0xbb begin a byte-order mark that does not end (0xef 0xbb "
+          "0xbf)");
+}
+
+TEST_CASE("Deck errors: control bytes a file holds are written visibly as \\xNN, never raw",
+          "[text][deck-io][bad-input]") {
+    CHECK(text_error("~\x1b[2J\n") ==
+          "deck.txt:1:1: '~\\x1b[2J' is no SIMH control line (~raw followed by octal column "
+          "words, ~eor, ~eof, ~eoi, or a lone ~); '~' is no keypunch character");
+    CHECK(parsons::test::listing_error("1,0,t\x1b]0;x\x07\x7f\xff\xc2\x9b,+,3,,,1.000,1.000,1\n")
+              .find("unknown axis 't\\x1b]0;x\\x07\\x7f\\xff\\xc2\\x9b'") != std::string::npos);
+    // Text that is UTF-8 stays as it is, and so do tabs and line ends.
+    CHECK(visible_text("caf\xC3\xA9 \xE2\x80\x94\t\n") == "caf\xC3\xA9 \xE2\x80\x94\t\n");
+    CHECK(visible_text("\r\x01") == "\\x0d\\x01");
 }
 
 TEST_CASE("Text cards: a character outside the 029 set names line and column",

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -34,7 +35,133 @@ namespace {
 constexpr auto kFormatFromBytes = static_cast<cardreader::DeckFormat>(0xFF);
 constexpr std::size_t kHeadBytes = cardreader::kDeckHeadBytes;
 
+// The most a deck read from a pipe or device may hold before its card past 9,999: 9,999
+// cards of any format take far less (a listing row a card and axis, 4,096 bytes a line at
+// most, is the longest); only endless comments or blank lines come here.
+constexpr std::size_t kMostPipedBytes = std::size_t{64} << 20;
+
+// The whole of `in`, at most kMostPipedBytes (a device such as /dev/zero never ends).
+std::string read_bounded(std::istream& in, const std::string& name) {
+    std::string text;
+    std::array<char, 65536> chunk{};
+    while (in) {
+        in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+        text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+        if (text.size() > kMostPipedBytes) {
+            throw DeckError::in_file(name, fmt::format("more than {} MiB: no program, profile or "
+                                                       "job parsons reads is that long",
+                                                       kMostPipedBytes >> 20));
+        }
+    }
+    if (in.bad()) {
+        throw DeckError::in_file(name, "read error");
+    }
+    return text;
+}
+
 } // namespace
+
+// Standard input, a FIFO or a device, kept as it is read so that it can be read again from
+// the start; it reads nothing more than its readers ask, and at most kMostPipedBytes.
+class PipedInput : public std::streambuf {
+public:
+    PipedInput(std::istream* source, std::unique_ptr<std::istream> owned)
+        : source_(source), owned_(std::move(owned)) {
+        setg(data_.data(), data_.data(), data_.data());
+    }
+    bool over() const { return over_; }
+    bool failed() const { return source_->bad(); }
+
+protected:
+    int_type underflow() override {
+        if (gptr() < egptr()) {
+            return traits_type::to_int_type(*gptr());
+        }
+        const auto pos = static_cast<std::size_t>(gptr() - eback());
+        if (pos >= data_.size() && !done_) {
+            if (data_.size() >= kMostPipedBytes) {
+                over_ = true;
+                done_ = true;
+            } else {
+                std::array<char, 4096> chunk{};
+                source_->read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+                const auto n = static_cast<std::size_t>(source_->gcount());
+                done_ = n == 0;
+                data_.append(chunk.data(), n);
+            }
+        }
+        setg(data_.data(), data_.data() + pos, data_.data() + data_.size());
+        return gptr() < egptr() ? traits_type::to_int_type(*gptr()) : traits_type::eof();
+    }
+    pos_type seekoff(off_type off, std::ios_base::seekdir dir, std::ios_base::openmode) override {
+        if (dir == std::ios_base::cur) {
+            return seekpos(gptr() - eback() + off, std::ios_base::in);
+        }
+        return dir == std::ios_base::beg ? seekpos(off, std::ios_base::in) : pos_type(-1);
+    }
+    pos_type seekpos(pos_type pos, std::ios_base::openmode) override {
+        if (pos < 0 || static_cast<std::size_t>(pos) > data_.size()) {
+            return pos_type(-1);
+        }
+        setg(data_.data(), data_.data() + static_cast<std::size_t>(pos),
+             data_.data() + data_.size());
+        return pos;
+    }
+
+private:
+    std::istream* source_;
+    std::unique_ptr<std::istream> owned_;
+    std::string data_;
+    bool done_ = false;
+    bool over_ = false;
+};
+
+// An istream over a PipedInput it owns.
+class PipedStream : public std::istream {
+public:
+    explicit PipedStream(std::unique_ptr<PipedInput> buf)
+        : std::istream(buf.get()), buf_(std::move(buf)) {}
+
+private:
+    std::unique_ptr<PipedInput> buf_;
+};
+
+// The readers' cards from a PipedInput: past kMostPipedBytes, the deck is refused.
+class PipedSource : public cardreader::CardSource {
+public:
+    PipedSource(std::unique_ptr<cardreader::CardSource> inner, const PipedInput& piped,
+                std::string file)
+        : inner_(std::move(inner)), piped_(piped), file_(std::move(file)) {}
+    std::optional<cardreader::Card> next() override {
+        std::optional<cardreader::Card> card;
+        try {
+            card = inner_->next();
+        } catch (const DeckError&) {
+            refuse_if_over();
+            throw;
+        }
+        if (!card) {
+            refuse_if_over();
+        }
+        return card;
+    }
+    int cards_a_step() const override { return inner_->cards_a_step(); }
+
+private:
+    void refuse_if_over() const {
+        if (piped_.over()) {
+            throw DeckError::in_file(
+                file_, fmt::format("more than {} MiB read and still no end of the deck: no deck "
+                                   "of 9,999 cards is that long (endless comments or blank "
+                                   "lines?)",
+                                   kMostPipedBytes >> 20));
+        }
+    }
+
+    std::unique_ptr<cardreader::CardSource> inner_;
+    const PipedInput& piped_;
+    std::string file_;
+};
 
 void add_input_flags(CLI::App& cmd, DeckFlags& flags) {
     cmd.add_option(
@@ -115,45 +242,43 @@ InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
     : options_(deck_options(path, flags.format, flags)) {
     const bool from_bytes = options_.format == kFormatFromBytes;
     std::string head;
+    std::unique_ptr<std::istream> file_stream;
+    std::istream* source = &std::cin;
     if (path == "-") {
-        // Standard input, read whole: its format may have to be told from its first bytes.
-        std::string bytes{std::istreambuf_iterator<char>(std::cin),
-                          std::istreambuf_iterator<char>()};
-        if (std::cin.bad()) {
-            throw DeckError::in_file("standard input", "read error");
-        }
         options_.file_name = "standard input";
-        head = bytes.substr(0, kHeadBytes);
-        size_bytes_ = static_cast<double>(bytes.size());
-        in_ = std::make_unique<std::istringstream>(std::move(bytes));
     } else {
         if (std::filesystem::is_directory(path)) {
             throw DeckError::in_file(path, "is a directory, not a deck");
         }
-        auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
-        if (!*file) {
+        file_stream = std::make_unique<std::ifstream>(path, std::ios::binary);
+        if (!*file_stream) {
             throw DeckError::in_file(path, std::string("cannot open: ") + std::strerror(errno));
         }
-        if (!std::filesystem::is_regular_file(path)) {
-            // A FIFO or a device: read whole, so that the deck can be read twice (rewind).
-            std::string bytes{std::istreambuf_iterator<char>(*file),
-                              std::istreambuf_iterator<char>()};
-            if (file->bad()) {
-                throw DeckError::in_file(path, "read error");
-            }
-            head = bytes.substr(0, kHeadBytes);
-            size_bytes_ = static_cast<double>(bytes.size());
-            in_ = std::make_unique<std::istringstream>(std::move(bytes));
-        } else {
-            head.resize(kHeadBytes);
-            file->read(head.data(), static_cast<std::streamsize>(head.size()));
-            head.resize(static_cast<std::size_t>(file->gcount()));
-            file->clear();
-            file->seekg(0);
-            in_ = std::move(file);
-            std::error_code ec;
-            size_bytes_ = static_cast<double>(std::filesystem::file_size(path, ec));
+        source = file_stream.get();
+    }
+    if (path != "-" && std::filesystem::is_regular_file(path)) {
+        head.resize(kHeadBytes);
+        source->read(head.data(), static_cast<std::streamsize>(head.size()));
+        head.resize(static_cast<std::size_t>(source->gcount()));
+        source->clear();
+        source->seekg(0);
+        std::error_code ec;
+        size_bytes_ = static_cast<double>(std::filesystem::file_size(path, ec));
+        in_ = std::move(file_stream);
+    } else {
+        // Standard input, a FIFO or a device: kept as it is read (so that the deck can be read
+        // twice, rewind), never more than the readers take: they stop at the card past 9,999,
+        // and at kMostPipedBytes of lines that hold no card.
+        auto piped = std::make_unique<PipedInput>(source, std::move(file_stream));
+        head.resize(kHeadBytes);
+        head.resize(static_cast<std::size_t>(
+            piped->sgetn(head.data(), static_cast<std::streamsize>(head.size()))));
+        piped->pubseekpos(0);
+        if (piped->failed()) {
+            throw DeckError::in_file(options_.file_name, "read error");
         }
+        piped_ = piped.get();
+        in_ = std::make_unique<PipedStream>(std::move(piped));
     }
     if (auto kind = cardreader::non_deck_kind(head)) {
         throw DeckError::in_file(options_.file_name, "this is " + *kind + ", not a deck of cards");
@@ -178,10 +303,19 @@ InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
     // (run reads it through before the run when it holds condition, sync or tap cards).
     options_.warn = [said = std::make_shared<std::set<std::string>>()](const std::string& what) {
         if (said->insert(what).second) {
-            say(stderr, "parsons: warning: " + what + "\n");
+            say(stderr, "parsons: warning: " + cardreader::visible_text(what) + "\n");
         }
     };
+    open_source();
+}
+
+// The readers' cards; from a pipe, a deck that goes on past kMostPipedBytes without reaching
+// its card past 9,999 is refused there (the pipe's end is not the deck's).
+void InputDeck::open_source() {
     source_ = cardreader::open_card_source(*in_, options_);
+    if (piped_ != nullptr) {
+        source_ = std::make_unique<PipedSource>(std::move(source_), *piped_, options_.file_name);
+    }
 }
 
 // The format the extension gave yields to what the bytes plainly are
@@ -208,8 +342,10 @@ void InputDeck::content_outranks_extension(const std::string& head) {
 void InputDeck::rewind() {
     in_->clear();
     in_->seekg(0);
-    source_ = cardreader::open_card_source(*in_, options_);
+    open_source();
 }
+
+InputDeck::~InputDeck() = default;
 
 std::vector<int> tool_numbers(const axes::MachineProfile& profile) {
     std::vector<int> numbers;
@@ -283,14 +419,19 @@ double InputDeck::fraction_read() {
 }
 
 std::string read_text_file(const std::string& file, const std::string& missing) {
+    if (std::filesystem::is_directory(file)) {
+        throw DeckError::in_file(file, "is a directory, not a file");
+    }
     std::ifstream in(file, std::ios::binary);
     if (!in) {
         throw DeckError::in_file(
             file, missing.empty() ? std::string("cannot open: ") + std::strerror(errno) : missing);
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    return read_bounded(in, file);
+}
+
+std::string read_text_input(const std::string& file) {
+    return file == "-" ? read_bounded(std::cin, "standard input") : read_text_file(file);
 }
 
 axes::MachineProfile load_profile(const std::string& file) {

@@ -28,9 +28,12 @@ cardreader::DeckOptions deck_options(const std::string& path, const std::string&
                                      const DeckFlags& flags,
                                      const std::string& option = "--format");
 
-// The whole of a text file; throws DeckError naming the file when it cannot be opened, with
-// `missing` as the reason, or the system's reason when `missing` is empty.
+// The whole of a text file (never more than 64 MiB); throws DeckError naming the file when it
+// cannot be opened, with `missing` as the reason, or the system's reason when `missing` is empty.
 std::string read_text_file(const std::string& file, const std::string& missing = {});
+// The same, with "-" read as standard input (a command whose --help promises it). Either
+// refuses a folder and reads at most 64 MiB (a device such as /dev/zero never ends).
+std::string read_text_input(const std::string& file);
 
 // The built-in machine profile FILE names, or the profile file FILE applied over the built-in
 // profile its "name" names (else the default); throws DeckError naming the file and the key on
@@ -48,9 +51,14 @@ void apply_feed(axes::MachineProfile& profile, const std::string& feed,
 
 // An open input deck: the file and its card reader. The name "-" is standard input, its
 // format given by --format or told from its first bytes.
+class PipedInput;
+
 class InputDeck {
 public:
     InputDeck(const std::string& path, const DeckFlags& flags);
+    ~InputDeck();
+    InputDeck(const InputDeck&) = delete;
+    InputDeck& operator=(const InputDeck&) = delete;
     cardreader::CardSource& cards() { return *source_; }
     const cardreader::DeckOptions& options() const { return options_; }
     // How far through the file the reader is, 0..1 (for a progress bar).
@@ -61,8 +69,10 @@ public:
 
 private:
     void content_outranks_extension(const std::string& head);
+    void open_source();
 
     std::unique_ptr<std::istream> in_;
+    PipedInput* piped_ = nullptr; // standard input, a FIFO or a device: in_'s buffer
     double size_bytes_ = 0;
     cardreader::DeckOptions options_;
     std::unique_ptr<cardreader::CardSource> source_;
