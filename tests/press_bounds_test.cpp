@@ -45,13 +45,16 @@ Commands commands(const Recorder& rec) {
     std::uint32_t position = 0;
     std::uint32_t sent = 0;
     for (const Change& ch : rec.changes) {
+        // A value counts on the position it is sent for (at a step the switch changes first,
+        // then the drive's speed for the new position is sent).
         if (ch.signal == "table.speed_switch_236") {
             position = ch.new_value;
-        } else if (ch.signal == "press.processor_63.table") {
-            sent = ch.new_value;
-        } else {
             continue;
         }
+        if (ch.signal != "press.processor_63.table") {
+            continue;
+        }
+        sent = ch.new_value;
         if (position >= 1 && position <= 3) {
             c.most.at(position) = std::max(c.most.at(position), sent);
             if (position == 3) {
