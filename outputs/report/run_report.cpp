@@ -60,11 +60,23 @@ std::string lag_text(const relaylogic::PressResult& p) {
     if (p.max_lag_speed_only_in > 0) {
         parts.push_back(fmt::format("{:.4f} in speed only", p.max_lag_speed_only_in));
     }
-    if (parts.empty()) {
-        return {};
+    std::string text;
+    if (!parts.empty()) {
+        text = "; the axes behind the crank by at most " +
+               (parts.size() == 2 ? parts[0] + ", " + parts[1] : parts[0]);
     }
-    return "; the axes behind the crank by at most " +
-           (parts.size() == 2 ? parts[0] + ", " + parts[1] : parts[0]);
+    std::vector<std::string> ahead;
+    if (p.max_lead_position_sync_in > 0) {
+        ahead.push_back(fmt::format("{:.4f} in with position sync", p.max_lead_position_sync_in));
+    }
+    if (p.max_lead_speed_only_in > 0) {
+        ahead.push_back(fmt::format("{:.4f} in speed only", p.max_lead_speed_only_in));
+    }
+    if (!ahead.empty()) {
+        text += "; ahead of it by at most " +
+                (ahead.size() == 2 ? ahead[0] + ", " + ahead[1] : ahead[0]);
+    }
+    return text;
 }
 
 // The press line's resets: register 14 cleared by switch 16A at sync cards' orders, when any.
@@ -280,6 +292,8 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachinePr
                           {"waited_seconds", time_s(p.waited_s)},
                           {"max_lag_position_sync_in", fine_length(p.max_lag_position_sync_in)},
                           {"max_lag_speed_only_in", fine_length(p.max_lag_speed_only_in)},
+                          {"max_lead_position_sync_in", fine_length(p.max_lead_position_sync_in)},
+                          {"max_lead_speed_only_in", fine_length(p.max_lead_speed_only_in)},
                           {"register_resets", p.register_resets}};
     }
     // Spindle synchronisation (an addition after EP 0360190): only when a tap card was read.

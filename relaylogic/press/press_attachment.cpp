@@ -199,6 +199,7 @@ bool PressAttachment::drive(ControlCabinet& cab, AxisCircuit& c, bool on) {
     if (!scp.started(c.axis)) {
         scp.start_axis(c.axis, k, c.contact_set_a, units_.position_register().value());
     }
+    scp.switch_at(c.axis, k, c.contact_set_a, units_.position_register().value());
     const double v = scp.drive_speed(c.axis, k);
     c.plant.command_follow(c.direction, v, cab.profile().sync_drive.acceleration_in_per_s2);
     scp.commanded(c.axis, v);
@@ -442,6 +443,8 @@ void PressAttachment::add_to(RunResult& result) const {
     p.waited_s = waited_s_;
     p.max_lag_position_sync_in = units_.scp().worst_lag_in(true);
     p.max_lag_speed_only_in = units_.scp().worst_lag_in(false);
+    p.max_lead_position_sync_in = units_.scp().worst_lead_in(true);
+    p.max_lead_speed_only_in = units_.scp().worst_lead_in(false);
     result.press = p;
 }
 

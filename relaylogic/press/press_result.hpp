@@ -25,6 +25,9 @@ struct PressResult {
     // loop takes it out) and on speed-only cards (nothing does).
     double max_lag_position_sync_in = 0;
     double max_lag_speed_only_in = 0;
+    // The axis's counted travel past its reference travel, the largest at any block.
+    double max_lead_position_sync_in = 0;
+    double max_lead_speed_only_in = 0;
     // The deck used it (a sync card was read): the report and the summary show the press only
     // then (it turns under parsons-extended whatever the deck).
     bool used = false;

@@ -20,6 +20,7 @@ SynchronisationProcessor::SynchronisationProcessor(Tracer& tracer,
         }
     }
     gain_per_s_ = profile.sync_drive.position_gain_per_s;
+    block_s_ = profile.speed_sample_s;
     max_in_per_s_ = profile.sync_drive.max_in_per_min / 60.0;
     device_16_ = 360 * ppd_;
     sync_card_ =
@@ -54,6 +55,12 @@ SynchronisationProcessor::SynchronisationProcessor(Tracer& tracer,
                           "processor 63: how far the " + axis +
                               " axis is behind its reference travel (F a pulse since it "
                               "started), ten-thousandths of an inch (0 when on it or ahead)",
+                          "63", 16);
+        ahead_63_.at(cardreader::axis_index(a)) =
+            tracer.define("press", "processor_63." + axis + ".ahead",
+                          "processor 63: how far the " + axis +
+                              " axis is ahead of its reference travel, ten-thousandths of an "
+                              "inch (0 when on it or behind)",
                           "63", 16);
     }
 }
@@ -147,22 +154,6 @@ double SynchronisationProcessor::per_pulse_in(cardreader::Axis a, int speed_posi
     return speeds_.at(i).at(static_cast<std::size_t>(k - 1)) / rated_pulses_per_s_;
 }
 
-double SynchronisationProcessor::drive_speed(cardreader::Axis a, int speed_position) const {
-    double v =
-        per_pulse_in(a, speed_position) * rate_out_ + follow_.at(cardreader::axis_index(a)).out;
-    if (turning_out_) {
-        // No slower than the drive runs steadily (as for a tap's feed), which also lets each
-        // thousandth's equality leave the comparer within delay 258, as the 1952 speed 3 does.
-        v = std::max(v, cardreader::kLeastTapFeedInPerMin / 60.0);
-    }
-    return std::clamp(v, 0.0, max_in_per_s_);
-}
-
-void SynchronisationProcessor::commanded(cardreader::Axis a, double in_per_s) {
-    tracer_.set(output_63_.at(cardreader::axis_index(a)),
-                static_cast<std::uint32_t>(std::lround(in_per_s * 60000.0)));
-}
-
 // The pulses register 14 moved from `before` to `now`, the short way round device 16's ring.
 namespace {
 int ring_step(int before, int now, int ring) {
@@ -176,6 +167,43 @@ int ring_step(int before, int now, int ring) {
 }
 } // namespace
 
+void SynchronisationProcessor::switch_at(cardreader::Axis a, int speed_position,
+                                         std::int64_t impulses, int register_14) {
+    Follow& f = follow_.at(cardreader::axis_index(a));
+    if (f.position != 0 && f.position != speed_position) {
+        f.leaving = true;
+        f.step_impulses = impulses;
+        // The pulses since the last block were turned on the position it leaves: they go into
+        // the reference at that position's travel a pulse (63 reads register 14 as it steps).
+        f.ref_in += per_pulse_in(a, f.position) *
+                    std::abs(ring_step(f.register_prev, register_14, device_16_));
+        f.register_prev = register_14;
+    }
+    f.position = speed_position;
+}
+
+double SynchronisationProcessor::drive_speed(cardreader::Axis a, int speed_position) const {
+    const Follow& f = follow_.at(cardreader::axis_index(a));
+    // The correction was computed for the position of its block; it is bounded by half the
+    // speed of the position in force, so a correction of speed 1 never rides on speed 3.
+    const double base = per_pulse_in(a, speed_position) * rate_out_;
+    double v = base + std::clamp(f.out, -0.5 * base, 0.5 * base);
+    const double least = cardreader::kLeastTapFeedInPerMin / 60.0;
+    if (v < least) {
+        // The drive runs no slower than its least steady speed (as for a tap's feed): below it
+        // it stops and goes, so the axis keeps the crank's pace without running ahead of it.
+        // It runs on until it leaves the equality that stepped switch 236, which the least
+        // speed does within delay 258, as the 1952 speed 3 does.
+        v = (f.go_out || f.leaving) ? least : 0.0;
+    }
+    return std::min(v, max_in_per_s_);
+}
+
+void SynchronisationProcessor::commanded(cardreader::Axis a, double in_per_s) {
+    tracer_.set(output_63_.at(cardreader::axis_index(a)),
+                static_cast<std::uint32_t>(std::lround(in_per_s * 60000.0)));
+}
+
 bool SynchronisationProcessor::reference_block(
     double rate, bool turning, int register_14,
     const std::array<std::optional<Feedback>, cardreader::kAxisCount>& axes) {
@@ -184,13 +212,19 @@ bool SynchronisationProcessor::reference_block(
     rate_next_ = rate;
     turning_out_ = turning_next_;
     turning_next_ = turning;
+    const double least = cardreader::kLeastTapFeedInPerMin / 60.0;
+    // A loop that corrects once a block takes out at most the lag it sees within two blocks
+    // (its correction reaches the drive a block later): the gain is bounded by 1 / (2 blocks).
+    const double gain = std::min(gain_per_s_, 0.5 / block_s_);
     for (std::size_t i = 0; i < follow_.size(); ++i) {
         Follow& f = follow_.at(i);
-        if (f.out != f.next) {
+        if (f.out != f.next || f.go_out != f.go_next) {
             f.out = f.next;
+            f.go_out = f.go_next;
             changed = true;
         }
         f.next = 0;
+        f.go_next = false;
         if (!f.started || !feed_.at(i)) {
             continue;
         }
@@ -202,17 +236,28 @@ bool SynchronisationProcessor::reference_block(
         if (!fb) {
             continue; // stopped on its card, or held: the reference waits with it
         }
+        if (f.leaving && fb->impulses != f.step_impulses) {
+            f.leaving = false; // it has left the equality
+            changed = true;
+        }
         const cardreader::Axis a = cardreader::kAxes.at(i);
         f.ref_in += per_pulse_in(a, fb->speed_position) * step;
         f.lag_in = f.ref_in - static_cast<double>(fb->impulses - f.impulses0) * 0.001;
         tracer_.set(behind_63_.at(i), static_cast<std::uint32_t>(
                                           std::clamp(std::lround(f.lag_in * 1e4), 0L, 65535L)));
-        double& worst = worst_lag_.at(loop_ ? 1 : 0);
-        worst = std::max(worst, std::abs(f.lag_in));
+        tracer_.set(ahead_63_.at(i), static_cast<std::uint32_t>(
+                                         std::clamp(std::lround(-f.lag_in * 1e4), 0L, 65535L)));
+        const std::size_t kind = loop_ ? 1 : 0;
+        worst_lag_.at(kind) = std::max(worst_lag_.at(kind), f.lag_in);
+        worst_lead_.at(kind) = std::max(worst_lead_.at(kind), -f.lag_in);
         if (loop_) {
             const double feed = per_pulse_in(a, fb->speed_position) * rate;
-            f.next = std::clamp(gain_per_s_ * f.lag_in, -0.5 * feed, 0.5 * feed);
+            f.next = std::clamp(gain * f.lag_in, -0.5 * feed, 0.5 * feed);
         }
+        // Below the least speed: go for the next block only if the axis stays behind its
+        // reference through it (the block now runs at the speed in force).
+        const double now_travel = f.go_out ? least * block_s_ : 0.0;
+        f.go_next = f.lag_in - now_travel >= least * block_s_;
     }
     show();
     return changed;
@@ -261,7 +306,12 @@ nlohmann::json SynchronisationProcessor::save() const {
                           {"ref_in", exact(f.ref_in)},
                           {"lag_in", exact(f.lag_in)},
                           {"next", exact(f.next)},
-                          {"out", exact(f.out)}});
+                          {"out", exact(f.out)},
+                          {"go_next", f.go_next},
+                          {"go_out", f.go_out},
+                          {"position", f.position},
+                          {"leaving", f.leaving},
+                          {"step_impulses", f.step_impulses}});
     }
     nlohmann::json pending = nullptr;
     if (pending_) {
@@ -287,7 +337,8 @@ nlohmann::json SynchronisationProcessor::save() const {
             {"rate_out", exact(rate_out_)},
             {"turning_next", turning_next_},
             {"turning_out", turning_out_},
-            {"worst_lag_in", {exact(worst_lag_.at(0)), exact(worst_lag_.at(1))}}};
+            {"worst_lag_in", {exact(worst_lag_.at(0)), exact(worst_lag_.at(1))}},
+            {"worst_lead_in", {exact(worst_lead_.at(0)), exact(worst_lead_.at(1))}}};
 }
 
 void SynchronisationProcessor::load(const nlohmann::json& j) {
@@ -328,6 +379,13 @@ void SynchronisationProcessor::load(const nlohmann::json& j) {
         f.lag_in = axes::exact(axes::member(e, "lag_in"));
         f.next = axes::exact(axes::member(e, "next"));
         f.out = axes::exact(axes::member(e, "out"));
+        // States saved before stop-and-go: none in force.
+        f.go_next = e.contains("go_next") && axes::read<bool>(e, "go_next");
+        f.go_out = e.contains("go_out") && axes::read<bool>(e, "go_out");
+        f.position = e.contains("position") ? axes::read<int>(e, "position") : 0;
+        f.leaving = e.contains("leaving") && axes::read<bool>(e, "leaving");
+        f.step_impulses =
+            e.contains("step_impulses") ? axes::read<std::int64_t>(e, "step_impulses") : 0;
     }
     loop_ = axes::read<bool>(j, "position_loop");
     rate_next_ = axes::exact(axes::member(j, "rate_next"));
@@ -335,6 +393,14 @@ void SynchronisationProcessor::load(const nlohmann::json& j) {
     turning_next_ = axes::read<bool>(j, "turning_next");
     turning_out_ = axes::read<bool>(j, "turning_out");
     worst_lag_ = {axes::exact(worst.at(0)), axes::exact(worst.at(1))};
+    worst_lead_ = {0.0, 0.0};
+    if (j.contains("worst_lead_in")) {
+        const auto& lead = axes::member(j, "worst_lead_in");
+        if (!lead.is_array() || lead.size() != 2) {
+            throw axes::StateError("synchronisation_processor_17: worst_lead_in: two numbers");
+        }
+        worst_lead_ = {axes::exact(lead.at(0)), axes::exact(lead.at(1))};
+    }
 }
 
 } // namespace parsons::relaylogic

@@ -90,9 +90,16 @@ public:
     void start_axis(cardreader::Axis a, int speed_position, std::int64_t impulses, int register_14);
     // The travel per detector pulse of the axis at a position of speed switch 236, inches.
     double per_pulse_in(cardreader::Axis a, int speed_position) const;
+    // Speed switch 236 of a started axis stands on `speed_position` with commutator 102 at
+    // `impulses`: a step since the last call leaves the axis on the equality that stepped it,
+    // which it must leave within delay 258's hold (see drive_speed).
+    void switch_at(cardreader::Axis a, int speed_position, std::int64_t impulses, int register_14);
     // The speed the drive runs the axis at on that position, in/s: the crank's speed in force
-    // times the travel per pulse, with the position correction in force; while the crank
-    // turns, no slower than the drive's least steady speed (cardreader::kLeastTapFeedInPerMin).
+    // times the travel per pulse (the base), with the position correction in force, at most
+    // half the base either way. Below the drive's least steady speed
+    // (cardreader::kLeastTapFeedInPerMin) it stops and goes: the least speed while processor 63
+    // found the axis behind its reference by more than a block of it, or while the axis still
+    // stands on the equality that stepped switch 236; otherwise it stands.
     double drive_speed(cardreader::Axis a, int speed_position) const;
     // What a reference block reads of a started, powered synchronised axis.
     struct Feedback {
@@ -105,8 +112,9 @@ public:
     bool reference_block(double rate, bool turning, int register_14,
                          const std::array<std::optional<Feedback>, cardreader::kAxisCount>& axes);
     // The most a started synchronised axis was behind its reference travel at any block, on
-    // cards with position sync (the loop) or on speed-only cards.
+    // cards with position sync (the loop) or on speed-only cards; and the most it was ahead.
     double worst_lag_in(bool with_loop) const { return worst_lag_.at(with_loop ? 1 : 0); }
+    double worst_lead_in(bool with_loop) const { return worst_lead_.at(with_loop ? 1 : 0); }
     // The speed last sent to the axis's drive (traced), in/s.
     void commanded(cardreader::Axis a, double in_per_s);
 
@@ -128,23 +136,30 @@ private:
     struct Follow {
         bool started = false;
         int start_speed = 1;
-        std::int64_t impulses0 = 0; // commutator 102 when the axis started
-        int register_prev = 0;      // register 14 at the last block
-        double ref_in = 0;          // the reference travel since the start
-        double lag_in = 0;          // reference minus counted travel at the last block
-        double next = 0;            // 63: correction computed, in/s
-        double out = 0;             // 63: correction in force
+        std::int64_t impulses0 = 0;     // commutator 102 when the axis started
+        int register_prev = 0;          // register 14 at the last block
+        double ref_in = 0;              // the reference travel since the start
+        double lag_in = 0;              // reference minus counted travel at the last block
+        double next = 0;                // 63: correction computed, in/s
+        double out = 0;                 // 63: correction in force
+        bool go_next = false;           // 63: below the least speed, go (computed)
+        bool go_out = false;            // in force
+        int position = 0;               // switch 236 as last seen (0: not yet)
+        bool leaving = false;           // on the equality that stepped switch 236
+        std::int64_t step_impulses = 0; // commutator 102 when it stepped
     };
     std::array<Follow, cardreader::kAxisCount> follow_{};
     bool loop_ = false;
-    std::array<double, 2> worst_lag_{}; // speed only, with the loop
-    double rate_next_ = 0;              // 63: the crank's speed computed, pulses a second
-    double rate_out_ = 0;               // 63: in force
-    bool turning_next_ = false;         // register 11 timed it between pulses (the crank turns)
+    std::array<double, 2> worst_lag_{};  // speed only, with the loop
+    std::array<double, 2> worst_lead_{}; // the same, ahead of the reference
+    double rate_next_ = 0;               // 63: the crank's speed computed, pulses a second
+    double rate_out_ = 0;                // 63: in force
+    bool turning_next_ = false;          // register 11 timed it between pulses (the crank turns)
     bool turning_out_ = false;
     double rated_pulses_per_s_ = 1;
     std::array<std::array<double, 3>, cardreader::kAxisCount> speeds_{}; // the 1952 speeds, in/s
     double gain_per_s_ = 0;
+    double block_s_ = 0.01; // speed_sample_s
     double max_in_per_s_ = 0;
     int device_16_ = 1440;
     SignalId sync_card_;
@@ -154,6 +169,7 @@ private:
     std::array<SignalId, cardreader::kAxisCount> feed_62_{};
     std::array<SignalId, cardreader::kAxisCount> output_63_{};
     std::array<SignalId, cardreader::kAxisCount> behind_63_{};
+    std::array<SignalId, cardreader::kAxisCount> ahead_63_{};
 };
 
 } // namespace parsons::relaylogic
