@@ -24,8 +24,10 @@ namespace {
 // card past kMaxDeckCards (five cards a step: the step, whose five cards share one number).
 class BoundedSource : public CardSource {
 public:
-    BoundedSource(std::unique_ptr<CardSource> inner, std::string file, bool empty_file)
-        : inner_(std::move(inner)), file_(std::move(file)), empty_file_(empty_file) {}
+    BoundedSource(std::unique_ptr<CardSource> inner, std::string file, bool empty_file,
+                  std::int64_t max_cards)
+        : inner_(std::move(inner)), file_(std::move(file)), empty_file_(empty_file),
+          max_cards_(max_cards) {}
 
     std::optional<Card> next() override {
         auto card = inner_->next();
@@ -36,7 +38,7 @@ public:
                                                   "header, comments, blank lines or blank tape");
         }
         any_ = true;
-        if (card && ++read_ > kMaxDeckCards) {
+        if (card && ++read_ > max_cards_) {
             const std::int64_t step = inner_->cards_a_step();
             const std::string which = step == 1 ? fmt::format("card {}", read_)
                                                 : fmt::format("step {} (cards {}-{})", read_,
@@ -57,6 +59,7 @@ private:
     bool empty_file_ = false;
     bool any_ = false;
     std::int64_t read_ = 0;
+    std::int64_t max_cards_ = kMaxDeckCards;
 };
 
 } // namespace
@@ -468,7 +471,8 @@ std::unique_ptr<CardSource> open_card_source(std::istream& in, const DeckOptions
         inner = make_five_card_source(in, options.file_name, *options.layout);
         break;
     }
-    return std::make_unique<BoundedSource>(std::move(inner), options.file_name, empty_file);
+    return std::make_unique<BoundedSource>(std::move(inner), options.file_name, empty_file,
+                                           options.max_cards);
 }
 
 std::unique_ptr<CardSink> open_card_sink(std::ostream& out, const DeckOptions& options) {

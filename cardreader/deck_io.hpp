@@ -104,6 +104,10 @@ struct DeckOptions {
     std::string file_name;                     // for messages
     KeypunchCode code = KeypunchCode::ibm029;  // text card images
     const CardLayout* layout = &fig8_layout(); // listing <-> cards
+    // The most cards (steps) a deck may hold. Only `parsons bench` raises it, to time the
+    // engine on decks longer than any a user may feed (its card numbers repeat; the machine's
+    // sequence check passes 9999 to 0000).
+    std::int64_t max_cards = kMaxDeckCards;
     // Told of what in the deck is no error but would surprise its owner (a SIMH end-of-file
     // mark with cards after it): "FILE:LINE: what". Nothing is said when empty.
     std::function<void(const std::string&)> warn;

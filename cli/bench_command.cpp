@@ -39,6 +39,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -261,6 +262,8 @@ RunRequest quiet_run(const std::string& deck) {
     RunRequest r;
     r.input = deck;
     r.quiet = true;
+    r.deck.max_cards = std::numeric_limits<std::int64_t>::max(); // the bench's decks are long
+
     return r;
 }
 

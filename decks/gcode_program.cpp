@@ -23,17 +23,14 @@ using Eigen::Vector3d;
 using gcode_words::g_code;
 using gcode_words::GInfo;
 using gcode_words::Group;
+using gcode_words::program_number;
+using gcode_words::scan_word;
+using gcode_words::Word;
 
 constexpr double kMmPerInch = 25.4;
 // An arc whose end lies further than this from the circle through its start is refused
 // (inches): half a thousandth, the machine's own resolution.
 constexpr double kArcMismatchIn = 0.0005;
-
-struct Word {
-    char letter = 0;
-    double value = 0;
-    std::string text; // as written, "G41", "X1.5"
-};
 
 class Reader {
 public:
@@ -113,37 +110,6 @@ private:
         }
     }
 
-    // A program number as the posts write it, O1234 or O<name>, first on its line (after an N
-    // word) with nothing after it but a comment: read into `words` and `i` moved past it. Any
-    // other O word is LinuxCNC's subroutines and loops (O100 sub, O<x> call), refused.
-    static bool program_number(std::string_view l, std::size_t& i, std::vector<Word>& words) {
-        const bool first =
-            std::all_of(words.begin(), words.end(), [](const Word& w) { return w.letter == 'N'; });
-        std::size_t end = i + 1;
-        if (end < l.size() && l[end] == '<') {
-            end = l.find('>', end);
-            end = end == std::string_view::npos ? end : end + 1;
-        } else {
-            while (end < l.size() && std::isdigit(static_cast<unsigned char>(l[end])) != 0) {
-                ++end;
-            }
-        }
-        if (!first || end == std::string_view::npos || end <= i + 1 ||
-            (end == i + 2 && l[i + 1] == '<')) {
-            return false;
-        }
-        const std::size_t after = l.find_first_not_of(" \t", end);
-        if (after != std::string_view::npos && l[after] != '(' && l[after] != ';') {
-            return false;
-        }
-        Word w;
-        w.letter = 'O';
-        w.text = "O" + std::string(l.substr(i + 1, end - i - 1));
-        words.push_back(w);
-        i = end;
-        return true;
-    }
-
     std::vector<Word> words_of(std::string_view l) {
         std::vector<Word> words;
         std::size_t i = 0;
@@ -196,36 +162,15 @@ private:
             if (std::isalpha(static_cast<unsigned char>(c)) == 0) {
                 refuse(std::string(1, c), "not a G-code word (a letter and a number)");
             }
-            Word w;
-            w.letter = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-            ++i;
-            skip_blanks();
-            const std::size_t number_start = i;
-            if (i < l.size() && (l[i] == '+' || l[i] == '-')) {
-                ++i;
-            }
             int digits = 0;
-            while (i < l.size() && (std::isdigit(static_cast<unsigned char>(l[i])) != 0)) {
-                ++i;
-                ++digits;
-            }
-            if (i < l.size() && l[i] == '.') {
-                ++i;
-                while (i < l.size() && (std::isdigit(static_cast<unsigned char>(l[i])) != 0)) {
-                    ++i;
-                    ++digits;
-                }
-            }
-            std::string number(l.substr(number_start, i - number_start));
-            std::erase(number, ' ');
-            w.text = std::string(1, w.letter) + number;
+            Word w = scan_word(l, i, digits);
             if (digits == 0) {
                 refuse(w.text, "a letter with no number after it");
             }
-            if (number.size() > 24) {
+            if (w.text.size() > 25) {
                 refuse(w.text.substr(0, 12) + "...", "a number too long to be a coordinate");
             }
-            w.value = std::stod(number);
+            w.value = std::stod(w.text.substr(1));
             words.push_back(w);
         }
         return words;

@@ -1,6 +1,8 @@
 // The G words parsons knows (decks/gcode_words.hpp).
 #include "decks/gcode_words.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 
@@ -75,6 +77,66 @@ std::optional<GInfo> g_code(double g) {
         return std::nullopt;
     }
     return it->second;
+}
+
+bool program_number(std::string_view l, std::size_t& i, std::vector<Word>& words) {
+    const bool first =
+        std::all_of(words.begin(), words.end(), [](const Word& w) { return w.letter == 'N'; });
+    std::size_t end = i + 1;
+    if (end < l.size() && l[end] == '<') {
+        end = l.find('>', end);
+        end = end == std::string_view::npos ? end : end + 1;
+    } else {
+        while (end < l.size() && std::isdigit(static_cast<unsigned char>(l[end])) != 0) {
+            ++end;
+        }
+    }
+    if (!first || end == std::string_view::npos || end <= i + 1 ||
+        (end == i + 2 && l[i + 1] == '<')) {
+        return false;
+    }
+    const std::size_t after = l.find_first_not_of(" \t", end);
+    if (after != std::string_view::npos && l[after] != '(' && l[after] != ';') {
+        return false;
+    }
+    Word w;
+    w.letter = 'O';
+    w.text = "O" + std::string(l.substr(i + 1, end - i - 1));
+    words.push_back(w);
+    i = end;
+    return true;
+}
+
+Word scan_word(std::string_view l, std::size_t& i, int& digits) {
+    auto skip_blanks = [&] {
+        while (i < l.size() && (l[i] == ' ' || l[i] == '\t')) {
+            ++i;
+        }
+    };
+    Word w;
+    w.letter = static_cast<char>(std::toupper(static_cast<unsigned char>(l[i])));
+    ++i;
+    skip_blanks();
+    const std::size_t number_start = i;
+    if (i < l.size() && (l[i] == '+' || l[i] == '-')) {
+        ++i;
+    }
+    digits = 0;
+    while (i < l.size() && (std::isdigit(static_cast<unsigned char>(l[i])) != 0)) {
+        ++i;
+        ++digits;
+    }
+    if (i < l.size() && l[i] == '.') {
+        ++i;
+        while (i < l.size() && (std::isdigit(static_cast<unsigned char>(l[i])) != 0)) {
+            ++i;
+            ++digits;
+        }
+    }
+    std::string number(l.substr(number_start, i - number_start));
+    std::erase(number, ' ');
+    w.text = std::string(1, w.letter) + number;
+    return w;
 }
 
 } // namespace parsons::decks::gcode_words

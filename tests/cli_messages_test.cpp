@@ -54,8 +54,8 @@ TEST_CASE("Messages: a full disk under --version and --help is 'No space left on
     }
 }
 
-TEST_CASE("Messages: demo --out a device that takes nothing is exit 2, as run --report is; a null "
-          "device takes the demo; a successful demo says nothing on standard error",
+TEST_CASE("Messages: demo --out a device that takes nothing is exit 2, as run --report is, a null "
+          "device takes the demo, and a successful demo says nothing on standard error",
           "[cli][messages][demo][output]") {
     TempDir dir;
     const auto full = make_device_node(dir.path(""), "full", kMemoryMajor, kFullMinor);

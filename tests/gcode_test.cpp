@@ -613,7 +613,8 @@ TEST_CASE("G-code: a second tool is refused whatever its number, higher or lower
     CHECK(read("G20\nT3 M6\nG1 X1\nT3 M6\nG1 X2\n").moves.size() == 2);
 }
 
-TEST_CASE("G-code: a program number followed by a ';' comment is a program number", "[gcode]") {
+TEST_CASE("G-code: a program number followed by a semicolon comment is a program number",
+          "[gcode]") {
     const auto p = read("O1234 ; the bracket\nG20 G1 X1\n");
     REQUIRE(p.moves.size() == 1);
     REQUIRE(p.ignored.size() == 1);

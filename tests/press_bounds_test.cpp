@@ -76,12 +76,12 @@ TEST_CASE("Press bounds: the shipped press deck and the press-feeder job run thr
     const std::string profile = dir.str("p.json");
     write_bytes(profile,
                 fmt::format("{{\"base\":\"parsons-extended\",\"speed_sample_s\":{}}}\n", sample_s));
-    const ProcessResult run =
-        run_parsons("run decks/samples/press-sync.csv -q --profile " + q(profile));
+    const ProcessResult run = run_parsons("run " + q(source_path("decks/samples/press-sync.csv")) +
+                                          " -q --profile " + q(profile));
     INFO(run.output);
     CHECK(run.exit_code == 0);
-    const ProcessResult check =
-        run_parsons("check decks/samples/press-sync.csv --profile " + q(profile));
+    const ProcessResult check = run_parsons(
+        "check " + q(source_path("decks/samples/press-sync.csv")) + " --profile " + q(profile));
     INFO(check.output);
     CHECK(check.exit_code == 0);
     // The job gen press-feeder writes, under its own profile with this sample time.

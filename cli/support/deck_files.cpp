@@ -183,6 +183,7 @@ cardreader::DeckOptions deck_options(const std::string& path, const std::string&
                                      const DeckFlags& flags, const std::string& option) {
     cardreader::DeckOptions options;
     options.file_name = path;
+    options.max_cards = flags.max_cards;
     const bool output = option != "--format";
     if (!format_flag.empty() && format_flag != "auto") {
         auto f = cardreader::format_named(format_flag);

@@ -18,6 +18,8 @@ struct DeckFlags {
     std::string format; // empty: from the extension
     std::string code = "029";
     std::string layout = "fig8";
+    // No option sets it: `parsons bench` alone raises it (cardreader::DeckOptions::max_cards).
+    std::int64_t max_cards = cardreader::kMaxDeckCards;
 };
 
 void add_input_flags(CLI::App& cmd, DeckFlags& flags);

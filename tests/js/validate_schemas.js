@@ -799,7 +799,7 @@ async function runAll() {
     ['show-press-sync.json', [pressSync, ...X], [0]],
     ['show-press-reset.json', [pressReset, ...X], [0]],
     ['show-plate.json', ['plate.csv', ...X], [0]],
-    ['show-stray-hole.json', ['stray-hole.txt'], [2]],
+    ['show-stray-hole.json', ['stray-hole.txt'], [0]],
     ['show-double-punch.json', ['double-punch.txt'], [0]],
     ['show-deck-errors.json', [conditions], [2]],
   ];
