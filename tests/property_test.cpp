@@ -46,7 +46,7 @@ struct Found {
     std::uint64_t seed;
     const char* invariant;
 };
-constexpr std::array<Found, 6> kFound = {{
+constexpr std::array<Found, 11> kFound = {{
     // A saved state dropped the holes tapped before it: a resumed run reported none of them.
     {321, "resume-equals-straight"},
     {565, "resume-equals-straight"},
@@ -54,23 +54,25 @@ constexpr std::array<Found, 6> kFound = {{
     {2514, "resume-equals-straight"},
     {2660, "resume-equals-straight"},
     {2838, "resume-equals-straight"},
+    // A saved state dropped when interface 33 counted its last edge: the next tap's first speed
+    // was timed from 0, and the resumed run's hole ended 0.15 microinches from the straight one.
+    {268, "resume-equals-straight"},
+    {1773, "resume-equals-straight"},
+    // A tap the NC could not bring within a thousandth (or an edge) of its depth said
+    // "completed" and nothing more: the summary and check now warn, naming hole and depth.
+    {471, "tap-within-a-thousandth"},
+    {88, "tap-within-a-thousandth"},
+    // An axis a whole counter turn from its stop passed in silence (issue 53 #4).
+    {1933, "axis-ends-at-its-stop"},
 }};
 
-// Invariants that fail on defects others are mending (issue 53): each failure is still shrunk
-// and printed, as a warning, until its entry goes. Delete an entry once its fix has landed.
+// Invariants that fail on defects others are mending: each failure is shrunk and printed, as a
+// warning, not a failure, until its entry goes (none open: issue 53's #1, #3 and #4 are mended).
 struct Open {
     const char* invariant;
     const char* why;
 };
-constexpr std::array<Open, 3> kOpen = {{
-    {"tap-within-a-thousandth",
-     "issue 53 #1 (a sample holding several encoder edges) and the tap findings listed in "
-     "docs/testing.md, \"What the property test has found\""},
-    {"sync-within-its-lag", "issue 53 #3: the drive's least speed runs a synchronised axis "
-                            "ahead of a press that asks less"},
-    {"axis-ends-at-its-stop", "issue 53 #4: a part a whole counter turn from its stop passes "
-                              "in silence"},
-}};
+constexpr std::array<Open, 0> kOpen = {};
 
 const Open* open_invariant(const std::string& name) {
     for (const Open& o : kOpen) {

@@ -43,7 +43,7 @@ axes::MachineProfile spindle_profile(axes::RatioSource source = axes::RatioSourc
     return p;
 }
 
-CardOrders tap_card(int number, int tool, int depth, int pitch, int rpm) {
+CardOrders plot_tap_card(int number, int tool, int depth, int pitch, int rpm) {
     CardOrders c;
     c.kind = CardKind::tap;
     c.number = number;
@@ -60,8 +60,9 @@ CardOrders tap_card(int number, int tool, int depth, int pitch, int rpm) {
 // at 240 rev/min; card 3 calls tool 2 (ratio 1/3, a 0.0625 in tap): PC 130 exchanges the head
 // and the ratio reaches 12a (transferred, or selected if stored) before it taps 0.400 in at
 // 180 rev/min. Both tools turn 60 rev/min.
-const std::vector<CardOrders> kTwoTaps = {idle_card(1, kOrigin), tap_card(2, 1, 300, 5000, 240),
-                                          tap_card(3, 2, 400, 6250, 180), idle_card(4, kOrigin)};
+const std::vector<CardOrders> kTwoTaps = {
+    idle_card(1, kOrigin), plot_tap_card(2, 1, 300, 5000, 240), plot_tap_card(3, 2, 400, 6250, 180),
+    idle_card(4, kOrigin)};
 
 struct PlottedTaps {
     relaylogic::RunResult result;
@@ -337,7 +338,7 @@ TEST_CASE("Spindle plot: with a press beside the machine the spindle's lanes com
     axes::MachineProfile profile = spindle_profile();
     profile.press_sync = true;
     PlottedTaps run;
-    run_plotted({idle_card(1, kOrigin), tap_card(2, 1, 200, 5000, 240), idle_card(3, kOrigin)},
+    run_plotted({idle_card(1, kOrigin), plot_tap_card(2, 1, 200, 5000, 240), idle_card(3, kOrigin)},
                 profile, run);
     INFO((run.result.stop ? run.result.stop->message : std::string("completed")));
     REQUIRE(run.result.completed);

@@ -24,7 +24,8 @@ std::vector<relaylogic::Fault> parse_faults(const std::vector<std::string>& spec
 namespace {
 
 // What the run's result says that the story, told from the relay events, does not: an axis that
-// ends whole turns of its counters from where its cards put it. The note goes on the last card,
+// ends whole turns of its counters from where its cards put it, and a tap that bottomed farther
+// from its depth than the NC resolves (on the tap's card). The turns' note goes on the last card,
 // its number from the card times the prediction records for it (the run's summary says the
 // same, outputs/report/run_report.hpp).
 void add_result_notes(Prediction& p) {
@@ -34,6 +35,15 @@ void add_result_notes(Prediction& p) {
         if (!turns.empty()) {
             const int number = r.cards.empty() ? -1 : r.cards.back().number;
             p.notes.push_back({r.cards_read, number, a, std::move(turns)});
+        }
+    }
+    if (r.tapping) {
+        for (std::size_t i = 0; i < r.tapping->holes.size(); ++i) {
+            std::string miss = tap_depth_warning(*r.tapping, i);
+            if (!miss.empty()) {
+                const relaylogic::HoleRecord& h = r.tapping->holes.at(i);
+                p.notes.push_back({h.card, h.number, h.axis, std::move(miss)});
+            }
         }
     }
 }

@@ -385,6 +385,11 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
             static_cast<std::size_t>(done) < t.holes.size()
                 ? fmt::format(" ({} begun)", t.holes.size())
                 : std::string()));
+        for (std::size_t i = 0; i < t.holes.size(); ++i) {
+            if (const std::string miss = tap_depth_warning(t, i); !miss.empty()) {
+                line("  warning: " + miss);
+            }
+        }
     }
     for (Axis a : cardreader::kAxes) {
         const auto& x = r.axes.at(cardreader::axis_index(a));
@@ -444,6 +449,22 @@ std::string counter_turns_warning(const relaylogic::RunResult& r, Axis a) {
                        "until the counters read it again, which no 1952 check can see",
                        static_cast<double>(turns) * 10.0, x.ordered_in, x.real_in, x.counter_in,
                        times);
+}
+
+std::string tap_depth_warning(const relaylogic::TappingResult& t, std::size_t i) {
+    const relaylogic::HoleRecord& h = t.holes.at(i);
+    const double miss = relaylogic::depth_miss_in(h, t.encoder_pulses_per_rev);
+    if (miss == 0) {
+        return "";
+    }
+    const double edge_in = h.pitch_ordered_in * h.ratio_used / t.encoder_pulses_per_rev;
+    return fmt::format("hole {} (card {}, tool {}, S {}) bottomed at {:.4f} in, {:.4f} in {} its "
+                       "depth {:.3f} in: more than the NC resolves (a thousandth, or an encoder "
+                       "edge's {:.5f} in); its reversal, timed from the speed encoder 32 "
+                       "measured, and the feed drive's following did not bring the tap closer "
+                       "(docs/tapping.md, \"Near the depth\")",
+                       i + 1, h.card, h.tool, h.rpm, h.deepest_in, std::abs(miss),
+                       miss > 0 ? "past" : "short of", h.depth_in, edge_in);
 }
 
 } // namespace parsons::cli

@@ -181,6 +181,7 @@ void TappingAttachment::add_to(RunResult& result) const {
     tr.transfers = units_.pc().transfers();
     tr.ratios_received = units_.memory().received();
     tr.holes = units_.holes();
+    tr.encoder_pulses_per_rev = units_.profile().spindle.encoder_pulses_per_rev;
     result.tapping = std::move(tr);
 }
 

@@ -94,7 +94,14 @@ struct TappingResult {
     std::int64_t ratios_received = 0; // ratios the NC stored (S16)
     std::vector<HoleRecord> holes;
     bool used = false; // the deck used it (a tap card was read): the report shows it only then
+    int encoder_pulses_per_rev = 1; // encoder 32's edges a motor revolution (the profile's)
 };
+
+// How far a completed hole bottomed from its depth beyond what the NC resolves: a thousandth,
+// or one encoder edge's feed (pitch ordered x ratio in 12a / ppr) where that is coarser
+// (docs/tapping.md, "Near the depth"). Positive: past the depth; negative: short of it; 0 for
+// a hole within that, or not completed (a stop says why).
+double depth_miss_in(const HoleRecord& hole, int encoder_pulses_per_rev);
 
 // The net edges d of encoder 32 over one sample of interface 33, as the NC reads them. Register
 // 14 counts modulo a revolution (device 16: ppr edges), so its two readings a sample apart give
@@ -171,6 +178,7 @@ public:
     void keep_samples(bool on) { keep_samples_ = on; }
     std::vector<HoleRecord>& holes() { return holes_; }
     const std::vector<HoleRecord>& holes() const { return holes_; }
+    const axes::MachineProfile& profile() const { return profile_; }
     HoleRecord& open_hole(std::int64_t card, int number, int tool_called);
 
     nlohmann::json save() const;

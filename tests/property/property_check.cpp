@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/support/applied_profile.hpp"
 #include "cli/support/deck_prediction.hpp"
+#include "outputs/report/run_report.hpp"
 #include "relaylogic/control_cabinet.hpp"
 
 #include <fmt/format.h>
@@ -321,7 +322,7 @@ void check_deck(const PropertyCase& c, const TempDir& dir, const axes::MachinePr
     require_same_figures("resume-equals-straight", "straight", ran, "resumed", rest);
 }
 
-void check_bounds(const PropertyCase&, const axes::MachineProfile& p, const RunResult& r,
+void check_bounds(const PropertyCase& c, const axes::MachineProfile& p, const RunResult& r,
                   const LoopWatch& loop) {
     if (r.completed == r.stop.has_value() || (r.stop && r.stop->message.empty())) {
         fail_invariant("ends-completed-or-stopped-saying-why", run_figures(r));
@@ -350,10 +351,14 @@ void check_bounds(const PropertyCase&, const axes::MachineProfile& p, const RunR
                             axis, rest, run_figures(r)));
         }
         // (the summary warns whenever the counter does not read the last stop: "ends at ...,
-        // not on its last stop", outputs/report/run_report.cpp)
+        // not on its last stop"; and when the counters went whole turns past what the cards
+        // ordered: "ends +10.000 in from where its cards put it", outputs/report/run_report.cpp,
+        // the reading then the stop that many turns on)
         const bool warned = a.last_stop_in && std::abs(a.counter_in - *a.last_stop_in) >= 0.001;
+        const auto turns =
+            static_cast<double>(cli::counter_turns_unseen(r, cardreader::kAxes.at(i)));
         if (r.completed && a.last_stop_in && !warned &&
-            std::abs(a.commutator_in - *a.last_stop_in) > 0.0015) {
+            std::abs(a.commutator_in - 10.0 * turns - *a.last_stop_in) > 0.0015) {
             fail_invariant(
                 "axis-ends-at-its-stop",
                 fmt::format("{}: completed with the reading {:.5f} in, its last card's stop "
@@ -361,14 +366,19 @@ void check_bounds(const PropertyCase&, const axes::MachineProfile& p, const RunR
                             axis, a.commutator_in, *a.last_stop_in, run_figures(r)));
         }
     }
-    // Each tap within a thousandth of its depth, or a stop that says why.
+    // Each tap within a thousandth of its depth, or a stop or the summary's warning that says
+    // how far it is off (outputs/report/run_report.hpp, tap_depth_warning).
     if (r.tapping) {
-        for (const HoleRecord& h : r.tapping->holes) {
+        const std::string summary = cli::summary_text(r, "deck", "profile");
+        for (std::size_t i = 0; i < r.tapping->holes.size(); ++i) {
+            const HoleRecord& h = r.tapping->holes.at(i);
+            const bool depth_warned = summary.find(fmt::format("warning: hole {} (card {},", i + 1,
+                                                               h.card)) != std::string::npos;
             // The NC knows the tool's turns to an encoder edge (docs/tapping.md: within 0.85 of
             // one for the built-in profile's taps): a thousandth, or one edge's feed if coarser.
             const double edge_in =
                 h.pitch_ordered_in * h.ratio_used / p.spindle.encoder_pulses_per_rev;
-            if (h.completed &&
+            if (h.completed && !depth_warned &&
                 std::abs(h.deepest_in - h.depth_in) > std::max(kTapDepthIn, edge_in) + 1e-9) {
                 fail_invariant(
                     "tap-within-a-thousandth",
@@ -429,8 +439,15 @@ void check_bounds(const PropertyCase&, const axes::MachineProfile& p, const RunR
         for (double f : loop.most_feed) {
             per_pulse = std::max(per_pulse, f);
         }
+        // A slip fault (docs/faults.md) stands the part while the screw turns: an axis that
+        // slips falls behind by as much as the slip before the loop makes it up.
+        double slipped = 0;
+        for (const relaylogic::Fault& f : c.deck.faults) {
+            slipped += f.kind == relaylogic::FaultKind::slip ? f.count * 0.001 : 0.0;
+        }
         const double lag = 2 * v * p.speed_sample_s +
-                           v * v / (2 * p.sync_drive.acceleration_in_per_s2) + per_pulse + 0.001;
+                           v * v / (2 * p.sync_drive.acceleration_in_per_s2) + per_pulse + 0.001 +
+                           slipped;
         if (r.press->max_lag_position_sync_in > lag + 1e-9) {
             fail_invariant("sync-within-its-lag",
                            fmt::format("position sync lagged {:.4f} in, past {:.4f} in (the "
