@@ -153,7 +153,7 @@ const ProfileRelation kRelations[] = {
          const PressProfile& press = p.press;
          const double fastest = press_fastest_per_s(press);
          return fmt::format(
-             "press.strokes_per_min: {} strokes a minute at {} pulses a degree give up to "
+             "press.strokes_per_min: {} strokes a minute at press.pulses_per_degree {} give up to "
              "{:.0f} detector pulses a second (with variation and change_factor), faster than "
              "the stepping switches of registers 14 and 11 follow (max_stepping_rate_per_s "
              "{}): at most {:.2f} strokes a minute",
@@ -167,8 +167,9 @@ const ProfileRelation kRelations[] = {
          for (const SpindleHead& h : p.spindle.heads) {
              tools += fmt::format("{}{}", tools.empty() ? "" : ", ", h.tool);
          }
-         return fmt::format("spindle.first_tool: tool {} is on no head (the heads hold tools {})",
-                            p.spindle.first_tool, tools);
+         return fmt::format(
+             "spindle.first_tool: tool {} is on no head (spindle.heads hold tools {})",
+             p.spindle.first_tool, tools);
      }},
     {"spindle.max_rpm × max(1, spindle.change_factor) × spindle.encoder_pulses_per_rev / 60 <= "
      "max_stepping_rate_per_s",
@@ -186,8 +187,9 @@ const ProfileRelation kRelations[] = {
          const double edges_per_s = s.max_rpm * factor * s.encoder_pulses_per_rev / 60.0;
          const double most = p.max_stepping_rate_per_s * 60.0 / s.encoder_pulses_per_rev / factor;
          return fmt::format(
-             "spindle.max_rpm: {} rev/min{} at {} edges a revolution give {:.1f} encoder pulses "
-             "a second, faster than the stepping switches of spindle encoder interface 33 follow "
+             "spindle.max_rpm: {} rev/min{} at spindle.encoder_pulses_per_rev {} give {:.1f} "
+             "encoder pulses a second, faster than the stepping switches of spindle encoder "
+             "interface 33 follow "
              "(max_stepping_rate_per_s {}): at most {:.2f} rev/min",
              s.max_rpm, factor_words(factor), s.encoder_pulses_per_rev, edges_per_s,
              p.max_stepping_rate_per_s, std::floor(most * 100) / 100);
@@ -204,7 +206,8 @@ const ProfileRelation kRelations[] = {
          const double factor = spindle_factor(s);
          const double turns = s.max_rpm * factor / 60.0 * s.sample_s;
          return fmt::format(
-             "spindle.sample_s: {:g} s at {} rev/min{} turns motor 27 {:.3f} of a revolution "
+             "spindle.sample_s: {:g} s at spindle.max_rpm {} rev/min{} turns motor 27 {:.3f} of a "
+             "revolution "
              "between two samples of spindle encoder interface 33; from half a revolution on its "
              "counter cannot tell the sense: below {:.4f} s",
              s.sample_s, s.max_rpm, factor_words(factor), turns, 0.5 * 60.0 / (s.max_rpm * factor));

@@ -187,7 +187,9 @@ Case random_case(std::mt19937& rng, std::mt19937& crng, std::mt19937& srng, std:
     const int bad_card = pick(0, cards - 1);
     const auto bad_axis = kAxes.at(static_cast<std::size_t>(pick(0, 4)));
     std::array<int, 5> at{};
-    int number = pick(0, 9990);
+    // Numbered on from a random one, leaving room for every card the deck may take (a tap,
+    // a sync and a condition card beside each motion card, and a loop card): 9999 is the last.
+    int number = std::min(pick(0, 9990), 9999 - 4 * cards - 1);
     for (int n = 0; n < cards; ++n) {
         if (p.spindle_sync && tchance(0.5)) {
             CardOrders t;

@@ -25,9 +25,9 @@ namespace {
 
 // What the run's result says that the story, told from the relay events, does not: an axis that
 // ends whole turns of its counters from where its cards put it, and a tap that bottomed farther
-// from its depth than the NC resolves (on the tap's card). The turns' note goes on the last card,
-// its number from the card times the prediction records for it (the run's summary says the
-// same, outputs/report/run_report.hpp).
+// from its depth than the NC resolves or did not come back out (on the tap's card). The turns' note
+// goes on the last card, its number from the card times the prediction records for it (the run's
+// summary says the same, outputs/report/run_report.hpp).
 void add_result_notes(Prediction& p) {
     const relaylogic::RunResult& r = p.result;
     for (cardreader::Axis a : cardreader::kAxes) {
@@ -39,7 +39,7 @@ void add_result_notes(Prediction& p) {
     }
     if (r.tapping) {
         for (std::size_t i = 0; i < r.tapping->holes.size(); ++i) {
-            std::string miss = tap_depth_warning(*r.tapping, i);
+            std::string miss = tap_hole_warning(r, i);
             if (!miss.empty()) {
                 const relaylogic::HoleRecord& h = r.tapping->holes.at(i);
                 p.notes.push_back({h.card, h.number, h.axis, std::move(miss)});

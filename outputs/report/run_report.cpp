@@ -386,7 +386,7 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
                 ? fmt::format(" ({} begun)", t.holes.size())
                 : std::string()));
         for (std::size_t i = 0; i < t.holes.size(); ++i) {
-            if (const std::string miss = tap_depth_warning(t, i); !miss.empty()) {
+            if (const std::string miss = tap_hole_warning(r, i); !miss.empty()) {
                 line("  warning: " + miss);
             }
         }
@@ -451,20 +451,33 @@ std::string counter_turns_warning(const relaylogic::RunResult& r, Axis a) {
                        times);
 }
 
-std::string tap_depth_warning(const relaylogic::TappingResult& t, std::size_t i) {
+std::string tap_hole_warning(const relaylogic::RunResult& r, std::size_t i) {
+    const relaylogic::TappingResult& t = *r.tapping;
     const relaylogic::HoleRecord& h = t.holes.at(i);
+    const std::string hole =
+        fmt::format("hole {} (card {}, tool {}, S {})", i + 1, h.card, h.tool, h.rpm);
+    if (!h.completed) {
+        // The last hole of a run that stopped: the stop says why.
+        if (r.stop && i + 1 == t.holes.size()) {
+            return "";
+        }
+        return fmt::format("{} did not come back onto its starting count: the feed stood {:+.4f} "
+                           "in from it when the NC gave up after 5 s and the card ended; the next "
+                           "card's check is left to find it (docs/tapping.md, \"Near the top\")",
+                           hole, h.sense * (h.end_in - h.start_in));
+    }
     const double miss = relaylogic::depth_miss_in(h, t.encoder_pulses_per_rev);
     if (miss == 0) {
         return "";
     }
     const double edge_in = h.pitch_ordered_in * h.ratio_used / t.encoder_pulses_per_rev;
-    return fmt::format("hole {} (card {}, tool {}, S {}) bottomed at {:.4f} in, {:.4f} in {} its "
-                       "depth {:.3f} in: more than the NC resolves (a thousandth, or an encoder "
-                       "edge's {:.5f} in); its reversal, timed from the speed encoder 32 "
-                       "measured, and the feed drive's following did not bring the tap closer "
-                       "(docs/tapping.md, \"Near the depth\")",
-                       i + 1, h.card, h.tool, h.rpm, h.deepest_in, std::abs(miss),
-                       miss > 0 ? "past" : "short of", h.depth_in, edge_in);
+    return fmt::format("{} bottomed at {:.4f} in, {:.4f} in {} its depth {:.3f} in: more than "
+                       "the NC resolves (a thousandth, or an encoder edge's {:.5f} in); its "
+                       "reversal, timed from the speed encoder 32 measured, and the feed drive's "
+                       "following did not bring the tap closer (docs/tapping.md, \"Near the "
+                       "depth\")",
+                       hole, h.deepest_in, std::abs(miss), miss > 0 ? "past" : "short of",
+                       h.depth_in, edge_in);
 }
 
 } // namespace parsons::cli

@@ -36,9 +36,12 @@ std::int64_t counter_turns_unseen(const relaylogic::RunResult& result, cardreade
 // its cards put it: ..."), or "" when there are none. The summary, `check` and `show` say it.
 std::string counter_turns_warning(const relaylogic::RunResult& result, cardreader::Axis axis);
 
-// A completed hole that bottomed farther from its depth than the NC resolves (a thousandth, or
-// an encoder edge's feed: relaylogic::depth_miss_in), without "warning: ": "hole 2 (card 5,
-// tool 1, S 36) bottomed at ...", or "" for a hole within it. The summary and `check` say it.
-std::string tap_depth_warning(const relaylogic::TappingResult& tapping, std::size_t hole);
+// What a hole did that its "completed" does not tell, without "warning: ": a completed hole
+// that bottomed farther from its depth than the NC resolves (a thousandth, or an encoder edge's
+// feed: relaylogic::depth_miss_in), or a hole whose feed never came back onto its starting count
+// (the NC gave up after 5 s) in a run that went on; "hole 2 (card 5, tool 1, S 36) ...". ""
+// for a hole within it, or the last hole of a run that stopped (the stop says why). The summary
+// and `check` say it.
+std::string tap_hole_warning(const relaylogic::RunResult& result, std::size_t hole);
 
 } // namespace parsons::cli

@@ -354,7 +354,10 @@ void check_bounds(const PropertyCase& c, const axes::MachineProfile& p, const Ru
         // not on its last stop"; and when the counters went whole turns past what the cards
         // ordered: "ends +10.000 in from where its cards put it", outputs/report/run_report.cpp,
         // the reading then the stop that many turns on)
-        const bool warned = a.last_stop_in && std::abs(a.counter_in - *a.last_stop_in) >= 0.001;
+        // And the summary's "ends +0.0037 in from where its counters say (lost ...)": the
+        // counters read the stop, the part is not there, and the summary says why.
+        const bool warned = (a.last_stop_in && std::abs(a.counter_in - *a.last_stop_in) >= 0.001) ||
+                            std::abs(a.error_in) >= 0.0005;
         const auto turns =
             static_cast<double>(cli::counter_turns_unseen(r, cardreader::kAxes.at(i)));
         if (r.completed && a.last_stop_in && !warned &&
@@ -367,18 +370,18 @@ void check_bounds(const PropertyCase& c, const axes::MachineProfile& p, const Ru
         }
     }
     // Each tap within a thousandth of its depth, or a stop or the summary's warning that says
-    // how far it is off (outputs/report/run_report.hpp, tap_depth_warning).
+    // how far it is off (outputs/report/run_report.hpp, tap_hole_warning).
     if (r.tapping) {
         const std::string summary = cli::summary_text(r, "deck", "profile");
         for (std::size_t i = 0; i < r.tapping->holes.size(); ++i) {
             const HoleRecord& h = r.tapping->holes.at(i);
-            const bool depth_warned = summary.find(fmt::format("warning: hole {} (card {},", i + 1,
-                                                               h.card)) != std::string::npos;
+            const bool hole_warned = summary.find(fmt::format("warning: hole {} (card {},", i + 1,
+                                                              h.card)) != std::string::npos;
             // The NC knows the tool's turns to an encoder edge (docs/tapping.md: within 0.85 of
             // one for the built-in profile's taps): a thousandth, or one edge's feed if coarser.
             const double edge_in =
                 h.pitch_ordered_in * h.ratio_used / p.spindle.encoder_pulses_per_rev;
-            if (h.completed && !depth_warned &&
+            if (h.completed && !hole_warned &&
                 std::abs(h.deepest_in - h.depth_in) > std::max(kTapDepthIn, edge_in) + 1e-9) {
                 fail_invariant(
                     "tap-within-a-thousandth",
@@ -397,7 +400,7 @@ void check_bounds(const PropertyCase& c, const axes::MachineProfile& p, const Ru
             const AxisResult& feed = r.axes.at(cardreader::axis_index(h.axis));
             const bool feed_warned =
                 feed.last_stop_in && std::abs(feed.counter_in - *feed.last_stop_in) >= 0.001;
-            if (!h.completed && !r.stop && !feed_warned) {
+            if (!h.completed && !r.stop && !feed_warned && !hole_warned) {
                 fail_invariant(
                     "tap-within-a-thousandth",
                     fmt::format("card {}: not completed, and the run has no stop", h.card));
