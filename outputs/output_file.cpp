@@ -394,7 +394,7 @@ void make_folder(const std::string& dir) {
     }
     std::error_code ec;
     fs::create_directories(dir, ec);
-    if (ec || !fs::is_directory(dir)) {
+    if (ec || !fs::is_directory(dir, ec)) {
         throw DeckError::in_file(dir, "cannot make the folder: " +
                                           (ec ? ec.message() : std::string("not a folder")));
     }

@@ -172,6 +172,30 @@ TEST_CASE("Exit codes: each command returns 0 when it did its work and 2 on inpu
     }
 }
 
+TEST_CASE("Exit codes: a file name longer than the system allows, as deck, profile, job or "
+          "output, is refused with exit 2 naming it, never an internal error",
+          "[cli][exit-codes]") {
+    // Found by the argv fuzz target: std::filesystem's throwing checks ended in exit 1.
+    TempDir dir;
+    const std::string too_long(5000, 'a');
+    const std::string deck = q(dir.str("deck.cbn"));
+    REQUIRE(run_parsons("punch " + q(kSampleDeck) + " -o " + deck).exit_code == 0);
+    for (const std::string& args :
+         {"run " + too_long, "show " + too_long, "check " + too_long,
+          "run " + deck + " --profile " + too_long,
+          "run " + q(dir.str("")) + " --profile " + too_long + " --job " + q(dir.str("prof.json")),
+          "run " + deck + " --cut " + q(dir.str("cut.svg")) + " --job " + too_long,
+          "run " + deck + " --vcd " + too_long, "punch " + too_long + " -o " + q(dir.str("p.cbn")),
+          "demo --out " + q(dir.str(too_long))}) {
+        const auto r = run_parsons(args);
+        INFO(args.substr(0, 120) << ":\n" << r.output.substr(0, 400));
+        CHECK(r.exit_code == 2);
+        CHECK(r.output.find("parsons: error: ") != std::string::npos);
+        CHECK(r.output.find(too_long.substr(0, 255)) != std::string::npos);
+        CHECK(r.output.find("internal error") == std::string::npos);
+    }
+}
+
 TEST_CASE("Exit codes: run returns 3 on a machine stop, 130 on Ctrl-C and 143 on SIGTERM",
           "[cli][exit-codes][signals]") {
     TempDir dir;

@@ -87,7 +87,8 @@ std::string not_a_profile(const std::string& file) {
 
 std::string AppliedProfile::file_read(const std::string& name) {
     // A built-in profile by name (parsons-1952, parsons-safe), unless a file of that name exists.
-    if (name.empty() || (axes::builtin_profile(name) && !std::filesystem::exists(name))) {
+    std::error_code ec;
+    if (name.empty() || (axes::builtin_profile(name) && !std::filesystem::exists(name, ec))) {
         return "";
     }
     return name;

@@ -248,7 +248,8 @@ InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
     if (path == "-") {
         options_.file_name = "standard input";
     } else {
-        if (std::filesystem::is_directory(path)) {
+        std::error_code ec;
+        if (std::filesystem::is_directory(path, ec)) {
             throw DeckError::in_file(path, "is a directory, not a deck");
         }
         file_stream = std::make_unique<std::ifstream>(path, std::ios::binary);
@@ -257,7 +258,8 @@ InputDeck::InputDeck(const std::string& path, const DeckFlags& flags)
         }
         source = file_stream.get();
     }
-    if (path != "-" && std::filesystem::is_regular_file(path)) {
+    std::error_code regular_ec;
+    if (path != "-" && std::filesystem::is_regular_file(path, regular_ec)) {
         head.resize(kHeadBytes);
         source->read(head.data(), static_cast<std::streamsize>(head.size()));
         head.resize(static_cast<std::size_t>(source->gcount()));
@@ -420,7 +422,8 @@ double InputDeck::fraction_read() {
 }
 
 std::string read_text_file(const std::string& file, const std::string& missing) {
-    if (std::filesystem::is_directory(file)) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(file, ec)) {
         throw DeckError::in_file(file, "is a directory, not a file");
     }
     std::ifstream in(file, std::ios::binary);
