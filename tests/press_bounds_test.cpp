@@ -7,6 +7,7 @@
 #include "tests/test_support.hpp"
 
 #include "cli/gen_press_feeder.hpp"
+#include "outputs/report/run_report.hpp"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
@@ -204,4 +205,50 @@ TEST_CASE("Press bounds: a press that stops stops a synchronised axis within its
     // It stands: 2 s after the stop, and 95 s after, the table is where it was (no creep).
     CHECK(late.axes.at(0).real_in == soon.axes.at(0).real_in);
     CHECK(late.axes.at(0).impulses == soon.axes.at(0).impulses);
+}
+
+TEST_CASE("Press bounds: a drive asked past its top speed is never silent, the summary and the "
+          "report name the axis, the card, the time and the speed asked against the drive's",
+          "[press_sync][press-bounds][saturation]") {
+    const Pace pace = GENERATE(Pace::impulse_level, Pace::fast_forward);
+    INFO("pace " << static_cast<int>(pace));
+    // The sample deck's move (F 0.00100 in a pulse: 2.88 in/min at the rated 48 pulses a
+    // second) waits for 30 deg of the second revolution, which drifts to x 1.1: 3.168 in/min,
+    // past a drive of 3.0 (the deck review weighs variation and change of speed, not drift).
+    axes::MachineProfile p = press_profile();
+    p.press.start_angle_deg = 350;
+    p.press.drift_per_cycle = 0.1;
+    const double top = GENERATE(3.0, 5.4);
+    INFO("sync_drive.max_in_per_min " << top);
+    p.sync_drive.max_in_per_min = top;
+    const RunResult r = test::run_orders(followed_move(true), p, nullptr, {}, pace);
+    REQUIRE(r.press);
+    const std::string summary = cli::summary_text(r, "deck", "profile");
+    INFO(summary);
+    const nlohmann::json report = cli::report_json(r, p, nlohmann::json::object(), "deck");
+    if (top > 3.168) {
+        CHECK_FALSE(r.press->drive_saturated);
+        CHECK(summary.find("the sync drive was asked") == std::string::npos);
+        CHECK(report.at("press").at("drive_saturated").is_null());
+        return;
+    }
+    REQUIRE(r.press->drive_saturated);
+    const DriveSaturation& s = *r.press->drive_saturated;
+    CHECK(s.axis == Axis::table);
+    CHECK(s.card == 2);
+    CHECK(s.speed_position == 1);
+    CHECK(s.crank_factor == Approx(1.1));
+    CHECK(s.asked_in_per_min == Approx(3.168));
+    CHECK(s.drive_max_in_per_min == Approx(3.0));
+    CHECK(s.t_s > 30.0 / 12); // not before the second revolution began (350 deg at 12 deg/s)
+    CHECK(summary.find("  warning: card 2 (number 0002), table: the sync drive was asked 3.168 "
+                       "in/min on speed 1") != std::string::npos);
+    CHECK(summary.find("past its top speed of 3.000 in/min") != std::string::npos);
+    CHECK(summary.find("1.100 times the press's rated speed") != std::string::npos);
+    const nlohmann::json& j = report.at("press").at("drive_saturated");
+    CHECK(j.at("axis") == "table");
+    CHECK(j.at("asked_in_per_min") == Approx(3.168));
+    CHECK(j.at("max_in_per_min") == Approx(3.0));
+    // The lag past the bound is what the warning explains: the drive ran at its top speed.
+    CHECK(r.press->max_lag_position_sync_in > 0.005);
 }

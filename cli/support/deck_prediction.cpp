@@ -46,6 +46,10 @@ void add_result_notes(Prediction& p) {
             }
         }
     }
+    if (std::string drive = press_drive_warning(r, false); !drive.empty()) {
+        const relaylogic::DriveSaturation& s = *r.press->drive_saturated;
+        p.notes.push_back({s.card, s.number, s.axis, std::move(drive)});
+    }
 }
 
 } // namespace

@@ -79,6 +79,23 @@ std::string lag_text(const relaylogic::PressResult& p) {
     return text;
 }
 
+// The sync drive asked past its top speed: the first time, and the most asked (null: never).
+nlohmann::json saturation_json(const std::optional<relaylogic::DriveSaturation>& s) {
+    using nlohmann::json;
+    if (!s) {
+        return nullptr;
+    }
+    return json{{"axis", std::string(axis_name(s->axis))},
+                {"card", s->card},
+                {"number", s->number >= 0 ? json(s->number) : json(nullptr)},
+                {"speed", s->speed_position},
+                {"seconds", time_s(s->t_s)},
+                {"asked_in_per_min", decimals(s->asked_in_per_min, 3)},
+                {"crank_speed_factor", decimals(s->crank_factor, 4)},
+                {"most_asked_in_per_min", decimals(s->most_asked_in_per_min, 3)},
+                {"max_in_per_min", decimals(s->drive_max_in_per_min, 3)}};
+}
+
 // The press line's resets: register 14 cleared by switch 16A at sync cards' orders, when any.
 std::string reset_text(const relaylogic::PressResult& p) {
     if (p.register_resets == 0) {
@@ -294,7 +311,8 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachinePr
                           {"max_lag_speed_only_in", fine_length(p.max_lag_speed_only_in)},
                           {"max_lead_position_sync_in", fine_length(p.max_lead_position_sync_in)},
                           {"max_lead_speed_only_in", fine_length(p.max_lead_speed_only_in)},
-                          {"register_resets", p.register_resets}};
+                          {"register_resets", p.register_resets},
+                          {"drive_saturated", saturation_json(p.drive_saturated)}};
     }
     // Spindle synchronisation (an addition after EP 0360190): only when a tap card was read.
     if (r.tapping && r.tapping->used) {
@@ -369,6 +387,9 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
                                            *p.mean_cycle_s, *p.shortest_cycle_s, *p.longest_cycle_s)
                              : "",
                          p.waited_s, reset_text(p), lag_text(p)));
+        if (const std::string drive = press_drive_warning(r); !drive.empty()) {
+            line("  warning: " + drive);
+        }
     }
     if (r.tapping && r.tapping->used) {
         const relaylogic::TappingResult& t = *r.tapping;
@@ -478,6 +499,27 @@ std::string tap_hole_warning(const relaylogic::RunResult& r, std::size_t i) {
                        "depth\")",
                        hole, h.deepest_in, std::abs(miss), miss > 0 ? "past" : "short of",
                        h.depth_in, edge_in);
+}
+
+std::string press_drive_warning(const relaylogic::RunResult& r, bool name_card) {
+    if (!r.press || !r.press->drive_saturated) {
+        return "";
+    }
+    const relaylogic::DriveSaturation& s = *r.press->drive_saturated;
+    const std::string card =
+        !name_card ? std::string{}
+        : s.number >= 0
+            ? fmt::format("card {} (number {:04}), {}: ", s.card, s.number, axis_name(s.axis))
+            : fmt::format("card {}, {}: ", s.card, axis_name(s.axis));
+    const std::string why =
+        s.crank_factor > 1.0 ? " (its drift, variation or change of speed)" : "";
+    return fmt::format("{}the sync drive was asked {:.3f} in/min on speed {} at {:.3f} s, "
+                       "past its top speed of {:.3f} in/min (sync_drive.max_in_per_min), the crank "
+                       "at {:.3f} times the press's rated speed{}; the drive ran at its top speed "
+                       "and the axis fell behind the crank, past the lag docs/press-sync.md "
+                       "bounds (the most asked: {:.3f} in/min)",
+                       card, s.asked_in_per_min, s.speed_position, s.t_s, s.drive_max_in_per_min,
+                       s.crank_factor, why, s.most_asked_in_per_min);
 }
 
 } // namespace parsons::cli

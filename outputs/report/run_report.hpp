@@ -44,4 +44,11 @@ std::string counter_turns_warning(const relaylogic::RunResult& result, cardreade
 // and `check` say it.
 std::string tap_hole_warning(const relaylogic::RunResult& result, std::size_t hole);
 
+// The sync drive asked for more than it follows (relaylogic::DriveSaturation), without
+// "warning: ": which axis, on which card, the speed asked against sync_drive.max_in_per_min,
+// when, and the crank's speed then over the press's rated one; the axis then falls behind the
+// crank past the lag docs/press-sync.md bounds. "" when the drive always followed. The summary
+// says it with the card, `check` (whose note names the card) without.
+std::string press_drive_warning(const relaylogic::RunResult& result, bool name_card = true);
+
 } // namespace parsons::cli

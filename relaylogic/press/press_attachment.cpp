@@ -201,6 +201,7 @@ bool PressAttachment::drive(ControlCabinet& cab, AxisCircuit& c, bool on) {
     }
     scp.switch_at(c.axis, k, c.contact_set_a, units_.position_register().value());
     const double v = scp.drive_speed(c.axis, k);
+    scp.note_asked(c.axis, k, cab.now(), cab.cards_read(), cab.orders().number);
     c.plant.command_follow(c.direction, v, cab.profile().sync_drive.acceleration_in_per_s2);
     scp.commanded(c.axis, v);
     c.set_powered(on);
@@ -445,6 +446,7 @@ void PressAttachment::add_to(RunResult& result) const {
     p.max_lag_speed_only_in = units_.scp().worst_lag_in(false);
     p.max_lead_position_sync_in = units_.scp().worst_lead_in(true);
     p.max_lead_speed_only_in = units_.scp().worst_lead_in(false);
+    p.drive_saturated = units_.scp().saturation();
     result.press = p;
 }
 

@@ -2,10 +2,28 @@
 // job's cycles (relaylogic/press/press_attachment.hpp).
 #pragma once
 
+#include "cardreader/orders.hpp"
+
 #include <cstdint>
 #include <optional>
 
 namespace parsons::relaylogic {
+
+// The sync drive asked for more than it follows: a synchronised axis's travel per pulse times
+// the crank's speed past sync_drive.max_in_per_min (the drive runs at its top speed and the axis
+// falls behind the crank for as long as that lasts: the lag then grows past the bound
+// docs/press-sync.md gives). The first time it happened, and the most asked over the run.
+struct DriveSaturation {
+    cardreader::Axis axis = cardreader::Axis::table; // the first axis asked too much
+    std::int64_t card = 0;                           // its motion card (deck position, 1-based)
+    int number = -1;                                 // the card's number (-1: none punched)
+    int speed_position = 1;                          // speed switch 236's position then
+    double t_s = 0;                                  // machine time the drive was first asked
+    double asked_in_per_min = 0;                     // what the crank asked then
+    double crank_factor = 1;          // the crank's speed then over the press's rated speed
+    double most_asked_in_per_min = 0; // the most any axis was asked, the whole run
+    double drive_max_in_per_min = 0;  // sync_drive.max_in_per_min
+};
 
 struct PressResult {
     int revolution = 0;               // the crank's revolution (1 = the first)
@@ -28,6 +46,8 @@ struct PressResult {
     // The axis's counted travel past its reference travel, the largest at any block.
     double max_lead_position_sync_in = 0;
     double max_lead_speed_only_in = 0;
+    // The drive could not follow the crank: when, which axis, how much it was asked.
+    std::optional<DriveSaturation> drive_saturated;
     // The deck used it (a sync card was read): the report and the summary show the press only
     // then (it turns under parsons-extended whatever the deck).
     bool used = false;

@@ -199,6 +199,29 @@ double SynchronisationProcessor::drive_speed(cardreader::Axis a, int speed_posit
     return std::min(v, max_in_per_s_);
 }
 
+void SynchronisationProcessor::note_asked(cardreader::Axis a, int speed_position, double t,
+                                          std::int64_t card, int number) {
+    const double asked = per_pulse_in(a, speed_position) * rate_out_;
+    // A relative hair over the top speed is the review's own rounding at the press's fastest
+    // (an F of the largest travel per pulse it accepts), not a drive that falls behind.
+    if (asked <= max_in_per_s_ * (1 + 1e-9)) {
+        return;
+    }
+    if (!saturation_) {
+        DriveSaturation s;
+        s.axis = a;
+        s.card = card;
+        s.number = number;
+        s.speed_position = speed_position;
+        s.t_s = t;
+        s.asked_in_per_min = asked * 60.0;
+        s.crank_factor = rate_out_ / rated_pulses_per_s_;
+        s.drive_max_in_per_min = max_in_per_s_ * 60.0;
+        saturation_ = s;
+    }
+    saturation_->most_asked_in_per_min = std::max(saturation_->most_asked_in_per_min, asked * 60.0);
+}
+
 void SynchronisationProcessor::commanded(cardreader::Axis a, double in_per_s) {
     tracer_.set(output_63_.at(cardreader::axis_index(a)),
                 static_cast<std::uint32_t>(std::lround(in_per_s * 60000.0)));
@@ -290,6 +313,43 @@ std::optional<int> read_optional(const nlohmann::json& j) {
     return j.get<int>();
 }
 
+nlohmann::json saturation_json(const std::optional<DriveSaturation>& s) {
+    if (!s) {
+        return nullptr;
+    }
+    using axes::exact;
+    return {{"axis", static_cast<int>(cardreader::axis_index(s->axis))},
+            {"card", s->card},
+            {"number", s->number},
+            {"speed_position", s->speed_position},
+            {"t_s", exact(s->t_s)},
+            {"asked_in_per_min", exact(s->asked_in_per_min)},
+            {"crank_factor", exact(s->crank_factor)},
+            {"most_asked_in_per_min", exact(s->most_asked_in_per_min)},
+            {"drive_max_in_per_min", exact(s->drive_max_in_per_min)}};
+}
+
+std::optional<DriveSaturation> read_saturation(const nlohmann::json& j) {
+    if (j.is_null()) {
+        return std::nullopt;
+    }
+    const int axis = axes::read<int>(j, "axis");
+    if (axis < 0 || axis >= static_cast<int>(cardreader::kAxisCount)) {
+        throw axes::StateError("synchronisation_processor_17: saturated.axis: 0 to 4");
+    }
+    DriveSaturation s;
+    s.axis = cardreader::kAxes.at(static_cast<std::size_t>(axis));
+    s.card = axes::read<std::int64_t>(j, "card");
+    s.number = axes::read<int>(j, "number");
+    s.speed_position = std::clamp(axes::read<int>(j, "speed_position"), 1, 3);
+    s.t_s = axes::exact(axes::member(j, "t_s"));
+    s.asked_in_per_min = axes::exact(axes::member(j, "asked_in_per_min"));
+    s.crank_factor = axes::exact(axes::member(j, "crank_factor"));
+    s.most_asked_in_per_min = axes::exact(axes::member(j, "most_asked_in_per_min"));
+    s.drive_max_in_per_min = axes::exact(axes::member(j, "drive_max_in_per_min"));
+    return s;
+}
+
 } // namespace
 
 nlohmann::json SynchronisationProcessor::save() const {
@@ -338,7 +398,8 @@ nlohmann::json SynchronisationProcessor::save() const {
             {"turning_next", turning_next_},
             {"turning_out", turning_out_},
             {"worst_lag_in", {exact(worst_lag_.at(0)), exact(worst_lag_.at(1))}},
-            {"worst_lead_in", {exact(worst_lead_.at(0)), exact(worst_lead_.at(1))}}};
+            {"worst_lead_in", {exact(worst_lead_.at(0)), exact(worst_lead_.at(1))}},
+            {"saturated", saturation_json(saturation_)}};
 }
 
 void SynchronisationProcessor::load(const nlohmann::json& j) {
@@ -401,6 +462,8 @@ void SynchronisationProcessor::load(const nlohmann::json& j) {
         }
         worst_lead_ = {axes::exact(lead.at(0)), axes::exact(lead.at(1))};
     }
+    // A state saved before the drive's saturation was recorded: none.
+    saturation_ = j.contains("saturated") ? read_saturation(j.at("saturated")) : std::nullopt;
 }
 
 } // namespace parsons::relaylogic

@@ -40,6 +40,7 @@
 
 #include "axes/machine_profile.hpp"
 #include "cardreader/orders.hpp"
+#include "relaylogic/press/press_result.hpp"
 #include "relaylogic/tracer.hpp"
 
 #include <nlohmann/json.hpp>
@@ -101,6 +102,14 @@ public:
     // found the axis behind its reference by more than a block of it, or while the axis still
     // stands on the equality that stepped switch 236; otherwise it stands.
     double drive_speed(cardreader::Axis a, int speed_position) const;
+    // The drive is commanded on that position at machine time t, on motion card `card` (deck
+    // position) numbered `number`: where the crank asks more than sync_drive.max_in_per_min
+    // (the travel per pulse times the crank's speed in force, before any correction), the drive
+    // runs at its top speed and the axis falls behind the crank. The first such command is kept,
+    // and the most asked; nothing clears them (the run's record, saved with the state).
+    void note_asked(cardreader::Axis a, int speed_position, double t, std::int64_t card,
+                    int number);
+    const std::optional<DriveSaturation>& saturation() const { return saturation_; }
     // What a reference block reads of a started, powered synchronised axis.
     struct Feedback {
         int speed_position = 0;
@@ -150,11 +159,12 @@ private:
     };
     std::array<Follow, cardreader::kAxisCount> follow_{};
     bool loop_ = false;
-    std::array<double, 2> worst_lag_{};  // speed only, with the loop
-    std::array<double, 2> worst_lead_{}; // the same, ahead of the reference
-    double rate_next_ = 0;               // 63: the crank's speed computed, pulses a second
-    double rate_out_ = 0;                // 63: in force
-    bool turning_next_ = false;          // register 11 timed it between pulses (the crank turns)
+    std::array<double, 2> worst_lag_{};         // speed only, with the loop
+    std::array<double, 2> worst_lead_{};        // the same, ahead of the reference
+    std::optional<DriveSaturation> saturation_; // the drive asked past its top speed
+    double rate_next_ = 0;                      // 63: the crank's speed computed, pulses a second
+    double rate_out_ = 0;                       // 63: in force
+    bool turning_next_ = false; // register 11 timed it between pulses (the crank turns)
     bool turning_out_ = false;
     double rated_pulses_per_s_ = 1;
     std::array<std::array<double, 3>, cardreader::kAxisCount> speeds_{}; // the 1952 speeds, in/s
