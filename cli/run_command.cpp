@@ -57,10 +57,9 @@ std::string job_file_read(const RunRequest& f) {
     }
     // The replay page draws the cut of a job that has one; the job file of a press feeder or
     // a tapping plate beside the deck is for its proof (--press-proof, --thread-proof).
-    if ((!f.html.empty() || f.timeline != nullptr) && f.input != "-" && [&beside] {
-            std::error_code ec;
-            return std::filesystem::is_regular_file(beside, ec);
-        }()) {
+    std::error_code ec; // a name the system cannot look up is no job file beside the deck
+    if ((!f.html.empty() || f.timeline != nullptr) && f.input != "-" &&
+        std::filesystem::is_regular_file(beside, ec)) {
         const std::string text = read_text_file(beside);
         return decks::is_press_job(text) || decks::is_tapping_job(text) ? "" : beside;
     }
