@@ -18,6 +18,7 @@
 // fuzzer or the test program), demo runs every job for minutes. Their options still meet every
 // hostile value: a value CLI11 refuses is exit 2, one it takes would run.
 #include "tests/fuzz/fuzz_targets.hpp"
+#include "tests/fuzz/in_process.hpp"
 
 #include "axes/profile_json.hpp"
 #include "cli/command_line.hpp"
@@ -224,40 +225,18 @@ struct Scratch {
     // Runs a parsons command line in this process, in `work` (when `in_work`), its standard
     // input an empty file and its output and error files of io/; the exit code.
     int run_in(std::vector<std::string> args, bool in_work) const {
-        std::fflush(stdout);
-        std::fflush(stderr);
         const fs::path was = fs::current_path();
         if (in_work) {
             fs::current_path(work);
         }
-        const int saved[3] = {dup(0), dup(1), dup(2)};
         write_file(io / "stdin", "");
         const int in = ::open((io / "stdin").c_str(), O_RDONLY);
         const int out = ::open((io / "stdout").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         const int err = ::open((io / "stderr").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        dup2(in, 0);
-        dup2(out, 1);
-        dup2(err, 2);
+        const int code = run_in_process(std::move(args), in, out, err);
         for (int fd : {in, out, err}) {
             ::close(fd);
         }
-        args.insert(args.begin(), "parsons");
-        std::vector<char*> argv;
-        for (std::string& a : args) {
-            argv.push_back(a.data());
-        }
-        argv.push_back(nullptr);
-        const int code =
-            cli::command_line_main(static_cast<int>(args.size()), argv.data(), "parsons (fuzz)");
-        std::fflush(stdout);
-        std::fflush(stderr);
-        for (int fd = 0; fd < 3; ++fd) {
-            dup2(saved[fd], fd);
-            ::close(saved[fd]);
-        }
-        std::clearerr(stdout);
-        std::clearerr(stderr);
-        std::clearerr(stdin);
         fs::current_path(was);
         return code;
     }

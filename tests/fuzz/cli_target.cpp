@@ -16,6 +16,7 @@
 // The names carry, by construction, which file they are (`Name::file`), so the target knows a
 // clash without asking the code under test (docs/reliability.md, "Nothing lost").
 #include "tests/fuzz/fuzz_targets.hpp"
+#include "tests/fuzz/in_process.hpp"
 
 #include "axes/profile_json.hpp"
 #include "cli/command_line.hpp"
@@ -134,30 +135,9 @@ const std::vector<Template>& templates() {
 // Runs a parsons command line in this process, its standard input, output and error on
 // /dev/null; the exit code.
 int parsons(std::vector<std::string> args) {
-    std::fflush(stdout);
-    std::fflush(stderr);
-    const int saved[3] = {dup(0), dup(1), dup(2)};
     const int null = ::open("/dev/null", O_RDWR);
-    for (int fd = 0; fd < 3; ++fd) {
-        dup2(null, fd);
-    }
+    const int code = run_in_process(std::move(args), null, null, null);
     ::close(null);
-    args.insert(args.begin(), "parsons");
-    std::vector<char*> argv;
-    for (std::string& a : args) {
-        argv.push_back(a.data());
-    }
-    argv.push_back(nullptr);
-    const int code =
-        cli::command_line_main(static_cast<int>(args.size()), argv.data(), "parsons (fuzz)");
-    std::fflush(stdout);
-    std::fflush(stderr);
-    for (int fd = 0; fd < 3; ++fd) {
-        dup2(saved[fd], fd);
-        ::close(saved[fd]);
-    }
-    std::clearerr(stdout);
-    std::clearerr(stderr);
     return code;
 }
 
