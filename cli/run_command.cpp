@@ -286,6 +286,11 @@ void refuse_flag_combinations(const RunRequest& f) {
                         "first turn and the job's from its first card, so it proves whole runs "
                         "only (run the deck from its first card)");
     }
+    if (!f.job.empty() && f.cut.empty() && f.html.empty() && f.timeline == nullptr) {
+        throw DeckError("--job: the job description is read only for --cut (and the design "
+                        "--html draws); give --cut FILE.svg or --html FILE.html with it, or "
+                        "leave --job out");
+    }
     if (f.thread_tolerance_percent && f.thread_proof.empty()) {
         throw DeckError("--thread-tolerance: give it with --thread-proof JOB (the tolerance of "
                         "the thread proof)");
@@ -555,7 +560,9 @@ void add_run_command(CLI::App& app, Command& selected, RunTimeline* timeline) {
                     "Sweep the cutter along the path the axes really took and draw the cut "
                     "against the design, SVG (generated decks)")
         ->type_name(file_value({"svg"}));
-    cmd->add_option("--job", flags->job, "The job description for --cut (default DECK.job.json)")
+    cmd->add_option("--job", flags->job,
+                    "The job description for --cut and --html's design (default DECK.job.json); "
+                    "refused without one of them")
         ->type_name(file_value({"json"}));
     cmd->add_option("--press-proof", flags->press_proof,
                     "Prove a press-feeder job (gen press-feeder's DECK.job.json): the feeder never "

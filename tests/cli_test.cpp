@@ -119,10 +119,11 @@ TEST_CASE("CLI: a bad punch is named by card and column: show tells the reader's
     CHECK(shown.output.find("parsons: error:") == std::string::npos);
     for (const char* judge : {"check", "run"}) {
         INFO(judge);
-        const auto judged =
-            run_parsons(std::string(judge) + " " + q(dir.str("bad.bin")) + " --profile parsons-safe");
+        const auto judged = run_parsons(std::string(judge) + " " + q(dir.str("bad.bin")) +
+                                        " --profile parsons-safe");
         CHECK(judged.exit_code == 3);
-        CHECK(judged.output.find("bad_punch: card 2, column 13: double punch") != std::string::npos);
+        CHECK(judged.output.find("bad_punch: card 2, column 13: double punch") !=
+              std::string::npos);
     }
     // parsons-1952's reader closes two relays, as run does (rule 12): no bad punch.
     auto read = run_parsons("show " + q(dir.str("bad.bin")));
@@ -313,6 +314,26 @@ TEST_CASE("CLI: --plot x.png and --trace x.fst say the file is SVG or VCD", "[cl
                              q(dir.str("p.svg")) + " --trace " + q(dir.str("t.vcd")));
     CHECK(plain.exit_code == 0);
     CHECK(plain.output.find("warning") == std::string::npos);
+}
+
+TEST_CASE("CLI: --job with neither --cut nor --html (nothing reads it) is refused, naming --job",
+          "[cli][bad-input]") {
+    TempDir dir;
+    REQUIRE(run_parsons("gen airfoil --chord 2 --stations 10 --naca 0012 -o " + q(dir.str("a.cbn")))
+                .exit_code == 0);
+    const std::string run =
+        "run " + q(dir.str("a.cbn")) + " -q --job " + q(dir.str("a.cbn.job.json"));
+    const auto alone = run_parsons(run + " --report " + q(dir.str("r.json")));
+    INFO(alone.output);
+    CHECK(alone.exit_code == 2);
+    CHECK_THAT(alone.output, Catch::Contains("parsons: error: --job: the job description is read "
+                                             "only for --cut"));
+    CHECK_FALSE(std::filesystem::exists(dir.path("r.json")));
+    // With either reader of it, the same --job is taken.
+    CHECK(run_parsons(run + " --cut " + q(dir.str("c.svg"))).exit_code == 0);
+    CHECK(std::filesystem::exists(dir.path("c.svg")));
+    CHECK(run_parsons(run + " --html " + q(dir.str("p.html"))).exit_code == 0);
+    CHECK(std::filesystem::exists(dir.path("p.html")));
 }
 
 TEST_CASE("CLI: a --job written for another deck is refused, whatever format the deck is in",

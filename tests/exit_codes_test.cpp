@@ -183,7 +183,7 @@ TEST_CASE("Exit codes: a file name longer than the system allows, as deck, profi
     for (const std::string& args :
          {"run " + too_long, "show " + too_long, "check " + too_long,
           "run " + deck + " --profile " + too_long,
-          "run " + q(dir.str("")) + " --profile " + too_long + " --job " + q(dir.str("prof.json")),
+          "run " + q(dir.str("")) + " --profile " + too_long,
           "run " + deck + " --cut " + q(dir.str("cut.svg")) + " --job " + too_long,
           "run " + deck + " --vcd " + too_long, "punch " + too_long + " -o " + q(dir.str("p.cbn")),
           "demo --out " + q(dir.str(too_long))}) {
