@@ -6,6 +6,7 @@
 //   VCD trace .......................... impulses, trace events and MB a second, to a file
 //   fast-forward, long moves ........... the same deck as the first line, fast-forwarded
 //   fast-forward, short moves .......... cards a second (0.010 in moves)
+//   short moves, by phase .............. a card's time by phase, its heap allocations and a run's
 //   cost per card vs move length ....... microseconds a card for 0.010 in and 10 in moves
 //   cut sweep .......................... run --cut of a 2,000-station template deck
 //   deck generation .................... a 9,997-station template deck (the most a deck holds)
@@ -20,6 +21,7 @@
 // benchmark there, quietly (exit 141).
 #include "axes/json_text.hpp"
 #include "cli/commands.hpp"
+#include "cli/support/allocation_count.hpp"
 #include "cli/support/progress_line.hpp"
 #include "outputs/output_file.hpp"
 
@@ -340,7 +342,7 @@ class Bench {
 public:
     explicit Bench(const BenchOptions& o)
         : o_(o), scratch_("parsons-bench"), dir_(scratch_.path()),
-          stages_(12 + (o.scaling ? 4 : 0)) {}
+          stages_(13 + (o.scaling ? 4 : 0)) {}
 
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
     void say(const std::string& s) {
@@ -354,6 +356,7 @@ public:
     void impulse_level_and_fast_forward();
     void vcd_trace();
     void short_moves();
+    void card_phases(double median_seconds);
     void generation_and_cut();
     void peak_memory();
     void press_cycles();
@@ -449,6 +452,7 @@ void Bench::short_moves() {
     const int per = std::max(1000, o_.short_cards / 10);
     write_deck(path("ten.cbn"), per, kTenInchMoves);
     write_deck(path("hundredth.cbn"), per, kShortMoves);
+    card_phases(sh.seconds);
     stages_.begin("cost per card, 10 in moves");
     const Timed ten = time_run(quiet_run(path("ten.cbn")), o_.runs, stages_);
     stages_.begin("cost per card, 0.010 in moves");
@@ -460,6 +464,56 @@ void Bench::short_moves() {
     say(fmt::format("cost per card               {:>8.2f} us (0.010 in move), {:.2f} us (10 in "
                     "move, {} impulses a card)",
                     us_hundredth, us_ten, impulses_of(ten.result) / per));
+}
+
+// The short-move deck once more, its time split by phase of the card cycle (the cabinet marks
+// each change of phase on a relaylogic::PhaseClock; the shares of its ticks apportion the
+// median time of a card measured above, untimed runs' own cost aside); and the heap
+// allocations (cli/support/allocation_count.hpp) of two decks of the same moves a real deck's
+// length, 1,000 and 2,000 cards: what a card adds, apart from what a run allocates once.
+void Bench::card_phases(double median_seconds) {
+    stages_.begin("short moves, by phase");
+    const auto counted_run = [&](const std::string& deck, relaylogic::PhaseClock* clock) {
+        RunRequest request = quiet_run(path(deck));
+        request.phases = clock;
+        const std::uint64_t before = allocations();
+        if (run_deck(request) != ExitCode::ok) {
+            throw std::runtime_error("benchmark deck " + deck + " did not complete");
+        }
+        return static_cast<double>(allocations() - before);
+    };
+    relaylogic::PhaseClock clock;
+    counted_run("short.cbn", &clock);
+    constexpr int kShorter = 1000, kLonger = 2000;
+    write_deck(path("alloc1.cbn"), kShorter, kShortMoves);
+    write_deck(path("alloc2.cbn"), kLonger, kShortMoves);
+    const double allocated_shorter = counted_run("alloc1.cbn", nullptr);
+    const double allocated = counted_run("alloc2.cbn", nullptr);
+    const double us_per_card = median_seconds / o_.short_cards * 1e6;
+    const double ticks = static_cast<double>(std::max<std::uint64_t>(1, clock.total()));
+    nlohmann::json phases = nlohmann::json::object();
+    std::string line;
+    for (std::size_t i = 0; i < relaylogic::kPhases; ++i) {
+        const auto phase = static_cast<relaylogic::Phase>(i);
+        const double us = static_cast<double>(clock.spent(phase)) / ticks * us_per_card;
+        phases[std::string(relaylogic::phase_name(phase))] = us;
+        line += fmt::format("\n  {:<28}{:>8.3f} us a card", relaylogic::phase_name(phase), us);
+    }
+    j_["short_moves"]["us_per_card_by_phase"] = phases;
+    j_["short_moves"]["allocations_per_card"] = nullptr;
+    j_["short_moves"]["allocations_per_run"] = nullptr;
+    if (!allocations_counted()) {
+        line += "\n  heap allocations            not counted in this build (AddressSanitizer)";
+    } else {
+        const double per_card = (allocated - allocated_shorter) / (kLonger - kShorter);
+        const double per_run = allocated_shorter - per_card * kShorter;
+        j_["short_moves"]["allocations_per_card"] = per_card;
+        j_["short_moves"]["allocations_per_run"] = per_run;
+        line += fmt::format("\n  heap allocations            {:>8.3f} a card, and {:.0f} a run "
+                            "whatever its length ({} in {} cards, {} in {})",
+                            per_card, per_run, allocated_shorter, kShorter, allocated, kLonger);
+    }
+    say(fmt::format("short moves, by phase       {:>8.3f} us a card{}", us_per_card, line));
 }
 
 // Deck generation and the cut sweep.

@@ -73,6 +73,9 @@ struct RunRequest {
     // Not a flag: where an embedder (the WebAssembly page, web/parsons_web.cpp) wants the run
     // recorded for its viewer; null from the command line.
     RunTimeline* timeline = nullptr;
+    // Not a flag: where the benchmark wants the run's time split by phase of the card cycle
+    // (relaylogic/phase_clock.hpp); null from the command line.
+    relaylogic::PhaseClock* phases = nullptr;
 };
 // The result of the run goes to *result too, if given (the benchmark counts its impulses).
 ExitCode run_deck(const RunRequest& request, relaylogic::RunResult* result = nullptr);

@@ -471,6 +471,9 @@ ExitCode verdict(const relaylogic::RunResult& result,
 } // namespace
 
 ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
+    if (f.phases != nullptr) {
+        f.phases->start(relaylogic::Phase::setup);
+    }
     FilePlan plan = run_plan(f);
     plan.check(); // before anything is read at length or written
     warn_formats(f);
@@ -484,7 +487,11 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     const std::vector<relaylogic::Fault> faults = parse_faults(in.fault_specs);
     InputDeck deck(f.input, f.deck);
     apply_feed(profile, f.feed, deck.options());
-    refuse_condition_errors(deck, profile); // condition cards (an addition): before any motion
+    {
+        // Condition cards (an addition), before any motion: the deck read through once.
+        const relaylogic::InPhase reading(f.phases, relaylogic::Phase::read_decode);
+        refuse_condition_errors(deck, profile);
+    }
     if (!f.resume.empty()) {
         say_what_resumes(in.state, in.applied, f);
     }
@@ -522,13 +529,18 @@ ExitCode run_deck(const RunRequest& f, relaylogic::RunResult* out) {
     }
 
     cabinet.watch_interrupt(operator_stop.flag());
+    cabinet.time_phases(f.phases);
     const relaylogic::RunResult result = cabinet.run(deck.cards());
     operator_stop.restore();
     if (out != nullptr) {
         *out = result;
     }
     finish_outputs(*outputs, result, in.applied, f);
-    return verdict(result, *outputs, operator_stop, f);
+    code = verdict(result, *outputs, operator_stop, f);
+    if (f.phases != nullptr) {
+        f.phases->stop();
+    }
+    return code;
 }
 
 void add_run_command(CLI::App& app, Command& selected, RunTimeline* timeline) {

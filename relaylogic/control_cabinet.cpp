@@ -153,6 +153,7 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
         if (interrupted()) {
             continue; // the machine stops; the loop lets the axes coast to rest
         }
+        mark(Phase::motion);
         if (jumping_) {
             plan_quiet_stretches();
         }
@@ -171,15 +172,18 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
             handle(e);
         }
         if (alone) {
+            mark(Phase::motion);
             run_impulses();
         }
     }
+    mark(Phase::motion);
     for (const auto& c : circuits_) {
         c->plant.advance_to(now_);
     }
     for (Attachment* a : plants_) {
         a->advance_plants(*this, now_);
     }
+    mark(Phase::report);
     report_faults();
     if (tracer_.observer() != nullptr) {
         tracer_.observer()->on_finish(now_);
@@ -267,11 +271,32 @@ inline void ControlCabinet::advance(double t, bool follows_motion) {
     }
 }
 
+// The phase of the card cycle an event belongs to, for the benchmark's clock.
+Phase ControlCabinet::phase_of(EventKind kind) {
+    switch (kind) {
+    case EventKind::feed:
+    case EventKind::first_bank:
+    case EventKind::relays_pick:
+    case EventKind::second_bank:
+    case EventKind::speed_step_252:
+    case EventKind::read_complete:
+        return Phase::reader_relays;
+    case EventKind::delay_258_release:
+        return Phase::motion;
+    case EventKind::shaft_step:
+        return Phase::sequence;
+    case EventKind::attachment:
+        return Phase::attachments;
+    }
+    return Phase::motion;
+}
+
 void ControlCabinet::handle(const Event& e) {
     if (stop_ && e.kind != EventKind::feed) {
         return; // master switch open: the cabinet is dead
     }
     if (e.kind == EventKind::attachment && e.standing) {
+        mark(Phase::attachments);
         --standing_queued_;
         attachments_.at(e.owner)->on_event(*this, e.axis); // on whatever card is in the reader
         return;
@@ -285,6 +310,7 @@ void ControlCabinet::handle(const Event& e) {
     if (e.kind != EventKind::feed && e.card != cards_read_) {
         return; // an action of a card the zeroizing circuit has already cleared
     }
+    mark(phase_of(e.kind));
     switch (e.kind) {
     case EventKind::feed:
         feed();

@@ -39,6 +39,7 @@
 #include "relaylogic/axis_circuit.hpp"
 #include "relaylogic/balancing_circuit.hpp"
 #include "relaylogic/faults.hpp"
+#include "relaylogic/phase_clock.hpp"
 #include "relaylogic/run_result.hpp"
 
 #include <csignal>
@@ -88,6 +89,9 @@ public:
     // The operator's stop: run() stops the machine at its next event once *flag is non-zero
     // (set by a signal handler).
     void watch_interrupt(const volatile std::sig_atomic_t* flag) { interrupt_ = flag; }
+    // The benchmark's clock: run() marks on it each change of phase of the card cycle
+    // (relaylogic/phase_clock.hpp). Null (the default): nothing is timed.
+    void time_phases(PhaseClock* clock) { phases_ = clock; }
 
     // --- For attachments (relaylogic/attachment.hpp): what a later system may see and do ---
     double now() const { return now_; }
@@ -263,6 +267,13 @@ private:
     bool resuming_ = false;
     nlohmann::json resume_point_;
     const volatile std::sig_atomic_t* interrupt_ = nullptr;
+    PhaseClock* phases_ = nullptr;
+    static Phase phase_of(EventKind kind);
+    void mark(Phase p) {
+        if (phases_ != nullptr) {
+            phases_->enter(p);
+        }
+    }
     double now_ = 0;
     cardreader::CardSource* deck_ = nullptr;
     std::optional<cardreader::Card> card_;

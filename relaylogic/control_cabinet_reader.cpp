@@ -153,6 +153,7 @@ bool ControlCabinet::first_bank_refuses() {
 // The reader takes the next card: from the deck, or through the attachment that keeps the
 // cards it has taken (press synchronisation: a loop card sends the reader back among them).
 std::optional<cardreader::Card> ControlCabinet::next_card() {
+    const InPhase reading(phases_, Phase::read_decode);
     if (supplier_ == nullptr) {
         return deck_->next();
     }
