@@ -93,13 +93,7 @@ void LeadScrewAxis::begin_slip() {
     plan_constants();
 }
 
-void LeadScrewAxis::command(int direction, int speed_position) {
-    const int dir = direction >= 0 ? +1 : -1;
-    const int speed = speed_position >= 1 && speed_position <= 3 ? speed_position : 0;
-    if (speed == target_speed_ && (speed == 0 || dir == target_dir_)) {
-        target_dir_ = dir;
-        return; // the motor is already doing this: the phase goes on unchanged
-    }
+void LeadScrewAxis::change_command(int dir, int speed) {
     const double u = speed_in_per_s(); // the speed now, before the target changes
     target_dir_ = dir;
     target_speed_ = speed;
@@ -190,10 +184,7 @@ void LeadScrewAxis::advance_slowly(double t) {
         start_phase(phase_end_speed());
         return;
     }
-    if (t > t_) {
-        t_ = t;
-        s_ = position_at(t);
-    }
+    move_within_phase(t);
 }
 
 double LeadScrewAxis::impulse_time(std::int64_t n) const {
@@ -235,11 +226,6 @@ std::int64_t LeadScrewAxis::impulses_to_limit() const {
         return (h_hi_ - 1) / 2 - k_ + 2;
     }
     return k_ - (h_lo_ - 1) / 2 + 1;
-}
-
-double LeadScrewAxis::position_at(double t) const {
-    const double tau = std::min(t, phase_end_) - t0_;
-    return s0_ + d_ * (u0_ * tau + 0.5 * a_ * tau * tau);
 }
 
 double LeadScrewAxis::speed_in_per_s() const {

@@ -113,7 +113,15 @@ public:
     // The motor: direction +1 / -1 and one of the three speeds (1..3), or switched off (0).
     // Takes effect at the current time; the speed changes at the profile's rates. Asking for
     // what the motor is already doing changes nothing.
-    void command(int direction, int speed_position);
+    void command(int direction, int speed_position) {
+        const int dir = direction >= 0 ? +1 : -1;
+        const int speed = speed_position >= 1 && speed_position <= 3 ? speed_position : 0;
+        if (speed == target_speed_ && (speed == 0 || dir == target_dir_)) {
+            target_dir_ = dir;
+            return; // the motor is already doing this: the phase goes on unchanged
+        }
+        change_command(dir, speed);
+    }
     // The follower drive of press synchronisation (an addition after EP 0436887; SyncDrive in
     // the profile): direction and a speed in in/s that the drive reaches at `acceleration`
     // in/s2 (its rate limit). Asking for what it is already doing changes nothing; command()
@@ -129,7 +137,11 @@ public:
     // The one gateway for motion: moves the axis to machine time t (t <= next_event_time()).
     // Returns the impulse if t is the moment of the next impulse.
     std::optional<Impulse> advance_to(double t) {
-        if (t >= next_time_ && next_is_impulse_) {
+        if (t < next_time_) {
+            move_within_phase(t); // the common case, inline: nothing happens before t
+            return std::nullopt;
+        }
+        if (next_is_impulse_) {
             return take_impulse();
         }
         advance_slowly(t);
@@ -246,7 +258,15 @@ private:
         plan_impulse();
         return impulse;
     }
-    void advance_slowly(double t);
+    void advance_slowly(double t); // t >= next_time_: the end of a speed change
+    // Machine time comes to t (t < next_time_): the screw stands where the phase puts it.
+    void move_within_phase(double t) {
+        if (t > t_) {
+            t_ = t;
+            s_ = position_at(t);
+        }
+    }
+    void change_command(int dir, int speed); // command() when the motor must change
     void begin_slip();
     void set_limit_range();     // h_lo_, h_hi_ for the limits (and, counting turns, the nut)
     void start_phase(double u); // a new phase of constant acceleration from (t_, s_, u)
@@ -294,7 +314,10 @@ private:
         const double t = t0_ + time_to_cover(D, u0_, a_);
         return t <= phase_end_ ? t : kNever;
     }
-    double position_at(double t) const;
+    double position_at(double t) const {
+        const double tau = std::min(t, phase_end_) - t0_;
+        return s0_ + d_ * (u0_ * tau + 0.5 * a_ * tau * tau);
+    }
     double accel_toward_target(double u) const;
 
     AxisProfile profile_;

@@ -63,11 +63,6 @@ void AxisCircuit::set_direction(cardreader::Motion motion) {
     tracer.set(reversing_214_, direction > 0 ? 0 : 1);
 }
 
-void AxisCircuit::set_powered(bool on) {
-    powered = on;
-    tracer.set(motor_, on ? 1 : 0);
-}
-
 void AxisCircuit::trace_contacts() {
     static constexpr std::array<std::int64_t, 4> kUnits = {1000, 100, 10, 1}; // 96, 98, 100, 102
     const std::int64_t k = plant.commutator_index();

@@ -45,7 +45,10 @@ struct AxisCircuit {
     bool lamp_270_lit() const { return lamps_live() && absolute_conducting; }
     bool lamp_272_lit() const { return lamps_live() && incremental_conducting; }
     bool lamps_live() const { return speed_switch.off() && (!lamps_only_on_trip_ || tripped); }
-    void set_powered(bool on);
+    void set_powered(bool on) {
+        powered = on;
+        tracer.set(motor_, on ? 1 : 0);
+    }
     // Commutators 96, 98, 100, 102 (gear train 82-92), each with two contact sets A and B: a
     // set's contact changes over at each impulse it sends (segments alternate round the
     // commutator), so its state is the parity of the commutator's position in its unit (1, 0.1,

@@ -25,7 +25,7 @@ public:
     void set_time(double seconds) { now_ = seconds; }
     double now() const { return now_; }
 
-    void set(SignalId id, std::uint32_t value) {
+    [[gnu::always_inline]] void set(SignalId id, std::uint32_t value) {
         // An unchanged value is no event: judged here, where the call is inlined, so that the
         // many set() calls that change nothing cost a comparison (the commutator contact sets
         // are re-set at every impulse).
