@@ -388,9 +388,24 @@ cardreader::DeckReviewer deck_reviewer(const axes::MachineProfile& profile) {
 }
 
 void refuse_deck_errors(InputDeck& deck, const axes::MachineProfile& profile) {
+    const cardreader::CardLayout& layout = *deck.options().layout;
+    // The review finds deck errors only on the additions' cards (condition, sync and tap cards,
+    // marked in the extension column) and on the motion cards that follow one. A deck with none
+    // is read through (a card that cannot be read is refused here as before) and not decoded:
+    // the run decodes each card once (issue 51).
+    bool extension = false;
+    while (auto card = deck.cards().next()) {
+        if (cardreader::is_extension_card(*card, layout)) {
+            extension = true;
+            break;
+        }
+    }
+    deck.rewind();
+    if (!extension) {
+        return;
+    }
     // The review `check` makes; only its deck errors matter here.
     cardreader::DeckReviewer review = deck_reviewer(profile);
-    const cardreader::CardLayout& layout = *deck.options().layout;
     const std::string& file = deck.options().file_name;
     auto refuse = [&](const std::vector<cardreader::ReviewNote>& notes) {
         for (const auto& n : notes) {
