@@ -3,6 +3,8 @@
 // It writes its own decks to a temporary folder, runs each through run_deck() (what
 // `parsons run` calls) several times and prints one line per figure, the median of the runs:
 //   impulse level, no observer ........ impulses a second (--impulse-level, every rule applied)
+//   bare stepping-chain loop ........... the same impulses through one axis's two counters alone
+//                                        (cli/bench_bare_loop.hpp), and the impulse level's ratio
 //   VCD trace .......................... impulses, trace events and MB a second, to a file
 //   fast-forward, long moves ........... the same deck as the first line, fast-forwarded
 //   fast-forward, short moves .......... cards a second (0.010 in moves)
@@ -20,6 +22,8 @@
 // figure is printed as soon as it is measured; a reader that goes away (`| head -3`) ends the
 // benchmark there, quietly (exit 141).
 #include "axes/json_text.hpp"
+#include "cli/bench_bare_loop.hpp"
+#include "cli/bench_decks.hpp"
 #include "cli/commands.hpp"
 #include "cli/support/allocation_count.hpp"
 #include "cli/support/progress_line.hpp"
@@ -55,6 +59,11 @@ namespace fs = std::filesystem;
 using cardreader::Axis;
 using cardreader::CardOrders;
 using Clock = std::chrono::steady_clock;
+using bench::kLongMoves;
+using bench::kShortMoves;
+using bench::kTenInchMoves;
+using bench::write_deck;
+using bench::write_press_deck;
 
 #ifndef PARSONS_BUILD_TYPE
 #define PARSONS_BUILD_TYPE "unknown"
@@ -87,127 +96,6 @@ double seconds(F&& f) {
     f();
     return std::chrono::duration<double>(Clock::now() - t0).count();
 }
-
-cardreader::AxisOrder move(int from, int to, int speed, cardreader::SequencePattern seq) {
-    cardreader::AxisOrder o;
-    const int sign = to >= from ? +1 : -1;
-    o.motion = sign > 0 ? cardreader::Motion::forward : cardreader::Motion::reverse;
-    o.start_speed = speed;
-    if (speed <= 2) {
-        o.slow_down[0] = static_cast<cardreader::Thousandths>(to - sign * (speed == 1 ? 200 : 100));
-    }
-    if (speed == 1) {
-        o.slow_down[1] = static_cast<cardreader::Thousandths>(to - sign * 100);
-    }
-    o.stop = static_cast<cardreader::Thousandths>(to);
-    o.check = static_cast<cardreader::Thousandths>(std::abs(to - from));
-    o.sequence = seq;
-    if (!cardreader::spurious_matches_on_path(o, static_cast<cardreader::Thousandths>(from))
-             .empty()) {
-        throw std::logic_error("benchmark deck has a shared-bank hazard");
-    }
-    return o;
-}
-
-// Each axis shuttles between two positions (a, b) at its speed, with the patent's slow-downs
-// and sequence (12, 12, 34, 34, 5). The first card starts every axis from zero.
-struct Shuttle {
-    int a, b, speed;
-    cardreader::SequencePattern seq;
-};
-
-void write_deck(const std::string& path, int cards, const std::array<Shuttle, 5>& shuttles) {
-    OutputFile file(path);
-    cardreader::DeckOptions options;
-    options.file_name = path;
-    auto sink = cardreader::open_card_sink(file.stream(), options);
-    std::array<int, 5> at{};
-    for (int n = 0; n < cards; ++n) {
-        CardOrders o;
-        o.number = (n + 1) % 10000;
-        o.spindle = cardreader::Spindle::forward;
-        for (std::size_t i = 0; i < 5; ++i) {
-            const Shuttle& s = shuttles.at(i);
-            const int to = n % 2 == 0 ? s.b : s.a;
-            o.axes.at(i) = move(at.at(i), to, at.at(i) == to ? 3 : s.speed, s.seq);
-            at.at(i) = to;
-        }
-        sink->write(cardreader::encode(o, cardreader::fig8_layout()).card);
-    }
-    sink.reset();
-    file.commit();
-}
-
-// The press job (an addition after EP 0436887), `cycles` times round its loop card: wait for
-// crank 21 at 30 deg, the table out 0.600 in at 0.00125 in a detector pulse (speed sync), back
-// at the three-speed motor's speed 1, loop. Each cycle is one revolution of the press.
-void write_press_deck(const std::string& path, int cycles) {
-    OutputFile file(path);
-    cardreader::DeckOptions options;
-    options.file_name = path;
-    auto sink = cardreader::open_card_sink(file.stream(), options);
-    auto idle = [](CardOrders& o) {
-        for (std::size_t i = 1; i < 5; ++i) {
-            o.axes.at(i) = move(500, 500, 3, static_cast<cardreader::SequencePattern>(1U << i));
-        }
-    };
-    CardOrders sync;
-    sync.kind = cardreader::CardKind::sync;
-    sync.number = 1;
-    sync.sync.position_sync = true;
-    sync.sync.angle_deg = 30;
-    sync.sync.travel_per_pulse.at(0) = 125;
-    CardOrders out;
-    out.number = 2;
-    out.axes.at(0) = move(500, 1100, 1, 0b00001);
-    idle(out);
-    CardOrders back;
-    back.number = 3;
-    back.axes.at(0) = move(1100, 500, 1, 0b00001);
-    idle(back);
-    CardOrders loop;
-    loop.kind = cardreader::CardKind::sync;
-    loop.number = 4;
-    loop.sync.loop = true;
-    loop.sync.loop_to = 1;
-    loop.sync.loop_count = cycles - 1;
-    // Before the loop every axis stands at 0.500: a first card takes them there.
-    CardOrders first;
-    first.number = 0;
-    first.axes.at(0) = move(0, 500, 2, 0b00001);
-    for (std::size_t i = 1; i < 5; ++i) {
-        first.axes.at(i) = move(0, 500, 2, static_cast<cardreader::SequencePattern>(1U << i));
-    }
-    for (const CardOrders& o : {first, sync, out, back, loop}) {
-        const cardreader::EncodeResult e = cardreader::encode(o, cardreader::fig8_layout());
-        if (!e) {
-            throw std::logic_error("press benchmark deck: " + *e.error);
-        }
-        sink->write(e.card);
-    }
-    sink.reset();
-    file.commit();
-}
-
-// Every axis moves, the table 9 inches at speed 1: millions of impulses.
-constexpr std::array<Shuttle, 5> kLongMoves = {{{485, 9485, 1, 0b00011},
-                                                {1085, 2985, 2, 0b00011},
-                                                {500, 1500, 2, 0b01100},
-                                                {200, 400, 3, 0b01100},
-                                                {100, 200, 3, 0b10000}}};
-// Only the table moves, 0.010 in a card at speed 3; the others stand (check 0).
-constexpr std::array<Shuttle, 5> kShortMoves = {{{1000, 1010, 3, 0b00001},
-                                                 {500, 500, 3, 0b00010},
-                                                 {500, 500, 3, 0b00100},
-                                                 {500, 500, 3, 0b01000},
-                                                 {500, 500, 3, 0b10000}}};
-// Only the table moves, 9.999 in a card (10 inches, near enough: the counters), at speed 3
-// like the short moves, so that the two decks differ only in the length of the move.
-constexpr std::array<Shuttle, 5> kTenInchMoves = {{{0, 9999, 3, 0b00001},
-                                                   {500, 500, 3, 0b00010},
-                                                   {500, 500, 3, 0b00100},
-                                                   {500, 500, 3, 0b01000},
-                                                   {500, 500, 3, 0b10000}}};
 
 std::int64_t impulses_of(const relaylogic::RunResult& r) {
     std::int64_t n = 0;
@@ -400,6 +288,19 @@ void Bench::impulse_level_and_fast_forward() {
                     "in {:.3f} s)",
                     static_cast<double>(impulses) / il.seconds / 1e6, o_.long_cards, impulses,
                     il.seconds));
+    // The same number of impulses through one axis's two counters and nothing else, in the
+    // same run: the least an impulse can cost (cli/bench_bare_loop.hpp).
+    const bench::BareLoop bare = bench::bare_stepping_chain(impulses, o_.runs);
+    const double bare_rate = static_cast<double>(bare.impulses) / bare.seconds;
+    const double ratio = static_cast<double>(impulses) / il.seconds / bare_rate;
+    j_["bare_loop"] = {{"impulses", bare.impulses},
+                       {"seconds", bare.seconds},
+                       {"impulses_per_s", bare_rate},
+                       {"counters_read", bare.reading}};
+    j_["impulse_level"]["ratio_to_bare_loop"] = ratio;
+    say(fmt::format("bare stepping-chain loop    {:>8.1f} M impulses/s  (the two counters' "
+                    "switches alone; impulse level is {:.2f} x it)",
+                    bare_rate / 1e6, ratio));
 
     stages_.begin("fast-forward, long moves");
     const Timed ff = time_run(quiet_run(path("long.cbn")), o_.runs, stages_);
