@@ -53,7 +53,8 @@ TEST_CASE("Check: its verdict and stop are run's on 400 random decks, every prof
     int with_faults = 0;
     int with_backlash = 0;
     std::map<std::string, int> media;
-    for (int n = 0; n < 400; ++n) {
+    const int decks = share_of_cases(400); // a quarter under the sanitizers (test_support.hpp)
+    for (int n = 0; n < decks; ++n) {
         INFO("deck " << n);
         const Case c = random_case(rng, crng, srng, trng);
         const std::string deck = "deck" + extension(c.medium);
@@ -113,7 +114,10 @@ TEST_CASE("Check: its verdict and stop are run's on 400 random decks, every prof
         INFO(reason << " " << count);
     }
     // The decks meet what the agreement is about: decks that run through, stops of many kinds,
-    // faults, backlash and every medium.
+    // faults, backlash and every medium (all 400 of them: a share is too few to say).
+    if (!whole_share()) {
+        return;
+    }
     CHECK(through >= 60);
     CHECK(stops.size() >= 6);
     CHECK(stops["check_mismatch"] >= 10);

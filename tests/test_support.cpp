@@ -7,11 +7,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fcntl.h>
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 #include <sys/wait.h>
@@ -149,6 +152,32 @@ std::size_t count(const std::string& text, const std::string& what) {
 
 bool running_as_root() {
     return geteuid() == 0;
+}
+
+namespace {
+
+double test_share() {
+    const char* v = std::getenv("PARSONS_TEST_SHARE");
+    if (v == nullptr || *v == '\0') {
+        return 1.0;
+    }
+    char* end = nullptr;
+    const double share = std::strtod(v, &end);
+    if (end == v || *end != '\0' || !(share > 0.0 && share <= 1.0)) {
+        throw std::invalid_argument(std::string("PARSONS_TEST_SHARE: '") + v +
+                                    "' is not a fraction in (0, 1]");
+    }
+    return share;
+}
+
+} // namespace
+
+int share_of_cases(int n) {
+    return std::max(1, static_cast<int>(std::lround(n * test_share())));
+}
+
+bool whole_share() {
+    return test_share() == 1.0;
 }
 
 std::optional<std::filesystem::path> make_device_node(const std::filesystem::path& dir,

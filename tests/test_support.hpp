@@ -64,6 +64,14 @@ std::vector<std::string> lines_of(const std::string& text);
 std::size_t count(const std::string& text, const std::string& what);
 // Whether the tests run as root, for whom a file's permissions do not stop a write.
 bool running_as_root();
+
+// The share of its random cases a heavy test runs: PARSONS_TEST_SHARE, a fraction in (0, 1]
+// (default 1, the whole count). The sanitizer run (CMakePresets.json, preset sanitize) sets a
+// quarter: the memory errors it looks for show on any case, and the main suite runs them all.
+// share_of_cases(n) is that share of n, at least 1; whole_share() says whether it is all of them (a
+// test's checks on how its random cases are spread hold only then).
+int share_of_cases(int n);
+bool whole_share();
 // A character device node of the test's own, `dir`/`name` made with mknod (major, minor: 1, 3 is
 // a null device, 1, 7 a full one), so that no test writes the machine's real /dev/null or
 // /dev/full; std::nullopt when the system does not permit it (not root, no CAP_MKNOD, or a
