@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -112,6 +113,18 @@ TEST_CASE("Bench phases: bench --json gives the short moves' time a card by phas
     CHECK(phases.at("reader cycle's relays").get<double>() > 0);
     CHECK(phases.at("axes' motion").get<double>() > 0);
     CHECK(phases.at("sequence and zeroizing").get<double>() > 0);
+    // The bare stepping-chain loop, in the same run: the impulse level's impulses through one
+    // axis's two counters alone, each reading then 0.000-9.999 (both wrap at 9.999), and the
+    // impulse level's rate as a share of the loop's.
+    const auto& bare = j.at("bare_loop");
+    const auto& il = j.at("impulse_level");
+    const auto impulses = il.at("impulses").get<std::int64_t>();
+    CHECK(bare.at("impulses").get<std::int64_t>() == impulses);
+    CHECK(bare.at("counters_read").get<std::int64_t>() == 2 * (impulses % 10000));
+    CHECK(bare.at("impulses_per_s").get<double>() ==
+          Approx(static_cast<double>(impulses) / bare.at("seconds").get<double>()));
+    CHECK(il.at("ratio_to_bare_loop").get<double>() ==
+          Approx(il.at("impulses_per_s").get<double>() / bare.at("impulses_per_s").get<double>()));
     // A card's own allocations against a run's (two decks, 1,000 and 2,000 cards): counted
     // where the build counts; the run makes some (its profile, its cabinet, its deck reader).
     if (parsons::cli::allocations_counted()) {

@@ -529,6 +529,25 @@ TEST_CASE("Sync card: check, show and run exit 2 on a sync card under parsons-19
                                             "0.01000 in needs 28.8 in/min"));
 }
 
+TEST_CASE("Sync card: run refuses a deck whose only addition's card comes after its motion "
+          "cards, naming that card, before any motion",
+          "[sync_card][cli]") {
+    // The review before a run reads the cards through to find an addition's card and decodes
+    // nothing when there is none (cli/support/deck_files.cpp): one after three motion cards is
+    // still found.
+    test::TempDir dir;
+    const std::string deck =
+        std::string(kListingHeader) + "\n" + table_cross_rows(1, "0.100", "0.100") +
+        table_cross_rows(2, "0.200", "0.100") + table_cross_rows(3, "0.300", "0.100") +
+        "4,sync,position,30\n4,sync,speed,table,0.00100\n" + table_cross_rows(5, "0.400", "0.100");
+    test::write_bytes(dir.path("late.csv"), deck);
+    const auto run = test::run_parsons("run " + test::q(dir.str("late.csv")) + " -q --events " +
+                                       test::q(dir.str("e.jsonl")));
+    CHECK(run.exit_code == 2);
+    CHECK_THAT(run.output, Catch::Contains("late.csv: card 4, column 76: a sync card"));
+    CHECK_FALSE(std::filesystem::exists(dir.path("e.jsonl")));
+}
+
 TEST_CASE("Sync card: show prints it field by field, in --json and as a picture",
           "[sync_card][cli]") {
     test::TempDir dir;

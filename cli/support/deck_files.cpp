@@ -387,19 +387,27 @@ cardreader::DeckReviewer deck_reviewer(const axes::MachineProfile& profile) {
     return reviewer;
 }
 
+namespace {
+
+// Whether any card of the deck is an addition's (column 76's mark), read through, not decoded.
+bool has_extension_card(InputDeck& deck, const cardreader::CardLayout& layout) {
+    while (const auto card = deck.cards().next()) {
+        if (cardreader::is_extension_card(*card, layout)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
+
 void refuse_deck_errors(InputDeck& deck, const axes::MachineProfile& profile) {
     const cardreader::CardLayout& layout = *deck.options().layout;
     // The review finds deck errors only on the additions' cards (condition, sync and tap cards,
     // marked in the extension column) and on the motion cards that follow one. A deck with none
     // is read through (a card that cannot be read is refused here as before) and not decoded:
     // the run decodes each card once (issue 51).
-    bool extension = false;
-    while (auto card = deck.cards().next()) {
-        if (cardreader::is_extension_card(*card, layout)) {
-            extension = true;
-            break;
-        }
-    }
+    const bool extension = has_extension_card(deck, layout);
     deck.rewind();
     if (!extension) {
         return;
