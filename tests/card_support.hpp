@@ -7,7 +7,9 @@
 #include "cardreader/orders.hpp"
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
+#include <string>
 #include <vector>
 
 namespace parsons::test {
@@ -32,6 +34,17 @@ inline std::vector<cardreader::Card> punched(const std::vector<cardreader::CardO
 // The hole of digit `d` (0 .. 9) in a column.
 inline cardreader::ColumnWord digit(int d) {
     return cardreader::row_bit(cardreader::digit_row(d));
+}
+
+// One motion card's five listing rows: the table and cross from 0.000 to `stop` (check = the
+// travel), the others idle.
+inline std::string table_cross_rows(int card, const char* stop, const char* check) {
+    std::string rows = fmt::format("{},0,table,+,3,,,{},{},1\n", card, stop, check);
+    rows += fmt::format("{},0,cross,+,3,,,{},{},2\n", card, stop, check);
+    for (const char* axis : {"vertical", "swivel", "tilt"}) {
+        rows += fmt::format("{},0,{},+,3,,,0.000,0.000,3\n", card, axis);
+    }
+    return rows;
 }
 
 } // namespace parsons::test

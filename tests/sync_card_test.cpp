@@ -26,6 +26,7 @@ using parsons::test::idle_card;
 using parsons::test::listing_error;
 using parsons::test::order;
 using parsons::test::review_all;
+using parsons::test::table_cross_rows;
 
 using parsons::test::digit;
 using parsons::test::punched;
@@ -70,17 +71,6 @@ CardOrders moving_card(int number, int from, int to) {
     c.axis(Axis::table) = order(from, to, 3, {}, {}, 1);
     c.axis(Axis::cross) = order(from, to, 3, {}, {}, 2);
     return c;
-}
-
-// One motion card's five listing rows: the table and cross from 0.000 to `stop` (check = the
-// travel), the others idle.
-std::string table_cross_rows(int card, const char* stop, const char* check) {
-    std::string rows = fmt::format("{},0,table,+,3,,,{},{},1\n", card, stop, check);
-    rows += fmt::format("{},0,cross,+,3,,,{},{},2\n", card, stop, check);
-    for (const char* axis : {"vertical", "swivel", "tilt"}) {
-        rows += fmt::format("{},0,{},+,3,,,0.000,0.000,3\n", card, axis);
-    }
-    return rows;
 }
 
 } // namespace
@@ -489,63 +479,6 @@ TEST_CASE("Sync card: the deck review names each deck error by card and column",
             CHECK_FALSE(n.deck_error);
         }
     }
-}
-
-TEST_CASE("Sync card: check, show and run exit 2 on a sync card under parsons-1952, naming card "
-          "and column, and run refuses before any motion",
-          "[sync_card][cli]") {
-    test::TempDir dir;
-    const std::string header = std::string(kListingHeader) + "\n";
-    const std::string deck = header + "1,sync,position,30\n1,sync,speed,table,0.00100\n" +
-                             table_cross_rows(2, "0.100", "0.100");
-    test::write_bytes(dir.path("sync.csv"), deck);
-    const std::string says = "sync.csv: card 1, column 76: a sync card (an addition after EP "
-                             "0436887, Mitsubishi): profile parsons-1952 has no press "
-                             "synchronisation; the built-in profile parsons-extended has it";
-    const auto run = test::run_parsons("run " + test::q(dir.str("sync.csv")) + " -q --events " +
-                                       test::q(dir.str("e.jsonl")));
-    CHECK(run.exit_code == 2);
-    CHECK_THAT(run.output, Catch::Contains(says));
-    CHECK_FALSE(std::filesystem::exists(dir.path("e.jsonl"))); // refused before anything ran
-    for (const char* command : {"check", "show"}) {
-        INFO(command);
-        const auto r = test::run_parsons(std::string(command) + " " + test::q(dir.str("sync.csv")));
-        CHECK(r.exit_code == 2);
-        CHECK_THAT(r.output, Catch::Contains(says));
-    }
-    // parsons-extended has press synchronisation: the deck has no deck error.
-    const auto checked =
-        test::run_parsons("check " + test::q(dir.str("sync.csv")) + " --profile parsons-extended");
-    INFO(checked.output);
-    CHECK(checked.exit_code == 0);
-
-    // A travel the drive cannot follow: run refuses it under parsons-extended too.
-    test::write_bytes(dir.path("fast.csv"), header + "1,sync,speed,table,0.01000\n" +
-                                                table_cross_rows(2, "0.100", "0.100"));
-    const auto fast =
-        test::run_parsons("run " + test::q(dir.str("fast.csv")) + " -q --profile parsons-extended");
-    CHECK(fast.exit_code == 2);
-    CHECK_THAT(fast.output, Catch::Contains("fast.csv: card 1, column 16: table travel per pulse "
-                                            "0.01000 in needs 28.8 in/min"));
-}
-
-TEST_CASE("Sync card: run refuses a deck whose only addition's card comes after its motion "
-          "cards, naming that card, before any motion",
-          "[sync_card][cli]") {
-    // The review before a run reads the cards through to find an addition's card and decodes
-    // nothing when there is none (cli/support/deck_files.cpp): one after three motion cards is
-    // still found.
-    test::TempDir dir;
-    const std::string deck =
-        std::string(kListingHeader) + "\n" + table_cross_rows(1, "0.100", "0.100") +
-        table_cross_rows(2, "0.200", "0.100") + table_cross_rows(3, "0.300", "0.100") +
-        "4,sync,position,30\n4,sync,speed,table,0.00100\n" + table_cross_rows(5, "0.400", "0.100");
-    test::write_bytes(dir.path("late.csv"), deck);
-    const auto run = test::run_parsons("run " + test::q(dir.str("late.csv")) + " -q --events " +
-                                       test::q(dir.str("e.jsonl")));
-    CHECK(run.exit_code == 2);
-    CHECK_THAT(run.output, Catch::Contains("late.csv: card 4, column 76: a sync card"));
-    CHECK_FALSE(std::filesystem::exists(dir.path("e.jsonl")));
 }
 
 TEST_CASE("Sync card: show prints it field by field, in --json and as a picture",
