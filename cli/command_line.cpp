@@ -81,6 +81,7 @@ void build_command_line(CLI::App& app, Command& selected, const std::string& ver
     add_gen_command(app, selected);
     add_demo_command(app, selected);
     add_bench_command(app, selected);
+    add_sweep_command(app, selected);
     apply_number_rule(app);
 }
 

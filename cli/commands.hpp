@@ -36,6 +36,8 @@ void add_gen_gcode_command(CLI::App& gen, Command& selected);
 void add_demo_command(CLI::App& app, Command& selected);
 void add_bench_command(CLI::App& app, Command& selected);
 void add_check_command(CLI::App& app, Command& selected);
+// parsons sweep (cli/sweep_command.cpp): runs parsons itself, so only from the executable.
+void add_sweep_command(CLI::App& app, Command& selected);
 
 // --strict, on every command that reads a G-code program (today gen gcode): the words the
 // reader would ignore with a warning are refused instead (decks::GcodeReading; docs/gcode.md).

@@ -11,6 +11,7 @@
 #include "cli/support/deck_prediction.hpp"
 #include "cli/support/file_plan.hpp"
 #include "cli/support/job_files.hpp"
+#include "cli/support/operator_stop.hpp"
 #include "cli/support/progress_line.hpp"
 #include "cli/support/value_names.hpp"
 #include "outputs/output.hpp"
@@ -104,46 +105,6 @@ public:
 private:
     InputDeck& deck_;
     ProgressLine line_;
-};
-
-volatile std::sig_atomic_t g_signal = 0;
-
-extern "C" void on_operator_signal(int signal) {
-    g_signal = signal;
-}
-
-// SIGINT and SIGTERM, caught for the length of a run.
-class OperatorStop {
-public:
-    OperatorStop() {
-        g_signal = 0;
-        give_up_on_signal(&g_signal);
-        stop_on_broken_pipe(&g_signal);
-        struct sigaction action {};
-        action.sa_handler = on_operator_signal;
-        sigemptyset(&action.sa_mask);
-        sigaction(SIGINT, &action, &old_int_);
-        sigaction(SIGTERM, &action, &old_term_);
-    }
-    ~OperatorStop() { restore(); }
-    OperatorStop(const OperatorStop&) = delete;
-    OperatorStop& operator=(const OperatorStop&) = delete;
-    const volatile std::sig_atomic_t* flag() const { return &g_signal; }
-    int signal() const { return g_signal; }
-    void restore() {
-        if (!restored_) {
-            give_up_on_signal(nullptr);
-            stop_on_broken_pipe(nullptr);
-            sigaction(SIGINT, &old_int_, nullptr);
-            sigaction(SIGTERM, &old_term_, nullptr);
-            restored_ = true;
-        }
-    }
-
-private:
-    struct sigaction old_int_ {};
-    struct sigaction old_term_ {};
-    bool restored_ = false;
 };
 
 // A saved state is the JSON object marked "parsons_state" (docs/reliability.md); any other file
@@ -387,10 +348,6 @@ void prepare_cabinet(relaylogic::ControlCabinet& cabinet, const RunRequest& f,
     cabinet.record_card_times(!f.report.empty());
 }
 
-ExitCode interrupted_exit(const OperatorStop& operator_stop) {
-    return operator_stop.signal() == SIGTERM ? ExitCode::terminated : ExitCode::interrupted;
-}
-
 // Every output the run asks for, made in the table's order (cli/run_outputs.hpp). An output
 // that opens its file when made is where an operator's signal can end the wait for a FIFO's
 // reader: the run then ends before any card (nullopt, and `code` says how).
@@ -410,7 +367,7 @@ make_outputs(RunSetup& setup, const OperatorStop& operator_stop, ExitCode& code)
             fmt::print(stderr,
                        "parsons: interrupted while opening the outputs, before any card: {}\n",
                        e.what());
-            code = interrupted_exit(operator_stop);
+            code = operator_stop.interrupted_exit();
             return std::nullopt;
         }
     }
@@ -447,7 +404,7 @@ ExitCode verdict(const relaylogic::RunResult& result,
     if (result.stop && result.stop->reason == relaylogic::StopReason::interrupted) {
         fmt::print(stderr, "parsons: interrupted: {}\n", result.stop->message);
         say_how_to_resume(f);
-        return interrupted_exit(operator_stop);
+        return operator_stop.interrupted_exit();
     }
     if (result.stop) {
         if (!f.finding_expected) {

@@ -230,7 +230,7 @@ TEST_CASE("CLI: usage errors exit 2, --help exits 0 with an example", "[cli]") {
     CHECK(unknown_command.exit_code == 2);
     CHECK(unknown_command.output.find("parsons: error: unknown command 'frobnicate' (one of: "
                                       "punch, show, convert, run, check, profile, gen, demo, "
-                                      "bench;") != std::string::npos);
+                                      "bench, sweep;") != std::string::npos);
     CHECK(run_parsons("punch").exit_code == 2);
     auto missing = run_parsons("show /nonexistent/deck.cbn");
     CHECK(missing.exit_code == 2);

@@ -203,7 +203,7 @@ TEST_CASE("Manual: every value an option or argument takes says what it is, for 
     CommandLine cl;
     // The values typed, not chosen: a number, or these free texts. A new option whose value is
     // plain TEXT fails here until its type name says what it is (cli/support/value_names.hpp).
-    const std::vector<std::string> typed = {"AXIS=MIN:MAX", "FAULT"};
+    const std::vector<std::string> typed = {"AXIS=MIN:MAX", "FAULT", "KEY=VALUE", "KEY=VALUES"};
     const std::map<std::string, std::string> free_text = {{"gen airfoil --naca", "TEXT"},
                                                           {"gen two-tool --naca", "TEXT"},
                                                           {"gen tapping --tools", "TEXT"}};
