@@ -86,14 +86,23 @@ std::vector<std::string> run_args(const std::string& family, const CaseFiles& f,
     return args;
 }
 
-// The last words a child said on standard error, without "parsons: ".
+// The last words a child said on standard error, without "parsons: "; a line that ends in a
+// colon with the first indented line after it ("thread proof: wrong pitch in 6 of 6 holes: hole
+// 1 ...").
 std::string last_words(const std::string& err_file) {
     std::ifstream in(err_file);
-    std::string line;
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) {
+        lines.push_back(line);
+    }
     std::string last;
-    while (std::getline(in, line)) {
-        if (!line.empty() && line.rfind("  ", 0) != 0) {
-            last = line;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        if (lines[i].empty() || lines[i].rfind("  ", 0) == 0) {
+            continue;
+        }
+        last = lines[i];
+        if (last.back() == ':' && i + 1 < lines.size() && lines[i + 1].rfind("  ", 0) == 0) {
+            last += " " + lines[i + 1].substr(lines[i + 1].find_first_not_of(' '));
         }
     }
     for (const char* prefix : {"parsons: error: ", "parsons: "}) {
@@ -461,9 +470,11 @@ void add_sweep_command(CLI::App& app, Command& selected) {
     cmd->footer(
         exit_codes_help({{ExitCode::ok, "every case ran (a machine stop is a case's result, "
                                         "in its row)"},
-                         {ExitCode::interrupted, "stopped with Ctrl-C (no results written)"}}) +
+                         {ExitCode::interrupted, "stopped with Ctrl-C (no results written)"},
+                         {ExitCode::terminated, "stopped by SIGTERM (no results written)"}}) +
         "A case that gen or run refused (a combination of values) is its row's status "
-        "\"refused\", and the sweep ends with exit 2 after writing every row.\n\n"
+        "\"refused\", and the sweep ends with exit 2 after writing every row (1 if a case "
+        "failed: a bug). docs/performance.md, Sweeps.\n\n"
         "Examples:\n"
         "  parsons sweep airfoil --set naca=2412 --vary cutter-radius=0.125,0.25 --vary "
         "scallop=0.001:0.004:4 -o results.csv\n"

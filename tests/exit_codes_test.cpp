@@ -93,12 +93,13 @@ TEST_CASE("Exit codes: every command's --help lists exactly the codes docs/stop-
           "[cli][exit-codes]") {
     const std::vector<std::string> commands = {"run",     "check",   "demo", "show",
                                                "punch",   "convert", "gen",  "gen airfoil",
-                                               "profile", "bench"};
+                                               "profile", "bench",   "sweep"};
     const auto expected = documented_codes(commands);
     // The table as it reads today, so a row that loses a command is seen here too.
     CHECK(expected.at("run") == std::set<int>{0, 1, 2, 3, 130, 141, 143});
     CHECK(expected.at("demo") == std::set<int>{0, 1, 2, 130, 141, 143});
     CHECK(expected.at("show") == std::set<int>{0, 1, 2, 141});
+    CHECK(expected.at("sweep") == std::set<int>{0, 1, 2, 130, 141, 143});
     REQUIRE(expected.size() == commands.size());
     for (const auto& [command, codes] : expected) {
         const auto help = run_parsons(command + " --help");

@@ -196,6 +196,24 @@ TEST_CASE("Sweep: a case gen refuses is its row, \"refused\" with gen's words, a
     CHECK(rows[1].at("exit") == "2");
     CHECK_THAT(rows[1].at("message"), Catch::StartsWith("gen tapping: --rpm 5000: spindle motor "
                                                         "27 turns at most"));
+
+    // A proof that objects (threads cut to the job's pitch, judged against a tolerance far
+    // under what the machine holds) is its case's result, exit 3 in the row, and the sweep's
+    // exit 0.
+    const auto p =
+        run_parsons("sweep tapping --vary tolerance=5,0.01 -q -o " + q(dir.str("p.csv")));
+    INFO(p.output);
+    CHECK(p.exit_code == 0);
+    const auto proofs = sweep_rows(dir.str("p.csv"));
+    REQUIRE(proofs.size() == 2);
+    CHECK(proofs[0].at("status") == "completed");
+    CHECK(proofs[1].at("status") == "proof failed");
+    CHECK(proofs[1].at("exit") == "3");
+    CHECK(proofs[1].at("stop_reason").empty());
+    CHECK(proofs[1].at("machine_seconds") == proofs[0].at("machine_seconds"));
+    CHECK_THAT(proofs[1].at("message"), Catch::StartsWith("thread proof: wrong pitch in 6 of 6 "
+                                                          "holes") &&
+                                            Catch::Contains("hole 1"));
 }
 
 TEST_CASE("Sweep: keys and values are checked before any case runs: exit 2 naming the key, and "
