@@ -186,12 +186,14 @@ CaseResult refused(int exit_code, std::string message) {
 std::string result_row(const SweepCase& c, const CaseResult& r) {
     std::string row = fmt::format("{},{}", c.number, csv_field(c.family));
     for (const std::string& v : c.values) {
-        row += "," + csv_field(v);
+        row += ',';
+        row += csv_field(v);
     }
     for (const std::string& field :
          {std::to_string(r.exit_code), r.status, r.stop_reason, r.stop_card, r.cards_read,
           r.machine_seconds, r.gouge, r.leftover, r.message}) {
-        row += "," + csv_field(field);
+        row += ',';
+        row += csv_field(field);
     }
     return row + "\n";
 }
@@ -327,7 +329,8 @@ private:
 std::string results_csv(const SweepGrid& grid, const std::vector<CaseResult>& results) {
     std::string out = "case,family";
     for (const std::string& k : grid.keys) {
-        out += "," + csv_field(k);
+        out += ',';
+        out += csv_field(k);
     }
     out += ",exit,status,stop_reason,stop_card,cards_read,machine_seconds,max_gouge_in,"
            "max_leftover_in,message\n";

@@ -173,13 +173,15 @@ std::string csv_field(const std::string& text) {
 std::string grid_csv(const SweepGrid& grid) {
     std::string out = "case,family";
     for (const std::string& k : grid.keys) {
-        out += "," + csv_field(k);
+        out += ',';
+        out += csv_field(k);
     }
     out += "\n";
     for (const SweepCase& c : grid.cases) {
         out += fmt::format("{},{}", c.number, csv_field(c.family));
         for (const std::string& v : c.values) {
-            out += "," + csv_field(v);
+            out += ',';
+            out += csv_field(v);
         }
         out += "\n";
     }
