@@ -377,9 +377,14 @@ ExitCode run_sweep(const SweepOptions& o) {
                         "parsons executable");
     }
     const SweepGrid grid = grid_asked(o);
+    // From here a signal stops the sweep in order: its scratch folder is removed.
+    OperatorStop stop;
     ScratchFolder scratch("parsons-sweep");
     GenCommandLine gen;
     std::vector<KeyUse> uses = check_grid(gen, grid, scratch.path());
+    if (stop.signal() != 0) {
+        return stop.interrupted_exit();
+    }
     if (!o.cases_out.empty()) {
         write_file(o.cases_out, grid_csv(grid));
     }
@@ -394,7 +399,8 @@ ExitCode run_sweep(const SweepOptions& o) {
     const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(cores);
     const auto start = std::chrono::steady_clock::now();
-    OperatorStop stop;
+    // Opened before any case runs, so that an output that cannot be written wastes no run.
+    OutputFile results(o.output);
     Sweep sweep(grid, std::move(uses), scratch.path(), jobs, o.quiet);
     if (const auto interrupted = sweep.run(stop)) {
         say(stderr, "parsons: sweep: stopped by the operator; no results written\n");
@@ -403,7 +409,8 @@ ExitCode run_sweep(const SweepOptions& o) {
     stop.restore();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    write_file(o.output, results_csv(grid, sweep.results()));
+    results.stream() << results_csv(grid, sweep.results());
+    results.commit();
     std::map<std::string, std::size_t> count;
     const CaseResult* first_bad = nullptr;
     long first_bad_case = 0;

@@ -221,7 +221,7 @@ TEST_CASE("Sweep: keys and values are checked before any case runs: exit 2 namin
           "[sweep][cli][bad-input]") {
     TempDir dir;
     const std::string out = " -o " + q(dir.str("r.csv"));
-    const std::vector<std::pair<std::string, std::string>> refused = {
+    std::vector<std::pair<std::string, std::string>> refused = {
         {"sweep airfoil --set naca=2412 --vary frob=1,2",
          "sweep: gen airfoil has no option '--frob' (its keys: naca, dat,"},
         {"sweep airfoil --set naca=2412 --vary stations=12,x",
@@ -248,6 +248,11 @@ TEST_CASE("Sweep: keys and values are checked before any case runs: exit 2 namin
         CHECK_THAT(r.output, Catch::Contains(says));
         CHECK_FALSE(std::filesystem::exists(dir.path("r.csv")));
     }
+    // An output that cannot be written is refused before any case runs.
+    const auto nowhere = run_parsons("sweep airfoil --set naca=2412 --vary chord=4:8:200 -o " +
+                                     q(dir.str("no/such/folder/r.csv")));
+    CHECK(nowhere.exit_code == 2);
+    CHECK_THAT(nowhere.output, Catch::Contains("no/such/folder/r.csv: cannot write"));
 }
 
 TEST_CASE("Sweep: --cases-out writes the grid without running it: its rows split in two and run "
@@ -292,6 +297,11 @@ TEST_CASE("Sweep: --cases-out writes the grid without running it: its rows split
     CHECK(mixed.exit_code == 2);
     CHECK_THAT(mixed.output, Catch::Contains("case 2 is of the family 'tapping' where case 1 is "
                                              "'airfoil' (a sweep is one family)"));
+    parsons::test::write_bytes(dir.path("keys.csv"), "case,family,naca,naca\n1,airfoil,1,2\n");
+    const auto keys =
+        run_parsons("sweep --cases " + q(dir.str("keys.csv")) + " -o " + q(dir.str("x.csv")));
+    CHECK(keys.exit_code == 2);
+    CHECK_THAT(keys.output, Catch::Contains("keys.csv:1: the key 'naca' is there twice"));
     parsons::test::write_bytes(dir.path("short.csv"), "case,family,naca\n1,airfoil\n");
     const auto short_row =
         run_parsons("sweep --cases " + q(dir.str("short.csv")) + " -o " + q(dir.str("x.csv")));

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -250,6 +251,13 @@ SweepGrid read_cases(const std::string& path) {
                                         "\"case,family\", as sweep --cases-out writes it)");
             }
             grid.keys.assign(fields.begin() + 2, fields.end());
+            for (std::size_t k = 0; k < grid.keys.size(); ++k) {
+                if (std::count(grid.keys.begin(), grid.keys.begin() + static_cast<long>(k),
+                               grid.keys[k]) != 0) {
+                    throw DeckError(
+                        fmt::format("{}: the key '{}' is there twice", where, grid.keys[k]));
+                }
+            }
             header = false;
             continue;
         }
