@@ -163,7 +163,8 @@ void LeadScrewAxis::start_phase(double u) {
 }
 
 void LeadScrewAxis::plan_constants() {
-    if (a_ == 0 && u0_ > 0 && linear_) {
+    steady_ = a_ == 0 && u0_ > 0 && linear_;
+    if (steady_) {
         // t0 + ((k + d/2) 0.001 + offset - s0) d / u, as a + b k.
         const double offset = chain_ == MeasuringChain::screw_turns ? 0.0 : nut_.o_end();
         time_per_index_ = d_ * kInchesPerImpulse / u0_;
@@ -324,6 +325,7 @@ void LeadScrewAxis::load(const nlohmann::json& j) {
     phase_end_ = exact(member(j, "phase_end"));
     time_at_index0_ = exact(member(j, "time_at_index0"));
     time_per_index_ = exact(member(j, "time_per_index"));
+    steady_ = a_ == 0 && u0_ > 0 && linear_;
     t_ = exact(member(j, "t"));
     s_ = exact(member(j, "screw_in"));
     k_ = read<std::int64_t>(j, "k");

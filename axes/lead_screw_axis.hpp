@@ -149,7 +149,7 @@ public:
     }
 
     // The next impulse, due now (next_event_is_impulse()): the impulse loop's own gateway.
-    Impulse take_next_impulse() { return take_impulse(); }
+    [[gnu::always_inline]] Impulse take_next_impulse() { return take_impulse(); }
 
     // Fast-forward: the time of the n-th impulse from now (n >= 1) in the current phase of
     // motion, or kNever if the phase ends (or the axis stops) first.
@@ -243,7 +243,7 @@ private:
         has_crossing_ = true;
         k_ += d_;
         ++impulses_;
-        if (slip_len_in_ > 0 && impulses_ == slip_from_) {
+        if (impulses_ == slip_from_ && slip_len_in_ > 0) {
             begin_slip(); // the fault: from here the screw turns, the part stands
         }
         Impulse impulse;
@@ -252,9 +252,11 @@ private:
         // boundary: the crossing lies between readings upper - 1 and upper, and it passes such
         // a boundary exactly when upper is a whole number of hundredths, tenths or inches.
         const std::int64_t upper = d_ > 0 ? k_ : k_ + 1;
-        impulse.hundredths = upper % 10 == 0; // also for upper < 0
-        impulse.tenths = impulse.hundredths && upper % 100 == 0;
-        impulse.inches = impulse.tenths && upper % 1000 == 0;
+        impulse.hundredths = upper % 10 == 0;  // also for upper < 0
+        if (impulse.hundredths) [[unlikely]] { // one crossing in ten: not worked out at the rest
+            impulse.tenths = upper % 100 == 0;
+            impulse.inches = impulse.tenths && upper % 1000 == 0;
+        }
         plan_impulse();
         return impulse;
     }
@@ -299,12 +301,10 @@ private:
         next_time_ = next_is_impulse_ ? t : phase_end_;
     }
     [[gnu::always_inline]] double boundary_time(std::int64_t k_from) const {
-        if (a_ == 0 && linear_) {
+        if (steady_) {
             // At constant speed the crossing times are linear in the index: t0 + (boundary -
             // s0) / u, with the constants worked out once a phase. Never before the phase.
-            return u0_ > 0 ? std::max(t0_, time_at_index0_ +
-                                               time_per_index_ * static_cast<double>(k_from))
-                           : kNever;
+            return std::max(t0_, time_at_index0_ + time_per_index_ * static_cast<double>(k_from));
         }
         if (u0_ == 0 && a_ <= 0) {
             return kNever;
@@ -334,6 +334,7 @@ private:
     double u0_ = 0;
     double time_at_index0_ = 0; // at constant speed: crossing from index k at
     double time_per_index_ = 0; // time_at_index0_ + time_per_index_ * k
+    bool steady_ = false;       // those two hold: a_ == 0, u0_ > 0 and linear_ (plan_constants)
     double a_ = 0;
     int d_ = +1;
     double phase_end_ = kNever;

@@ -50,6 +50,8 @@
 
 namespace parsons::relaylogic {
 
+struct QuietConditions; // relaylogic/fast_forward.hpp
+
 // How the cabinet spends its time. Both give the same machine, event for event: impulse level
 // takes every commutator impulse one by one (the reference); fast-forward jumps analytically
 // over the stretches of impulses between comparer equalities (relaylogic/fast_forward.hpp), so
@@ -217,9 +219,21 @@ private:
     double next_axis_event(std::size_t i) const {
         return jumping_ ? quiet_end_[i] : circuits_[i]->plant.next_event_time();
     }
+    QuietConditions quiet_conditions(AxisCircuit& c);
     void plan_quiet_stretches();
     void catch_up(double t);
     void run_impulses();
+    // Impulse level: an axis's quiet impulses still to come, and when to ask again.
+    struct QuietRun {
+        static constexpr int kFirstWait = 4;     // impulses one by one before asking again
+        static constexpr int kLongestWait = 256; // ... at most, however often the answer is none
+        std::int64_t quiet = 0;                  // impulses count_quiet_impulse() may take
+        int ask_in = 0;                          // impulses one by one before asking
+        int wait = kFirstWait;                   // ask_in after the next answer of none
+    };
+    void ask_quiet(AxisCircuit& c, QuietRun& run);
+    bool impulse_one_by_one(AxisCircuit& c, QuietRun& run);
+    [[gnu::always_inline]] void count_quiet_impulse(AxisCircuit& c, const axes::Impulse& impulse);
     // control_cabinet_sequence.cpp: stops, stepping shaft 280, the sequence
     void stop_axis(AxisCircuit& c);
     // Balancing circuit 266 through contact 238: an axis whose switch 236 stands on off with

@@ -3,13 +3,15 @@
 // relay 256 steps speed switch 236 through delay 258, and the motors follow the switches.
 // Fast-forward (relaylogic/fast_forward.hpp) is the same rules jumped: it is planned here, next
 // to the rules it jumps (plan_quiet_stretches, catch_up), and impulse level without an
-// observer takes the impulses straight from the plants (run_impulses).
+// observer takes the impulses straight from the plants (run_impulses), reading the comparers,
+// the limits and the queue only where the same plan says something can happen.
 #include "relaylogic/control_cabinet.hpp"
 #include "relaylogic/fast_forward.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cassert>
 #include <limits>
 
 namespace parsons::relaylogic {
@@ -17,13 +19,34 @@ namespace parsons::relaylogic {
 using cardreader::Axis;
 using cardreader::axis_name;
 
-// Fast-forward: how far each moving axis can go on quietly, and when its next event that
-// matters comes (the impulse that ends the stretch, or the end of its speed change).
-void ControlCabinet::plan_quiet_stretches() {
+// What decides how far an axis can go on quietly now (relaylogic/fast_forward.hpp): the machine's
+// stop, its faults on this axis, hundredths-only counting, the soft-limit watch.
+QuietConditions ControlCabinet::quiet_conditions(AxisCircuit& c) {
     QuietConditions q;
     q.min_interval_s = 1.0 / profile_.max_stepping_rate_per_s;
     q.machine_stopped = stop_.has_value();
     q.watches = counter_watches_;
+    q.counting_hundredths =
+        profile_.count_hundredths_at_speed_1 && c.speed_switch.position() == 1 && !stop_;
+    q.watching_soft_limits = c.powered && c.plant.profile().soft_limits;
+    for (const Fault& f : faults_) {
+        if (f.axis != c.axis) {
+            continue;
+        }
+        if (f.kind == FaultKind::drop_impulse && f.n > c.contact_set_a &&
+            (q.next_fault_impulse == 0 || f.n < q.next_fault_impulse)) {
+            q.next_fault_impulse = f.n;
+        }
+        if (f.kind == FaultKind::skip_step && switch_numbered(c, f.numeral).skip_pending()) {
+            q.faulty_switch_ahead = true;
+        }
+    }
+    return q;
+}
+
+// Fast-forward: how far each moving axis can go on quietly, and when its next event that
+// matters comes (the impulse that ends the stretch, or the end of its speed change).
+void ControlCabinet::plan_quiet_stretches() {
     for (std::size_t i = 0; i < circuits_.size(); ++i) {
         AxisCircuit& c = *circuits_[i];
         quiet_.at(i) = 0;
@@ -31,24 +54,7 @@ void ControlCabinet::plan_quiet_stretches() {
         if (!c.plant.next_event_is_impulse()) {
             continue;
         }
-        q.counting_hundredths =
-            profile_.count_hundredths_at_speed_1 && c.speed_switch.position() == 1 && !stop_;
-        q.watching_soft_limits = c.powered && c.plant.profile().soft_limits;
-        q.next_fault_impulse = 0;
-        q.faulty_switch_ahead = false;
-        for (const Fault& f : faults_) {
-            if (f.axis != c.axis) {
-                continue;
-            }
-            if (f.kind == FaultKind::drop_impulse && f.n > c.contact_set_a &&
-                (q.next_fault_impulse == 0 || f.n < q.next_fault_impulse)) {
-                q.next_fault_impulse = f.n;
-            }
-            if (f.kind == FaultKind::skip_step && switch_numbered(c, f.numeral).skip_pending()) {
-                q.faulty_switch_ahead = true;
-            }
-        }
-        const std::int64_t quiet = quiet_impulses(c, q);
+        const std::int64_t quiet = quiet_impulses(c, quiet_conditions(c));
         if (quiet > 0) {
             quiet_.at(i) = quiet;
             // The impulse that ends the stretch or, if the phase ends first, the phase's end.
@@ -81,43 +87,79 @@ void ControlCabinet::catch_up(double t) {
     }
 }
 
+// A quiet impulse: what on_impulse() does with it where nothing but counting can happen (no
+// observer, no attachment that sees the count, no comparer conducting before or after it, no
+// fault, travel limit or soft limit due: ask_quiet()). Both contact sets see it, the counters
+// count it as reversing control 214 set them, each switch with its rate check and carries, and
+// the comparers stay open, so delay 258 may release.
+inline void ControlCabinet::count_quiet_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
+    ++c.contact_set_a;
+    ++c.contact_set_b;
+    c.wrong_way += impulse.direction != c.direction ? 1 : 0;
+    const bool stepped = c.absolute_counter.impulse(c.direction, impulse.hundredths, impulse.tenths,
+                                                    impulse.inches, now_, min_interval_s_);
+    c.increment_counter.impulse(now_, min_interval_s_);
+    // Every switch was ready (quiet_impulses() asks for that): switch 110 stepped.
+    assert(stepped);
+    if (stepped || !stop_) {
+        c.speed_switch.equality_left(now_); // the wipers stepped; the comparers are open
+    }
+}
+
 // Impulse level with no observer: while only impulses come (no relay event is due), take them
 // straight from the plants in time order, lowest axis first at the same instant as the main
 // loop does, without looking at anything else. Back to the main loop as soon as an impulse
 // does more than count.
+//
+// Each axis's impulses are still taken one by one, every switch stepping with its rate check
+// and carries. What is not done at every impulse is asking what cannot have changed: the
+// cabinet works out how many of the axis's coming impulses are quiet (no comparer can conduct,
+// no fault, travel limit or soft limit is due: the quiet stretch that fast-forward jumps,
+// relaylogic/fast_forward.hpp), and takes that many through count_quiet_impulse(), which counts
+// and asks nothing; the impulse after them goes through on_impulse() again. Nothing else can
+// change what the answer rests on meanwhile: a relay event, or an impulse of any axis that does
+// more than count, sends the loop back to the main loop, which forgets every answer.
 void ControlCabinet::run_impulses() {
     double queued = queue_.empty() ? axes::kNever : queue_.top().t;
     if (clock_running()) {
         queued = std::min(queued, clock_->next_clock_event(*this)); // the press's edge first
     }
-    const std::size_t n = circuits_.size();
-    while (true) {
-        std::size_t first = 0;
-        double t = circuits_[0]->plant.next_event_time();
-        for (std::size_t j = 1; j < n; ++j) {
-            const double tj = circuits_[j]->plant.next_event_time();
-            if (tj < t) {
-                t = tj;
-                first = j;
-            }
+    // The axes with anything ahead, in order, and when each one's next event comes: one at
+    // rest stays at rest until the main loop commands it (an impulse that commands a motor
+    // does more than count), and only the axis that takes impulses moves its own next event.
+    std::array<std::size_t, cardreader::kAxisCount> moving{};
+    std::array<double, cardreader::kAxisCount> next{};
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < circuits_.size(); ++i) {
+        const double t = circuits_[i]->plant.next_event_time();
+        if (t != axes::kNever) {
+            moving.at(n) = i;
+            next.at(n++) = t;
+        }
+    }
+    std::array<QuietRun, cardreader::kAxisCount> runs{};
+    while (n > 0) {
+        std::size_t f = 0; // the first to come, the lowest axis at the same instant
+        for (std::size_t k = 1; k < n; ++k) {
+            f = next[k] < next[f] ? k : f;
         }
         // This axis goes on alone until another's impulse (a lower axis at the same instant
         // goes first) or a relay event comes.
         double before = axes::kNever; // strictly before
         double until = queued;        // at or before
-        for (std::size_t j = 0; j < n; ++j) {
-            const double tj = circuits_[j]->plant.next_event_time();
-            if (j < first) {
-                before = std::min(before, tj);
-            } else if (j > first) {
-                until = std::min(until, tj);
-            }
+        for (std::size_t k = 0; k < f; ++k) {
+            before = std::min(before, next[k]);
         }
-        AxisCircuit& c = *circuits_[first];
+        for (std::size_t k = f + 1; k < n; ++k) {
+            until = std::min(until, next[k]);
+        }
+        AxisCircuit& c = *circuits_[moving[f]];
         axes::LeadScrewAxis& plant = c.plant;
         if (interrupt_ != nullptr && *interrupt_ != 0) {
             return;
         }
+        double t = next[f];
+        std::int64_t quiet_left = runs[f].quiet; // a local: kept in a register
         while (plant.next_event_is_impulse()) {
             t = plant.next_event_time();
             if (!(t < before && t <= until)) {
@@ -125,13 +167,59 @@ void ControlCabinet::run_impulses() {
             }
             now_ = t;
             tracer_.set_time(t);
-            if (!on_impulse(c, plant.take_next_impulse())) {
+            if (quiet_left > 0) {
+                --quiet_left;
+                count_quiet_impulse(c, plant.take_next_impulse());
+                continue;
+            }
+            if (!impulse_one_by_one(c, runs[f])) {
                 return; // something happened: the main loop looks at everything again
             }
+            quiet_left = runs[f].quiet;
         }
+        runs[f].quiet = quiet_left;
+        next[f] = plant.next_event_time();
         if (!plant.next_event_is_impulse() || t > queued) {
             return; // a speed change ends, or a relay event is due: the main loop
         }
+    }
+}
+
+// An impulse of an axis outside a quiet stretch. First ask how many of its coming impulses are
+// quiet (ask_quiet); the first of them goes through on_impulse() all the same when a comparer
+// conducts before it (it leaves the equality: the comparers are read again), the rest through
+// count_quiet_impulse(). Returns what on_impulse() returns.
+bool ControlCabinet::impulse_one_by_one(AxisCircuit& c, QuietRun& run) {
+    ask_quiet(c, run);
+    if (run.quiet > 0) {
+        --run.quiet;
+        if (!c.absolute_conducting && !c.incremental_conducting) {
+            count_quiet_impulse(c, c.plant.take_next_impulse());
+            return true;
+        }
+    }
+    return on_impulse(c, c.plant.take_next_impulse());
+}
+
+// How many of the axis's coming impulses are quiet. An axis whose next impulse is not quiet
+// goes one by one through on_impulse(); it is asked again after a few of them, then after
+// twice as many (a stretch that stays unquiet, such as impulses faster than the switches can
+// step, is not asked at every impulse). Attachments that see each impulse counted are never
+// passed by: with one, every impulse goes through on_impulse().
+void ControlCabinet::ask_quiet(AxisCircuit& c, QuietRun& run) {
+    if (!before_count_.empty() || !after_count_.empty()) {
+        return;
+    }
+    if (run.ask_in > 0) {
+        --run.ask_in;
+        return;
+    }
+    run.quiet = quiet_impulses(c, quiet_conditions(c));
+    if (run.quiet > 0) {
+        run.wait = QuietRun::kFirstWait;
+    } else {
+        run.ask_in = run.wait;
+        run.wait = std::min(2 * run.wait, QuietRun::kLongestWait);
     }
 }
 

@@ -206,6 +206,18 @@ void run_machine(const std::vector<Card>& cards, const axes::MachineProfile& pro
         throw Finding("machine: fast-forward and impulse level end differently:\n  fast-forward: " +
                       summary(fast) + "\n  impulse level: " + summary(reference));
     }
+    if (!observe) {
+        // Impulse level with no observer passes quiet stretches on fast-forward's own plan
+        // (ControlCabinet::run_impulses); the reference that plans nothing is impulse level
+        // with an observer that follows every impulse.
+        const RunResult followed = run_once(file.str(), profile, Pace::impulse_level, true, faults);
+        check_run(followed, cards.size());
+        if (!same_run(followed, reference)) {
+            throw Finding("machine: impulse level with and without an observer end differently:\n"
+                          "  followed: " +
+                          summary(followed) + "\n  no observer: " + summary(reference));
+        }
+    }
 }
 
 } // namespace parsons::fuzz
