@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <set>
+#include <array>
 
 namespace parsons::cardreader {
 namespace {
@@ -41,38 +41,82 @@ Thousandths travel_in_motion(Thousandths from, Thousandths to, Motion motion) {
     return static_cast<Thousandths>((d % kCounterModulus + kCounterModulus) % kCounterModulus);
 }
 
-std::vector<Thousandths> shared_bank_matches(const AxisOrder& order) {
-    // Bank 350 holds the inch digit, 352 tenths, 354 hundredths, 356 thousandths.
-    std::array<std::set<int>, 4> closed;
+namespace {
+
+// The digits the shared banks close for the order's slow-downs and stop: one bit a digit, for
+// bank 356 (thousandths, place 0) .. 350 (inches, place 3).
+std::array<unsigned, 4> closed_digits(const AxisOrder& order) {
+    std::array<unsigned, 4> closed{};
     for (Thousandths n : punched_numbers(order)) {
-        for (int place = 0; place < 4; ++place) {
-            closed.at(static_cast<std::size_t>(place)).insert(digit(n, place));
+        for (std::size_t place = 0; place < 4; ++place) {
+            closed.at(place) |= 1U << static_cast<unsigned>(digit(n, static_cast<int>(place)));
         }
     }
-    std::vector<Thousandths> matches;
-    for (int a : closed[3]) {
-        for (int b : closed[2]) {
-            for (int c : closed[1]) {
-                for (int d : closed[0]) {
-                    matches.push_back(static_cast<Thousandths>(a * 1000 + b * 100 + c * 10 + d));
+    return closed;
+}
+
+// Calls `each` with every number the banks compare equal at, ascending (inches digit slowest),
+// until it returns false.
+template <typename Each>
+void for_each_match(const AxisOrder& order, Each each) {
+    const auto closed = closed_digits(order);
+    for (int a = 0; a < 10; ++a) {
+        if ((closed[3] >> a & 1U) == 0) {
+            continue;
+        }
+        for (int b = 0; b < 10; ++b) {
+            if ((closed[2] >> b & 1U) == 0) {
+                continue;
+            }
+            for (int c = 0; c < 10; ++c) {
+                if ((closed[1] >> c & 1U) == 0) {
+                    continue;
+                }
+                for (int d = 0; d < 10; ++d) {
+                    if ((closed[0] >> d & 1U) != 0 &&
+                        !each(static_cast<Thousandths>(a * 1000 + b * 100 + c * 10 + d))) {
+                        return;
+                    }
                 }
             }
         }
     }
-    std::sort(matches.begin(), matches.end());
+}
+
+} // namespace
+
+std::vector<Thousandths> shared_bank_matches(const AxisOrder& order) {
+    // Bank 350 holds the inch digit, 352 tenths, 354 hundredths, 356 thousandths.
+    std::vector<Thousandths> matches;
+    for_each_match(order, [&matches](Thousandths m) {
+        matches.push_back(m);
+        return true;
+    });
     return matches;
 }
 
 std::vector<Thousandths> spurious_matches_on_path(const AxisOrder& order, Thousandths from) {
     const auto punched = punched_numbers(order);
     std::vector<Thousandths> spurious;
-    for (Thousandths m : shared_bank_matches(order)) {
+    for_each_match(order, [&](Thousandths m) {
         const bool is_punched = std::find(punched.begin(), punched.end(), m) != punched.end();
         if (!is_punched && passed_before_stop(m, from, order.stop, order.motion)) {
             spurious.push_back(m);
         }
-    }
+        return true;
+    });
     return spurious;
+}
+
+bool spurious_match_on_path(const AxisOrder& order, Thousandths from) {
+    const auto punched = punched_numbers(order);
+    bool found = false;
+    for_each_match(order, [&](Thousandths m) {
+        found = std::find(punched.begin(), punched.end(), m) == punched.end() &&
+                passed_before_stop(m, from, order.stop, order.motion);
+        return !found;
+    });
+    return found;
 }
 
 void DeckReviewer::skip() {

@@ -32,6 +32,9 @@ std::vector<Thousandths> shared_bank_matches(const AxisOrder& order);
 // The matches that are not punched numbers and that the counters pass on the way from
 // `from` to the stop in the motion's direction (start included, stop excluded).
 std::vector<Thousandths> spurious_matches_on_path(const AxisOrder& order, Thousandths from);
+// Whether there is any (the generator's test of each placement it tries: it stops at the
+// first).
+bool spurious_match_on_path(const AxisOrder& order, Thousandths from);
 
 // Travel from `from` to `to` in the motion's direction, as the counters count it (0 .. 9.999:
 // they wrap 9.999 -> 0.000 forward and 0.000 -> 9.999 in reverse).

@@ -80,7 +80,7 @@ cardreader::AxisOrder plan_move(const MoveRequest& move, const axes::AxisProfile
                 } else {
                     candidate.slow_down[0] = th(move.to - sign * last);
                 }
-                if (cardreader::spurious_matches_on_path(candidate, th(move.from)).empty()) {
+                if (!cardreader::spurious_match_on_path(candidate, th(move.from))) {
                     return candidate;
                 }
             }

@@ -4,6 +4,10 @@
 
 #include <fmt/format.h>
 
+#include <optional>
+#include <random>
+#include <vector>
+
 using namespace parsons::cardreader;
 
 namespace {
@@ -132,4 +136,48 @@ TEST_CASE("Review: a slow-down on the stop itself is not reached before the stop
           std::vector<std::string>{"first slow-down 9.000 is not on the way from the stop "
                                    "before, 0.000, to the stop 9.000"});
     CHECK(off_the_way(review_order(Motion::reverse, 2, 9001, {}, 9000, 1000)).empty());
+}
+
+TEST_CASE("Shared banks: the matches are every number whose each digit a punched number closes "
+          "in its bank, ascending, and the generator's test finds a spurious one exactly when "
+          "the list has one",
+          "[review][fig12]") {
+    std::mt19937 rng(51);
+    std::uniform_int_distribution<int> number(0, 9999);
+    std::uniform_int_distribution<int> speed(1, 3);
+    for (int n = 0; n < 400; ++n) {
+        const int start = speed(rng);
+        const std::optional<Thousandths> s1 =
+            start <= 2 ? std::optional(static_cast<Thousandths>(number(rng))) : std::nullopt;
+        const std::optional<Thousandths> s2 =
+            start == 1 ? std::optional(static_cast<Thousandths>(number(rng))) : std::nullopt;
+        const auto stop = static_cast<Thousandths>(number(rng));
+        const auto o =
+            review_order(n % 2 == 0 ? Motion::forward : Motion::reverse, start, s1, s2, stop, stop);
+        // The rule itself, number by number (Fig. 12: each bank compares one digit).
+        std::vector<Thousandths> punched = {stop};
+        for (const auto& s : {s1, s2}) {
+            if (s) {
+                punched.push_back(*s);
+            }
+        }
+        std::vector<Thousandths> expected;
+        for (int m = 0; m < 10000; ++m) {
+            bool every_digit = true;
+            for (int place = 1; place <= 1000; place *= 10) {
+                bool closed = false;
+                for (Thousandths p : punched) {
+                    closed = closed || (p / place) % 10 == (m / place) % 10;
+                }
+                every_digit = every_digit && closed;
+            }
+            if (every_digit) {
+                expected.push_back(static_cast<Thousandths>(m));
+            }
+        }
+        INFO("order " << n);
+        REQUIRE(shared_bank_matches(o) == expected);
+        const auto from = static_cast<Thousandths>(number(rng));
+        CHECK(spurious_match_on_path(o, from) == !spurious_matches_on_path(o, from).empty());
+    }
 }
