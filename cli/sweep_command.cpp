@@ -34,6 +34,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <sched.h>
 #include <set>
 #include <sstream>
 #include <sys/wait.h>
@@ -196,6 +197,16 @@ std::string result_row(const SweepCase& c, const CaseResult& r) {
         row += csv_field(field);
     }
     return row + "\n";
+}
+
+// The cores this process may run on (taskset, a container's cpuset), at least 1.
+int cores_to_run_on() {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    if (sched_getaffinity(0, sizeof(set), &set) == 0 && CPU_COUNT(&set) > 0) {
+        return CPU_COUNT(&set);
+    }
+    return static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
 }
 
 // One case on its way: which of its two children runs.
@@ -396,8 +407,7 @@ ExitCode run_sweep(const SweepOptions& o) {
         }
         return ExitCode::ok;
     }
-    const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
-    const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(cores);
+    const int jobs = o.jobs > 0 ? o.jobs : 2 * cores_to_run_on();
     const auto start = std::chrono::steady_clock::now();
     // Opened before any case runs, so that an output that cannot be written wastes no run.
     OutputFile results(o.output);
@@ -474,7 +484,9 @@ void add_sweep_command(CLI::App& app, Command& selected) {
     cmd->add_option("-o,--output", o->output,
                     "The results: one CSV row a case, in the grid's order")
         ->type_name("FILE.csv");
-    cmd->add_option("--jobs", o->jobs, "Cases at once (default: one a core)")
+    cmd->add_option("--jobs", o->jobs,
+                    "Cases at once (default: two a core this process may run on, so that a core "
+                    "is busy while another case's processes start and end)")
         ->check(CLI::Range(1, 1024));
     cmd->add_flag("-q,--quiet", o->quiet, "No summary line and no progress line");
     cmd->footer(
