@@ -394,6 +394,7 @@ ExitCode run_sweep(const SweepOptions& o) {
     GenCommandLine gen;
     std::vector<KeyUse> uses = check_grid(gen, grid, scratch.path());
     if (stop.signal() != 0) {
+        say(stderr, "parsons: sweep: stopped by the operator; no results written\n");
         return stop.interrupted_exit();
     }
     if (!o.cases_out.empty()) {

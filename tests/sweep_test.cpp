@@ -366,9 +366,12 @@ TEST_CASE("Sweep: Ctrl-C stops the children and the sweep (exit 130): no results
                                 " exec PARSONS sweep airfoil --set naca=2412 --vary "
                                 "chord=4:8:2000 --jobs 2 -q -o " +
                                 q(dir.str("r.csv"));
-    // The sweep in the background; its process id written first, then its exit code.
+    // The sweep in the background, stopped once its first case is under way (its folder in
+    // the scratch folder: a slow build, under a sanitizer, takes longer to get there).
+    const std::string cases = q(dir.str("tmp")) + "/parsons-sweep-*/case-*";
     const auto r = parsons::test::run_shell(
-        "( " + command + " ) & pid=$!; sleep 1; kill -INT $pid; wait $pid; echo exit=$?");
+        "( " + command + " ) & pid=$!; for i in $(seq 600); do ls -d " + cases +
+        " >/dev/null 2>&1 && break; sleep 0.05; done; kill -INT $pid; wait $pid; echo exit=$?");
     INFO(r.output);
     CHECK_THAT(r.output, Catch::Contains("exit=130"));
     CHECK_THAT(r.output, Catch::Contains("sweep: stopped by the operator; no results written"));
