@@ -1,5 +1,7 @@
 #include "tests/machine_support.hpp"
 
+#include <catch2/catch.hpp>
+
 namespace parsons::test {
 
 using namespace parsons::cardreader;
@@ -86,6 +88,80 @@ relaylogic::RunResult run_orders(const std::vector<CardOrders>& cards,
         cabinet.attach(observer);
     }
     return cabinet.run(deck);
+}
+
+void require_same(const relaylogic::RunResult& a, const relaylogic::RunResult& b) {
+    REQUIRE(a.completed == b.completed);
+    REQUIRE(a.cards_read == b.cards_read);
+    REQUIRE(a.machine_seconds == b.machine_seconds);
+    REQUIRE(a.stop.has_value() == b.stop.has_value());
+    if (a.stop) {
+        REQUIRE(a.stop->reason == b.stop->reason);
+        REQUIRE(a.stop->card == b.stop->card);
+        REQUIRE(a.stop->axis == b.stop->axis);
+        REQUIRE(a.stop->message == b.stop->message);
+        REQUIRE(a.stop->lamps == b.stop->lamps);
+    }
+    for (std::size_t i = 0; i < a.axes.size(); ++i) {
+        INFO("axis " << i);
+        REQUIRE(a.axes.at(i).counter_in == b.axes.at(i).counter_in);
+        REQUIRE(a.axes.at(i).counted_in == b.axes.at(i).counted_in);
+        REQUIRE(a.axes.at(i).real_in == b.axes.at(i).real_in);
+        REQUIRE(a.axes.at(i).impulses == b.axes.at(i).impulses);
+        REQUIRE(a.axes.at(i).lost_steps == b.axes.at(i).lost_steps);
+        REQUIRE(a.axes.at(i).slip_in == b.axes.at(i).slip_in);
+        REQUIRE(a.axes.at(i).screw_in == b.axes.at(i).screw_in);
+        REQUIRE(a.axes.at(i).commutator_in == b.axes.at(i).commutator_in);
+        REQUIRE(a.axes.at(i).wrong_way == b.axes.at(i).wrong_way);
+        REQUIRE(a.axes.at(i).thousandths_uncounted == b.axes.at(i).thousandths_uncounted);
+        REQUIRE(a.axes.at(i).chain.sum() == Approx(b.axes.at(i).chain.sum()).margin(1e-12));
+    }
+    REQUIRE(a.faults.size() == b.faults.size());
+    for (std::size_t i = 0; i < a.faults.size(); ++i) {
+        REQUIRE(a.faults.at(i).effect == b.faults.at(i).effect);
+    }
+    REQUIRE(a.actions.size() == b.actions.size());
+    for (std::size_t i = 0; i < a.actions.size(); ++i) {
+        REQUIRE(a.actions.at(i).event == b.actions.at(i).event);
+        REQUIRE(a.actions.at(i).tripped_s == b.actions.at(i).tripped_s);
+        REQUIRE(a.actions.at(i).acknowledged_s == b.actions.at(i).acknowledged_s);
+        REQUIRE(a.actions.at(i).motion_end_s == b.actions.at(i).motion_end_s);
+    }
+    REQUIRE(a.tool_in_spindle == b.tool_in_spindle);
+    REQUIRE(a.press.has_value() == b.press.has_value());
+    if (a.press) {
+        REQUIRE(a.press->revolution == b.press->revolution);
+        REQUIRE(a.press->crank_angle_deg == b.press->crank_angle_deg);
+        REQUIRE(a.press->position_register == b.press->position_register);
+        REQUIRE(a.press->press_stopped == b.press->press_stopped);
+        REQUIRE(a.press->cycles == b.press->cycles);
+        REQUIRE(a.press->loop_backs == b.press->loop_backs);
+        REQUIRE(a.press->mean_cycle_s == b.press->mean_cycle_s);
+        REQUIRE(a.press->waited_s == b.press->waited_s);
+    }
+    REQUIRE(a.tapping.has_value() == b.tapping.has_value());
+    if (a.tapping) {
+        REQUIRE(a.tapping->tool_on_spindle == b.tapping->tool_on_spindle);
+        REQUIRE(a.tapping->ratio_in_memory == b.tapping->ratio_in_memory);
+        REQUIRE(a.tapping->head_exchanges == b.tapping->head_exchanges);
+        REQUIRE(a.tapping->transfers == b.tapping->transfers);
+        REQUIRE(a.tapping->holes.size() == b.tapping->holes.size());
+        for (std::size_t i = 0; i < a.tapping->holes.size(); ++i) {
+            const auto& x = a.tapping->holes.at(i);
+            const auto& y = b.tapping->holes.at(i);
+            REQUIRE(x.start_s == y.start_s);
+            REQUIRE(x.reverse_s == y.reverse_s);
+            REQUIRE(x.end_s == y.end_s);
+            REQUIRE(x.deepest_in == y.deepest_in);
+            REQUIRE(x.end_in == y.end_in);
+            REQUIRE(x.completed == y.completed);
+        }
+    }
+    REQUIRE(a.cards.size() == b.cards.size());
+    for (std::size_t i = 0; i < a.cards.size(); ++i) {
+        REQUIRE(a.cards.at(i).start_s == b.cards.at(i).start_s);
+        REQUIRE(a.cards.at(i).end_s == b.cards.at(i).end_s);
+    }
 }
 
 } // namespace parsons::test

@@ -68,4 +68,11 @@ relaylogic::RunResult run_orders(const std::vector<cardreader::CardOrders>& card
                                  const std::vector<relaylogic::Fault>& faults = {},
                                  relaylogic::Pace pace = relaylogic::Pace::fast_forward);
 
+// Two runs of one deck ended the same (Catch2 REQUIREs): completion, cards, machine time, the
+// stop, every axis's counters, position, impulses, lost steps, slip, screw and commutator, the
+// faults' effects, condition actions, the tool, the press, the tapping and each card's times.
+// The paces and the observed and unobserved impulse level must all agree on it
+// (tests/fast_forward_test.cpp, tests/quiet_stretch_test.cpp).
+void require_same(const relaylogic::RunResult& a, const relaylogic::RunResult& b);
+
 } // namespace parsons::test

@@ -36,33 +36,6 @@ public:
     void on_signal(double, SignalId, std::uint32_t, std::uint32_t) override {}
 };
 
-void qs_require_same(const RunResult& a, const RunResult& b) {
-    REQUIRE(a.completed == b.completed);
-    REQUIRE(a.cards_read == b.cards_read);
-    REQUIRE(a.machine_seconds == b.machine_seconds);
-    REQUIRE(a.stop.has_value() == b.stop.has_value());
-    if (a.stop) {
-        REQUIRE(a.stop->reason == b.stop->reason);
-        REQUIRE(a.stop->axis == b.stop->axis);
-        REQUIRE(a.stop->message == b.stop->message);
-    }
-    for (std::size_t i = 0; i < a.axes.size(); ++i) {
-        INFO("axis " << i);
-        REQUIRE(a.axes.at(i).counter_in == b.axes.at(i).counter_in);
-        REQUIRE(a.axes.at(i).counted_in == b.axes.at(i).counted_in);
-        REQUIRE(a.axes.at(i).real_in == b.axes.at(i).real_in);
-        REQUIRE(a.axes.at(i).screw_in == b.axes.at(i).screw_in);
-        REQUIRE(a.axes.at(i).impulses == b.axes.at(i).impulses);
-        REQUIRE(a.axes.at(i).lost_steps == b.axes.at(i).lost_steps);
-        REQUIRE(a.axes.at(i).wrong_way == b.axes.at(i).wrong_way);
-        REQUIRE(a.axes.at(i).commutator_in == b.axes.at(i).commutator_in);
-    }
-    REQUIRE(a.faults.size() == b.faults.size());
-    for (std::size_t i = 0; i < a.faults.size(); ++i) {
-        REQUIRE(a.faults.at(i).effect == b.faults.at(i).effect);
-    }
-}
-
 // The three runs of a deck; returns the quiet one (impulse level, no observer).
 RunResult qs_three_ways(const std::vector<CardOrders>& cards,
                         const axes::MachineProfile& profile = axes::default_profile(),
@@ -71,8 +44,8 @@ RunResult qs_three_ways(const std::vector<CardOrders>& cards,
     QsEveryImpulse every;
     const RunResult reference = run_orders(cards, profile, &every, faults, Pace::impulse_level);
     const RunResult jumped = run_orders(cards, profile, nullptr, faults, Pace::fast_forward);
-    qs_require_same(reference, quiet);
-    qs_require_same(reference, jumped);
+    parsons::test::require_same(reference, quiet);
+    parsons::test::require_same(reference, jumped);
     return quiet;
 }
 
