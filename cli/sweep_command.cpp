@@ -201,11 +201,14 @@ std::string result_row(const SweepCase& c, const CaseResult& r) {
 
 // The cores this process may run on (taskset, a container's cpuset), at least 1.
 int cores_to_run_on() {
+#ifndef __EMSCRIPTEN__ // the page has no affinity (and runs no sweep:
+                       // cli/support/child_process.hpp)
     cpu_set_t set;
     CPU_ZERO(&set);
     if (sched_getaffinity(0, sizeof(set), &set) == 0 && CPU_COUNT(&set) > 0) {
         return CPU_COUNT(&set);
     }
+#endif
     return static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
 }
 

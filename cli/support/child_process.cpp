@@ -7,8 +7,7 @@
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
-
-extern char** environ;
+#include <unistd.h> // environ
 
 namespace parsons::cli {
 
