@@ -233,6 +233,8 @@ private:
     };
     void ask_quiet(AxisCircuit& c, QuietRun& run);
     bool impulse_one_by_one(AxisCircuit& c, QuietRun& run);
+    [[gnu::always_inline]] bool count_impulse(AxisCircuit& c, const axes::Impulse& impulse,
+                                              bool hundredths_only);
     [[gnu::always_inline]] void count_quiet_impulse(AxisCircuit& c, const axes::Impulse& impulse);
     // control_cabinet_sequence.cpp: stops, stepping shaft 280, the sequence
     void stop_axis(AxisCircuit& c);

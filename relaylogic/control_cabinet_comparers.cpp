@@ -87,22 +87,42 @@ void ControlCabinet::catch_up(double t) {
     }
 }
 
+// The counting of one impulse, for on_impulse() and count_quiet_impulse(): the counters count
+// up or down as reversing control 214 set them (the motion column), whichever way the screw
+// really turns: coast that runs on after the next card has set the other sense is counted the
+// wrong way, as on the 1952 machine. `hundredths_only`: the patent's answer to stepping-rate
+// loss (col. 8), a profile option. Returns whether switch 110 stepped; its wipers then break
+// contact (delay 258 may release).
+[[gnu::always_inline]] inline bool
+ControlCabinet::count_impulse(AxisCircuit& c, const axes::Impulse& impulse, bool hundredths_only) {
+    c.wrong_way += impulse.direction != c.direction ? 1 : 0;
+    c.thousandths_uncounted += hundredths_only ? 1 : 0;
+    const bool stepped =
+        c.absolute_counter.impulse(c.direction, impulse.hundredths, impulse.tenths, impulse.inches,
+                                   now_, min_interval_s_, !hundredths_only);
+    if (!hundredths_only) {
+        c.increment_counter.impulse(now_, min_interval_s_);
+    } else if (impulse.hundredths) {
+        c.increment_counter.hundredths_impulse(now_, min_interval_s_);
+    }
+    if (stepped) {
+        c.speed_switch.equality_left(now_); // the wipers break contact as they step
+    }
+    return stepped;
+}
+
 // A quiet impulse: what on_impulse() does with it where nothing but counting can happen (no
 // observer, no attachment that sees the count, no comparer conducting before or after it, no
-// fault, travel limit or soft limit due: ask_quiet()). Both contact sets see it, the counters
-// count it as reversing control 214 set them, each switch with its rate check and carries, and
-// the comparers stay open, so delay 258 may release.
+// fault, travel limit or soft limit due, no hundredths-only counting: ask_quiet()). Both
+// contact sets see it, it is counted, and the comparers stay open, so delay 258 may release.
 inline void ControlCabinet::count_quiet_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     ++c.contact_set_a;
     ++c.contact_set_b;
-    c.wrong_way += impulse.direction != c.direction ? 1 : 0;
-    const bool stepped = c.absolute_counter.impulse(c.direction, impulse.hundredths, impulse.tenths,
-                                                    impulse.inches, now_, min_interval_s_);
-    c.increment_counter.impulse(now_, min_interval_s_);
+    const bool stepped = count_impulse(c, impulse, false);
     // Every switch was ready (quiet_impulses() asks for that): switch 110 stepped.
     assert(stepped);
-    if (stepped || !stop_) {
-        c.speed_switch.equality_left(now_); // the wipers stepped; the comparers are open
+    if (!stepped && !stop_) {
+        c.speed_switch.equality_left(now_); // the comparers are open
     }
 }
 
@@ -237,22 +257,7 @@ bool ControlCabinet::on_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     }
     const bool hundredths_only =
         profile_.count_hundredths_at_speed_1 && c.speed_switch.position() == 1 && !stop_;
-    // The counters count up or down as reversing control 214 set them (the motion column),
-    // whichever way the screw really turns: coast that runs on after the next card has set the
-    // other sense is counted the wrong way, as on the 1952 machine.
-    c.wrong_way += impulse.direction != c.direction ? 1 : 0;
-    c.thousandths_uncounted += hundredths_only ? 1 : 0;
-    const bool stepped =
-        c.absolute_counter.impulse(c.direction, impulse.hundredths, impulse.tenths, impulse.inches,
-                                   now_, min_interval_s_, !hundredths_only);
-    if (!hundredths_only) {
-        c.increment_counter.impulse(now_, min_interval_s_);
-    } else if (impulse.hundredths) {
-        c.increment_counter.hundredths_impulse(now_, min_interval_s_);
-    }
-    if (stepped) {
-        c.speed_switch.equality_left(now_); // the wipers break contact as they step
-    }
+    const bool stepped = count_impulse(c, impulse, hundredths_only);
     if (stop_) {
         c.compare();
         return true; // coasting after a stop: the counters still count
