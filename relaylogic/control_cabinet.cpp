@@ -231,9 +231,6 @@ inline double ControlCabinet::next_event_time() {
 inline void ControlCabinet::advance(double t, bool follows_motion) {
     now_ = t;
     tracer_.set_time(t);
-    if (spindle_changing_ && spindle_motor_.ready_s() <= t) {
-        show_spindle();
-    }
     if (jumping_) {
         // The axes' quiet impulses first: a tap's reversal of control 214 is reported at the
         // first impulse of its jump, before this instant, so it must come before anything
@@ -247,6 +244,11 @@ inline void ControlCabinet::advance(double t, bool follows_motion) {
         // The clock's quiet edges before this instant, whatever the instant brings (at
         // impulse level each was an instant of its own).
         clock_->clock_edges_before(*this, t);
+    }
+    if (spindle_changing_ && spindle_motor_.ready_s() <= t) {
+        // The spindle motor at speed (or at rest) is this instant's: whatever came before it
+        // (an attachment's encoder edges, the clock's quiet edges) is reported first.
+        show_spindle();
     }
     bool moved = false;
     for (std::size_t i = 0; i < circuits_.size(); ++i) {

@@ -2,7 +2,11 @@
 // runs down and up again in the profile's times, and nothing in the control waits for it.
 #include "tests/machine_support.hpp"
 
+#include "axes/profile_json.hpp"
+
 #include <catch2/catch.hpp>
+
+#include <algorithm>
 
 using namespace parsons;
 using namespace parsons::cardreader;
@@ -102,4 +106,87 @@ TEST_CASE("Spindle motor: column 1 reverses spindle control 165 at once, the mot
         CHECK(to(quick.rec, motor, 3).empty());
         CHECK(quick.result.machine_seconds == run.result.machine_seconds);
     }
+}
+
+namespace {
+
+// Machine time as the observer is told it: how often it stepped back, and when the 1952 spindle
+// motor came to speed.
+class TimeOrder : public MachineObserver {
+public:
+    void on_signal_defined(const SignalInfo& info, std::uint32_t) override {
+        if (info.scope == "cabinet" && info.name == "spindle_motor") {
+            motor_ = info.id;
+        }
+    }
+    void on_signal(double t, SignalId id, std::uint32_t, std::uint32_t value) override {
+        see(t);
+        if (id == motor_ && value == 1) {
+            at_speed_s = t;
+        }
+    }
+    void on_motion(double t, const std::array<double, 5>&) override { see(t); }
+    int backwards = 0;
+    double at_speed_s = -1;
+
+private:
+    void see(double t) {
+        backwards += t < last_ ? 1 : 0;
+        last_ = std::max(last_, t);
+    }
+    SignalId motor_ = ~SignalId{0};
+    double last_ = 0;
+};
+
+} // namespace
+
+TEST_CASE("Spindle motor: the 1952 motor coming to speed during a tap (spindle synchronisation, "
+          "an addition) is reported after motor 27's encoder edges before it, never before them",
+          "[machine][spindle][rule11][tapping]") {
+    // Found by the machine fuzz target (tests/fuzz/regressions/machine/tapping-edge-before-stop):
+    // the motor's instant was reported before the attachment's plants were caught up to it.
+    axes::MachineProfile profile =
+        axes::profile_from_json(R"({"press_sync": false})", axes::extended_profile());
+    CardOrders one = idle_card(1, {0, 0, 0, 0, 0});
+    one.spindle = Spindle::forward;
+    CardOrders two;
+    two.kind = CardKind::tap;
+    two.number = 2;
+    two.tap.tool = profile.spindle.first_tool;
+    two.tap.axis = Axis::vertical;
+    two.tap.motion = Motion::forward;
+    two.tap.depth = 200;
+    two.tap.pitch = 5000; // 0.05 in
+    two.tap.rpm = 120;
+    std::vector<Card> punched;
+    for (const auto& o : {one, two}) {
+        auto e = encode(o, fig8_layout());
+        REQUIRE(e);
+        punched.push_back(e.card);
+    }
+    int backwards = 0;
+    // Motor 27's edges and the tap's samples fall each side of the instant at several run-ups.
+    for (const double run_up_s : {2.5, 2.5013, 2.5029, 2.5047, 2.5061, 2.5083}) {
+        profile.actions.spindle_run_up_s = run_up_s;
+        for (const Pace pace : {Pace::impulse_level, Pace::fast_forward}) {
+            VectorDeck deck(punched);
+            ControlCabinet cabinet(profile, fig8_layout());
+            cabinet.set_pace(pace);
+            TimeOrder order;
+            cabinet.attach(&order);
+            const RunResult r = cabinet.run(deck);
+            INFO((pace == Pace::impulse_level ? "impulse level" : "fast-forward")
+                 << ", run-up " << run_up_s
+                 << " s: " << (r.stop ? r.stop->message : std::string("completed")));
+            REQUIRE(r.completed);
+            REQUIRE(r.tapping);
+            REQUIRE(r.tapping->holes.size() == 1);
+            // The motor came to speed while motor 27 turned, and the tap went on.
+            CHECK(r.tapping->holes.at(0).start_s < order.at_speed_s);
+            CHECK(order.at_speed_s < r.tapping->holes.at(0).end_s);
+            CHECK(r.tapping->holes.at(0).completed);
+            backwards += order.backwards;
+        }
+    }
+    CHECK(backwards == 0);
 }
