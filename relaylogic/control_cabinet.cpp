@@ -148,6 +148,13 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     if (resuming_) {
         resume_holds();
     }
+    if (follows_motion) {
+        std::array<double, 5> real{};
+        for (std::size_t i = 0; i < circuits_.size(); ++i) {
+            real.at(i) = circuits_[i]->plant.real_in_at(now_);
+        }
+        observer->on_run_start(now_, real);
+    }
     schedule(now_, EventKind::feed);
     while (true) {
         if (interrupted()) {

@@ -91,6 +91,10 @@ public:
     // The real positions of the five axes changed (at every commutator impulse and when an
     // axis comes to rest); inches.
     virtual void on_motion(double /*seconds*/, const std::array<double, 5>& /*real_in*/) {}
+    // The run begins (the reader about to feed, a saved state already loaded): where the five
+    // axes stand, inches. Only to an observer that follows motion; a replay starts its picture
+    // there, so that every instant before the first motion has one.
+    virtual void on_run_start(double /*seconds*/, const std::array<double, 5>& /*real_in*/) {}
     // A card was read and decoded (deck position 1-based).
     virtual void on_card(double /*seconds*/, std::int64_t /*index*/,
                          const cardreader::CardOrders&) {}
@@ -151,6 +155,11 @@ public:
     void on_motion(double t, const std::array<double, 5>& real) override {
         for (auto* o : observers_) {
             o->on_motion(t, real);
+        }
+    }
+    void on_run_start(double t, const std::array<double, 5>& real) override {
+        for (auto* o : observers_) {
+            o->on_run_start(t, real);
         }
     }
     void on_card(double t, std::int64_t index, const cardreader::CardOrders& orders) override {

@@ -82,6 +82,15 @@
     if (text) stopForError(text, failedLoad);
     else clearStopForError();
   }
+  // The top line says what the machine is doing (issue 52, defect 3): a deck that cannot run or
+  // a load that failed, else the run at the instant shown, the tour's stop included, as the
+  // viewer tells it (web/viewer.js statusWords).
+  let errorWords = null;
+  function sayStatus() {
+    const [state, text] = errorWords || viewer.statusWords();
+    status.dataset.state = state;
+    status.textContent = text;
+  }
   let stoppedForError = false;
   function stopForError(text, failedLoad) {
     viewer.pause();
@@ -95,10 +104,16 @@
     const state = $("run-state");
     state.textContent = failedLoad ? "stopped: the load failed" : "stopped: the deck has an error";
     state.dataset.reason = "deck-error";
+    errorWords = failedLoad
+      ? ["load-failed", "That file did not load: the reason is under the controls. The keypunch kept its deck, and Play runs it."]
+      : ["deck-error", "This deck cannot run: a card has an error, marked in the keypunch. Mend it and press Play."];
+    sayStatus();
   }
   function clearStopForError() {
     if (!stoppedForError) return;
     stoppedForError = false;
+    errorWords = null;
+    sayStatus();
     const msg = $("stop-message");
     if (msg.dataset.deckError) { msg.hidden = true; msg.textContent = ""; delete msg.dataset.deckError; }
     const state = $("run-state");
@@ -564,8 +579,8 @@
   if (!shared) loadSample();
   viewer.enable(true);
   $("share").disabled = false;
-  status.dataset.state = "ready";
-  status.textContent = "The machine is ready: the patent's example deck is in the keypunch. Press Play.";
+  viewer.onState = sayStatus;
+  sayStatus();
   window.parsonsReadyAt = performance.now();
   // The sample deck is run once the page has answered (runSoon, after the next frame, behind
   // its card pictures), so that the cabinet stands at its first card and the browser has

@@ -128,6 +128,7 @@ const ParsonsTour = (() => {
     start() {
       if (!this.v.ready()) return;
       this.route = this.plan();
+      this.active = true;
       this.show(0);
     }
 
@@ -187,6 +188,8 @@ const ParsonsTour = (() => {
     end() {
       for (const old of this.doc.querySelectorAll("#panel .tour-here")) old.classList.remove("tour-here");
       this.box.hidden = true;
+      this.active = false;
+      if (this.v.onState) this.v.onState();
       this.doc.getElementById("tour-start").focus();
     }
   }

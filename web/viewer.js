@@ -67,6 +67,25 @@ const ParsonsViewer = (() => {
 
   const { el, svg } = ParsonsCabinet;
 
+  // A machine stop in a visitor's words, by the reason parsons reports (docs/stop-codes.md).
+  const STOP_WORDS = {
+    out_of_order_card: "a card came out of order, and the card-number check stopped the machine",
+    check_mismatch: "an axis's two counters disagreed at its stop, and the balancing circuit opened the master switch",
+    missed_impulse: "a counter missed an impulse from the lead screw",
+    sequence_stall: "no axis that still had to move could start: the sequence stalled",
+    bad_punch: "the reader found a badly punched card",
+    soft_limit: "the card would have moved an axis past its soft limit",
+    limit_switch: "an axis ran into its travel-limit switch",
+    condition_not_met: "a condition card's condition was never met",
+    condition_refused: "a condition card cannot run on this machine",
+    tool_change_interlock: "the tool-change interlock held the machine",
+    sync_timeout: "the press never came round to the angle the card waits for",
+    sync_refused: "a press card cannot run on this machine",
+    transfer_timeout: "the spindle's gear ratio never reached the control",
+    tap_refused: "a tapping card cannot run on this machine",
+    interrupted: "the operator stopped it",
+  };
+
   class Viewer {
     constructor(doc) {
       this.doc = doc;
@@ -142,7 +161,11 @@ const ParsonsViewer = (() => {
       sigs.forEach((s, i) => { if (s) this.values[i] = s.initial; });
       this.t = 0;
       this.ci = 0;
+      // The record from before the run (where the axes start, RunTimeline::on_run_start) holds
+      // from the start: the gauges and positions show it at once.
+      const motion = this.a.motion;
       this.mi = 0;
+      while (this.mi < motion.length / 8 && motion[this.mi * 8] <= 0) this.mi++;
       this.cardIndex = -1;
       this.drawnMotion = 0;
       this.finished = false;
@@ -486,6 +509,15 @@ const ParsonsViewer = (() => {
         };
         tilt(this.swivelGauge, m[k + 6]);
         tilt(this.tiltGauge, m[k + 7]);
+      } else {
+        // No motion record at or before this instant (a record from before the run said where
+        // the axes start): the gauges show nothing rather than an instant left behind.
+        this.vertHead.setAttribute("y", "36");
+        this.vertText.textContent = "";
+        for (const gauge of [this.swivelGauge, this.tiltGauge]) {
+          gauge.bar.setAttribute("transform", "rotate(0)");
+          gauge.v.textContent = "";
+        }
       }
       g.fillStyle = "#555";
       g.font = "12px sans-serif";
@@ -547,8 +579,39 @@ const ParsonsViewer = (() => {
           : this.mi > 0 && axis === "tilt" ? `${m[k + 7].toFixed(3)}°` : "";
       });
       this.drawMachine();
+      if (this.onState) this.onState(); // the page's top line (web/exhibit.js)
       // The finished view is whole: the cabinet, the positions and the picture drawn.
       if (this.finished && this.onFinished) this.onFinished();
+    }
+
+    // What the machine is doing at the instant shown, in a visitor's words: [state, sentence]
+    // for the page's top line. The exact words of a stop stay under the controls
+    // (#stop-message), as parsons run prints them.
+    statusWords() {
+      if (!this.loaded) return ["ready", "The machine is ready: the deck is in the keypunch. Press Play."];
+      const tour = this.tour && this.tour.active && !this.playing ? this.tour : null;
+      if (tour) {
+        const r = tour.route;
+        return ["tour", `Tour of card ${r.card}, stop ${tour.n + 1} of ${r.stops.length}: ` +
+          `${r.stops[tour.n].title}. The machine is held at ${this.t.toFixed(3)} s; Next goes on.`];
+      }
+      const card = this.cardIndex >= 0 ? this.h.cards[this.cardIndex] : null;
+      const reading = card ? `card ${card.index} in the reader` : "the reader feeding the first card";
+      if (this.finished) {
+        const stop = this.h.stop;
+        if (stop) {
+          const what = STOP_WORDS[stop.reason] || stop.reason.replace(/_/g, " ");
+          return ["stopped", `The machine stopped itself on card ${stop.card}` +
+            `${stop.axis ? ` (${stop.axis})` : ""}: ${what}. Its lamps and the exact words are ` +
+            "under the controls."];
+        }
+        const n = this.h.cards.length;
+        return ["completed", `The deck ran to the end: ${n} card${n === 1 ? "" : "s"} in ` +
+          `${this.finish.toFixed(1)} s of machine time. From the start runs it again.`];
+      }
+      if (this.playing) return ["running", `Running: ${reading}, ${this.t.toFixed(1)} s of machine time.`];
+      if (this.t > 0) return ["paused", `Paused at ${this.t.toFixed(3)} s, ${reading}. Play goes on.`];
+      return ["ready", "The machine is ready: the deck is in the reader. Press Play."];
     }
   }
 

@@ -174,6 +174,10 @@ void RunTimeline::on_motion(double t, const std::array<double, 5>& real_in) {
     motion_.insert(motion_.end(), angles_.begin(), angles_.end());
 }
 
+void RunTimeline::on_run_start(double t, const std::array<double, 5>& real_in) {
+    on_motion(t, real_in); // every instant of the replay then has a motion record at or before it
+}
+
 void RunTimeline::on_card(double t, std::int64_t index, const cardreader::CardOrders& orders) {
     nlohmann::json card = {{"t", t}, {"index", index}, {"number", orders.number}};
     switch (orders.kind) {

@@ -36,6 +36,8 @@ public:
     void on_signal(double t, relaylogic::SignalId id, std::uint32_t old_value,
                    std::uint32_t new_value) override;
     void on_motion(double t, const std::array<double, 5>& real_in) override;
+    // The first motion record: where the axes stand as the run begins.
+    void on_run_start(double t, const std::array<double, 5>& real_in) override;
     void on_card(double t, std::int64_t index, const cardreader::CardOrders& orders) override;
     void on_stop(double t, const relaylogic::StopInfo& stop) override;
     void on_condition(double t, const relaylogic::ConditionEvent& event) override;
