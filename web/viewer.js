@@ -149,7 +149,12 @@ const ParsonsViewer = (() => {
       this.prepareMachine();
       this.wholePath = null;
       const record = arrays;
-      setTimeout(() => { if (this.a === record) this.drawWholePath(); }, 0);
+      setTimeout(() => {
+        if (this.a !== record) return;
+        this.drawWholePath();
+        if (!this.playing) this.drawMachine(); // the path ahead, faint, from the start on
+      }, 0);
+      this.showLegend();
       this.loaded = true;
       this.enable(true);
       this.reset(!this.quietLoad);
@@ -480,6 +485,13 @@ const ParsonsViewer = (() => {
       const g = canvas.getContext("2d");
       g.fillStyle = "#f6f3ea";
       g.fillRect(0, 0, canvas.width, canvas.height);
+      if (this.wholePath) {
+        // The whole path the run takes, faint: the box shows the job before Play, and the cut
+        // grows over it.
+        g.globalAlpha = 0.22;
+        g.drawImage(this.wholePath[1], 0, 0);
+        g.globalAlpha = 1;
+      }
       g.drawImage(this.layers[0], 0, 0);
       const design = this.h.design && this.h.design.points ? this.h.design.points : [];
       if (design.length) {
@@ -496,7 +508,11 @@ const ParsonsViewer = (() => {
         g.strokeStyle = "#e67e22";
         g.lineWidth = 2;
         g.beginPath();
-        g.arc(x, y, Math.max(3, r * this.scale), 0, 2 * Math.PI);
+        g.arc(x, y, Math.max(7, r * this.scale), 0, 2 * Math.PI);
+        g.stroke();
+        g.beginPath(); // the cutter centre, a cross to find it by
+        g.moveTo(x - 11, y); g.lineTo(x + 11, y);
+        g.moveTo(x, y - 11); g.lineTo(x, y + 11);
         g.stroke();
         // The gauges: vertical slide, swivel and tilt angles, as recorded.
         const { vmin, vmax } = this.motionRange;
@@ -519,9 +535,27 @@ const ParsonsViewer = (() => {
           gauge.v.textContent = "";
         }
       }
-      g.fillStyle = "#555";
-      g.font = "12px sans-serif";
-      g.fillText(design.length ? `design: ${this.h.design.airfoil} (red); cut so far (blue band); cutter centre (dark)` : "cutter-centre path: table → right, cross slide → up", 8, canvas.height - 8);
+    }
+
+    // The picture's legend, in the page's own type under it (drawn into the canvas it was a
+    // 6-pixel line once the canvas is scaled to the column).
+    showLegend() {
+      const legend = this.$("from-above-legend");
+      if (!legend) return;
+      legend.textContent = "";
+      const item = (colour, words) => {
+        const sw = this.doc.createElement("span");
+        sw.className = "swatch";
+        sw.style.background = colour;
+        if (legend.childNodes.length) legend.append("; ");
+        legend.append(sw, words);
+      };
+      const design = this.h.design && this.h.design.points && this.h.design.points.length;
+      if (design) item("#c0392b", `the design, ${this.h.design.airfoil}`);
+      item("rgba(11, 61, 102, 0.3)", "the path the deck takes");
+      item("#0b3d66", design ? "the cut so far (blue band: the cutter's width)" : "the path so far");
+      item("#e67e22", "the cutter now");
+      legend.append(". Table → right, cross slide → up.");
     }
 
     // ---- drawing
