@@ -129,6 +129,7 @@ const ParsonsTour = (() => {
       if (!this.v.ready()) return;
       this.route = this.plan();
       this.active = true;
+      this.doc.body.classList.add("touring");
       this.show(0);
     }
 
@@ -138,7 +139,6 @@ const ParsonsTour = (() => {
       this.n = n;
       const stop = r.stops[n];
       this.v.seek(stop.t);
-      this.highlight(stop);
       const box = this.box;
       box.textContent = "";
       const h = this.doc.createElement("h3");
@@ -170,6 +170,7 @@ const ParsonsTour = (() => {
       box.dataset.stop = String(n);
       box.dataset.numeral = stop.numeral;
       box.hidden = false;
+      this.highlight(stop); // after the caption is shown: on a phone it is a sheet to keep clear of
       (next.disabled ? this.doc.getElementById("tour-end") : next).focus({ preventScroll: true });
     }
 
@@ -182,13 +183,27 @@ const ParsonsTour = (() => {
         ...(stop.banks || []).map((b) => col.querySelector(`[data-bank="${b}"]`)),
       ].filter(Boolean);
       for (const p of parts) p.classList.add("tour-here");
-      if (parts.length) parts[0].scrollIntoView({ block: "nearest", inline: "nearest" });
+      if (!parts.length) return;
+      const sheet = this.doc.defaultView.getComputedStyle(this.box).position === "fixed";
+      if (!sheet) {
+        parts[0].scrollIntoView({ block: "nearest", inline: "nearest" });
+        return;
+      }
+      // A phone: the caption is a sheet over the screen's foot (web/exhibit.css); the parts lit
+      // go to the top of the screen above it.
+      const win = this.doc.defaultView;
+      const rects = parts.map((p) => p.getBoundingClientRect());
+      const top = Math.min(...rects.map((r) => r.top));
+      const height = Math.max(...rects.map((r) => r.bottom)) - top;
+      const room = this.box.getBoundingClientRect().top - height - 8; // lowest top that clears it
+      win.scrollBy(0, top - Math.max(8, Math.min(win.innerHeight * 0.15, room)));
     }
 
     end() {
       for (const old of this.doc.querySelectorAll("#panel .tour-here")) old.classList.remove("tour-here");
       this.box.hidden = true;
       this.active = false;
+      this.doc.body.classList.remove("touring");
       if (this.v.onState) this.v.onState();
       this.doc.getElementById("tour-start").focus();
     }
