@@ -120,7 +120,7 @@ module.exports = async function basics(t) {
   check(bad !== listing, 'the bad card differs from the sample');
   await page.$eval('#listing', (e, v) => { e.value = v; e.dispatchEvent(new Event('input')); }, bad);
   await page.waitForSelector('#deck-error:not([hidden])');
-  const pageError = await page.$eval('#deck-error', (e) => e.textContent);
+  const pageError = await page.$eval('#deck-error .exact', (e) => e.textContent); // one click away
   const badFile = path.join(workDir, 'deck.csv');
   fs.writeFileSync(badFile, bad);
   const cliError = parsons(['show', badFile]).stderr.trim();
@@ -133,7 +133,7 @@ module.exports = async function basics(t) {
   const input = await page.$('#load-file');
   await input.uploadFile(badCbn);
   await page.waitForFunction(() => /card 2/.test(document.getElementById('deck-error').textContent));
-  const loadError = await page.$eval('#deck-error', (e) => e.textContent);
+  const loadError = await page.$eval('#deck-error .exact', (e) => e.textContent);
   const cliLoad = parsons(['convert', badCbn, '-o', path.join(workDir, 'bad.csv')]).stderr.trim();
   check(loadError === cliLoad.split(badCbn).join('bad.cbn') && /column 11/.test(loadError),
         'a bad card in a loaded file is worded as the CLI words it', `page "${loadError}", CLI "${cliLoad}"`);

@@ -32,7 +32,7 @@ module.exports = async function errors(t) {
   await page.$eval('#gen-chord', (e) => { e.value = '60'; }); // wider than the counters reach
   await page.click('#gen-go');
   await page.waitForSelector('#deck-error:not([hidden])');
-  const genError = await page.$eval('#deck-error', (e) => e.textContent);
+  const genError = await page.$eval('#deck-error .exact', (e) => e.textContent);
   const cliGen = parsons(['gen', 'airfoil', '--naca', '2412', '--chord', '60', '--cutter-radius', '0.25', '--scallop', '0.005',
                           '-o', path.join(workDir, 'x.cbn')]).stderr.trim();
   check(genError === cliGen && !genError.includes('\r') && genError.split('\n').length === 1,
@@ -86,7 +86,7 @@ module.exports = async function errors(t) {
       state: document.getElementById('run-state').textContent,
       msg: document.getElementById('stop-message').hidden ? '' : document.getElementById('stop-message').textContent,
     }));
-    check(play.t === t0 && /error/.test(play.state) && /listing\.csv:15: speed '7'/.test(play.msg),
+    check(play.t === t0 && /error/.test(play.state) && /^Cannot run: Card 1, table: speed 7: the machine has speeds 1, 2 and 3/.test(play.msg),
           `${screen}: Play on a bad deck does not run and says why beside Play`, JSON.stringify(play));
     await page.$eval('#play', (b) => b.scrollIntoView({ block: 'center' }));
     await t.shot(page, `error-play-${screen}`);
@@ -119,10 +119,10 @@ module.exports = async function errors(t) {
     t: document.getElementById('machine-time').dataset.seconds,
     state: document.getElementById('run-state').textContent,
     msg: document.getElementById('stop-message').hidden ? '' : document.getElementById('stop-message').textContent,
-    err: document.getElementById('deck-error').textContent,
+    err: document.querySelector('#deck-error .exact').textContent,
     listing: document.getElementById('listing').value,
   }));
-  check(after.t === tA && /load failed/.test(after.state) && /^Not loaded: .*my bad deck\.cbn: card 2.*kept the previous deck/.test(after.msg),
+  check(after.t === tA && /load failed/.test(after.state) && /^Not loaded: my bad deck\.cbn is not a deck parsons can read: card 2 .*kept the previous deck/.test(after.msg),
         'a failed load stops Play on the old deck and says why beside Play', JSON.stringify({ ...after, listing: undefined }));
   check(after.listing === listingBefore, 'the keypunch keeps the old deck after a failed load');
   const cliLoad = parsons(['convert', badCbn, '-o', path.join(workDir, 'err-bad.csv')]).stderr.trim();
