@@ -106,7 +106,10 @@ const ParsonsCabinet = (() => {
         // A part clicked, tapped, or pressed with Enter or Space tells its story in #part-info.
         this.partsBound = true;
         const choose = (e) => {
-          const part = e.target.closest("[data-signal]");
+          // A bank's row is one target as wide as the column (on a touch screen 44 px tall):
+          // a tap anywhere on it tells the bank's story, as its relays do.
+          const bank = e.type === "click" ? e.target.closest(".bank") : null;
+          const part = e.target.closest("[data-signal]") || (bank && bank.querySelector(".relay"));
           if (!part) return;
           e.preventDefault();
           this.showPart(part);

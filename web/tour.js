@@ -183,7 +183,9 @@ const ParsonsTour = (() => {
         ...(stop.banks || []).map((b) => col.querySelector(`[data-bank="${b}"]`)),
       ].filter(Boolean);
       for (const p of parts) p.classList.add("tour-here");
+      for (const old of this.doc.querySelectorAll("#panel [data-tour-main]")) delete old.dataset.tourMain;
       if (!parts.length) return;
+      parts[0].dataset.tourMain = "true"; // the part the stop is about
       const sheet = this.doc.defaultView.getComputedStyle(this.box).position === "fixed";
       if (!sheet) {
         parts[0].scrollIntoView({ block: "nearest", inline: "nearest" });
@@ -196,7 +198,13 @@ const ParsonsTour = (() => {
       const top = Math.min(...rects.map((r) => r.top));
       const height = Math.max(...rects.map((r) => r.bottom)) - top;
       const room = this.box.getBoundingClientRect().top - height - 8; // lowest top that clears it
-      win.scrollBy(0, top - Math.max(8, Math.min(win.innerHeight * 0.15, room)));
+      if (room >= 8) {
+        win.scrollBy(0, top - Math.min(win.innerHeight * 0.15, room));
+        return;
+      }
+      // The parts lit are spread further than the screen above the caption holds: the part the
+      // stop is about goes there.
+      win.scrollBy(0, parts[0].getBoundingClientRect().top - win.innerHeight * 0.15);
     }
 
     end() {
