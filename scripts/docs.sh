@@ -20,7 +20,9 @@ chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars --window-si
 scripts/build-web.sh
 node tests/js/browser_test.js build-wasm/site build/cli/parsons build-wasm/browser-test >/dev/null
 for pair in first-view-laptop:web-first-view first-view-phone:web-phone tour-laptop:web-tour \
-            part-info-laptop:web-part-info error-field-laptop:web-error-field; do
+            part-info-laptop:web-part-info error-field-laptop:web-error-field \
+            mill-start:web-mill-start mill-mid:web-mill-mid mill-phone:web-mill-phone \
+            tour-phone-one-screen:web-tour-phone error-words-laptop:web-error-words; do
     cp "build-wasm/browser-test/${pair%%:*}.png" "docs/images/${pair##*:}.png"
 done
 git status --short README.md docs/

@@ -110,6 +110,8 @@ const ParsonsViewer = (() => {
       scrub.addEventListener("input", () => { if (this.ready()) this.seek(Number(scrub.value)); });
       this.enable(false);
       if (typeof ParsonsTour !== "undefined") this.tour = new ParsonsTour.Tour(this, doc);
+      const millBox = doc.getElementById("mill");
+      if (typeof ParsonsMill !== "undefined" && millBox) this.mill = new ParsonsMill.Mill(millBox, this);
     }
 
     // The value signal change k found: the change before it of the same signal, or the initial.
@@ -147,6 +149,7 @@ const ParsonsViewer = (() => {
       this.buildPositions();
       this.$("scrub").max = String(this.finish);
       this.prepareMachine();
+      if (this.mill) this.mill.build();
       this.wholePath = null;
       const record = arrays;
       setTimeout(() => {
@@ -481,6 +484,7 @@ const ParsonsViewer = (() => {
         } else this.strokePath(this.layers, from, this.mi - 1);
         this.drawnMotion = this.mi;
       }
+      if (this.mill) this.mill.update(this.mi);
       const canvas = this.$("from-above");
       const g = canvas.getContext("2d");
       g.fillStyle = "#f6f3ea";

@@ -72,6 +72,7 @@ std::string replay_page(const RunTimeline& timeline, const nlohmann::json& repor
     fill(page, "<!--timeline-json-->", script_safe(timeline.embedded_json()));
     fill(page, "/*tour-js*/", web_assets::tour_js);
     fill(page, "/*viewer-js*/", web_assets::viewer_js);
+    fill(page, "/*mill-js*/", web_assets::mill_js);
     fill(page, "/*cabinet-js*/", web_assets::cabinet_js);
     fill(page, "/*parts-js*/", web_assets::parts_js);
     fill(page, "<!--viewer-->",
