@@ -83,6 +83,19 @@ for (const n of only) {
     await page.waitForSelector('body[data-settled="true"]', { timeout: 30000 });
     return page;
   };
+  // The sample deck's `parsons run --html` page, written to WORK_DIR/NAME and opened from disk at
+  // a laptop's size, watched for errors, once its record is loaded.
+  t.openSampleReplay = async (name) => {
+    const html = path.join(workDir, name);
+    const r = parsons(['run', path.join(SOURCE, 'decks', 'samples', 'patent-example.csv'), '--html', html, '-q']);
+    check(r.status === 0, `parsons run --html of the sample deck (${name})`, r.stderr);
+    const replay = await browser.newPage();
+    await replay.setViewport(SCREENS.laptop);
+    watchPage(replay, problems);
+    await replay.goto(`file://${html}`);
+    await replay.waitForFunction(() => window.parsonsViewer && window.parsonsViewer.loaded, { timeout: 30000 });
+    return replay;
+  };
   // A screenshot kept with the others: WORK_DIR/NAME.png (the docs script copies some).
   t.shot = (page, name, fullPage = false) => page.screenshot({ path: path.join(workDir, `${name}.png`), fullPage });
   for (const name of names.filter((n) => only.length === 0 || only.includes(n))) {

@@ -5,8 +5,6 @@
 // `parsons run --html` replay that opens from disk. Run by tests/js/browser_test.js.
 'use strict';
 
-const path = require('path');
-const { watchPage } = require('../web_support');
 
 // The gauges and the positions table as the visitor reads them, at the instant shown.
 function readViews(page) {
@@ -61,7 +59,7 @@ async function jumpsAgree(t, page, where) {
 }
 
 module.exports = async function gauges(t) {
-  const { browser, workDir, parsons, problems, check, SOURCE } = t;
+  const { check } = t;
 
   // ---- the live page: play at 100x, pause, then jump about
   const page = await t.open('laptop');
@@ -76,15 +74,7 @@ module.exports = async function gauges(t) {
   await page.close();
 
   // ---- the --html replay, from disk
-  const html = path.join(workDir, 'gauges-replay.html');
-  const sample = path.join(SOURCE, 'decks', 'samples', 'patent-example.csv');
-  const r = parsons(['run', sample, '--html', html, '-q']);
-  check(r.status === 0, 'parsons run --html of the sample deck', r.stderr);
-  const replay = await browser.newPage();
-  await replay.setViewport({ width: 1366, height: 768 });
-  watchPage(replay, problems);
-  await replay.goto(`file://${html}`);
-  await replay.waitForFunction(() => window.parsonsViewer && window.parsonsViewer.loaded, { timeout: 30000 });
+  const replay = await t.openSampleReplay('gauges-replay.html');
   await jumpsAgree(t, replay, '--html replay');
   await replay.close();
 };

@@ -5,8 +5,6 @@
 // tests/js/browser_test.js.
 'use strict';
 
-const path = require('path');
-const { watchPage } = require('../web_support');
 
 // Pixels of the picture that are not its background, above the bottom 30 rows (where the old
 // page drew its legend), and the legend as the visitor reads it.
@@ -32,7 +30,7 @@ function look(page) {
 }
 
 module.exports = async function machineView(t) {
-  const { browser, check, parsons, problems, workDir, SOURCE } = t;
+  const { check } = t;
   const say = (v) => JSON.stringify(v);
   for (const screen of ['laptop', 'phone']) {
     const page = await t.open(screen);
@@ -46,14 +44,8 @@ module.exports = async function machineView(t) {
   }
 
   // The --html replay opens with the same picture.
-  const html = path.join(workDir, 'machine-view-replay.html');
-  const r = parsons(['run', path.join(SOURCE, 'decks', 'samples', 'patent-example.csv'), '--html', html, '-q']);
-  check(r.status === 0, 'parsons run --html of the sample deck', r.stderr);
-  const replay = await browser.newPage();
-  await replay.setViewport({ width: 1366, height: 768 });
-  watchPage(replay, problems);
-  await replay.goto(`file://${html}`);
-  await replay.waitForFunction(() => window.parsonsViewer && window.parsonsViewer.wholePath);
+  const replay = await t.openSampleReplay('machine-view-replay.html');
+  await replay.waitForFunction(() => window.parsonsViewer.wholePath);
   const opened = await look(replay);
   check(opened.drawn > 800 && opened.legendPx >= 11, '--html replay: it opens on the deck\'s path with its legend', say(opened));
   await replay.close();

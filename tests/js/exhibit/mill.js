@@ -5,8 +5,6 @@
 // page and the --html replay. Run by tests/js/browser_test.js.
 'use strict';
 
-const path = require('path');
-const { watchPage } = require('../web_support');
 
 function millNow(page) {
   return page.evaluate(() => {
@@ -49,7 +47,7 @@ async function follows(t, page, where) {
 }
 
 module.exports = async function mill(t) {
-  const { browser, check, parsons, problems, workDir, SOURCE } = t;
+  const { check } = t;
   const page = await t.open('laptop');
   await follows(t, page, 'live page');
   const inView = await page.evaluate(() => {
@@ -71,14 +69,7 @@ module.exports = async function mill(t) {
   await t.shot(phone, 'mill-phone');
   await phone.close();
 
-  const html = path.join(workDir, 'mill-replay.html');
-  const r = parsons(['run', path.join(SOURCE, 'decks', 'samples', 'patent-example.csv'), '--html', html, '-q']);
-  check(r.status === 0, 'parsons run --html of the sample deck', r.stderr);
-  const replay = await browser.newPage();
-  await replay.setViewport({ width: 1366, height: 768 });
-  watchPage(replay, problems);
-  await replay.goto(`file://${html}`);
-  await replay.waitForFunction(() => window.parsonsViewer && window.parsonsViewer.loaded);
+  const replay = await t.openSampleReplay('mill-replay.html');
   await follows(t, replay, '--html replay');
   await replay.close();
 };
