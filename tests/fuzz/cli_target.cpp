@@ -164,46 +164,55 @@ struct Workshop {
             throw Finding("cli: cannot make a scratch folder");
         }
         dir = name;
-        const std::string s = dir.string();
-        write_text(dir / "prof.json", axes::profile_to_json(axes::default_profile()));
-        write_text(dir / "ext.json", axes::profile_to_json(axes::extended_profile()));
-        write_text(dir / "prog.ngc", "G20\nG0 X1 Y1\nG1 X2 F10\nG1 Y1.5\nM2\n");
-        const std::vector<std::vector<std::string>> setup = {
-            {"gen", "airfoil", "--naca", "0012", "--chord", "2", "--stations", "8", "-o",
-             s + "/g.cbn"},
-            {"convert", s + "/g.cbn", "--to", "listing", "-o", s + "/listing.csv"},
-            {"gen", "press-feeder", "--cycles", "1", "-o", s + "/f.csv"}};
-        for (const auto& line : setup) {
-            if (parsons(line) != 0) {
-                throw Finding("cli: the scratch folder's inputs could not be made");
+        try {
+            const std::string s = dir.string();
+            write_text(dir / "prof.json", axes::profile_to_json(axes::default_profile()));
+            write_text(dir / "ext.json", axes::profile_to_json(axes::extended_profile()));
+            write_text(dir / "prog.ngc", "G20\nG0 X1 Y1\nG1 X2 F10\nG1 Y1.5\nM2\n");
+            const std::vector<std::vector<std::string>> setup = {
+                {"gen", "airfoil", "--naca", "0012", "--chord", "2", "--stations", "8", "-o",
+                 s + "/g.cbn"},
+                {"convert", s + "/g.cbn", "--to", "listing", "-o", s + "/listing.csv"},
+                {"gen", "press-feeder", "--cycles", "1", "-o", s + "/f.csv"}};
+            for (const auto& line : setup) {
+                if (parsons(line) != 0) {
+                    throw Finding("cli: the scratch folder's inputs could not be made");
+                }
             }
-        }
-        if (parsons({"run", s + "/listing.csv", "-q", "--limit", "table=0:0.3", "--save-state",
-                     s + "/state.json"}) != 3) {
-            throw Finding("cli: the saved state could not be made");
-        }
-        fs::create_directories(dir / "sub");
-        for (const std::string& f : kInputs) {
-            fs::create_hard_link(dir / f, dir / ("hard-" + f));
-            fs::create_symlink(f, dir / ("soft-" + f));
-        }
-        restore_outputs();
-        // The null device of our own: made, and writable, or left out.
-        const fs::path null = dir / "null";
-        if (::mknod(null.c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0) {
-            const int fd = ::open(null.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
-            has_null = fd >= 0;
-            if (fd >= 0) {
-                ::close(fd);
-            } else {
-                ::unlink(null.c_str()); // a nodev mount: of no use
+            if (parsons({"run", s + "/listing.csv", "-q", "--limit", "table=0:0.3", "--save-state",
+                         s + "/state.json"}) != 3) {
+                throw Finding("cli: the saved state could not be made");
             }
-        }
-        for (const auto& entry : fs::directory_iterator(dir)) {
-            const std::string n = entry.path().filename().string();
-            if (!entry.is_directory() && n.rfind("old", 0) != 0 && n.rfind("dangling", 0) != 0) {
-                protected_files[n] = describe(entry.path());
+            fs::create_directories(dir / "sub");
+            for (const std::string& f : kInputs) {
+                fs::create_hard_link(dir / f, dir / ("hard-" + f));
+                fs::create_symlink(f, dir / ("soft-" + f));
             }
+            restore_outputs();
+            // The null device of our own: made, and writable, or left out.
+            const fs::path null = dir / "null";
+            if (::mknod(null.c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0) {
+                const int fd = ::open(null.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+                has_null = fd >= 0;
+                if (fd >= 0) {
+                    ::close(fd);
+                } else {
+                    ::unlink(null.c_str()); // a nodev mount: of no use
+                }
+            }
+            for (const auto& entry : fs::directory_iterator(dir)) {
+                const std::string n = entry.path().filename().string();
+                if (!entry.is_directory() && n.rfind("old", 0) != 0 &&
+                    n.rfind("dangling", 0) != 0) {
+                    protected_files[n] = describe(entry.path());
+                }
+            }
+        } catch (...) {
+            // A workshop that could not be made is removed too: no half folder stays in
+            // the temporary folder (612 of them did, from one run whose set-up failed).
+            std::error_code ec;
+            fs::remove_all(dir, ec);
+            throw;
         }
     }
     ~Workshop() {
