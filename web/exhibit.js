@@ -152,6 +152,12 @@
         });
         parts.push(code);
       }
+    } else if (/your-card\.ngc:\d+: /.test(first)) {
+      // The card the visitor asked for after the tour (web/guide.js), refused by the generator.
+      const said = first.replace(/^.*your-card\.ngc:\d+: /, "");
+      lead.textContent = "Your card: " + (/which hold 0 to 9\.999 in/.test(said)
+        ? "that move does not fit: the counters hold 0 to 9.999 inches."
+        : /no number after it|not a number/.test(said) ? "the inches must be a number, e.g. 2.000." : said);
     } else if (FILE_WORDS.some(([re]) => re.test(first))) {
       const file = first.split(": card ")[0];
       const card = (first.match(/: card (\d+)/) || [])[1] || "1";
@@ -554,6 +560,25 @@
     return true;
   }
   viewer.beforePlay = () => (ran ? true : runDeck());
+
+  // After the tour: punch your own card (web/guide.js): the visitor's move as G-code, made
+  // into cards by `parsons gen gcode`, run and played at 10x.
+  if (viewer.tour && typeof ParsonsGuide !== "undefined") {
+    ParsonsGuide.install(document, viewer.tour, (program) => {
+      clearFolder("/work/gen");
+      FS.writeFile("/work/gen/your-card.ngc", program);
+      const g = parsons(["gen", "gcode", "gen/your-card.ngc", "--to", "listing", "-o", "gen/your-card.csv"]);
+      if (g.code !== 0) {
+        showError(g.err, true); // in the keypunch's words; the keypunch keeps its deck
+        return;
+      }
+      job = null;
+      setListing(readText("/work/gen/your-card.csv"), null, true);
+      if (!punched || !runDeck()) return;
+      viewer.chooseSpeed("10");
+      viewer.play();
+    });
+  }
 
   // ---- the state as a URL: the deck and the instant (#deck=sample&t=12.5)
   // A built-in deck by its name; any other listing deflated (CompressionStream, in the browser)

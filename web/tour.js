@@ -213,7 +213,8 @@ const ParsonsTour = (() => {
       this.active = false;
       this.doc.body.classList.remove("touring");
       if (this.v.onState) this.v.onState();
-      this.doc.getElementById("tour-start").focus();
+      if (this.onEnd) this.onEnd(); // the live page offers a next step (web/guide.js)
+      else this.doc.getElementById("tour-start").focus();
     }
   }
 
