@@ -22,7 +22,8 @@ node tests/js/browser_test.js build-wasm/site build/cli/parsons build-wasm/brows
 for pair in first-view-laptop:web-first-view first-view-phone:web-phone tour-laptop:web-tour \
             part-info-laptop:web-part-info error-field-laptop:web-error-field \
             mill-start:web-mill-start mill-mid:web-mill-mid mill-phone:web-mill-phone \
-            tour-phone-one-screen:web-tour-phone error-words-laptop:web-error-words; do
+            tour-phone-one-screen:web-tour-phone error-words-laptop:web-error-words \
+            voice-plain-laptop:web-voice; do
     cp "build-wasm/browser-test/${pair%%:*}.png" "docs/images/${pair##*:}.png"
 done
 git status --short README.md docs/

@@ -31,6 +31,12 @@ const ParsonsCabinet = (() => {
     return `${sig.component}${sig.numeral ? " (" + sig.numeral + ")" : ""}` + (does ? `: ${does}` : "");
   }
 
+  // The digit place each bank of holding relays holds (relaylogic/storage.hpp), for the
+  // visitor's voice: absolute 350-356 (where to slow down and stop), incremental 324-318 (the move).
+  const BANK_PLACE = { 350: "inch", 352: "tenth", 354: "hund.", 356: "thou.", 324: "inch", 322: "tenth", 320: "hund.", 318: "thou." };
+  // A counter's stepping switch by the digit it counts (its component names it, counters.cpp).
+  const SHORT_PLACE = { inches: "inch", tenths: "tenth", hundredths: "hund.", thousandths: "thou." };
+
   // Every part of the cabinet is reached by keyboard (Tab) and touch, not by the mouse's hover
   // alone: a focusable button with its name; data-short is the numeral the compact panel of a
   // wide screen shows in place of the long label (web/exhibit.css).
@@ -56,11 +62,13 @@ const ParsonsCabinet = (() => {
     // Every part drawn at its value now.
     renderAll() {
       this.updaters.forEach((u, id) => { if (u) u(this.v.values[id]); });
+      this.renderPlain();
     }
 
     // The parts of these signals drawn at their values now.
     render(ids) {
       for (const id of ids) { const u = this.updaters[id]; if (u) u(this.v.values[id]); }
+      this.renderPlain();
     }
 
     // The panel of the viewer's record (viewer.h): built again only when its signals change.
@@ -73,6 +81,10 @@ const ParsonsCabinet = (() => {
       const panel = this.v.$("panel");
       panel.textContent = "";
       this.updaters = new Array(this.v.h.signals.length);
+      this.plainLines = new Map();
+      this.ids = new Map(); // "scope.name" -> signal id, for the plain lines
+      this.v.h.signals.forEach((s, id) => { if (s) this.ids.set(`${s.scope}.${s.name}`, id); });
+      this.voiceButton();
       const scopes = new Map();
       this.v.h.signals.forEach((s, id) => {
         if (!s) return;
@@ -84,6 +96,7 @@ const ParsonsCabinet = (() => {
       for (const scope of scopeNames) {
         const col = el("div", { class: "scope", "data-scope": scope }, panel);
         el("h3", { text: scope === "cabinet" ? "shared" : scope }, col);
+        this.plainLines.set(scope, el("p", { class: "plain-line" }, col)); // the visitor's voice
         const banks = new Map();
         const dials = [];
         const singles = [];
@@ -119,6 +132,7 @@ const ParsonsCabinet = (() => {
       }
       this.shownPart = null;
       this.v.$("part-info").hidden = true;
+      this.setVoice(this.v.doc.getElementById("voice").getAttribute("aria-pressed") === "true");
     }
 
     buildBanks(col, banks) {
@@ -127,7 +141,7 @@ const ParsonsCabinet = (() => {
         const first = relays[0];
         const numeral = first.numeral;
         const row = el("div", { class: "bank", title: hover(first), "data-bank": name }, box);
-        el("span", { class: "label", text: numeral }, row);
+        el("span", { class: "label", text: numeral, "data-numeral": numeral, "data-plain": BANK_PLACE[numeral] || numeral }, row);
         relays.sort((a, b) => a.digit - b.digit);
         for (const r of relays) {
           const lamp = el("span", { class: "relay", "data-signal": r.id, text: String(r.digit) }, row);
@@ -151,7 +165,8 @@ const ParsonsCabinet = (() => {
           tx.textContent = String(k);
         }
         const hand = svg("line", { x1: 0, y1: 0, x2: 0, y2: -10, class: "hand" }, s);
-        el("span", { class: "label", text: numeral }, wrap);
+        const place = SHORT_PLACE[(/\((\w+)\)$/.exec(d.component) || [])[1]] || numeral;
+        el("span", { class: "label", text: numeral, "data-numeral": numeral, "data-plain": place }, wrap);
         this.updaters[d.id] = (v) => {
           hand.setAttribute("transform", `rotate(${v * 36})`);
           wrap.dataset.value = String(v);
@@ -206,6 +221,70 @@ const ParsonsCabinet = (() => {
       });
       box.hidden = false;
       this.renderPart();
+    }
+
+    // ---- two voices (issue 52, item 4): the engineer's numerals, or the visitor's plain words on
+    // the panel itself, one switch above it. The plain words say what the relays and switches
+    // stand at now, read from the record's values: nothing here decides anything.
+
+    voiceButton() {
+      const doc = this.v.doc;
+      let b = doc.getElementById("voice");
+      if (!b) {
+        b = el("button", { type: "button", id: "voice", "aria-pressed": "false", text: "Plain words" });
+        this.v.$("panel").before(b);
+        b.addEventListener("click", () => this.setVoice(b.getAttribute("aria-pressed") !== "true"));
+      }
+    }
+
+    setVoice(plain) {
+      const doc = this.v.doc;
+      doc.body.dataset.voice = plain ? "visitor" : "engineer";
+      const b = doc.getElementById("voice");
+      b.setAttribute("aria-pressed", String(plain));
+      b.textContent = plain ? "Numerals" : "Plain words";
+      b.title = plain ? "Show the patent's numerals" : "Say on the panel, in plain words, what each part stands at";
+      for (const l of this.v.$("panel").querySelectorAll(".label[data-plain]")) {
+        l.textContent = plain ? l.dataset.plain : l.dataset.numeral;
+      }
+      this.renderPlain();
+    }
+
+    // The numbers four banks of holding relays close the circuit for: every reading whose four
+    // digits each have their relay closed (banks in the order inches .. thousandths).
+    bankNumbers(scope, banks) {
+      const closed = banks.map((b) => {
+        const ds = [];
+        for (let d = 0; d < 10; d++) if (this.v.values[this.ids.get(`${scope}.${b}.relay_${d}`)]) ds.push(d);
+        return ds;
+      });
+      if (closed.some((ds) => ds.length === 0)) return [];
+      const out = [];
+      for (const a of closed[0]) for (const t of closed[1]) for (const h of closed[2]) for (const m of closed[3]) {
+        out.push(`${a}.${t}${h}${m}`);
+      }
+      return out;
+    }
+
+    renderPlain() {
+      if (!this.plainLines || this.v.doc.body.dataset.voice !== "visitor") return;
+      const val = (scope, name) => this.v.values[this.ids.get(`${scope}.${name}`)];
+      for (const [scope, line] of this.plainLines) {
+        if (scope === "cabinet") {
+          const card = val(scope, "card_reader_134.card");
+          line.textContent = `${card ? `card ${card} in the reader` : "no card read yet"}; the sequence shaft at step ` +
+            `${val(scope, "stepping_shaft_280")}; the master switch ${val(scope, "master_switch_204") ? "closed: motors may run" : "open: the machine is stopped"}.`;
+          continue;
+        }
+        if (val(scope, "speed_switch_236") === undefined) continue;
+        const held = this.bankNumbers(scope, ["absolute_storage_350", "absolute_storage_352", "absolute_storage_354", "absolute_storage_356"]);
+        const move = this.bankNumbers(scope, ["incremental_storage_324", "incremental_storage_322", "incremental_storage_320", "incremental_storage_318"]);
+        const speed = val(scope, "speed_switch_236");
+        line.textContent = `counts ${this.v.counterReading(scope)} in; ` +
+          (held.length ? `holds the number${held.length > 1 ? "s" : ""} ${held.slice(0, 4).join(", ")}${held.length > 4 ? ", …" : ""} (slow down, stop)` : "holds no number") +
+          `; the move ${move.length === 1 ? move[0] + " in" : move.length ? move.join(", ") : "not set"}; ` +
+          `speed ${speed ? speed + (speed === 3 ? " (fast)" : speed === 1 ? " (slow)" : "") : "off"}.`;
+      }
     }
 
     renderPart() {
