@@ -132,6 +132,7 @@ TEST_CASE("Timeline: replaying the record from the initial values ends where the
     // Cards, finish and time order.
     CHECK(h["cards"].size() == 2);
     CHECK(h["cards"][1]["axes"]["table"]["stop_in"] == Approx(0.205));
+    CHECK(h["cards"][1]["axes"]["table"]["held_in"].back() == Approx(0.205));
     CHECK(h["cards"][1]["axes"]["table"]["motion"] == "-");
     CHECK(h["finish"].get<double>() == Approx(result.machine_seconds).margin(1e-12));
     CHECK(h["stop"].is_null());

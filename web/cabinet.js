@@ -225,7 +225,8 @@ const ParsonsCabinet = (() => {
 
     // ---- two voices (issue 52, item 4): the engineer's numerals, or the visitor's plain words on
     // the panel itself, one switch above it. The plain words say what the relays and switches
-    // stand at now, read from the record's values: nothing here decides anything.
+    // stand at now, read from the record (its values and its cards' orders): nothing here
+    // decides anything, not even which readings a bank's relays close the circuit for.
 
     voiceButton() {
       const doc = this.v.doc;
@@ -250,20 +251,12 @@ const ParsonsCabinet = (() => {
       this.renderPlain();
     }
 
-    // The numbers four banks of holding relays close the circuit for: every reading whose four
-    // digits each have their relay closed (banks in the order inches .. thousandths).
-    bankNumbers(scope, banks) {
-      const closed = banks.map((b) => {
-        const ds = [];
-        for (let d = 0; d < 10; d++) if (this.v.values[this.ids.get(`${scope}.${b}.relay_${d}`)]) ds.push(d);
-        return ds;
+    // Whether any relay of these banks of holding relays is closed now (the record's values).
+    anyClosed(scope, banks) {
+      return banks.some((b) => {
+        for (let d = 0; d < 10; d++) if (this.v.values[this.ids.get(`${scope}.${b}.relay_${d}`)]) return true;
+        return false;
       });
-      if (closed.some((ds) => ds.length === 0)) return [];
-      const out = [];
-      for (const a of closed[0]) for (const t of closed[1]) for (const h of closed[2]) for (const m of closed[3]) {
-        out.push(`${a}.${t}${h}${m}`);
-      }
-      return out;
     }
 
     renderPlain() {
@@ -277,12 +270,19 @@ const ParsonsCabinet = (() => {
           continue;
         }
         if (val(scope, "speed_switch_236") === undefined) continue;
-        const held = this.bankNumbers(scope, ["absolute_storage_350", "absolute_storage_352", "absolute_storage_354", "absolute_storage_356"]);
-        const move = this.bankNumbers(scope, ["incremental_storage_324", "incremental_storage_322", "incremental_storage_320", "incremental_storage_318"]);
+        // What the storage holds is what the card in the reader gave it (the record's card
+        // orders), while its relays stand closed: between the relays picking and zeroizing.
+        const card = this.v.cardIndex >= 0 ? this.v.h.cards[this.v.cardIndex] : null;
+        const orders = card && card.axes ? card.axes[scope] : null;
+        const n = (x) => x.toFixed(3);
+        const held = orders && this.anyClosed(scope, ["absolute_storage_350", "absolute_storage_352", "absolute_storage_354", "absolute_storage_356"])
+          ? orders.held_in.map(n) : [];
+        const move = orders && this.anyClosed(scope, ["incremental_storage_324", "incremental_storage_322", "incremental_storage_320", "incremental_storage_318"])
+          ? [n(orders.check_in)] : [];
         const speed = val(scope, "speed_switch_236");
         line.textContent = `counts ${this.v.counterReading(scope)} in; ` +
-          (held.length ? `holds the number${held.length > 1 ? "s" : ""} ${held.slice(0, 4).join(", ")}${held.length > 4 ? ", …" : ""} (slow down, stop)` : "holds no number") +
-          `; the move ${move.length === 1 ? move[0] + " in" : move.length ? move.join(", ") : "not set"}; ` +
+          (held.length ? `holds the number${held.length > 1 ? "s" : ""} ${held.join(", ")} (slow down, stop)` : "holds no number") +
+          `; the move ${move.length ? move[0] + " in" : "not set"}; ` +
           `speed ${speed ? speed + (speed === 3 ? " (fast)" : speed === 1 ? " (slow)" : "") : "off"}.`;
       }
     }

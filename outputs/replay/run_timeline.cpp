@@ -196,10 +196,20 @@ void RunTimeline::on_card(double t, std::int64_t index, const cardreader::CardOr
         nlohmann::json axes = nlohmann::json::object();
         for (std::size_t i = 0; i < cardreader::kAxisCount; ++i) {
             const auto& a = orders.axes[i];
+            // The numbers the card gives the absolute storage: its slow-downs, then its stop.
+            nlohmann::json held = nlohmann::json::array();
+            for (const auto& sd : a.slow_down) {
+                if (sd) {
+                    held.push_back(static_cast<double>(*sd) / 1000.0);
+                }
+            }
+            held.push_back(static_cast<double>(a.stop) / 1000.0);
             axes[std::string(cardreader::axis_name(static_cast<cardreader::Axis>(i)))] = {
                 {"motion", a.motion == cardreader::Motion::forward ? "+" : "-"},
                 {"speed", a.start_speed},
-                {"stop_in", static_cast<double>(a.stop) / 1000.0}};
+                {"stop_in", static_cast<double>(a.stop) / 1000.0},
+                {"held_in", std::move(held)},
+                {"check_in", static_cast<double>(a.check) / 1000.0}};
         }
         card["axes"] = std::move(axes);
         break;
