@@ -141,7 +141,12 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     jumping_ =
         pace_ == Pace::fast_forward && (observer == nullptr || !observer->follows_impulses());
     const bool alone = !jumping_ && observer == nullptr;
+    // An observer that follows every change takes the impulses in bulk too where nothing but the
+    // axes' own impulses can come between them: no attachment's plant or clock to report in
+    // between (the spindle motor coming to speed is waited for).
+    const bool recording = !jumping_ && observer != nullptr;
     const bool follows_motion = observer != nullptr && observer->follows_motion();
+    follows_motion_ = follows_motion;
     for (const auto& a : attachments_) {
         a->start(*this);
     }
@@ -180,7 +185,10 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
         }
         if (alone) {
             mark(Phase::motion);
-            run_impulses();
+            run_impulses<false>();
+        } else if (recording && plants_.empty() && clock_ == nullptr && !spindle_changing_) {
+            mark(Phase::motion);
+            run_impulses<true>();
         }
     }
     mark(Phase::motion);
@@ -272,12 +280,16 @@ inline void ControlCabinet::advance(double t, bool follows_motion) {
         clock_->clock_edges_at(*this, t);
     }
     if (moved && follows_motion) {
-        std::array<double, 5> real{};
-        for (std::size_t i = 0; i < circuits_.size(); ++i) {
-            real.at(i) = circuits_[i]->plant.real_in_at(t);
-        }
-        tracer_.observer()->on_motion(t, real);
+        report_motion(t);
     }
+}
+
+void ControlCabinet::report_motion(double t) {
+    std::array<double, 5> real{};
+    for (std::size_t i = 0; i < circuits_.size(); ++i) {
+        real.at(i) = circuits_[i]->plant.real_in_at(t);
+    }
+    tracer_.observer()->on_motion(t, real);
 }
 
 // The phase of the card cycle an event belongs to, for the benchmark's clock.

@@ -222,7 +222,12 @@ private:
     QuietConditions quiet_conditions(AxisCircuit& c);
     void plan_quiet_stretches();
     void catch_up(double t);
+    // Recording: an observer follows every change and motion (a trace, the page's record): the
+    // impulses are still taken straight from the plants, each reported as advance() reports it.
+    template <bool Recording>
     void run_impulses();
+    // The five axes' real positions at t, to the observer that follows motion.
+    void report_motion(double t);
     // Impulse level: an axis's quiet impulses still to come, and when to ask again.
     struct QuietRun {
         static constexpr int kFirstWait = 4;     // impulses one by one before asking again
@@ -232,9 +237,11 @@ private:
         int wait = kFirstWait;                   // ask_in after the next answer of none
     };
     void ask_quiet(AxisCircuit& c, QuietRun& run);
+    template <bool Recording>
     bool impulse_one_by_one(AxisCircuit& c, QuietRun& run);
     [[gnu::always_inline]] bool count_impulse(AxisCircuit& c, const axes::Impulse& impulse,
                                               bool hundredths_only);
+    template <bool Recording>
     [[gnu::always_inline]] void count_quiet_impulse(AxisCircuit& c, const axes::Impulse& impulse);
     // control_cabinet_sequence.cpp: stops, stepping shaft 280, the sequence
     void stop_axis(AxisCircuit& c);
@@ -271,6 +278,7 @@ private:
     double min_interval_s_; // 1 / the stepping switches' fastest rate
     Pace pace_ = Pace::fast_forward;
     bool jumping_ = false;                                     // fast-forward with no observer
+    bool follows_motion_ = false;                              // the observer follows motion
     std::array<std::int64_t, cardreader::kAxisCount> quiet_{}; // quiet impulses ahead of each axis
     std::array<double, cardreader::kAxisCount> quiet_end_{};   // when the stretch's next event is
 

@@ -115,9 +115,13 @@ ControlCabinet::count_impulse(AxisCircuit& c, const axes::Impulse& impulse, bool
 // observer, no attachment that sees the count, no comparer conducting before or after it, no
 // fault, travel limit or soft limit due, no hundredths-only counting: ask_quiet()). Both
 // contact sets see it, it is counted, and the comparers stay open, so delay 258 may release.
+template <bool Recording>
 inline void ControlCabinet::count_quiet_impulse(AxisCircuit& c, const axes::Impulse& impulse) {
     ++c.contact_set_a;
     ++c.contact_set_b;
+    if constexpr (Recording) {
+        c.show_contacts(); // the contacts, then the switches they step, as on_impulse() has them
+    }
     const bool stepped = count_impulse(c, impulse, false);
     // Every switch was ready (quiet_impulses() asks for that): switch 110 stepped.
     assert(stepped);
@@ -139,6 +143,7 @@ inline void ControlCabinet::count_quiet_impulse(AxisCircuit& c, const axes::Impu
 // and asks nothing; the impulse after them goes through on_impulse() again. Nothing else can
 // change what the answer rests on meanwhile: a relay event, or an impulse of any axis that does
 // more than count, sends the loop back to the main loop, which forgets every answer.
+template <bool Recording>
 void ControlCabinet::run_impulses() {
     double queued = queue_.empty() ? axes::kNever : queue_.top().t;
     if (clock_running()) {
@@ -182,24 +187,33 @@ void ControlCabinet::run_impulses() {
         std::int64_t quiet_left = runs[f].quiet; // a local: kept in a register
         while (plant.next_event_is_impulse()) {
             t = plant.next_event_time();
-            if (!(t < before && t <= until)) {
+            // Recording, an instant another axis shares is the main loop's: advance() takes
+            // every axis's impulse of that instant and reports one motion record for them.
+            if (!(t < before && (Recording ? t < until : t <= until))) {
                 break;
             }
             now_ = t;
             tracer_.set_time(t);
             if (quiet_left > 0) {
                 --quiet_left;
-                count_quiet_impulse(c, plant.take_next_impulse());
+                count_quiet_impulse<Recording>(c, plant.take_next_impulse());
+                if (Recording && follows_motion_) {
+                    report_motion(t);
+                }
                 continue;
             }
-            if (!impulse_one_by_one(c, runs[f])) {
+            const bool quiet = impulse_one_by_one<Recording>(c, runs[f]);
+            if (Recording && follows_motion_) {
+                report_motion(t);
+            }
+            if (!quiet) {
                 return; // something happened: the main loop looks at everything again
             }
             quiet_left = runs[f].quiet;
         }
         runs[f].quiet = quiet_left;
         next[f] = plant.next_event_time();
-        if (!plant.next_event_is_impulse() || t > queued) {
+        if (!plant.next_event_is_impulse() || t > queued || (Recording && t == until)) {
             return; // a speed change ends, or a relay event is due: the main loop
         }
     }
@@ -209,12 +223,13 @@ void ControlCabinet::run_impulses() {
 // quiet (ask_quiet); the first of them goes through on_impulse() all the same when a comparer
 // conducts before it (it leaves the equality: the comparers are read again), the rest through
 // count_quiet_impulse(). Returns what on_impulse() returns.
+template <bool Recording>
 bool ControlCabinet::impulse_one_by_one(AxisCircuit& c, QuietRun& run) {
     ask_quiet(c, run);
     if (run.quiet > 0) {
         --run.quiet;
         if (!c.absolute_conducting && !c.incremental_conducting) {
-            count_quiet_impulse(c, c.plant.take_next_impulse());
+            count_quiet_impulse<Recording>(c, c.plant.take_next_impulse());
             return true;
         }
     }
@@ -427,5 +442,8 @@ void ControlCabinet::show_spindle() {
     tracer_.set(spindle_motor_signal_,
                 spindle_changing_ ? 3U : static_cast<std::uint32_t>(spindle_motor_.turning()));
 }
+
+template void ControlCabinet::run_impulses<false>();
+template void ControlCabinet::run_impulses<true>();
 
 } // namespace parsons::relaylogic

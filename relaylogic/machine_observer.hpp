@@ -79,6 +79,27 @@ struct ConditionEvent {
     int tool_in_spindle = 0; // after the event
 };
 
+// Every signal change as it came, in three arrays: what an observer that keeps the changes as
+// they are (the exhibit page's record) hands the tracer, which then appends to it itself, in
+// bulk, instead of calling on_signal() once a change (docs/web.md, the recorded run).
+struct ChangeLog {
+    std::vector<double> t;
+    std::vector<std::uint32_t> id;
+    std::vector<std::uint32_t> value;
+    std::size_t limit = 0;  // changes kept at most; those after are counted as lost
+    bool truncated = false; // a change came past the limit
+
+    [[gnu::always_inline]] void append(double seconds, std::uint32_t signal, std::uint32_t v) {
+        if (t.size() >= limit) {
+            truncated = true;
+            return;
+        }
+        t.push_back(seconds);
+        id.push_back(signal);
+        value.push_back(v);
+    }
+};
+
 class MachineObserver {
 public:
     virtual ~MachineObserver() = default;
@@ -108,6 +129,9 @@ public:
     // path)? One that only wants cards, stops and the finish says no, and the cabinet may then
     // fast-forward: the signal changes it is sent come a stretch of impulses at a time.
     virtual bool follows_impulses() const { return true; }
+    // Its change log, if it keeps every change as it came and nothing more: the tracer appends
+    // each change there and calls on_signal() no more. nullptr: on_signal() at each change.
+    virtual ChangeLog* change_log() { return nullptr; }
     // Does it want on_motion? An observer that ignores motion says no (overrides this), and
     // the cabinet then does not work out the five real positions at every impulse for it.
     virtual bool follows_motion() const { return true; }

@@ -66,6 +66,7 @@ SignalId Tracer::define(std::string scope, std::string name, std::string compone
 
 void Tracer::attach(MachineObserver* observer) {
     observer_ = observer;
+    log_ = observer != nullptr ? observer->change_log() : nullptr;
     if (observer_ == nullptr) {
         return;
     }

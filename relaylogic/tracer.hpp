@@ -30,7 +30,12 @@ public:
         // many set() calls that change nothing cost a comparison (the commutator contact sets
         // are re-set at every impulse).
         if (observer_ != nullptr && values_[id] != value) {
-            report(id, value);
+            if (log_ != nullptr) {
+                values_[id] = value;
+                log_->append(now_, id, value);
+            } else {
+                report(id, value);
+            }
         }
     }
 
@@ -44,6 +49,7 @@ private:
     void report(SignalId id, std::uint32_t value);
 
     MachineObserver* observer_ = nullptr;
+    ChangeLog* log_ = nullptr; // the observer's change log, if it keeps one
     double now_ = 0;
     std::vector<SignalInfo> infos_;
     std::vector<std::uint32_t> values_;

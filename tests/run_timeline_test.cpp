@@ -288,3 +288,93 @@ TEST_CASE("Run --html: the page of a completed run, of a stop, and of a generate
     CHECK(r.exit_code == 2);
     CHECK(r.output.find("no/such/run.html") != std::string::npos);
 }
+
+// The header is written as text while the run goes (not a tree of JSON objects): its strings and
+// numbers must read back as the machine gave them, a name with quotes, a backslash or a control
+// character included, and every card's numbers to the last bit.
+TEST_CASE("Timeline: the header written as text reads back exactly", "[timeline]") {
+    RunTimeline timeline;
+    rl::SignalInfo odd;
+    odd.id = 0;
+    odd.scope = "table";
+    odd.name = "a \"quoted\" \\ name\n\t\x01";
+    odd.component = "122\u2032 comparer";
+    odd.numeral = "122'";
+    odd.width = 4;
+    timeline.on_signal_defined(odd, 7);
+    rl::SignalInfo plain = odd;
+    plain.id = 1;
+    plain.name = "relay_0";
+    timeline.on_signal_defined(plain, 0);
+    const nlohmann::json signals = nlohmann::json::parse(timeline.signals_text());
+    REQUIRE(signals.size() == 2);
+    CHECK(signals[0]["name"] == odd.name);
+    CHECK(signals[0]["component"] == odd.component);
+    CHECK(signals[0]["numeral"] == odd.numeral);
+    CHECK(signals[0]["initial"] == 7);
+    CHECK(signals[0]["width"] == 4);
+    CHECK(signals[1]["name"] == "relay_0");
+    // The same text nlohmann writes for the same object.
+    const nlohmann::json as_object = {{"scope", odd.scope},         {"name", odd.name},
+                                      {"component", odd.component}, {"numeral", odd.numeral},
+                                      {"width", odd.width},         {"initial", 7}};
+    CHECK(timeline.signals_text().substr(1, as_object.dump().size()) == as_object.dump());
+
+    // Cards: times and held numbers bit for bit (0.1 + 0.2 has no short decimal), whole numbers
+    // still fractions.
+    cr::CardOrders card = idle_card(3, {0, 0, 0, 0, 0});
+    card.axis(cr::Axis::table) = order(0, 2000, 1, 1307, 1999, 1);
+    card.axis(cr::Axis::cross) = order(0, 1, 2, {}, {}, 2);
+    const double t = 0.1 + 0.2;
+    timeline.on_card(t, 1, card);
+    timeline.on_card(12.0, 2, card);
+    const std::string text = timeline.cards_text();
+    CHECK(text.find("\"stop_in\":2.0}") != std::string::npos);
+    const nlohmann::json cards = nlohmann::json::parse(text);
+    REQUIRE(cards.size() == 2);
+    CHECK(cards[0]["t"].get<double>() == t); // exact, not Approx
+    CHECK(cards[1]["t"].get<double>() == 12.0);
+    CHECK(cards[0]["number"] == 3);
+    CHECK(cards[0]["kind"] == "motion");
+    const auto& table = cards[0]["axes"]["table"];
+    CHECK(table["held_in"] == nlohmann::json({1307 / 1000.0, 1999 / 1000.0, 2000 / 1000.0}));
+    CHECK(table["check_in"].get<double>() == card.axis(cr::Axis::table).check / 1000.0);
+    CHECK(table["speed"] == 1);
+    CHECK(cards[0]["axes"]["cross"]["stop_in"].get<double>() == 0.001);
+    CHECK(cards[0]["axes"].size() == 5);
+    // Every number a card can hold, 0.000 to 9.999 in, reads back as its thousandths / 1000.
+    RunTimeline every;
+    for (int n = 0; n <= 9999; ++n) {
+        cr::CardOrders c = idle_card(n, {0, 0, 0, 0, 0});
+        c.axis(cr::Axis::tilt) = order(0, n, 1, {}, {}, 5);
+        every.on_card(n * 1e-3, n + 1, c);
+    }
+    const nlohmann::json all = nlohmann::json::parse(every.cards_text());
+    int exact = 0;
+    for (int n = 0; n <= 9999; ++n) {
+        exact += all[n]["axes"]["tilt"]["stop_in"].get<double>() == n / 1000.0 ? 1 : 0;
+    }
+    CHECK(exact == 10000);
+    // The page's header and the --html record's hold the same cards.
+    CHECK(nlohmann::json::parse(timeline.page_header_text())["cards"] == cards);
+    CHECK(timeline.header()["cards"] == cards);
+}
+
+// Alone, the record takes the tracer's changes in bulk (its change log, no call a change); among
+// other observers (a fan-out) it takes them one on_signal() at a time. The record is the same.
+TEST_CASE("Timeline: the change log in bulk records what on_signal records", "[timeline]") {
+    RunTimeline alone;
+    run_orders(two_cards(), parsons::axes::default_profile(), &alone);
+    RunTimeline among;
+    rl::MachineObserver other; // follows every change and motion, does nothing with them
+    rl::ObserverFanOut fan;
+    fan.add(&among);
+    fan.add(&other);
+    run_orders(two_cards(), parsons::axes::default_profile(), &fan);
+    REQUIRE(alone.change_times().size() > 1000);
+    CHECK(alone.change_times() == among.change_times());
+    CHECK(alone.change_ids() == among.change_ids());
+    CHECK(alone.change_values() == among.change_values());
+    CHECK(alone.motion() == among.motion());
+    CHECK(alone.header_text() == among.header_text());
+}

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <iterator>
+#include <stdexcept>
 
 namespace parsons::cli {
 
@@ -52,6 +54,85 @@ void put_xor_column(std::string& out, const std::vector<double>& values, std::si
     }
     out += nibbles;
     out += bytes;
+}
+
+// The record's header is written as text while the run goes, not built as a tree of JSON
+// objects: a tree of maps for every signal and card cost more than the run they record (the
+// demo deck: 14 million instructions of 23, most of the WebAssembly page's recording time).
+// The text is nlohmann's own, value for value: strings escaped as its dump escapes them,
+// numbers in its number text.
+void put_string(std::string& out, std::string_view text) {
+    out += '"';
+    const auto plain = [](char c) {
+        return c != '"' && c != '\\' && static_cast<unsigned char>(c) >= 0x20;
+    };
+    if (std::all_of(text.begin(), text.end(), plain)) { // every name the machine gives
+        out += text;
+        out += '"';
+        return;
+    }
+    for (const char c : text) {
+        switch (c) {
+        case '"':
+            out += "\\\"";
+            break;
+        case '\\':
+            out += "\\\\";
+            break;
+        case '\b':
+            out += "\\b";
+            break;
+        case '\f':
+            out += "\\f";
+            break;
+        case '\n':
+            out += "\\n";
+            break;
+        case '\r':
+            out += "\\r";
+            break;
+        case '\t':
+            out += "\\t";
+            break;
+        default:
+            if (plain(c)) {
+                out += c;
+            } else {
+                out += fmt::format("\\u{:04x}", static_cast<unsigned>(c));
+            }
+        }
+    }
+    out += '"';
+}
+
+// A finite double as nlohmann writes it: the shortest text that reads back to it (fmt's, where
+// nlohmann's Grisu2 now and then writes 17 digits: json_text shortens those anyway), and ".0"
+// after a whole number, still a fraction to a reader that keeps integers apart.
+void put_number(std::string& out, double value) {
+    const std::size_t from = out.size();
+    fmt::format_to(std::back_inserter(out), "{}", value);
+    if (out.find_first_of(".e", from) == std::string::npos) {
+        out += ".0";
+    }
+}
+
+// A card's number in thousandths as inches: the shortest text of n / 1000.0 is the decimal
+// itself (four digits or fewer always read back to their double), so no float formatting.
+void put_inches(std::string& out, std::int64_t thousandths) {
+    if (thousandths < 0) {
+        out += '-';
+        thousandths = -thousandths;
+    }
+    fmt::format_to(std::back_inserter(out), "{}.", thousandths / 1000);
+    int rest = static_cast<int>(thousandths % 1000);
+    if (rest == 0) {
+        out += '0';
+        return;
+    }
+    for (int place = 100; rest != 0; place /= 10) {
+        out += static_cast<char>('0' + rest / place);
+        rest %= place;
+    }
 }
 
 } // namespace
@@ -106,17 +187,17 @@ std::string base64(const unsigned char* data, std::size_t size) {
     return out;
 }
 
-RunTimeline::RunTimeline(std::size_t max_changes) : max_changes_(max_changes) {
+RunTimeline::RunTimeline(std::size_t max_changes) {
+    log_.limit = max_changes;
     // A short deck's record without a reallocation (the demo deck's is 66 000 changes).
     const std::size_t expected = std::min<std::size_t>(max_changes, 1 << 17);
-    change_t_.reserve(expected);
-    change_id_.reserve(expected);
-    change_v_.reserve(expected);
+    log_.t.reserve(expected);
+    log_.id.reserve(expected);
+    log_.value.reserve(expected);
     motion_.reserve(expected / 4 * kMotionRecord);
 }
 
 void RunTimeline::on_signal_defined(const relaylogic::SignalInfo& info, std::uint32_t initial) {
-    signals_text_.clear();
     const auto mix = [this](std::string_view text) {
         for (const char c : text) {
             signals_hash_ = (signals_hash_ ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
@@ -130,31 +211,40 @@ void RunTimeline::on_signal_defined(const relaylogic::SignalInfo& info, std::uin
     mix(info.numeral);
     mix(std::to_string(info.width));
     mix(std::to_string(initial));
-    if (signals_.size() <= info.id) {
-        signals_.get_ref<nlohmann::json::array_t&>().resize(info.id + 1);
-        last_values_.resize(info.id + 1);
+    // The tracer defines its signals in id order, once each (Tracer::attach); a record attached
+    // again starts its signals again.
+    if (info.id == 0) {
+        signals_text_.clear();
+        initial_values_.clear();
     }
-    last_values_[info.id] = initial;
-    signals_[info.id] = {{"scope", info.scope},         {"name", info.name},
-                         {"component", info.component}, {"numeral", info.numeral},
-                         {"width", info.width},         {"initial", initial}};
+    if (info.id != initial_values_.size()) {
+        throw std::logic_error(
+            fmt::format("signal {} defined after {} others", info.id, initial_values_.size()));
+    }
+    initial_values_.push_back(initial);
+    // Keys in the order nlohmann's objects keep them (sorted), as the record has always had.
+    std::string& out = signals_text_;
+    out += signals_text_.empty() ? "[" : ",";
+    out += "{\"component\":";
+    put_string(out, info.component);
+    out += fmt::format(",\"initial\":{},\"name\":", initial);
+    put_string(out, info.name);
+    out += ",\"numeral\":";
+    put_string(out, info.numeral);
+    out += ",\"scope\":";
+    put_string(out, info.scope);
+    out += fmt::format(",\"width\":{}}}", info.width);
 }
 
+// Only when the tracer does not append to change_log() itself (a fan-out of observers).
 void RunTimeline::on_signal(double t, relaylogic::SignalId id, std::uint32_t /*old_value*/,
                             std::uint32_t new_value) {
-    if (full()) {
-        truncated_ = true;
-        return;
-    }
-    change_t_.push_back(t);
-    change_id_.push_back(id);
-    change_v_.push_back(new_value);
-    last_values_[id] = new_value; // defined before any change
+    log_.append(t, id, new_value);
 }
 
 void RunTimeline::on_motion(double t, const std::array<double, 5>& real_in) {
     if (full()) {
-        truncated_ = true;
+        full_ = true;
         return;
     }
     motion_.push_back(t);
@@ -179,43 +269,67 @@ void RunTimeline::on_run_start(double t, const std::array<double, 5>& real_in) {
 }
 
 void RunTimeline::on_card(double t, std::int64_t index, const cardreader::CardOrders& orders) {
-    nlohmann::json card = {{"t", t}, {"index", index}, {"number", orders.number}};
+    // {"axes":{...},"index":..,"kind":..,"number":..,"spindle":..,"t":..}: nlohmann's sorted
+    // keys; the axes by name, so cross, swivel, table, tilt, vertical.
+    std::string& out = cards_text_;
+    out += cards_text_.empty() ? "[" : ",";
+    out += '{';
+    const char* kind = "motion";
     switch (orders.kind) {
     case cardreader::CardKind::condition:
-        card["kind"] = "condition";
+        kind = "condition";
         break;
     case cardreader::CardKind::sync:
-        card["kind"] = "sync";
+        kind = "sync";
         break;
     case cardreader::CardKind::tap:
-        card["kind"] = "tap";
+        kind = "tap";
         break;
     case cardreader::CardKind::motion: {
-        card["kind"] = "motion";
-        card["spindle"] = cardreader::spindle_name(orders.spindle);
-        nlohmann::json axes = nlohmann::json::object();
-        for (std::size_t i = 0; i < cardreader::kAxisCount; ++i) {
+        std::array<std::size_t, cardreader::kAxisCount> by_name{};
+        for (std::size_t i = 0; i < by_name.size(); ++i) {
+            by_name[i] = i;
+        }
+        std::sort(by_name.begin(), by_name.end(), [](std::size_t a, std::size_t b) {
+            return cardreader::axis_name(static_cast<cardreader::Axis>(a)) <
+                   cardreader::axis_name(static_cast<cardreader::Axis>(b));
+        });
+        out += "\"axes\":{";
+        for (const std::size_t i : by_name) {
             const auto& a = orders.axes[i];
+            if (i != by_name.front()) {
+                out += ',';
+            }
+            put_string(out, cardreader::axis_name(static_cast<cardreader::Axis>(i)));
+            out += ":{\"check_in\":";
+            put_inches(out, a.check);
             // The numbers the card gives the absolute storage: its slow-downs, then its stop.
-            nlohmann::json held = nlohmann::json::array();
+            out += ",\"held_in\":[";
             for (const auto& sd : a.slow_down) {
                 if (sd) {
-                    held.push_back(static_cast<double>(*sd) / 1000.0);
+                    put_inches(out, *sd);
+                    out += ',';
                 }
             }
-            held.push_back(static_cast<double>(a.stop) / 1000.0);
-            axes[std::string(cardreader::axis_name(static_cast<cardreader::Axis>(i)))] = {
-                {"motion", a.motion == cardreader::Motion::forward ? "+" : "-"},
-                {"speed", a.start_speed},
-                {"stop_in", static_cast<double>(a.stop) / 1000.0},
-                {"held_in", std::move(held)},
-                {"check_in", static_cast<double>(a.check) / 1000.0}};
+            put_inches(out, a.stop);
+            out += fmt::format("],\"motion\":\"{}\",\"speed\":{},\"stop_in\":",
+                               a.motion == cardreader::Motion::forward ? "+" : "-", a.start_speed);
+            put_inches(out, a.stop);
+            out += '}';
         }
-        card["axes"] = std::move(axes);
+        out += "},";
         break;
     }
     }
-    cards_.push_back(std::move(card));
+    out += fmt::format("\"index\":{},\"kind\":\"{}\",\"number\":{},", index, kind, orders.number);
+    if (orders.kind == cardreader::CardKind::motion) {
+        out += "\"spindle\":";
+        put_string(out, cardreader::spindle_name(orders.spindle));
+        out += ',';
+    }
+    out += "\"t\":";
+    put_number(out, t);
+    out += '}';
 }
 
 void RunTimeline::on_stop(double t, const relaylogic::StopInfo& stop) {
@@ -242,15 +356,24 @@ void RunTimeline::on_finish(double t) {
     finish_ = t;
 }
 
+std::vector<std::uint32_t> RunTimeline::final_values() const {
+    std::vector<std::uint32_t> values = initial_values_;
+    for (std::size_t i = 0; i < log_.id.size(); ++i) {
+        values.at(log_.id[i]) = log_.value[i]; // every signal is defined before any change
+    }
+    return values;
+}
+
 nlohmann::json RunTimeline::header() const {
     return nlohmann::json::parse(header_text());
 }
 
 std::string RunTimeline::signals_text() const {
-    if (signals_text_.empty()) {
-        signals_text_ = axes::json_text(signals_);
-    }
-    return signals_text_;
+    return signals_text_.empty() ? "[]" : signals_text_ + "]";
+}
+
+std::string RunTimeline::cards_text() const {
+    return cards_text_.empty() ? "[]" : cards_text_ + "]";
 }
 
 nlohmann::json RunTimeline::header_fields() const {
@@ -260,32 +383,36 @@ nlohmann::json RunTimeline::header_fields() const {
     }
     nlohmann::json rest = {{"axes", std::move(axes)},
                            {"signals_signature", fmt::format("{:016x}", signals_hash_)},
-                           {"cards", cards_},
                            {"conditions", conditions_},
                            {"stop", stop_},
                            {"design", design_},
                            {"finish", finish_},
-                           {"final_values", last_values_},
-                           {"changes", change_t_.size()},
+                           {"final_values", final_values()},
+                           {"changes", log_.t.size()},
                            {"motion_records", motion_.size() / kMotionRecord},
-                           {"truncated", truncated_}};
+                           {"truncated", full_ || log_.truncated}};
     return rest;
 }
 
 std::string RunTimeline::page_header_text() const {
-    return header_fields().dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    std::string text =
+        header_fields().dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    text.replace(0, 1, "{\"cards\":" + cards_text() + ",");
+    return text;
 }
 
 std::string RunTimeline::header_text(bool with_signals) const {
+    // {"signals":[...],"cards":[...], then the rest's keys (the cards' numbers are already
+    // nlohmann's; json_text shortens them as it shortens the rest's).
     std::string text = axes::json_text(header_fields());
-    if (with_signals) { // {"signals":[...], then the rest's keys
-        text.replace(0, 1, "{\"signals\":" + signals_text() + ",");
-    }
+    text.replace(0, 1,
+                 (with_signals ? "{\"signals\":" + signals_text() + "," : std::string("{")) +
+                     "\"cards\":" + axes::shortest_numbers(cards_text()) + ",");
     return text;
 }
 
 std::string RunTimeline::embedded_json() const {
-    const std::string packed = packed_record(change_t_, change_id_, change_v_, motion_);
+    const std::string packed = packed_record(log_.t, log_.id, log_.value, motion_);
     const nlohmann::json arrays = {
         {"encoding", "xor1"},
         {"packed", base64(reinterpret_cast<const unsigned char*>(packed.data()), packed.size())}};

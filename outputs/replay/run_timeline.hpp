@@ -33,6 +33,9 @@ public:
     void set_machine(const axes::MachineProfile& profile) { profile_ = profile; }
 
     void on_signal_defined(const relaylogic::SignalInfo& info, std::uint32_t initial) override;
+    // The tracer appends every change to the record's arrays itself (in bulk, no call a
+    // change); on_signal() only when the record is one of several observers.
+    relaylogic::ChangeLog* change_log() override { return &log_; }
     void on_signal(double t, relaylogic::SignalId id, std::uint32_t old_value,
                    std::uint32_t new_value) override;
     void on_motion(double t, const std::array<double, 5>& real_in) override;
@@ -54,15 +57,16 @@ public:
     // has are these (signals_text()).
     std::string header_text(bool with_signals = true) const;
     std::string signals_text() const;
+    std::string cards_text() const; // the cards, nlohmann's number text
     // The header without the signals for the live page, which parses it at once: nlohmann's own
     // number text, not json_text's shortest (every 17-digit double of the design tried at each
     // precision with snprintf took 58 of the demo deck's 85 ms first press in WebAssembly).
     std::string page_header_text() const;
 
     // The arrays, one entry a change: machine time (s), signal id, new value.
-    const std::vector<double>& change_times() const { return change_t_; }
-    const std::vector<std::uint32_t>& change_ids() const { return change_id_; }
-    const std::vector<std::uint32_t>& change_values() const { return change_v_; }
+    const std::vector<double>& change_times() const { return log_.t; }
+    const std::vector<std::uint32_t>& change_ids() const { return log_.id; }
+    const std::vector<std::uint32_t>& change_values() const { return log_.value; }
     // Eight numbers a motion record: machine time, then table, cross, vertical, swivel, tilt
     // (inches), then the swivel's and the tilt's fixture angle (degrees).
     const std::vector<double>& motion() const { return motion_; }
@@ -72,25 +76,24 @@ public:
     std::string embedded_json() const;
 
 private:
-    bool full() const { return change_t_.size() >= max_changes_; }
+    bool full() const { return log_.t.size() >= log_.limit; }
+    // Every signal after the last change recorded.
+    std::vector<std::uint32_t> final_values() const;
 
-    std::size_t max_changes_;
     axes::MachineProfile profile_;
-    bool truncated_ = false;
-    nlohmann::json signals_ = nlohmann::json::array();
-    nlohmann::json header_fields() const;
-    mutable std::string signals_text_;                   // signals_ as text, once asked for
+    bool full_ = false;                   // a motion record came past the changes' limit
+    nlohmann::json header_fields() const; // all but the signals and the cards
+    // The signals and the cards as JSON text, written as they come, without the closing "]".
+    std::string signals_text_;
     std::uint64_t signals_hash_ = 0xcbf29ce484222325ULL; // FNV-1a over every definition
-    nlohmann::json cards_ = nlohmann::json::array();
+    std::string cards_text_;
     nlohmann::json conditions_ = nlohmann::json::array();
     nlohmann::json stop_;
     nlohmann::json design_;
     double finish_ = -1;
-    std::vector<double> change_t_;
-    std::vector<std::uint32_t> change_id_;
-    std::vector<std::uint32_t> change_v_;
+    relaylogic::ChangeLog log_;
     std::vector<double> motion_;
-    std::vector<std::uint32_t> last_values_; // every signal after the last change recorded
+    std::vector<std::uint32_t> initial_values_; // every signal as it was defined
     // The fixture's two angles for the last swivel and tilt screw positions (on_motion).
     bool angles_known_ = false;
     std::array<double, 2> angle_screws_{};
