@@ -1,5 +1,10 @@
 #include "relaylogic/card_reader.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+
 namespace parsons::relaylogic {
 
 namespace {
@@ -83,6 +88,62 @@ SensedCard sense_card(const cardreader::Card& card, const cardreader::CardLayout
     }
     sensed.decoded = std::move(clean);
     return sensed;
+}
+
+std::vector<BrushWire> brush_wiring(const cardreader::CardLayout& layout) {
+    static constexpr std::array<const char*, 4> kPlaces = {"inches", "tenths", "hundredths",
+                                                           "thousandths"};
+    const std::vector<int> digits = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+    std::vector<BrushWire> wires;
+    for (const cardreader::LayoutField& f : layout.fields) {
+        const std::string scope =
+            f.axis ? std::string(cardreader::axis_name(*f.axis)) : std::string("cabinet");
+        const std::string label = cardreader::field_label(f);
+        for (int k = 0; k < f.width; ++k) {
+            const int column = f.first_column + k;
+            const int place = 4 - f.width + k; // a number's last column is its thousandths
+            switch (f.kind) {
+            case FieldKind::slow_down_1:
+            case FieldKind::slow_down_2:
+            case FieldKind::stop:
+                wires.push_back(
+                    {column, digits, label + ", " + kPlaces.at(place),
+                     fmt::format("{}.absolute_storage_{}.relay_#", scope, 350 + 2 * place)});
+                break;
+            case FieldKind::check:
+                wires.push_back(
+                    {column, digits, label + ", " + kPlaces.at(place),
+                     fmt::format("{}.incremental_storage_{}.relay_#", scope, 324 - 2 * place)});
+                break;
+            case FieldKind::card_number:
+                wires.push_back({column, digits, label, "cabinet.card_number_check"});
+                break;
+            case FieldKind::start_speed:
+                wires.push_back({column, {0, 1, 2}, label, scope + ".speed_switch_236"});
+                break;
+            case FieldKind::motion:
+                wires.push_back({column, {0, 1}, label, scope + ".reversing_control_214"});
+                break;
+            case FieldKind::spindle:
+                wires.push_back({column, {0, 1}, label, "cabinet.spindle_control_165"});
+                break;
+            default:
+                break; // the extension mark and the later cards' fields: their attachments'
+            }
+        }
+    }
+    for (std::size_t a = 0; a < cardreader::kAxisCount; ++a) {
+        const std::string axis(cardreader::axis_name(static_cast<cardreader::Axis>(a)));
+        for (int p = 0; p < 5; ++p) {
+            wires.push_back({layout.sequence_first_column.at(a) + p,
+                             {12},
+                             fmt::format("{} sequence position {}", axis, p + 1),
+                             fmt::format("{}.sequence_switch_224.contact_{}", axis, 226 + 2 * p)});
+        }
+    }
+    std::sort(wires.begin(), wires.end(),
+              [](const BrushWire& x, const BrushWire& y) { return x.column < y.column; });
+    return wires;
 }
 
 } // namespace parsons::relaylogic

@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace parsons::relaylogic {
@@ -39,5 +40,23 @@ struct SensedCard {
 // decoded carries the bad punch.
 SensedCard sense_card(const cardreader::Card& card, const cardreader::CardLayout& layout,
                       bool refuse_double_punch);
+
+// The brushes' wiring for a motion card (Figs. 10, 13): what a hole in a column picks, as the
+// exhibit's reader view draws it (web/reader.js). A digit column of a slow-down or the stop picks
+// relay d of its absolute bank (350 inches .. 356 thousandths), of the check its incremental
+// bank (324 inches .. 318 thousandths); the speed column's holes step speed switch 236 (the
+// second bank of brushes), the motion column sets reversing control 214, the spindle column
+// control 165, the card number goes to the card-number check, and a sequence mark (row 12)
+// closes contact 226-234 of sequence switch 224. `picks` is the signal's scope.name as the
+// cabinet defines it, "#" standing for the row's digit where each row picks its own relay.
+// tests/card_reader_view_test.cpp holds it to the machine: every hole's relay picks, and
+// nothing picks without a hole.
+struct BrushWire {
+    int column = 0;
+    std::vector<int> rows; // the rows by their printed names (12, 11, 0 .. 9)
+    std::string field;     // "table stop, inches"
+    std::string picks;     // "table.absolute_storage_350.relay_#"
+};
+std::vector<BrushWire> brush_wiring(const cardreader::CardLayout& layout);
 
 } // namespace parsons::relaylogic

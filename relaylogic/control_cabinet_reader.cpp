@@ -79,6 +79,9 @@ void ControlCabinet::feed() {
 }
 
 void ControlCabinet::first_bank() {
+    if (tracer_.observer() != nullptr) {
+        tracer_.observer()->on_brushes(now_, cards_read_, *card_, layout_);
+    }
     SensedCard sensed = sense_card(*card_, layout_, profile_.refuse_double_punch);
     if (!sensed.decoded) {
         const auto& bad = *sensed.decoded.bad_punch;

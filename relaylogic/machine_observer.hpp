@@ -14,6 +14,11 @@
 #include <string>
 #include <vector>
 
+namespace parsons::cardreader {
+class Card;
+struct CardLayout;
+} // namespace parsons::cardreader
+
 namespace parsons::relaylogic {
 
 using SignalId = std::uint32_t;
@@ -116,6 +121,12 @@ public:
     // axes stand, inches. Only to an observer that follows motion; a replay starts its picture
     // there, so that every instant before the first motion has one.
     virtual void on_run_start(double /*seconds*/, const std::array<double, 5>& /*real_in*/) {}
+    // The first bank of brushes senses a card (deck position 1-based; a step of five cards as
+    // the one card they make): its holes, and the layout its columns are wired by. Before the
+    // card's checks, so a card the reader then refuses is seen too.
+    virtual void on_brushes(double /*seconds*/, std::int64_t /*index*/,
+                            const cardreader::Card& /*card*/,
+                            const cardreader::CardLayout& /*layout*/) {}
     // A card was read and decoded (deck position 1-based).
     virtual void on_card(double /*seconds*/, std::int64_t /*index*/,
                          const cardreader::CardOrders&) {}
@@ -184,6 +195,12 @@ public:
     void on_run_start(double t, const std::array<double, 5>& real) override {
         for (auto* o : observers_) {
             o->on_run_start(t, real);
+        }
+    }
+    void on_brushes(double t, std::int64_t index, const cardreader::Card& card,
+                    const cardreader::CardLayout& layout) override {
+        for (auto* o : observers_) {
+            o->on_brushes(t, index, card, layout);
         }
     }
     void on_card(double t, std::int64_t index, const cardreader::CardOrders& orders) override {

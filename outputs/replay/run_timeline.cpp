@@ -2,7 +2,9 @@
 
 #include "axes/json_text.hpp"
 #include "axes/lead_screw_axis.hpp"
+#include "cardreader/layout.hpp"
 #include "cardreader/orders.hpp"
+#include "relaylogic/card_reader.hpp"
 
 #include <fmt/format.h>
 
@@ -332,6 +334,29 @@ void RunTimeline::on_card(double t, std::int64_t index, const cardreader::CardOr
     out += '}';
 }
 
+void RunTimeline::on_brushes(double t, std::int64_t index, const cardreader::Card& card,
+                             const cardreader::CardLayout& layout) {
+    if (brush_wiring_text_.empty()) {
+        nlohmann::json wires = nlohmann::json::array();
+        for (const relaylogic::BrushWire& w : relaylogic::brush_wiring(layout)) {
+            wires.push_back(
+                {{"column", w.column}, {"rows", w.rows}, {"field", w.field}, {"picks", w.picks}});
+        }
+        brush_wiring_text_ = wires.dump();
+    }
+    // The holes: three hex digits a column, column 1 first, the column's Hollerith word (row 12
+    // in bit 11 .. row 9 in bit 0, cardreader/card.hpp).
+    std::string& out = brushes_text_;
+    out += brushes_text_.empty() ? "[" : ",";
+    out += "{\"holes\":\"";
+    for (const cardreader::ColumnWord word : card.columns()) {
+        fmt::format_to(std::back_inserter(out), "{:03x}", static_cast<unsigned>(word));
+    }
+    out += fmt::format("\",\"index\":{},\"t\":", index);
+    put_number(out, t);
+    out += '}';
+}
+
 void RunTimeline::on_stop(double t, const relaylogic::StopInfo& stop) {
     stop_ = {{"t", t},
              {"reason", relaylogic::stop_reason_name(stop.reason)},
@@ -376,6 +401,12 @@ std::string RunTimeline::cards_text() const {
     return cards_text_.empty() ? "[]" : cards_text_ + "]";
 }
 
+std::string RunTimeline::record_texts() const {
+    return "\"cards\":" + cards_text() +
+           ",\"brushes\":" + (brushes_text_.empty() ? "[]" : brushes_text_ + "]") +
+           ",\"brush_wiring\":" + (brush_wiring_text_.empty() ? "[]" : brush_wiring_text_) + ",";
+}
+
 nlohmann::json RunTimeline::header_fields() const {
     nlohmann::json axes = nlohmann::json::array();
     for (std::size_t i = 0; i < cardreader::kAxisCount; ++i) {
@@ -397,7 +428,7 @@ nlohmann::json RunTimeline::header_fields() const {
 std::string RunTimeline::page_header_text() const {
     std::string text =
         header_fields().dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-    text.replace(0, 1, "{\"cards\":" + cards_text() + ",");
+    text.replace(0, 1, "{" + record_texts());
     return text;
 }
 
@@ -407,7 +438,7 @@ std::string RunTimeline::header_text(bool with_signals) const {
     std::string text = axes::json_text(header_fields());
     text.replace(0, 1,
                  (with_signals ? "{\"signals\":" + signals_text() + "," : std::string("{")) +
-                     "\"cards\":" + axes::shortest_numbers(cards_text()) + ",");
+                     axes::shortest_numbers(record_texts()));
     return text;
 }
 

@@ -41,6 +41,9 @@ public:
     void on_motion(double t, const std::array<double, 5>& real_in) override;
     // The first motion record: where the axes stand as the run begins.
     void on_run_start(double t, const std::array<double, 5>& real_in) override;
+    // The card under the brushes: its holes (web/reader.js), and once, the wiring they pick by.
+    void on_brushes(double t, std::int64_t index, const cardreader::Card& card,
+                    const cardreader::CardLayout& layout) override;
     void on_card(double t, std::int64_t index, const cardreader::CardOrders& orders) override;
     void on_stop(double t, const relaylogic::StopInfo& stop) override;
     void on_condition(double t, const relaylogic::ConditionEvent& event) override;
@@ -87,6 +90,9 @@ private:
     std::string signals_text_;
     std::uint64_t signals_hash_ = 0xcbf29ce484222325ULL; // FNV-1a over every definition
     std::string cards_text_;
+    std::string brushes_text_;        // {"holes":..,"index":..,"t":..} a card the brushes sensed
+    std::string brush_wiring_text_;   // relaylogic::brush_wiring of the reader's layout
+    std::string record_texts() const; // "cards":[..],"brushes":[..],"brush_wiring":[..],
     nlohmann::json conditions_ = nlohmann::json::array();
     nlohmann::json stop_;
     nlohmann::json design_;
