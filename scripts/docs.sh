@@ -23,7 +23,9 @@ for pair in first-view-laptop:web-first-view first-view-phone:web-phone tour-lap
             part-info-laptop:web-part-info error-field-laptop:web-error-field \
             mill-start:web-mill-start mill-mid:web-mill-mid mill-phone:web-mill-phone \
             tour-phone-one-screen:web-tour-phone error-words-laptop:web-error-words \
-            voice-plain-laptop:web-voice; do
+            voice-plain-laptop:web-voice reader-live-page:web-reader reader-phone:web-reader-phone \
+            circuit-travel:web-circuit-travel circuit-phone:web-circuit-phone \
+            circuit-tour:web-circuit-tour circuit-tour-phone:web-circuit-tour-phone; do
     cp "build-wasm/browser-test/${pair%%:*}.png" "docs/images/${pair##*:}.png"
 done
 git status --short README.md docs/

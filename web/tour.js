@@ -15,54 +15,63 @@ const ParsonsTour = (() => {
       numeral: "134", scope: "cabinet", names: ["card_reader_134.reading", "card_reader_134.card"],
       when: { name: "card_reader_134.reading", value: 1 },
       title: "The card reader and its brushes",
+      path: ["reader-abs", "reader-inc", "reader-s236"], // the wires it lights in the circuit (web/circuit.js)
       words: (c) => `Card ${c.card} goes into reader 134. Brushes press on the card; where a hole is punched a brush touches the roller beneath and closes a circuit. That is how the machine reads a number: one circuit for each hole.`,
     },
     {
       numeral: "350", scope: "axis", banks: ["absolute_storage_350", "absolute_storage_352", "absolute_storage_354", "absolute_storage_356"],
       when: { bank: "absolute_storage_35", value: 1 },
       title: "The storage banks remember the numbers",
+      path: ["reader-abs", "abs-cmp1"], // the wires it lights in the circuit (web/circuit.js)
       words: (c) => `The holes close holding relays in banks 350–356, one bank for each digit (inches, tenths, hundredths, thousandths). For the ${c.axis} they hold where to slow down and where to stop. A relay stays closed by its own holding coil after the card has moved on.`,
     },
     {
       numeral: "318", scope: "axis", banks: ["incremental_storage_318", "incremental_storage_320", "incremental_storage_322", "incremental_storage_324"],
       when: { bank: "incremental_storage_3", value: 1 },
       title: "The check number is stored too",
+      path: ["reader-inc", "inc-cmp2"], // the wires it lights in the circuit (web/circuit.js)
       words: (c) => `Banks 318–324 hold the card's check number for the ${c.axis}: how far this move goes. A second counter will count the move from zero, so that at the stop two independent counts can be compared.`,
     },
     {
       numeral: "236", scope: "axis", names: ["speed_switch_236", "contact_238"],
       when: { name: "speed_switch_236", from: 0 },
       title: "The speed switch is set",
+      path: ["reader-s236", "s236-motor"], // the wires it lights in the circuit (web/circuit.js)
       words: (c) => `A second bank of brushes reads the speed columns. Each punched speed sends one impulse to speed switch 236 of the ${c.axis}, which leaves "off" and steps to the start speed. When the sequence lets this axis go, its motor runs at that speed.`,
     },
     {
       numeral: "256", scope: "axis", names: ["absolute_comparer_122a", "channel_257", "stepping_relay_256", "speed_switch_236"],
       when: { name: "stepping_relay_256", value: 1 },
       title: "A comparer slows the axis down",
+      path: ["s236-motor", "motor-screw", "screw-comm", "comm-counters", "counters-cmp1", "abs-cmp1", "cmp1-ch257", "ch257-r256", "r256-s236"], // the wires it lights in the circuit (web/circuit.js)
       words: (c) => `The lead screw turns; every 0.001 inch a commutator sends an impulse and the counters step on. When the counters read the slow-down number held in the banks, comparer 122′ conducts and sends an impulse through channel 257 to stepping relay 256, which steps speed switch 236 one speed slower.`,
     },
     {
       numeral: "258", scope: "axis", names: ["delay_device_258", "stepping_relay_256"],
       when: { name: "delay_device_258", value: 1 },
       title: "The delay keeps it to one step",
+      path: ["cmp1-ch257", "ch257-d258", "d258-r256", "r256-s236"], // the wires it lights in the circuit (web/circuit.js)
       words: () => `Delay device 258 opens the channel to the stepping relay for a moment after each step, so that one closing of the comparer moves the speed switch only one position.`,
     },
     {
       numeral: "270", scope: "axis", names: ["speed_switch_236", "contact_238", "lamp_270", "lamp_272", "incremental_comparer_122b"],
       when: { name: "speed_switch_236", value: 0 },
       title: "The stop, and the check",
+      path: ["comm-counters", "comm-inccount", "counters-cmp1", "inccount-cmp2", "cmp1-c238", "cmp2-c238", "s236-c238", "c238-b266", "b266-m204"], // the wires it lights in the circuit (web/circuit.js)
       words: (c) => `At the stop number the last impulse steps switch 236 to "off": the ${c.axis}'s motor stops. Now both comparers must agree: lamp 270 shows the position equals the stop, lamp 272 that the counted move equals the check number. If they disagreed, indicator 268 would light and the machine would stop.`,
     },
     {
       numeral: "280", scope: "cabinet", names: ["stepping_shaft_280", "motor_278", "channel_274", "unit_284"],
       when: { name: "stepping_shaft_280" },
       title: "The stepping shaft starts the next axes",
+      path: ["s236-c238", "c238-ch274"], // the wires it lights in the circuit (web/circuit.js)
       words: () => `Each axis that stops sends an impulse to motor 278, which turns stepping shaft 280 one step. The shaft's rotary members close the sequence contacts of the next step, so the axes punched for it start: this is how the card says which axes move first.`,
     },
     {
       numeral: "292", scope: "cabinet", names: ["zeroizing_contact_290", "zeroizing_circuit_292", "channel_294", "channel_298", "channel_300", "channel_302", "channel_304"],
       when: { name: "zeroizing_circuit_292", value: 1 },
       title: "Zeroizing: ready for the next card",
+      path: ["ch274-z292", "z292-abs", "z292-inccount", "z292-reader"], // the wires it lights in the circuit (web/circuit.js)
       words: () => `When the shaft has gone all the way round it closes contact 290: zeroizing circuit 292 drops every holding relay (channel 294), homes the check counters (298), opens the sequence contacts (300), resets the shaft's circuit (302) and feeds the next card (304).`,
     },
   ];
@@ -170,6 +179,7 @@ const ParsonsTour = (() => {
       box.dataset.stop = String(n);
       box.dataset.numeral = stop.numeral;
       box.hidden = false;
+      if (this.v.circuit) this.v.circuit.lightPath(stop.path, r.axis);
       this.highlight(stop); // after the caption is shown: on a phone it is a sheet to keep clear of
       (next.disabled ? this.doc.getElementById("tour-end") : next).focus({ preventScroll: true });
     }
@@ -209,6 +219,7 @@ const ParsonsTour = (() => {
 
     end() {
       for (const old of this.doc.querySelectorAll("#panel .tour-here")) old.classList.remove("tour-here");
+      if (this.v.circuit) this.v.circuit.lightPath([]);
       this.box.hidden = true;
       this.active = false;
       this.doc.body.classList.remove("touring");

@@ -112,6 +112,11 @@ const ParsonsViewer = (() => {
       if (typeof ParsonsTour !== "undefined") this.tour = new ParsonsTour.Tour(this, doc);
       const millBox = doc.getElementById("mill");
       if (typeof ParsonsMill !== "undefined" && millBox) this.mill = new ParsonsMill.Mill(millBox, this);
+      // The card in the reader (web/reader.js) and one axis's circuit (web/circuit.js).
+      const readerBox = doc.getElementById("reader-view");
+      if (typeof ParsonsReader !== "undefined" && readerBox) this.reader = new ParsonsReader.Reader(readerBox, this);
+      const circuitBox = doc.getElementById("circuit-view");
+      if (typeof ParsonsCircuit !== "undefined" && circuitBox) this.circuit = new ParsonsCircuit.Circuit(circuitBox, this);
     }
 
     // The value signal change k found: the change before it of the same signal, or the initial.
@@ -150,6 +155,8 @@ const ParsonsViewer = (() => {
       this.$("scrub").max = String(this.finish);
       this.prepareMachine();
       if (this.mill) this.mill.build();
+      if (this.reader) this.reader.build();
+      if (this.circuit) this.circuit.build();
       this.wholePath = null;
       const record = arrays;
       setTimeout(() => {
@@ -566,6 +573,8 @@ const ParsonsViewer = (() => {
 
     renderAll() {
       this.cabinet.renderAll();
+      if (this.circuit) this.circuit.renderAll();
+      if (this.reader) this.reader.update(this.t);
       this.dirty = new Set();
       this.allDirty = false;
       this.renderState();
@@ -577,6 +586,8 @@ const ParsonsViewer = (() => {
         return;
       }
       this.cabinet.render(this.dirty);
+      if (this.circuit) this.circuit.changed(this.dirty);
+      if (this.reader) this.reader.update(this.t);
       this.dirty.clear();
       this.renderState();
     }

@@ -73,6 +73,8 @@ std::string replay_page(const RunTimeline& timeline, const nlohmann::json& repor
     fill(page, "/*tour-js*/", web_assets::tour_js);
     fill(page, "/*viewer-js*/", web_assets::viewer_js);
     fill(page, "/*mill-js*/", web_assets::mill_js);
+    fill(page, "/*reader-js*/", web_assets::reader_js);
+    fill(page, "/*circuit-js*/", web_assets::circuit_js);
     fill(page, "/*cabinet-js*/", web_assets::cabinet_js);
     fill(page, "/*parts-js*/", web_assets::parts_js);
     fill(page, "<!--viewer-->",

@@ -349,8 +349,11 @@ void RunTimeline::on_brushes(double t, std::int64_t index, const cardreader::Car
     std::string& out = brushes_text_;
     out += brushes_text_.empty() ? "[" : ",";
     out += "{\"holes\":\"";
+    static constexpr char kHex[] = "0123456789abcdef";
     for (const cardreader::ColumnWord word : card.columns()) {
-        fmt::format_to(std::back_inserter(out), "{:03x}", static_cast<unsigned>(word));
+        out += kHex[(word >> 8) & 0xf];
+        out += kHex[(word >> 4) & 0xf];
+        out += kHex[word & 0xf];
     }
     out += fmt::format("\",\"index\":{},\"t\":", index);
     put_number(out, t);
