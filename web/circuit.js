@@ -9,7 +9,6 @@
 "use strict";
 
 const ParsonsCircuit = (() => {
-  const NS = "http://www.w3.org/2000/svg";
   const W = 660, H = 330;
   const FLASH_MS = 450; // how long a wire stays lit after a change came along it (wall time)
 
@@ -47,12 +46,7 @@ const ParsonsCircuit = (() => {
   ];
   const BOX_H = 34;
 
-  function svg(tag, attrs, parent) {
-    const e = document.createElementNS(NS, tag);
-    for (const [k, v] of Object.entries(attrs || {})) e.setAttribute(k, v);
-    if (parent) parent.appendChild(e);
-    return e;
-  }
+  const svg = ParsonsCabinet.svg; // the page's SVG element maker (web/cabinet.js)
 
   class Circuit {
     constructor(box, viewer) {

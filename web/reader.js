@@ -8,17 +8,11 @@
 "use strict";
 
 const ParsonsReader = (() => {
-  const NS = "http://www.w3.org/2000/svg";
   const ROWS = [12, 11, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9]; // top edge down (cardreader/card.hpp)
   const CW = 8, RH = 13, X0 = 40, Y0 = 26;            // a column's width, a row's height, margins
   const W = X0 + 80 * CW + 12, H = Y0 + 12 * RH + 40;
 
-  function svg(tag, attrs, parent) {
-    const e = document.createElementNS(NS, tag);
-    for (const [k, v] of Object.entries(attrs || {})) e.setAttribute(k, v);
-    if (parent) parent.appendChild(e);
-    return e;
-  }
+  const svg = ParsonsCabinet.svg; // the page's SVG element maker (web/cabinet.js)
 
   class Reader {
     constructor(box, viewer) {
