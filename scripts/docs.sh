@@ -21,7 +21,7 @@ scripts/build-web.sh
 node tests/js/browser_test.js build-wasm/site build/cli/parsons build-wasm/browser-test >/dev/null
 for pair in first-view-laptop:web-first-view first-view-phone:web-phone tour-laptop:web-tour \
             part-info-laptop:web-part-info error-field-laptop:web-error-field \
-            mill-start:web-mill-start mill-mid:web-mill-mid mill-phone:web-mill-phone \
+            mill-start:web-mill-start mill-mid:web-mill-mid mill-phone:web-mill-phone mill-phone-start:web-mill-phone-start \
             tour-phone-one-screen:web-tour-phone error-words-laptop:web-error-words \
             voice-plain-laptop:web-voice reader-live-page:web-reader reader-phone:web-reader-phone \
             circuit-travel:web-circuit-travel circuit-phone:web-circuit-phone \

@@ -63,6 +63,8 @@ module.exports = async function mill(t) {
 
   // On the phone: the mill at the top of the machine, mid-cut.
   const phone = await t.open('phone');
+  await phone.evaluate(() => { window.parsonsViewer.seek(0); document.getElementById('mill').scrollIntoView(); });
+  await t.shot(phone, 'mill-phone-start');
   await phone.evaluate(() => { const v = window.parsonsViewer; v.seek(v.finish * 0.5); document.getElementById('mill').scrollIntoView(); });
   const phoneMill = await millNow(phone);
   check(phoneMill.table === phoneMill.tableCell && phoneMill.cut > 10, 'phone: the mill follows the record', JSON.stringify(phoneMill));
