@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstring>
 #include <iterator>
+#include <map>
 #include <stdexcept>
 
 namespace parsons::cli {
@@ -125,7 +126,8 @@ void put_inches(std::string& out, std::int64_t thousandths) {
         out += '-';
         thousandths = -thousandths;
     }
-    fmt::format_to(std::back_inserter(out), "{}.", thousandths / 1000);
+    out += std::to_string(thousandths / 1000);
+    out += '.';
     int rest = static_cast<int>(thousandths % 1000);
     if (rest == 0) {
         out += '0';
@@ -314,8 +316,10 @@ void RunTimeline::on_card(double t, std::int64_t index, const cardreader::CardOr
                 }
             }
             put_inches(out, a.stop);
-            out += fmt::format("],\"motion\":\"{}\",\"speed\":{},\"stop_in\":",
-                               a.motion == cardreader::Motion::forward ? "+" : "-", a.start_speed);
+            out += a.motion == cardreader::Motion::forward ? "],\"motion\":\"+\",\"speed\":"
+                                                           : "],\"motion\":\"-\",\"speed\":";
+            out += std::to_string(a.start_speed);
+            out += ",\"stop_in\":";
             put_inches(out, a.stop);
             out += '}';
         }
@@ -337,12 +341,21 @@ void RunTimeline::on_card(double t, std::int64_t index, const cardreader::CardOr
 void RunTimeline::on_brushes(double t, std::int64_t index, const cardreader::Card& card,
                              const cardreader::CardLayout& layout) {
     if (brush_wiring_text_.empty()) {
-        nlohmann::json wires = nlohmann::json::array();
-        for (const relaylogic::BrushWire& w : relaylogic::brush_wiring(layout)) {
-            wires.push_back(
-                {{"column", w.column}, {"rows", w.rows}, {"field", w.field}, {"picks", w.picks}});
+        // The same for every run on a layout: written once a layout (a thread's own, for a
+        // process that runs decks on several).
+        thread_local std::map<std::string, std::string> written;
+        auto [at, is_new] = written.try_emplace(layout.name);
+        if (is_new) {
+            nlohmann::json wires = nlohmann::json::array();
+            for (const relaylogic::BrushWire& w : relaylogic::brush_wiring(layout)) {
+                wires.push_back({{"column", w.column},
+                                 {"rows", w.rows},
+                                 {"field", w.field},
+                                 {"picks", w.picks}});
+            }
+            at->second = wires.dump();
         }
-        brush_wiring_text_ = wires.dump();
+        brush_wiring_text_ = at->second;
     }
     // The holes: three hex digits a column, column 1 first, the column's Hollerith word (row 12
     // in bit 11 .. row 9 in bit 0, cardreader/card.hpp).
