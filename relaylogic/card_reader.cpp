@@ -1,4 +1,6 @@
 #include "relaylogic/card_reader.hpp"
+#include "relaylogic/sequence_control.hpp"
+#include "relaylogic/storage.hpp"
 
 #include <fmt/format.h>
 
@@ -106,14 +108,14 @@ std::vector<BrushWire> brush_wiring(const cardreader::CardLayout& layout) {
             case FieldKind::slow_down_1:
             case FieldKind::slow_down_2:
             case FieldKind::stop:
-                wires.push_back(
-                    {column, digits, label + ", " + kPlaces.at(place),
-                     fmt::format("{}.absolute_storage_{}.relay_#", scope, 350 + 2 * place)});
+                wires.push_back({column, digits, label + ", " + kPlaces.at(place),
+                                 fmt::format("{}.{}_{}.relay_#", scope, kAbsoluteStorageName,
+                                             kAbsoluteBanks.at(place))});
                 break;
             case FieldKind::check:
-                wires.push_back(
-                    {column, digits, label + ", " + kPlaces.at(place),
-                     fmt::format("{}.incremental_storage_{}.relay_#", scope, 324 - 2 * place)});
+                wires.push_back({column, digits, label + ", " + kPlaces.at(place),
+                                 fmt::format("{}.{}_{}.relay_#", scope, kIncrementalStorageName,
+                                             kIncrementalBanks.at(place))});
                 break;
             case FieldKind::card_number:
                 wires.push_back({column, digits, label, "cabinet.card_number_check"});
@@ -138,7 +140,8 @@ std::vector<BrushWire> brush_wiring(const cardreader::CardLayout& layout) {
             wires.push_back({layout.sequence_first_column.at(a) + p,
                              {12},
                              fmt::format("{} sequence position {}", axis, p + 1),
-                             fmt::format("{}.sequence_switch_224.contact_{}", axis, 226 + 2 * p)});
+                             fmt::format("{}.sequence_switch_224.contact_{}", axis,
+                                         kSequenceContacts.at(static_cast<std::size_t>(p)))});
         }
     }
     std::sort(wires.begin(), wires.end(),

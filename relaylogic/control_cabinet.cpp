@@ -145,20 +145,15 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
     // axes' own impulses can come between them: no attachment's plant or clock to report in
     // between (the spindle motor coming to speed is waited for).
     const bool recording = !jumping_ && observer != nullptr;
-    const bool follows_motion = observer != nullptr && observer->follows_motion();
-    follows_motion_ = follows_motion;
+    follows_motion_ = observer != nullptr && observer->follows_motion();
     for (const auto& a : attachments_) {
         a->start(*this);
     }
     if (resuming_) {
         resume_holds();
     }
-    if (follows_motion) {
-        std::array<double, 5> real{};
-        for (std::size_t i = 0; i < circuits_.size(); ++i) {
-            real.at(i) = circuits_[i]->plant.real_in_at(now_);
-        }
-        observer->on_run_start(now_, real);
+    if (follows_motion_) {
+        observer->on_run_start(now_, real_positions(now_));
     }
     schedule(now_, EventKind::feed);
     while (true) {
@@ -177,7 +172,7 @@ RunResult ControlCabinet::run(cardreader::CardSource& deck) {
             }
             break;
         }
-        advance(t, follows_motion);
+        advance(t);
         while (!queue_.empty() && queue_.top().t <= t) {
             const Event e = queue_.top();
             queue_.pop();
@@ -243,7 +238,7 @@ inline double ControlCabinet::next_event_time() {
 
 // Machine time comes to t: the quiet impulses before it, the attachments' plants and clocks,
 // then every axis's event due at t.
-inline void ControlCabinet::advance(double t, bool follows_motion) {
+inline void ControlCabinet::advance(double t) {
     now_ = t;
     tracer_.set_time(t);
     if (jumping_) {
@@ -279,17 +274,21 @@ inline void ControlCabinet::advance(double t, bool follows_motion) {
     if (clock_running()) {
         clock_->clock_edges_at(*this, t);
     }
-    if (moved && follows_motion) {
+    if (moved && follows_motion_) {
         report_motion(t);
     }
 }
 
-void ControlCabinet::report_motion(double t) {
+std::array<double, 5> ControlCabinet::real_positions(double t) const {
     std::array<double, 5> real{};
     for (std::size_t i = 0; i < circuits_.size(); ++i) {
         real.at(i) = circuits_[i]->plant.real_in_at(t);
     }
-    tracer_.observer()->on_motion(t, real);
+    return real;
+}
+
+void ControlCabinet::report_motion(double t) {
+    tracer_.observer()->on_motion(t, real_positions(t));
 }
 
 // The phase of the card cycle an event belongs to, for the benchmark's clock.

@@ -181,7 +181,7 @@ private:
     void resume_holds();
     // Called once a loop, only from run(): inlined into it, as when they were its own lines.
     [[gnu::always_inline]] double next_event_time();
-    [[gnu::always_inline]] void advance(double t, bool follows_motion);
+    [[gnu::always_inline]] void advance(double t);
     bool clock_running() const { return clock_ != nullptr && running(); }
     bool attachment_holds() const {
         for (const Attachment* a : holders_) {
@@ -226,7 +226,9 @@ private:
     // impulses are still taken straight from the plants, each reported as advance() reports it.
     template <bool Recording>
     void run_impulses();
-    // The five axes' real positions at t, to the observer that follows motion.
+    // The five axes' real positions at t (inches), and the same to the observer that follows
+    // motion.
+    std::array<double, 5> real_positions(double t) const;
     void report_motion(double t);
     // Impulse level: an axis's quiet impulses still to come, and when to ask again.
     struct QuietRun {

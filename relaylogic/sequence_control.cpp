@@ -3,11 +3,11 @@
 namespace parsons::relaylogic {
 
 SequenceSwitch::SequenceSwitch(Tracer& tracer, const std::string& scope) : tracer_(tracer) {
-    const std::array<const char*, 5> numerals = {"226", "228", "230", "232", "234"};
     for (std::size_t i = 0; i < 5; ++i) {
+        const std::string numeral = std::to_string(kSequenceContacts.at(i));
         signals_.at(i) = tracer.define(
-            scope, std::string("sequence_switch_224.contact_") + numerals.at(i),
-            "sequence switch 224 contact for position " + std::to_string(i + 1), numerals.at(i), 1);
+            scope, "sequence_switch_224.contact_" + numeral,
+            "sequence switch 224 contact for position " + std::to_string(i + 1), numeral, 1);
     }
 }
 

@@ -27,6 +27,10 @@
 
 namespace parsons::relaylogic {
 
+// The contacts of sequence switch 224 by sequence position 1..5 (the reader's wiring names them
+// too, relaylogic/card_reader.cpp).
+inline constexpr std::array<int, 5> kSequenceContacts = {226, 228, 230, 232, 234};
+
 class SequenceSwitch {
 public:
     SequenceSwitch(Tracer& tracer, const std::string& scope);

@@ -57,10 +57,14 @@ std::vector<int> HoldingRelayBank::closed_relays() const {
 }
 
 AbsoluteStorage::AbsoluteStorage(Tracer& tracer, const std::string& scope, bool separate)
-    : banks_{HoldingRelayBank(tracer, scope, "350", "absolute_storage"),
-             HoldingRelayBank(tracer, scope, "352", "absolute_storage"),
-             HoldingRelayBank(tracer, scope, "354", "absolute_storage"),
-             HoldingRelayBank(tracer, scope, "356", "absolute_storage")},
+    : banks_{HoldingRelayBank(tracer, scope, std::to_string(kAbsoluteBanks[0]),
+                              kAbsoluteStorageName),
+             HoldingRelayBank(tracer, scope, std::to_string(kAbsoluteBanks[1]),
+                              kAbsoluteStorageName),
+             HoldingRelayBank(tracer, scope, std::to_string(kAbsoluteBanks[2]),
+                              kAbsoluteStorageName),
+             HoldingRelayBank(tracer, scope, std::to_string(kAbsoluteBanks[3]),
+                              kAbsoluteStorageName)},
       separate_registers_(separate) {}
 
 void AbsoluteStorage::store(std::span<const int> numbers) {
@@ -85,10 +89,14 @@ bool AbsoluteStorage::conducts_separately(const Digits& counter) const {
 }
 
 IncrementalStorage::IncrementalStorage(Tracer& tracer, const std::string& scope)
-    : banks_{HoldingRelayBank(tracer, scope, "324", "incremental_storage"),
-             HoldingRelayBank(tracer, scope, "322", "incremental_storage"),
-             HoldingRelayBank(tracer, scope, "320", "incremental_storage"),
-             HoldingRelayBank(tracer, scope, "318", "incremental_storage")} {}
+    : banks_{HoldingRelayBank(tracer, scope, std::to_string(kIncrementalBanks[0]),
+                              kIncrementalStorageName),
+             HoldingRelayBank(tracer, scope, std::to_string(kIncrementalBanks[1]),
+                              kIncrementalStorageName),
+             HoldingRelayBank(tracer, scope, std::to_string(kIncrementalBanks[2]),
+                              kIncrementalStorageName),
+             HoldingRelayBank(tracer, scope, std::to_string(kIncrementalBanks[3]),
+                              kIncrementalStorageName)} {}
 
 void IncrementalStorage::store(int check) {
     const Digits d = value_digits(check);

@@ -19,6 +19,7 @@
 
 #include "relaylogic/counters.hpp"
 
+#include <array>
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
@@ -26,6 +27,14 @@
 #include <vector>
 
 namespace parsons::relaylogic {
+
+// The banks by digit place, inches first: absolute 350-356, incremental 324-318 (Fig. 12), and
+// the names their relays' signals carry ("absolute_storage_352.relay_7"). The reader's wiring
+// (relaylogic/card_reader.cpp, brush_wiring) names the relays by these.
+inline constexpr std::array<int, 4> kAbsoluteBanks = {350, 352, 354, 356};
+inline constexpr std::array<int, 4> kIncrementalBanks = {324, 322, 320, 318};
+inline constexpr const char* kAbsoluteStorageName = "absolute_storage";
+inline constexpr const char* kIncrementalStorageName = "incremental_storage";
 
 class HoldingRelayBank {
 public:

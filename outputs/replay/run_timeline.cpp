@@ -290,14 +290,18 @@ void RunTimeline::on_card(double t, std::int64_t index, const cardreader::CardOr
         kind = "tap";
         break;
     case cardreader::CardKind::motion: {
-        std::array<std::size_t, cardreader::kAxisCount> by_name{};
-        for (std::size_t i = 0; i < by_name.size(); ++i) {
-            by_name[i] = i;
-        }
-        std::sort(by_name.begin(), by_name.end(), [](std::size_t a, std::size_t b) {
-            return cardreader::axis_name(static_cast<cardreader::Axis>(a)) <
-                   cardreader::axis_name(static_cast<cardreader::Axis>(b));
-        });
+        // The axes in their names' order, worked out once.
+        static const std::array<std::size_t, cardreader::kAxisCount> by_name = [] {
+            std::array<std::size_t, cardreader::kAxisCount> order{};
+            for (std::size_t i = 0; i < order.size(); ++i) {
+                order[i] = i;
+            }
+            std::sort(order.begin(), order.end(), [](std::size_t a, std::size_t b) {
+                return cardreader::axis_name(static_cast<cardreader::Axis>(a)) <
+                       cardreader::axis_name(static_cast<cardreader::Axis>(b));
+            });
+            return order;
+        }();
         out += "\"axes\":{";
         for (const std::size_t i : by_name) {
             const auto& a = orders.axes[i];
