@@ -32,6 +32,7 @@ MachineProfile extended_profile() {
     p.condition_cards = true;
     p.press_sync = true;
     p.spindle_sync = true;
+    p.contouring = true;
     return p;
 }
 

@@ -184,6 +184,27 @@ struct SpindleSyncProfile {
     }
 };
 
+// Contouring (an addition after EP 0636958, Black & Decker): three stepper-motor axes X, Y, Z
+// driven by the attachment's interpolator along segment cards, and the control cycle that
+// decides at each junction of two segments whether to pass at the nominal speed or to slow to a
+// minimum (docs/contouring.md). Rates are pulses (steps) a second.
+enum class JunctionPolicy : std::uint8_t {
+    rule,    // claim 1: pass unless the motors' speed parameters differ by more than the maximum
+    pass,    // the rule off: every junction at the nominal speeds
+    minimum, // the prior art the seed improves on: every junction slowed to the minimum speed
+};
+
+struct ContourProfile {
+    int steps_per_in = 1000;                 // one step a thousandth, the card's resolution
+    double pull_in_steps_per_s = 100.0;      // a change of pulse rate the motor follows at once
+    double acceleration_steps_per_s2 = 2000; // how fast its rotor can change its rate
+    double ramp_steps_per_s2 = 1000;         // the interpolator's ramps (at most the above)
+    double max_rate_change_steps_per_s = 100; // claim 1's maximum difference
+    double minimum_in_per_min = 0.0;         // claims 1, 4: the speed a slowed junction is met at
+    JunctionPolicy junctions = JunctionPolicy::rule;
+    bool short_segment_rule = true; // claims 7, 8: slow before a segment shorter than the ramp
+};
+
 // What the counters measure (docs/design-rules.md rule 3).
 enum class MeasuringChain : std::uint8_t {
     instrument_shaft_74, // the patent: the part's position, through shaft 74 and follower 76
@@ -281,6 +302,11 @@ struct MachineProfile {
     // parsons-extended.
     bool spindle_sync = false;
     SpindleSyncProfile spindle;
+    // Addition after EP 0636958 (Black & Decker): the contouring attachment (stepper axes, the
+    // interpolator, the junction rule) and segment cards. Off in parsons-1952 and parsons-safe
+    // (a deck with a segment card is refused), on in parsons-extended.
+    bool contouring = false;
+    ContourProfile contour;
     // The cutter radius of a tool, if the changer holds it.
     std::optional<double> tool_radius_in(int tool) const {
         for (const Tool& t : tools) {

@@ -1,4 +1,6 @@
 #include "axes/profile_json.hpp"
+
+#include "axes/contour_json.hpp"
 #include "axes/profile_values.hpp"
 
 #include "axes/json_text.hpp"
@@ -443,7 +445,7 @@ MachineProfile profile_from_json(const std::string& json_text, MachineProfile p)
             }
             p.separate_registers = value.get<bool>();
         } else if (apply_reading(p, key, value) || apply_press_sync(p, key, value) ||
-                   apply_spindle_sync(p, key, value)) {
+                   apply_spindle_sync(p, key, value) || apply_contouring(p, key, value)) {
             // an interpretation or an addition (above)
         } else {
             throw ProfileError(fmt::format("{}: unknown key", key));
@@ -479,6 +481,7 @@ std::string profile_to_json(const MachineProfile& p) {
     put_readings(j, p);
     put_press_sync(j, p);
     put_spindle_sync(j, p);
+    put_contouring(j, p);
     return json_text(j, 2) + "\n";
 }
 

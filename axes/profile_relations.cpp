@@ -212,6 +212,19 @@ const ProfileRelation kRelations[] = {
              "counter cannot tell the sense: below {:.4f} s",
              s.sample_s, s.max_rpm, factor_words(factor), turns, 0.5 * 60.0 / (s.max_rpm * factor));
      }},
+    {"contour.ramp_steps_per_s2 <= contour.acceleration_steps_per_s2",
+     "with contouring: the interpolator's ramps change no motor's pulse rate faster than its "
+     "rotor can follow (steps are lost only where the rate jumps: docs/contouring.md)",
+     [](const MachineProfile& p) {
+         return !p.contouring ||
+                p.contour.ramp_steps_per_s2 <= p.contour.acceleration_steps_per_s2;
+     },
+     [](const MachineProfile& p) {
+         return fmt::format("contour.ramp_steps_per_s2: {:g} steps/s² is faster than the rotor "
+                            "follows (contour.acceleration_steps_per_s2 {:g}): at most {:g}",
+                            p.contour.ramp_steps_per_s2, p.contour.acceleration_steps_per_s2,
+                            p.contour.acceleration_steps_per_s2);
+     }},
 };
 
 } // namespace

@@ -137,6 +137,15 @@ std::vector<ReviewNote> DeckReviewer::condition_notes(const CardOrders& orders) 
     for (TapFinding& f : tap_.card(index_, orders)) {
         notes.push_back({f.axis, std::move(f.message), f.card, f.column, true});
     }
+    if (orders.kind == CardKind::segment && !segments_allowed_) {
+        notes.push_back({std::nullopt,
+                         fmt::format("a segment card (an addition after EP 0636958, Black & "
+                                     "Decker): profile {} has no contouring (stepper axes and "
+                                     "their interpolator); the built-in profile parsons-extended "
+                                     "has it",
+                                     segments_profile_),
+                         index_, 76, true});
+    }
     return notes;
 }
 

@@ -76,6 +76,11 @@ public:
     void allow_tap(bool allowed, std::string profile, SpindleLimits limits = {}) {
         tap_ = TapReview(allowed, std::move(profile), std::move(limits));
     }
+    // Segment cards: whether the profile has contouring (default: yes) and its name.
+    void allow_segments(bool allowed, std::string profile) {
+        segments_allowed_ = allowed;
+        segments_profile_ = std::move(profile);
+    }
     // After the last card: a condition or sync card with no motion card after it.
     std::vector<ReviewNote> finish();
 
@@ -85,6 +90,8 @@ private:
     ConditionReview conditions_;
     SyncReview sync_;
     TapReview tap_;
+    bool segments_allowed_ = true;
+    std::string segments_profile_;
     std::int64_t index_ = 0; // cards reviewed or skipped
     std::array<std::optional<Thousandths>, kAxisCount> position_{
         Thousandths{0}, Thousandths{0}, Thousandths{0}, Thousandths{0}, Thousandths{0}};

@@ -96,6 +96,7 @@ void find_strays(const Card& card, const std::array<ColumnWord, kColumns + 1>& a
             const LayoutField* f = kind == CardKind::condition ? layout.condition_field_at(c)
                                    : kind == CardKind::sync    ? layout.sync_field_at(c)
                                    : kind == CardKind::tap     ? layout.tap_field_at(c)
+                                   : kind == CardKind::segment ? layout.segment_field_at(c)
                                                                : layout.field_at(c);
             std::string where =
                 f ? fmt::format("in {}", field_label(*f))
@@ -103,6 +104,7 @@ void find_strays(const Card& card, const std::array<ColumnWord, kColumns + 1>& a
                                 kind == CardKind::condition ? " on a condition card"
                                 : kind == CardKind::sync    ? " on a sync card"
                                 : kind == CardKind::tap     ? " on a tap card"
+                                : kind == CardKind::segment ? " on a segment card"
                                                             : "");
             problems.add(c, fmt::format("punch in {} {} where none belongs ({})",
                                         hole_count(stray) == 1 ? "row" : "rows", join_rows(stray),

@@ -2,6 +2,7 @@
 
 #include "cardreader/condition_card.hpp"
 #include "cardreader/field_reading.hpp"
+#include "cardreader/segment_card.hpp"
 #include "cardreader/sync_card.hpp"
 #include "cardreader/tap_card.hpp"
 
@@ -20,6 +21,7 @@ using detail::r1;
 using detail::read_number;
 constexpr ColumnWord r2 = row_bit(Row::r2);
 constexpr ColumnWord r3 = row_bit(Row::r3);
+constexpr ColumnWord r4 = row_bit(Row::r4);
 constexpr ColumnWord r12 = row_bit(Row::r12);
 
 // The rows a field may punch in its columns (the 12-row cross marks are added separately).
@@ -73,6 +75,7 @@ CardLayout make_fig8() {
     add_condition_fields(layout);
     add_sync_fields(layout);
     add_tap_fields(layout);
+    add_segment_fields(layout);
     layout.index();
     return layout;
 }
@@ -83,10 +86,11 @@ std::optional<BadPunch> two_marks(const Card& card, const CardLayout& layout) {
     if (layout.extension_column == 0) {
         return std::nullopt;
     }
-    static constexpr std::array<std::pair<Row, std::string_view>, 3> kMarks = {
+    static constexpr std::array<std::pair<Row, std::string_view>, 4> kMarks = {
         std::pair{Row::r1, std::string_view("a condition card")},
         std::pair{Row::r2, std::string_view("a sync card")},
-        std::pair{Row::r3, std::string_view("a tap card")}};
+        std::pair{Row::r3, std::string_view("a tap card")},
+        std::pair{Row::r4, std::string_view("a segment card")}};
     std::vector<std::string> rows;
     std::vector<std::string> meanings;
     for (const auto& [row, kind] : kMarks) {
@@ -157,6 +161,20 @@ const LayoutField* CardLayout::find_tap(FieldKind kind) const {
     return it == tap_fields.end() ? nullptr : &*it;
 }
 
+const LayoutField* CardLayout::segment_field_at(int column) const {
+    auto it = std::find_if(segment_fields.begin(), segment_fields.end(),
+                           [column](const LayoutField& f) {
+                               return column >= f.first_column && column <= f.last_column();
+                           });
+    return it == segment_fields.end() ? nullptr : &*it;
+}
+
+const LayoutField* CardLayout::find_segment(FieldKind kind, std::optional<Axis> axis) const {
+    auto it = std::find_if(segment_fields.begin(), segment_fields.end(),
+                           [&](const LayoutField& f) { return f.kind == kind && f.axis == axis; });
+    return it == segment_fields.end() ? nullptr : &*it;
+}
+
 const LayoutField* CardLayout::field_at(int column) const {
     auto it = std::find_if(fields.begin(), fields.end(), [column](const LayoutField& f) {
         return column >= f.first_column && column <= f.last_column();
@@ -221,6 +239,9 @@ std::string_view field_short_label(FieldKind kind) {
     case FieldKind::tap_pitch:
     case FieldKind::tap_rpm:
         return tap_field_short_label(kind);
+    case FieldKind::segment_end:
+    case FieldKind::segment_feed:
+        return segment_field_short_label(kind);
     }
     return "";
 }
@@ -256,6 +277,9 @@ std::string field_label(const LayoutField& field) {
     case FieldKind::tap_pitch:
     case FieldKind::tap_rpm:
         return tap_field_label(field);
+    case FieldKind::segment_end:
+    case FieldKind::segment_feed:
+        return segment_field_label(field);
     case FieldKind::motion:
         what = "motion";
         break;
@@ -306,6 +330,11 @@ void CardLayout::index() {
                                                            : tf     ? rows_allowed(tf->kind)
                                                            : number ? kDigitRows
                                                                     : ColumnWord{0};
+        const LayoutField* gf = segment_field_at(c);
+        segment_allowed_rows.at(static_cast<std::size_t>(c)) = c == extension_column ? r4
+                                                               : gf     ? kDigitRows
+                                                               : number ? kDigitRows
+                                                                        : ColumnWord{0};
     }
 }
 
@@ -321,9 +350,13 @@ bool is_tap_card(const Card& card, const CardLayout& layout) {
     return layout.extension_column != 0 && card.punched(layout.extension_column, Row::r3);
 }
 
+bool is_segment_card(const Card& card, const CardLayout& layout) {
+    return layout.extension_column != 0 && card.punched(layout.extension_column, Row::r4);
+}
+
 bool is_extension_card(const Card& card, const CardLayout& layout) {
     return is_condition_card(card, layout) || is_sync_card(card, layout) ||
-           is_tap_card(card, layout);
+           is_tap_card(card, layout) || is_segment_card(card, layout);
 }
 
 const CardLayout& fig8_layout() {
@@ -354,6 +387,9 @@ DecodeResult decode(const Card& card, const CardLayout& layout) {
     }
     if (is_tap_card(card, layout)) {
         return decode_tap_card(card, layout);
+    }
+    if (is_segment_card(card, layout)) {
+        return decode_segment_card(card, layout);
     }
     detail::find_strays(card, layout.allowed_rows, layout, CardKind::motion, problems);
 
@@ -484,6 +520,15 @@ EncodeResult encode(const CardOrders& orders, const CardLayout& layout) {
             punch_number(*f, orders.number);
         }
         if (auto error = encode_tap_card(orders.tap, layout, card)) {
+            fail(*error);
+        }
+        return result;
+    }
+    if (orders.kind == CardKind::segment) {
+        if (const auto* f = layout.find(FieldKind::card_number)) {
+            punch_number(*f, orders.number);
+        }
+        if (auto error = encode_segment_card(orders.segment, layout, card)) {
             fail(*error);
         }
         return result;

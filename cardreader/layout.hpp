@@ -63,6 +63,11 @@ enum class FieldKind : std::uint8_t {
     tap_depth,
     tap_pitch,
     tap_rpm,
+    // The fields of a segment card (an addition after EP 0636958; docs/card-layout.md): the end
+    // point in X, Y and Z (d.ddd in each, axis table, cross, vertical) and the feed F (three
+    // digits, tenths of an inch a minute).
+    segment_end,
+    segment_feed,
 };
 
 struct LayoutField {
@@ -105,12 +110,19 @@ struct CardLayout {
     const LayoutField* tap_field_at(int column) const;
     const LayoutField* find_tap(FieldKind kind) const;
 
+    // The segment card (an addition): the fields of a card marked in row 4 of the extension
+    // column; the card number stays where the motion card has it.
+    std::vector<LayoutField> segment_fields;
+    const LayoutField* segment_field_at(int column) const;
+    const LayoutField* find_segment(FieldKind kind, std::optional<Axis> axis = std::nullopt) const;
+
     // The rows each column may be punched in (index 1..80), worked out once by index(): on a
     // motion card, on a condition card, on a sync card and on a tap card.
     std::array<ColumnWord, kColumns + 1> allowed_rows{};
     std::array<ColumnWord, kColumns + 1> condition_allowed_rows{};
     std::array<ColumnWord, kColumns + 1> sync_allowed_rows{};
     std::array<ColumnWord, kColumns + 1> tap_allowed_rows{};
+    std::array<ColumnWord, kColumns + 1> segment_allowed_rows{};
     void index();
 };
 
@@ -120,6 +132,8 @@ bool is_condition_card(const Card& card, const CardLayout& layout);
 bool is_sync_card(const Card& card, const CardLayout& layout);
 // Is this card marked as a tap card (row 3 of the layout's extension column)?
 bool is_tap_card(const Card& card, const CardLayout& layout);
+// Is this card marked as a segment card (row 4 of the layout's extension column)?
+bool is_segment_card(const Card& card, const CardLayout& layout);
 // Is it any of them (an extension card: an addition, whose double punches are bad punches in
 // every profile)?
 bool is_extension_card(const Card& card, const CardLayout& layout);

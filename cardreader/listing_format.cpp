@@ -3,6 +3,7 @@
 #include "cardreader/deck_error.hpp"
 #include "cardreader/listing_fields.hpp"
 #include "cardreader/sync_listing.hpp"
+#include "cardreader/segment_listing.hpp"
 #include "cardreader/tap_listing.hpp"
 
 #include <fmt/format.h>
@@ -269,6 +270,9 @@ public:
         if (decoded.orders.kind == CardKind::tap) {
             out_ << tap_row(decoded.orders) << '\n';
         }
+        if (decoded.orders.kind == CardKind::segment) {
+            out_ << segment_row(decoded.orders) << '\n';
+        }
         for (Axis a : kAxes) {
             if (decoded.orders.kind == CardKind::motion) {
                 out_ << listing_row(decoded.orders, a) << '\n';
@@ -432,6 +436,16 @@ std::optional<ListedCard> ListingReader::next_tap_card(std::string first) {
     return card;
 }
 
+std::optional<ListedCard> ListingReader::next_segment_card(std::string first) {
+    ListedCard card;
+    card.orders.kind = CardKind::segment;
+    card.first_line = line_;
+    auto [number, order] = read_segment_row(first, file_, line_);
+    card.orders.number = number;
+    card.orders.segment = order;
+    return card;
+}
+
 std::optional<ListedCard> ListingReader::next() {
     ListedCard card;
     std::array<bool, kAxisCount> seen{};
@@ -448,12 +462,14 @@ std::optional<ListedCard> ListingReader::next() {
                                       : is_condition_row(*text) ? "condition"
                                       : is_sync_row(*text)      ? "sync"
                                       : is_tap_row(*text)       ? "tap"
+                                      : is_segment_row(*text)   ? "segment"
                                                                 : "";
         if (!kind.empty()) {
             if (rows == 0) {
                 return kind == "condition" ? next_condition_card(std::move(*text))
                        : kind == "sync"    ? next_sync_card(std::move(*text))
-                                           : next_tap_card(std::move(*text));
+                       : kind == "tap"     ? next_tap_card(std::move(*text))
+                                           : next_segment_card(std::move(*text));
             }
             auto missing = std::find(seen.begin(), seen.end(), false) - seen.begin();
             throw DeckError::at_line(

@@ -59,6 +59,7 @@ private:
     std::optional<ListedCard> next_condition_card(std::string first);
     std::optional<ListedCard> next_sync_card(std::string first);
     std::optional<ListedCard> next_tap_card(std::string first);
+    std::optional<ListedCard> next_segment_card(std::string first);
 
     std::optional<std::string> pending_; // a line read ahead, the first of the next card
 

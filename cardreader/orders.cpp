@@ -123,6 +123,10 @@ std::string format_pitch(int hundred_thousandths) {
     return format_travel_per_pulse(hundred_thousandths);
 }
 
+std::string format_feed(int tenths_in_per_min) {
+    return fmt::format("{}.{}", tenths_in_per_min / 10, tenths_in_per_min % 10);
+}
+
 std::string format_sequence(SequencePattern pattern) {
     std::string text;
     for (int k = 1; k <= kSequencePositions; ++k) {

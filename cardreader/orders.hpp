@@ -66,7 +66,7 @@ struct AxisOrder {
 // Which kind of card this is: column 76, the extension mark (blank on a 1952 card).
 // Row 1 a condition card, row 2 a sync card (the press synchronisation of EP 0436887), row 3 a
 // tap card (the spindle synchronisation of EP 0360190).
-enum class CardKind : std::uint8_t { motion, condition, sync, tap };
+enum class CardKind : std::uint8_t { motion, condition, sync, tap, segment };
 
 // The sense in which the axis must pass the position: its counters counting up (forward),
 // down (reverse), or either.
@@ -174,6 +174,24 @@ struct TapOrder {
 // "0.05000" (hundred-thousandths of an inch per tool revolution)
 std::string format_pitch(int hundred_thousandths);
 
+// ---- Segment cards: an addition after EP 0636958 (Black & Decker), not in the patent.
+// A segment card (column 76 punched in row 4, docs/card-layout.md) gives one straight segment
+// of a contouring path: its end point in X (the table), Y (the cross slide) and Z (the vertical
+// slide), d.ddd in from the reference point, and the nominal speed F along it. The contouring
+// attachment's interpolator runs the three stepper axes together along it (docs/contouring.md).
+inline constexpr int kSegmentAxes = 3;    // X, Y, Z
+inline constexpr int kMaxSegmentFeed = 999; // F: three digits, tenths of an inch a minute
+
+struct SegmentOrder {
+    std::array<Thousandths, kSegmentAxes> to{}; // the end point, X Y Z, thousandths of an inch
+    int feed = 0; // F: the nominal speed along the segment, tenths of in/min (1..999)
+
+    bool operator==(const SegmentOrder&) const = default;
+};
+
+// "12.0" (tenths of an inch a minute)
+std::string format_feed(int tenths_in_per_min);
+
 struct CardOrders {
     int number = 0; // card number, 0000 .. 9999
     Spindle spindle = Spindle::off;
@@ -186,6 +204,8 @@ struct CardOrders {
     SyncOrder sync{};
     // A tap card (an addition): its order; the axes above are unused and left default.
     TapOrder tap{};
+    // A segment card (an addition): its order; the axes above are unused and left default.
+    SegmentOrder segment{};
 
     const AxisOrder& axis(Axis a) const { return axes.at(axis_index(a)); }
     AxisOrder& axis(Axis a) { return axes.at(axis_index(a)); }

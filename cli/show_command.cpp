@@ -5,6 +5,7 @@
 #include "cli/support/applied_profile.hpp"
 #include "cli/support/deck_files.hpp"
 #include "cli/support/deck_prediction.hpp"
+#include "cli/support/segment_show.hpp"
 #include "cli/support/json_output.hpp"
 #include "cli/support/value_names.hpp"
 #include "outputs/output_file.hpp"
@@ -278,6 +279,10 @@ void print_card(std::int64_t index, const DecodeResult& decoded, const CardLayou
         print_tap_card(index, o, layout, profile);
         return;
     }
+    if (o.kind == CardKind::segment && decoded) {
+        print_segment_card(index, o, layout);
+        return;
+    }
     fmt::print("card {} · card number {:04} (columns 77-80) · spindle {} (column 1)\n", index,
                o.number, spindle_name(o.spindle));
     fmt::print("  {:<9} {:<8} {:<12} {:<6} {:<12} {:<12} {:<6} {:<6} {}\n", "axis", "columns",
@@ -311,6 +316,9 @@ Json card_json(std::int64_t index, const CardOrders& o, const CardLayout& layout
     }
     if (o.kind == CardKind::tap) {
         return tap_card_json(index, o);
+    }
+    if (o.kind == CardKind::segment) {
+        return segment_card_json(index, o);
     }
     Json axes = Json::object();
     for (Axis a : kAxes) {
@@ -552,6 +560,7 @@ void write_card_picture(const ShowFlags& f, const InputDeck& deck, const Card& c
                     kind == CardKind::condition ? " · condition card (an addition after EP 0640901)"
                     : kind == CardKind::sync    ? " · sync card (an addition after EP 0436887)"
                     : kind == CardKind::tap     ? " · tap card (an addition after EP 0360190)"
+                    : kind == CardKind::segment ? " · segment card (an addition after EP 0636958)"
                                                 : "");
     pic.bad_punch = decoded.bad_punch;
     write_file(file_in_folder(f.svg_dir, fmt::format("card-{:04}.svg", index)),

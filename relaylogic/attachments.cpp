@@ -4,12 +4,14 @@
 //   1. condition cards, EP 0640901 (Siemens) ............ relaylogic/conditions/
 //   2. press synchronisation, EP 0436887 (Mitsubishi) ... relaylogic/press/
 //   3. tapping, EP 0360190 (Mitsubishi) ................. relaylogic/tapping/
-// Each is built only when the profile asks for it (parsons-extended asks for all three,
+//   4. contouring, EP 0636958 (Black & Decker) .......... relaylogic/contouring/
+// Each is built only when the profile asks for it (parsons-extended asks for all four,
 // parsons-1952 for none). Here too: the refusal of a card whose system the profile lacks, and
 // the saved state's members of the systems a machine does not have.
 #include "relaylogic/attachment.hpp"
 
 #include "relaylogic/conditions/conditions_attachment.hpp"
+#include "relaylogic/contouring/contouring_attachment.hpp"
 #include "relaylogic/control_cabinet.hpp"
 #include "relaylogic/press/press_attachment.hpp"
 #include "relaylogic/tapping/tapping_attachment.hpp"
@@ -51,6 +53,7 @@ Attachments make_attachments(Tracer& tracer, const axes::MachineProfile& profile
     keep_if_present<ConditionsAttachment>(list, tracer, profile);
     keep_if_present<PressAttachment>(list, tracer, profile);
     keep_if_present<TappingAttachment>(list, tracer, profile);
+    keep_if_present<ContouringAttachment>(list, tracer, profile);
     return list;
 }
 
@@ -77,6 +80,13 @@ void refuse_unattached_card(ControlCabinet& cab, cardreader::CardKind kind) {
         lacks = "has no spindle synchronisation; the built-in profile parsons-extended has it";
         reason = StopReason::tap_refused;
         break;
+    case cardreader::CardKind::segment:
+        card = "segment";
+        patent = "EP 0636958, Black & Decker";
+        lacks = "has no contouring (stepper axes and their interpolator); the built-in profile "
+                "parsons-extended has it";
+        reason = StopReason::segment_refused;
+        break;
     case cardreader::CardKind::motion:
         return; // the 1952 cabinet reads it
     }
@@ -98,6 +108,8 @@ void save_absent(const Attachments& present, nlohmann::json& state) {
     if (find(present, "tapping") == nullptr) {
         state["tapping"] = nullptr;
     }
+    // A machine without contouring writes no member of it: its state stays as it was before
+    // the fourth attachment came.
 }
 
 void load_all(ControlCabinet& cab, const Attachments& present, const nlohmann::json& state) {
@@ -121,6 +133,15 @@ void load_all(ControlCabinet& cab, const Attachments& present, const nlohmann::j
         a->load(cab, state);
     } else if (saved(state, "tapping")) {
         throw axes::StateError("the saved state has spindle synchronisation and this profile "
+                               "has none");
+    }
+    if (Attachment* a = find(present, "contouring")) {
+        // A state from before contouring existed has no member: the axes stood at 0.
+        if (state.contains("contouring")) {
+            a->load(cab, state);
+        }
+    } else if (saved(state, "contouring")) {
+        throw axes::StateError("the saved state has contouring (stepper axes) and this profile "
                                "has none");
     }
 }

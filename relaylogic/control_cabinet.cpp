@@ -116,6 +116,17 @@ void ControlCabinet::schedule(const Attachment& owner, double t, int code, bool 
     }
 }
 
+void ControlCabinet::schedule_lasting(const Attachment& owner, double t, int code) {
+    std::size_t slot = 0;
+    while (attachments_.at(slot).get() != &owner) {
+        ++slot;
+    }
+    Event e{t, seq_++, EventKind::attachment, static_cast<std::uint8_t>(slot), false, code,
+            cards_read_};
+    e.lasting = true;
+    queue_.push(e);
+}
+
 std::string ControlCabinet::card_name() const {
     return orders_.number >= 0 && card_
                ? fmt::format("card {} (number {:04})", cards_read_, orders_.number)
@@ -319,6 +330,11 @@ void ControlCabinet::handle(const Event& e) {
         mark(Phase::attachments);
         --standing_queued_;
         attachments_.at(e.owner)->on_event(*this, e.axis); // on whatever card is in the reader
+        return;
+    }
+    if (e.kind == EventKind::attachment && e.lasting) {
+        mark(Phase::attachments);
+        attachments_.at(e.owner)->on_event(*this, e.axis); // whatever card is in the reader
         return;
     }
     if (e.kind == EventKind::delay_258_release && e.card != cards_read_) {

@@ -119,6 +119,9 @@ public:
     // One of the attachment's events at time t, passed back to its on_event(code). A standing
     // event outlives the card (the zeroizing circuit does not clear it).
     void schedule(const Attachment& owner, double t, int code, bool standing = false);
+    // One that outlives the card and is always handled, clock or none: the instants of a plant
+    // of the attachment's own that moves on while the reader feeds (the contouring axes).
+    void schedule_lasting(const Attachment& owner, double t, int code);
     void machine_stop(StopReason reason, std::optional<cardreader::Axis> axis,
                       const std::string& message, const std::string& lamp);
     // The axis's motor follows the circuits again; every comparer is read again.
@@ -172,6 +175,7 @@ private:
         int axis;
         std::int64_t
             card; // the card it belongs to: the zeroizing circuit ends every pending action
+        bool lasting = false; // attachment: outlives the card and the deck (schedule_lasting)
         bool operator>(const Event& o) const { return t != o.t ? t > o.t : seq > o.seq; }
     };
 

@@ -49,6 +49,7 @@ enum class StopReason : std::uint8_t {
     sync_refused,          // the cabinet cannot take a sync card (profile, deck)
     transfer_timeout, // spindle sync: PC 130's gear ratio transfer never completed (an addition)
     tap_refused,      // the cabinet cannot take a tap card (profile, tool, speed)
+    segment_refused,  // the cabinet cannot take a segment card (profile: no contouring)
     interrupted,      // not a check: the operator stopped the run (SIGINT, SIGTERM)
 };
 

@@ -6,6 +6,7 @@
 #include "axes/chain_figures.hpp"
 #include "cardreader/layout.hpp"
 #include "relaylogic/conditions/condition_units.hpp"
+#include "relaylogic/contouring/contouring_result.hpp"
 #include "relaylogic/faults.hpp"
 #include "relaylogic/machine_observer.hpp"
 #include "relaylogic/press/press_result.hpp"
@@ -71,6 +72,7 @@ struct RunResult {
     bool conditions_used = false;     // a condition card was read: the report shows them only then
     std::optional<PressResult> press; // when the profile has press synchronisation
     std::optional<TappingResult> tapping; // when the profile has spindle synchronisation
+    std::optional<ContouringResult> contouring; // when the profile has contouring
 };
 
 } // namespace parsons::relaylogic

@@ -32,6 +32,8 @@ std::string_view stop_reason_name(StopReason r) {
         return "transfer_timeout";
     case StopReason::tap_refused:
         return "tap_refused";
+    case StopReason::segment_refused:
+        return "segment_refused";
     case StopReason::interrupted:
         return "interrupted";
     }

@@ -221,7 +221,8 @@ TEST_CASE("Byte for byte: the sample decks, the demo, the generators' decks, a s
              {"patent-example.csv", ""},
              {"condition-cards.csv", "--profile parsons-extended"},
              {"press-sync.csv", "--profile parsons-extended"},
-             {"press-reset.csv", "--profile parsons-extended"}}) {
+             {"press-reset.csv", "--profile parsons-extended"},
+             {"contour.csv", "--profile parsons-extended"}}) {
         fs::copy_file(source_path("decks/samples/" + deck), work / "samples" / deck);
         o.run_all_outputs("samples/" + fs::path(deck).stem().string(), "samples/" + deck, profile);
     }

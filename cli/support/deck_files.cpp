@@ -384,6 +384,7 @@ cardreader::DeckReviewer deck_reviewer(const axes::MachineProfile& profile) {
     reviewer.allow_conditions(profile.condition_cards, profile.name, tool_numbers(profile));
     reviewer.allow_sync(profile.press_sync, profile.name, press_limits(profile));
     reviewer.allow_tap(profile.spindle_sync, profile.name, spindle_limits(profile));
+    reviewer.allow_segments(profile.contouring, profile.name);
     return reviewer;
 }
 

@@ -289,6 +289,9 @@ void RunTimeline::on_card(double t, std::int64_t index, const cardreader::CardOr
     case cardreader::CardKind::tap:
         kind = "tap";
         break;
+    case cardreader::CardKind::segment:
+        kind = "segment";
+        break;
     case cardreader::CardKind::motion: {
         // The axes in their names' order, worked out once.
         static const std::array<std::size_t, cardreader::kAxisCount> by_name = [] {

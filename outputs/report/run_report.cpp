@@ -1,5 +1,7 @@
 #include "outputs/report/run_report.hpp"
 
+#include "outputs/report/contouring_report.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -318,6 +320,10 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachinePr
     if (r.tapping && r.tapping->used) {
         j["tapping"] = tapping_json(*r.tapping);
     }
+    // Contouring (an addition after EP 0636958): only when a segment card was read.
+    if (r.contouring && r.contouring->used) {
+        j["contouring"] = contouring_json(*r.contouring);
+    }
     return j;
 }
 
@@ -410,6 +416,11 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
             if (const std::string miss = tap_hole_warning(r, i); !miss.empty()) {
                 line("  warning: " + miss);
             }
+        }
+    }
+    if (r.contouring && r.contouring->used) {
+        for (const std::string& l : contouring_lines(*r.contouring)) {
+            line(l);
         }
     }
     for (Axis a : cardreader::kAxes) {
