@@ -12,7 +12,9 @@
 //     prior art's speed alone, with the press slowing;
 //  5. tapping/: EP 0360190: a plate tapped with two taps on two heads, the gear ratio
 //     transferred by PC 130 and stored in advance, and once with a head exchange that sends no
-//     ratio, which the thread proof names hole by hole.
+//     ratio, which the thread proof names hole by hole;
+//  6. contouring/: EP 0636958: a contouring program on stepper axes under the junction rule,
+//     with every junction passed at speed, and with every junction slowed.
 #include "cli/commands.hpp"
 #include "cli/demo_index.hpp"
 #include "cli/gen_press_feeder.hpp"
@@ -536,9 +538,65 @@ ExitCode run_tapping_demo(const std::string& dir, std::vector<DemoSection>& sect
     return ExitCode::ok;
 }
 
+// ---- 6. Contouring ----
+
+// The shipped contouring program (an addition after EP 0636958) under the three junction
+// policies: the rule, every junction passed at speed (steps lost), every junction slowed.
+ExitCode run_contouring_demo(const std::string& dir, std::vector<DemoSection>& sections) {
+    const auto data = data_dir();
+    const std::filesystem::path listing =
+        data ? *data / "samples" / "contour.csv" : std::filesystem::path();
+    std::error_code ec;
+    if (!data || !std::filesystem::is_regular_file(listing, ec)) {
+        fmt::print("\n6. contouring: not run, the shipped sample decks were not found (set "
+                   "PARSONS_DATA_DIR to the folder holding samples/)\n");
+        return ExitCode::ok;
+    }
+    const std::string folder = section_folder(dir, "contouring");
+    const std::string deck = folder + "/contour.csv";
+    write_file(deck, read_text_file(listing.string()));
+    fmt::print("\n6. Contouring on stepper motors (the junction rule, an addition after EP "
+               "0636958; profile parsons-extended) -> {}/\n",
+               folder);
+    DemoSection s{"contouring",
+                  "6. Contouring on stepper motors (EP 0636958)",
+                  "Segment cards drive three stepper axes together. At each junction the control "
+                  "cycle compares the motors' pulse rates along the two segments: a gentle turn "
+                  "is passed at speed, a sharp one slowed to rest. Passing every junction at "
+                  "speed loses steps and leaves the programmed path; slowing at every junction "
+                  "takes longer.",
+                  {}};
+    for (const std::string policy : {"rule", "pass", "minimum"}) {
+        RunRequest run;
+        run.input = deck;
+        run.profile = folder + "/contour-" + policy + ".profile.json";
+        write_file(run.profile, fmt::format("{{\"base\": \"parsons-extended\", \"contour\": "
+                                            "{{\"junctions\": \"{}\"}}}}\n",
+                                            policy));
+        run.report = folder + "/contour-" + policy + ".report.json";
+        run.html = policy == "rule" ? folder + "/contour-rule.replay.html" : "";
+        run.quiet = true;
+        if (run_in_order(run) != ExitCode::ok) {
+            throw std::logic_error("the demo's contouring deck did not run as planned");
+        }
+        const auto c = nlohmann::json::parse(read_text_file(run.report)).at("contouring");
+        const std::string figures = fmt::format(
+            "{} junctions passed at speed, {} slowed, {} steps lost, {:.4f} in off the path at "
+            "most, {:.3f} s of motion",
+            c.at("decisions").at("passed").get<int>(), c.at("decisions").at("slowed").get<int>(),
+            c.at("lost_steps_total").get<std::int64_t>(), c.at("largest_offset_in").get<double>(),
+            c.at("motion_seconds").get<double>());
+        fmt::print("   junctions \"{}\": {}\n", policy, figures);
+        s.runs.push_back(
+            demo_run("contour.csv, junctions \"" + policy + "\"", figures + ".", run, dir));
+    }
+    sections.push_back(std::move(s));
+    return ExitCode::ok;
+}
+
 ExitCode run_demo(const std::string& dir) {
     make_folder(dir);
-    fmt::print("parsons demo: the Parsons-Stulen punched-card milling machine, then three later "
+    fmt::print("parsons demo: the Parsons-Stulen punched-card milling machine, then four later "
                "systems, each in a folder of {}/\n\n",
                dir);
     finish_standard_output(); // a reader gone (`| head -1`) ends the demo here, as it does bench
@@ -560,6 +618,10 @@ ExitCode run_demo(const std::string& dir) {
     if (code == ExitCode::ok) {
         finish_standard_output();
         code = run_tapping_demo(dir, sections);
+    }
+    if (code == ExitCode::ok) {
+        finish_standard_output();
+        code = run_contouring_demo(dir, sections);
     }
     if (code != ExitCode::ok) {
         return code; // stopped by the operator: no index of a story cut short
@@ -606,7 +668,8 @@ void add_demo_command(CLI::App& app, Command& selected) {
         "demo", "The default job, a folder a system: the shipped sample deck run, a NACA 2412 "
                 "template deck generated, run and its cut proved; then the two-tool job with "
                 "its tool change tripped early (EP 0640901), the press feeder (EP 0436887) and "
-                "the tapping job (EP 0360190); and an index.html that shows them all");
+                "the tapping job (EP 0360190), contouring on stepper motors (EP 0636958); and an "
+                "index.html that shows them all");
     cmd->add_option("--out", *dir, "Folder for everything the demo writes")
         ->type_name(std::string(kDirValue))
         ->capture_default_str();

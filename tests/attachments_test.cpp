@@ -44,12 +44,12 @@ const std::string kSyncDeck = std::string(kHeader) + "1,sync,position,30\n" +
 } // namespace
 
 TEST_CASE("Attachments: parsons-1952 and parsons-safe build none, parsons-extended builds "
-          "conditions, press and tapping in that order") {
+          "conditions, press, tapping and contouring in that order") {
     const cardreader::CardLayout& layout = cardreader::fig8_layout();
     CHECK(names_of(relaylogic::ControlCabinet(axes::default_profile(), layout)).empty());
     CHECK(names_of(relaylogic::ControlCabinet(axes::safe_profile(), layout)).empty());
     CHECK(names_of(relaylogic::ControlCabinet(axes::extended_profile(), layout)) ==
-          std::vector<std::string>{"conditions", "sync", "tapping"});
+          std::vector<std::string>{"conditions", "sync", "tapping", "contouring"});
     // One system alone: only its attachment.
     axes::MachineProfile p = axes::default_profile();
     p.condition_cards = true;
@@ -88,7 +88,7 @@ TEST_CASE("Attachments: the hot hooks the cabinet calls of an attachment are exa
     // tapping head moves the spindle and sees every impulse; the condition units watch counts.
     const relaylogic::ControlCabinet cabinet(axes::extended_profile(), cardreader::fig8_layout());
     const auto& a = cabinet.attachments();
-    REQUIRE(a.size() == 3);
+    REQUIRE(a.size() == 4);
     CHECK(a[0]->hooks().after_count);
     CHECK(a[0]->hooks().holds_axis);
     CHECK_FALSE(a[0]->hooks().clock);
@@ -100,6 +100,11 @@ TEST_CASE("Attachments: the hot hooks the cabinet calls of an attachment are exa
     CHECK(a[2]->hooks().before_count);
     CHECK(a[2]->hooks().before_jump);
     CHECK_FALSE(a[2]->hooks().clock);
+    // The contouring axes are the attachment's own, moved by its lasting events: no hot hook.
+    CHECK_FALSE(a[3]->hooks().plants);
+    CHECK_FALSE(a[3]->hooks().before_count);
+    CHECK_FALSE(a[3]->hooks().clock);
+    CHECK_FALSE(a[3]->hooks().holding);
 }
 
 TEST_CASE("Attachments: the report and the summary show the press, the tapping head and the "

@@ -120,9 +120,9 @@ TEST_CASE("Condition card: a bad punch is named by its column", "[conditions][ca
         CHECK_THAT(d.bad_punch->what, Catch::Contains(k.says));
     }
     // On a motion card column 76 is unused but for the marks (row 1 a condition card, row 2 a
-    // sync card, row 3 a tap card): row 4 there is a bad punch.
+    // sync card, row 3 a tap card, row 4 a segment card): row 5 there is a bad punch.
     Card motion = encode(idle_card(1, {0, 0, 0, 0, 0}), fig8_layout()).card;
-    motion.punch(76, Row::r4);
+    motion.punch(76, Row::r5);
     const DecodeResult m = decode(motion, fig8_layout());
     REQUIRE_FALSE(m);
     CHECK(m.bad_punch->column == 76);

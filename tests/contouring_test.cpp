@@ -125,7 +125,7 @@ TEST_CASE("Contouring control cycle (claims 7, 8): a next segment shorter than t
 }
 
 TEST_CASE("Contouring interpolator: a segment's plan ramps at the path acceleration, cruises and "
-          "ramps down; too short a segment leaves faster than asked",
+          "ramps down, and too short a segment leaves faster than asked",
           "[contouring]") {
     // 2 in at 1/3 in/s from rest to rest, a = 1 in/s2: ramps of 1/3 s and 1/18 in each, the
     // cruise (2 - 1/9) / (1/3) = 5.6667 s: 6.3333 s in all.

@@ -364,7 +364,7 @@ TEST_CASE("Bad punch: in parsons-1952 a double punch in a digit column closes tw
     }
     SECTION("any other bad punch still stops the reader, named as an addition") {
         Card stray = encode(o, fig8_layout()).card;
-        stray.punch(76, Row::r4);
+        stray.punch(76, Row::r5);
         VectorDeck d3({stray});
         ControlCabinet c3(parsons::axes::default_profile(), fig8_layout());
         RunResult s3 = c3.run(d3);

@@ -124,9 +124,9 @@ TEST_CASE("Layout fig8: a punch where none belongs names column and field", "[la
     CHECK(bad_punch_of(card).what == "punch in row 11 where none belongs (in cross check)");
     CHECK(bad_punch_of(card).column == 30);
     Card unused = punched(patent_card());
-    unused.punch(76, Row::r4); // rows 1, 2 and 3 mark condition, sync and tap cards
+    unused.punch(76, Row::r5); // rows 1-4 mark condition, sync, tap and segment cards
     CHECK(bad_punch_of(unused).what ==
-          "punch in row 4 where none belongs (in column 76, which layout fig8 leaves unused)");
+          "punch in row 5 where none belongs (in column 76, which layout fig8 leaves unused)");
     Card twelve = punched(patent_card());
     twelve.punch(25, Row::r12); // cross sequence marks are columns 20-24 only
     CHECK(bad_punch_of(twelve).column == 25);

@@ -344,6 +344,9 @@ const RelationEdge kEdges[] = {
     {"spindle.max_rpm × max(1, spindle.change_factor) / 60 × spindle.sample_s < 0.5", true,
      R"({"spindle": {"sample_s": 0.125}})", R"({"spindle": {"sample_s": 0.12499999999999999}})",
      "spindle.sample_s: "},
+    {"contour.ramp_steps_per_s2 <= contour.acceleration_steps_per_s2", true,
+     R"({"contour": {"ramp_steps_per_s2": 2000.0000000000002}})",
+     R"({"contour": {"ramp_steps_per_s2": 2000}})", "contour.ramp_steps_per_s2: "},
 };
 
 } // namespace profile_keys_test

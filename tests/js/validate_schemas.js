@@ -51,6 +51,10 @@ const NOT_PROVOKED = {
     'report), with the same profile and the same limits as the cabinet (tool on no head, speed ' +
     'above max_rpm, a feed the sync drive cannot follow); unlike condition and sync cards, a ' +
     'tap card leaves nothing in a saved state that a resume could carry past the pre-scan',
+  segment_refused:
+    "run's pre-scan refuses every deck with a segment card under a profile without contouring " +
+    '(exit 2, no report), and a state saved by a machine with contouring is refused by one ' +
+    'without it, so no resume carries a segment card past the pre-scan',
 };
 
 const started = Date.now();
