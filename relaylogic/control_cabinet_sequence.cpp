@@ -52,7 +52,7 @@ void ControlCabinet::stop_axis(AxisCircuit& c) {
                      "");
         return;
     }
-    shaft_.impulse(now_); // through contact 238, channel 274, circuit 276 to motor 278
+    shaft_.impulse(now_, c.axis); // through contact 238, channel 274, circuit 276 to motor 278
     if (!shaft_.busy()) {
         shaft_.begin_step();
         schedule(now_ + profile_.sequence_shaft_step_s, EventKind::shaft_step);

@@ -158,6 +158,9 @@ void SteppingShaft::load(const json& j) {
     }
     pending_ = read<int>(j, "pending");
     busy_ = read<bool>(j, "busy");
+    // A state is captured at a card's feed, after channel 302: device 288 has no break and no
+    // impulse is pending whose axis it would need.
+    broken_ = 0;
     last_impulse_t_ = exact(member(j, "last_impulse_t"));
 }
 

@@ -1,5 +1,7 @@
 #include "relaylogic/sequence_control.hpp"
 
+#include <algorithm>
+
 namespace parsons::relaylogic {
 
 SequenceSwitch::SequenceSwitch(Tracer& tracer, const std::string& scope) : tracer_(tracer) {
@@ -54,17 +56,22 @@ SteppingShaft::SteppingShaft(Tracer& tracer)
                               "simultaneous stop",
                               "284", 1)),
       device_288_(tracer.define("cabinet", "device_288",
-                                "device 288: circuit 276 broken after "
-                                "delivering an impulse (until channel 302)",
-                                "288", 1)),
+                                "device 288: the axes whose path to circuit 276 "
+                                "it broke after their impulse (1 table, 2 cross, "
+                                "4 vertical, 8 swivel, 16 tilt; until channel 302)",
+                                "288", 5)),
       contact_290_(tracer.define("cabinet", "zeroizing_contact_290",
                                  "contact 290: zeroizing "
                                  "circuit 292-304",
                                  "290", 1)) {}
 
-bool SteppingShaft::impulse(double t) {
+bool SteppingShaft::impulse(double t, cardreader::Axis from) {
     const bool together = pending_ > 0 && t == last_impulse_t_;
     last_impulse_t_ = t;
+    if (pending_ < static_cast<int>(from_.size())) { // one impulse an axis a card
+        from_.at(static_cast<std::size_t>(pending_)) =
+            static_cast<std::uint8_t>(cardreader::axis_index(from));
+    }
     ++pending_;
     tracer_.set(channel_274_, 1);
     if (together) {
@@ -82,12 +89,16 @@ void SteppingShaft::begin_step() {
 
 bool SteppingShaft::finish_step() {
     busy_ = false;
+    if (pending_ > 0) {
+        broken_ |= 1U << from_.front(); // the oldest impulse's axis
+        std::rotate(from_.begin(), from_.begin() + 1, from_.end());
+    }
     --pending_;
     position_ = position_ == 5 ? 1 : position_ + 1;
     tracer_.set(shaft_signal_, static_cast<std::uint32_t>(position_));
     tracer_.set(motor_278_, 0);
     tracer_.set(circuit_276_, 0);
-    tracer_.set(device_288_, 1); // 276 has delivered its impulse: 288 breaks it until channel 302
+    tracer_.set(device_288_, broken_); // 276 delivered the impulse: 288 breaks its axis's path
     if (pending_ == 0) {
         tracer_.set(unit_284_, 0);
     }
@@ -101,6 +112,7 @@ bool SteppingShaft::finish_step() {
 void SteppingShaft::reset() {
     pending_ = 0;
     busy_ = false;
+    broken_ = 0;
     tracer_.set(motor_278_, 0);
     tracer_.set(circuit_276_, 0);
     tracer_.set(contact_290_, 0);

@@ -14,10 +14,12 @@
 // the circuit 276 so that the circuit discontinues conducting after delivering its impulse"
 // (col. 13): contact 238 of a stopped axis stays closed, so 288 breaks its path behind the
 // impulse and each stop steps the shaft exactly once. The break holds until zeroizing "actuates
-// device 288 through channel 302 to close circuit 274" (traced: device_288 rises when a step is
-// done and falls only at channel 302; per axis the break is AxisCircuit::stopped, which only
-// channel 302 clears). After the fifth impulse the members return to position 1, engaging
-// contact 290: the zeroizing circuit 292-304 fires.
+// device 288 through channel 302 to close circuit 274". The break is per axis: the trace's
+// cabinet.device_288 holds one bit per axis (1 table, 2 cross, 4 vertical, 8 swivel, 16 tilt),
+// set when the step that axis's impulse drove is done and cleared only at channel 302; in the
+// machine the break behind an axis is AxisCircuit::stopped, which only channel 302 clears. After
+// the fifth impulse the members return to position 1, engaging contact 290: the zeroizing circuit
+// 292-304 fires.
 #pragma once
 
 #include "cardreader/orders.hpp"
@@ -60,15 +62,18 @@ public:
 
     // An axis stopped: one impulse to motor 278. Returns true if unit 284 had to count it as
     // an extra impulse (it arrived together with another).
-    bool impulse(double t);
+    bool impulse(double t, cardreader::Axis from);
     // Motor 278 begins one step.
     void begin_step();
-    // The step is done: circuit 276 has delivered its impulse and device 288 breaks it. Returns
+    // The step is done: circuit 276 has delivered the oldest pending impulse and device 288
+    // breaks the path of the axis it came from (its bit in device_288()). Returns
     // true when the members came round to position 1 past contact
     // 290 (the fifth impulse): the zeroizing circuit fires.
     bool finish_step();
     // Zeroizing, channel 302: device 288 closes circuit 274 again.
     void reset();
+    // The axes whose path device 288 has broken: bit axis_index (1 table ... 16 tilt).
+    std::uint32_t device_288() const { return broken_; }
     // The state a saved machine keeps (relaylogic/machine_state.cpp).
     nlohmann::json save() const;
     void load(const nlohmann::json& j);
@@ -79,6 +84,8 @@ private:
     int pending_ = 0;
     bool busy_ = false;
     double last_impulse_t_ = -1;
+    std::array<std::uint8_t, 5> from_{}; // the axes of the pending impulses, oldest first
+    std::uint32_t broken_ = 0;           // device 288's breaks, one bit an axis
     SignalId shaft_signal_;
     SignalId channel_274_;
     SignalId circuit_276_;

@@ -111,6 +111,56 @@ TEST_CASE("Sequence: table and cross run first, then vertical and swivel, then t
     }
 }
 
+TEST_CASE("Sequence: the sample compound-angle deck turns the fixture about swivel and tilt at "
+          "once (claim 18): both motors start together on each card, each stops on its own "
+          "comparers, and the shaft steps past both before the table's position 3",
+          "[cabinet][sequence][fig10]") {
+    std::ifstream in(source_path("decks/samples/compound-angle.csv"));
+    DeckOptions options;
+    options.format = DeckFormat::listing;
+    options.file_name = "compound-angle.csv";
+    auto deck = open_card_source(in, options);
+    ControlCabinet cabinet(parsons::axes::default_profile(), fig8_layout());
+    Recorder rec;
+    cabinet.attach(&rec);
+    const RunResult r = cabinet.run(*deck);
+    REQUIRE(r.completed);
+    REQUIRE(r.cards_read == 2);
+    const auto changes = [&rec](const std::string& signal, std::uint32_t to) {
+        std::vector<double> t;
+        for (const auto& c : rec.of(signal)) {
+            if (c.new_value == to) {
+                t.push_back(c.t);
+            }
+        }
+        return t;
+    };
+    const auto swivel_on = changes("swivel.motor_44", 1);
+    const auto tilt_on = changes("tilt.motor_40", 1);
+    const auto swivel_stop = changes("swivel.speed_switch_236", 0);
+    const auto tilt_stop = changes("tilt.speed_switch_236", 0);
+    const auto table_stop = changes("table.speed_switch_236", 0);
+    const auto shaft_at_3 = changes("cabinet.stepping_shaft_280", 3);
+    REQUIRE(swivel_on.size() == 2);
+    REQUIRE(tilt_on.size() == 2);
+    REQUIRE(swivel_stop.size() >= 2);
+    REQUIRE(tilt_stop.size() >= 2);
+    REQUIRE(table_stop.size() >= 2);
+    REQUIRE(shaft_at_3.size() == 2);
+    for (std::size_t card = 0; card < 2; ++card) {
+        INFO("card " << card + 1);
+        CHECK(swivel_on.at(card) == tilt_on.at(card));     // together, at the card's relays
+        CHECK(swivel_stop.at(card) != tilt_stop.at(card)); // each by its own comparers
+        const double both = std::max(swivel_stop.at(card), tilt_stop.at(card));
+        CHECK(shaft_at_3.at(card) > both);
+        CHECK(table_stop.at(card) >= shaft_at_3.at(card));
+    }
+    CHECK(r.axes.at(3).counter_in == Approx(4.600).margin(1e-9));
+    CHECK(r.axes.at(4).counter_in == Approx(4.700).margin(1e-9));
+    CHECK(r.axes.at(3).fixture_angle_deg);
+    CHECK(r.axes.at(4).fixture_angle_deg);
+}
+
 TEST_CASE("Sequence: simultaneous stops are counted as separate impulses by unit 284",
           "[cabinet][sequence][fig10]") {
     CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
@@ -174,6 +224,18 @@ TEST_CASE("Duplicate contacts: an impulse missed by one contact set stops with m
     CHECK(r.stop->axis == Axis::cross);
     CHECK(r.stop->message.find("impulse 120 of commutator 102") != std::string::npos);
     CHECK(r.axes.at(1).counter_in == Approx(0.120).margin(0.0015));
+}
+
+TEST_CASE("Speed switch: the table's counter reads 8.785, 8.885 and 8.985 as switch 236 steps "
+          "1 to 2, 2 to 3 and 3 to off (the sample deck's card 1, claim 11)",
+          "[cabinet][speed-switch][fig10]") {
+    CardOrders c = idle_card(1, {0, 0, 0, 0, 0});
+    c.axis(Axis::table) = order(0, 8985, 1, 8785, 8885, 1);
+    Recorder rec;
+    REQUIRE(run_orders({c}, parsons::axes::default_profile(), &rec).completed);
+    CHECK(counter_when(rec, "table.speed_switch_236", 2) == std::vector<int>{8785});
+    CHECK(counter_when(rec, "table.speed_switch_236", 3) == std::vector<int>{8885});
+    CHECK(counter_when(rec, "table.speed_switch_236", 0) == std::vector<int>{8985});
 }
 
 TEST_CASE("Shared banks: a spurious match at 8.050 slows the table early (9.050 with slow-downs "

@@ -72,8 +72,9 @@ TEST_CASE("Fault dead-relay: a relay that never picks leaves the stop unstored, 
     CHECK_THAT(effect(o), Catch::Contains("relay 9 of table bank 352 failed to pick"));
 }
 
-TEST_CASE("Fault skip-step: a skipping switch of the increment counter stops at the check, one "
-          "of the absolute counter is caught too, and the report gives the real position",
+TEST_CASE("Fault skip-step: a skipping switch of the absolute counter (110) is caught by the "
+          "increment counter at the check, one of the increment counter (310) stops at the check "
+          "too, and the report gives the real position",
           "[faults]") {
     const Outcome abs = run_with("skip-step:table:110:300");
     CHECK(abs.exit_code == 3);

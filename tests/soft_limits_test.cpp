@@ -180,3 +180,29 @@ TEST_CASE(
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.output, Catch::Contains("--limit 'tilt=1:1': the minimum must be below"));
 }
+
+TEST_CASE("Soft limits: a movement range held in a profile file (the range memory of EP 0360190 "
+          "claim 3, filled before the run) stops the run as --limit does, and a resume widens it "
+          "with --limit (claim 2)",
+          "[softlimit][cli]") {
+    const std::string sample = source_path("decks/samples/patent-example.csv");
+    const TempDir dir;
+    using std::filesystem::path;
+    const path range = dir.path("range.json");
+    write_bytes(range, R"({"axes": {"table": {"soft_limits_in": [0, 8.9]}}})");
+    auto run = run_parsons("run " + q(sample) + " -q --profile " + q(range.string()));
+    CHECK(run.exit_code == 3);
+    CHECK_THAT(run.output, Catch::Contains("soft_limit: card 1 (number 0001), table") &&
+                               Catch::Contains("(movement range 0.000 .. 8.900 in)"));
+
+    const path vertical = dir.path("vertical.json");
+    const path state = dir.path("suspend.json");
+    write_bytes(vertical, R"({"axes": {"vertical": {"soft_limits_in": [0, 2.5]}}})");
+    auto stopped = run_parsons("run " + q(sample) + " -q --profile " + q(vertical.string()) +
+                               " --save-state " + q(state.string()));
+    CHECK(stopped.exit_code == 3);
+    CHECK_THAT(stopped.output, Catch::Contains("soft_limit: card 3 (number 0003), vertical"));
+    auto resumed = run_parsons("run " + q(sample) + " -q --resume " + q(state.string()) +
+                               " --limit vertical=-0.5:3");
+    CHECK(resumed.exit_code == 0);
+}

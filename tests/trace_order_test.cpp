@@ -280,7 +280,8 @@ TEST_CASE("Zeroizing: channel 300 opens the sequence contacts and nothing else, 
     CHECK(find(rec, "tilt.stepping_relay_256", 0, stop) == released + 1);
     CHECK(find(rec, "cabinet.card_reader_134.card", 2) < released);
 
-    // Device 288: closed while circuit 276 delivers the first impulse, broken once it has.
+    // Device 288: closed while circuit 276 delivers the first impulse (the table's, position
+    // 1), broken behind the table once it has (bit 1 of device_288).
     const long first_276 = find(rec, "cabinet.circuit_276", 1);
     const long first_288 = find(rec, "cabinet.device_288", 1);
     REQUIRE(first_276 >= 0);
@@ -299,12 +300,58 @@ TEST_CASE("Zeroizing: channel 300 opens the sequence contacts and nothing else, 
         }
         return f;
     }();
-    REQUIRE(falls.size() == 2); // once a card
+    REQUIRE(falls.size() == 2); // once a card, from every axis's break (1+2+4+8+16)
+    CHECK(falls.front().old_value == 31);
     const long ch302 = find(rec, "cabinet.channel_302", 1);
     const long fell = find(rec, "cabinet.device_288", 0);
     REQUIRE(ch302 >= 0);
     CHECK(fell > ch302);
     CHECK(falls.front().t == rec.changes.at(static_cast<std::size_t>(ch302)).t);
+}
+
+TEST_CASE("Device 288: cabinet.device_288 holds the axes whose path it broke, one bit an axis, "
+          "set as the step each axis's impulse drove is done, in the order the axes stopped, and "
+          "cleared at channel 302",
+          "[trace][order][fig10]") {
+    // The sequence runs against the axis order: tilt at position 1, vertical 2, cross 3,
+    // swivel 4, table 5 (every axis idle: each stops at once when its position comes).
+    CardOrders card = idle_card(1, {0, 0, 0, 0, 0});
+    const std::array<std::pair<Axis, int>, 5> at = {{{Axis::tilt, 1},
+                                                     {Axis::vertical, 2},
+                                                     {Axis::cross, 3},
+                                                     {Axis::swivel, 4},
+                                                     {Axis::table, 5}}};
+    for (const auto& [axis, position] : at) {
+        card.axis(axis).sequence = static_cast<SequencePattern>(1U << (position - 1));
+    }
+    Recorder rec;
+    REQUIRE(
+        run_orders({card, idle_card(2, {0, 0, 0, 0, 0})}, axes::default_profile(), &rec).completed);
+    // By hand: bits tilt 16, vertical 4, cross 2, swivel 8, table 1, added one a step.
+    const std::vector<std::uint32_t> expected = {16, 20, 22, 30, 31, 0};
+    std::vector<std::uint32_t> seen;
+    for (const Change& ch : rec.of("cabinet.device_288")) {
+        seen.push_back(ch.new_value);
+        if (seen.size() == expected.size()) {
+            break; // card 1's; card 2's follow
+        }
+    }
+    CHECK(seen == expected);
+    // Each break comes at the end of the shaft step that axis's impulse drove (circuit 276
+    // lets go at the same instant), and the tilt's stop (contact 238) came before its break.
+    const long tilt_stop = find(rec, "tilt.contact_238", 1);
+    const long first = find(rec, "cabinet.device_288", 16);
+    REQUIRE(tilt_stop >= 0);
+    REQUIRE(first > tilt_stop);
+    const long end_276 = find(rec, "cabinet.circuit_276", 0, tilt_stop);
+    REQUIRE(end_276 >= 0);
+    CHECK(rec.changes.at(static_cast<std::size_t>(first)).t ==
+          rec.changes.at(static_cast<std::size_t>(end_276)).t);
+    // The last break (the table's, 31) stands until channel 302 clears every one.
+    const long ch302 = find(rec, "cabinet.channel_302", 1);
+    const long cleared = find(rec, "cabinet.device_288", 0);
+    REQUIRE(ch302 >= 0);
+    CHECK(cleared > ch302);
 }
 
 TEST_CASE("Zeroizing: a delay 258 that outlasts the card cycle still holds channel 257 open on the "
