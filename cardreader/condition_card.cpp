@@ -33,8 +33,57 @@ bool slot_blank(const Card& card, int first_column) {
     return true;
 }
 
+// The mode column (an addition beyond the seed's claims): blank once, 1 every, 2 cancel.
+std::optional<ConditionMode> read_mode(const Card& card, int slot, Problems& problems) {
+    const int column = 1 + slot * kConditionSlotColumns + kConditionModeOffset;
+    const ColumnWord w = card.column(column) & kDigitRows;
+    if (w == 0) {
+        return ConditionMode::once;
+    }
+    const int digit = detail::digit_of(w);
+    if (digit == 1 || digit == 2) {
+        return digit == 1 ? ConditionMode::every : ConditionMode::cancel;
+    }
+    problems.add(column,
+                 fmt::format("condition {} mode is {}: expected blank (once), 1 (every) or "
+                             "2 (cancel)",
+                             slot + 1,
+                             digit < 0 ? fmt::format("punched in rows {}", detail::join_rows(w))
+                                       : std::to_string(digit)));
+    return std::nullopt;
+}
+
+// A cancel names its event and nothing else: every other column of the slot stays blank.
+void read_cancel(const Card& card, const CardLayout& layout, int slot, ConditionOrder& cond,
+                 Problems& problems) {
+    const LayoutField& event = slot_field(layout, slot, FieldKind::event);
+    const std::optional<int> value = read_number(card, event, problems);
+    if (!value || *value == 0) {
+        problems.add(event.first_column,
+                     fmt::format("{} is {}: a cancel names the every-condition it ends (01..99)",
+                                 field_label(event), value ? "00" : "blank"));
+    }
+    cond.event = value.value_or(0);
+    cond.mode = ConditionMode::cancel;
+    const int b = 1 + slot * kConditionSlotColumns;
+    for (int c = b + 2; c < b + kConditionModeOffset; ++c) {
+        if (card.column(c) != 0) {
+            problems.add(c, fmt::format("condition {} is a cancel (column {} row 2): only its "
+                                        "event is punched, column {} must be blank",
+                                        slot + 1, b + kConditionModeOffset, c));
+            return;
+        }
+    }
+}
+
 void read_slot(const Card& card, const CardLayout& layout, int slot, ConditionOrder& cond,
                Problems& problems) {
+    const std::optional<ConditionMode> mode = read_mode(card, slot, problems);
+    if (mode == ConditionMode::cancel) {
+        read_cancel(card, layout, slot, cond, problems);
+        return;
+    }
+    cond.mode = mode.value_or(ConditionMode::once);
     auto field = [&](FieldKind k) -> const LayoutField& { return slot_field(layout, slot, k); };
     auto required = [&](FieldKind k) {
         const LayoutField& f = field(k);
@@ -184,6 +233,17 @@ std::optional<std::string> encode_condition_card(const CardOrders& orders, const
         auto field = [&](FieldKind k) -> const LayoutField& { return slot_field(layout, slot, k); };
         if (c.event < 1 || c.event > 99) {
             return fmt::format("condition {}: event {} is not 1..99", slot + 1, c.event);
+        }
+        const int mode_column = 1 + slot * kConditionSlotColumns + kConditionModeOffset;
+        if (c.mode == ConditionMode::cancel) {
+            card.punch(mode_column, Row::r2);
+            if (auto error = punch_number(field(FieldKind::event), c.event)) {
+                return error;
+            }
+            continue;
+        }
+        if (c.mode == ConditionMode::every) {
+            card.punch(mode_column, Row::r1);
         }
         if (auto error = parameter_error(c.action, c.parameter)) {
             return fmt::format("condition {}: {}", slot + 1, *error);

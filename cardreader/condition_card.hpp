@@ -13,7 +13,11 @@
 //   b+4 .. b+7  position d.ddd, compared with the axis's absolute counter
 //   b+8         action digit 1..8 (orders.hpp ActionKind)
 //   b+9 .. b+12 parameter, four digits, blank = 0 (tool number, held axis, lamp number)
-//   b+13, b+14  blank
+//   b+13        mode (an addition beyond the seed's claims, after Siemens' WHENEVER/EVERY):
+//               blank once (the seed's condition), 1 every (armed for every motion card until
+//               a cancel or the deck's end), 2 cancel (ends the every-condition of the event in
+//               b, b+1; every other column of the slot blank)
+//   b+14        blank
 //
 // A slot whose columns are all blank is unused; the used slots must come first. decode and
 // encode are pure, as for the motion card (layout.hpp).
@@ -28,6 +32,14 @@
 namespace parsons::cardreader {
 
 inline constexpr int kConditionSlotColumns = 15;
+// The mode column's offset in its slot (column 14 of slot 1).
+inline constexpr int kConditionModeOffset = 13;
+
+// Column c (1..80) is a slot's mode column.
+constexpr bool is_condition_mode_column(int c) {
+    return c >= 1 && c <= kConditionsPerCard * kConditionSlotColumns &&
+           (c - 1) % kConditionSlotColumns == kConditionModeOffset;
+}
 
 // Adds the condition-card fields to a layout whose extension column is set.
 void add_condition_fields(CardLayout& layout);

@@ -37,21 +37,20 @@ std::vector<ConditionFinding> ConditionReview::card(std::int64_t index, const Ca
         }
         for (int slot = 0; slot < orders.condition_count; ++slot) {
             const ConditionOrder& c = orders.conditions.at(static_cast<std::size_t>(slot));
-            bool duplicate = false;
-            for (const Pending& p : pending_) {
-                if (p.condition.event == c.event) {
-                    duplicate = true;
+            if (c.mode == ConditionMode::cancel) {
+                if (!cancel(c.event)) {
                     found.push_back(
-                        {index, slot_column(slot, 0), c.axis,
-                         fmt::format("condition {}: event {} is given twice for the same motion "
-                                     "card (first on card {}, condition {}): one identifier "
-                                     "names one condition and its action (EP 0640901 claim 3)",
-                                     slot + 1, c.event, p.card, p.slot + 1),
+                        {index, slot_column(slot, kConditionModeOffset), std::nullopt,
+                         fmt::format("condition {}: a cancel of event {}, but no every-condition "
+                                     "with that identifier stands (every and cancel are an "
+                                     "addition beyond EP 0640901's claims, after Siemens' "
+                                     "WHENEVER/EVERY)",
+                                     slot + 1, c.event),
                          true});
-                    break;
                 }
+                continue;
             }
-            if (duplicate) {
+            if (duplicate(index, slot, c, found)) {
                 continue;
             }
             if (c.action == ActionKind::tool_change && !tools_.empty() &&
@@ -66,7 +65,7 @@ std::vector<ConditionFinding> ConditionReview::card(std::int64_t index, const Ca
                                              slot + 1, c.parameter, profile_, held),
                                  true});
             }
-            if (static_cast<int>(pending_.size()) == kBufferPairs) {
+            if (static_cast<int>(pending_.size() + standing_.size()) == kBufferPairs) {
                 found.push_back(
                     {index, slot_column(slot, 0), c.axis,
                      fmt::format("condition {}: more than {} conditions before one "
@@ -83,6 +82,10 @@ std::vector<ConditionFinding> ConditionReview::card(std::int64_t index, const Ca
     for (const Pending& p : pending_) {
         const ConditionOrder& c = p.condition;
         const AxisOrder& o = orders.axis(c.axis);
+        if (c.mode == ConditionMode::every) {
+            standing_.push_back(p); // armed from this card on, met or not on each
+            continue;
+        }
         if (o.check == 0) {
             found.push_back({p.card, slot_column(p.slot, 2), c.axis,
                              fmt::format("condition {}: event {} watches the {} axis, which motion "
@@ -97,6 +100,46 @@ std::vector<ConditionFinding> ConditionReview::card(std::int64_t index, const Ca
     }
     pending_.clear();
     return found;
+}
+
+bool ConditionReview::cancel(int event) {
+    for (auto* list : {&pending_, &standing_}) {
+        const auto it = std::find_if(list->begin(), list->end(), [&](const Pending& p) {
+            return p.condition.event == event && p.condition.mode == ConditionMode::every;
+        });
+        if (it != list->end()) {
+            list->erase(it);
+            return true;
+        }
+    }
+    return false;
+}
+
+bool ConditionReview::duplicate(std::int64_t index, int slot, const ConditionOrder& c,
+                                std::vector<ConditionFinding>& found) const {
+    for (const auto* list : {&pending_, &standing_}) {
+        for (const Pending& p : *list) {
+            if (p.condition.event != c.event) {
+                continue;
+            }
+            const bool standing = list == &standing_ || p.condition.mode == ConditionMode::every;
+            found.push_back(
+                {index, slot_column(slot, 0), c.axis,
+                 standing
+                     ? fmt::format("condition {}: event {} stands as an every-condition (card {}, "
+                                   "condition {}) until it is cancelled: one identifier names one "
+                                   "condition and its action (EP 0640901 claim 3; cancel it "
+                                   "first)",
+                                   slot + 1, c.event, p.card, p.slot + 1)
+                     : fmt::format("condition {}: event {} is given twice for the same motion "
+                                   "card (first on card {}, condition {}): one identifier "
+                                   "names one condition and its action (EP 0640901 claim 3)",
+                                   slot + 1, c.event, p.card, p.slot + 1),
+                 true});
+            return true;
+        }
+    }
+    return false;
 }
 
 std::vector<ConditionFinding> ConditionReview::finish() {

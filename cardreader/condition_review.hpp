@@ -11,6 +11,9 @@
 //   - a condition on an axis its motion card does not move (check 0.000): never met;
 //   - a tool change to a tool the profile's changer does not hold;
 //   - a condition card with no motion card after it (claim 4: they stand before it);
+//   - a cancel (an addition) of an identifier no every-condition stands under;
+//  an every-condition (an addition) keeps its identifier and its pair from card to card until a
+//  cancel, and is not judged against a motion card that leaves its axis standing;
 //  and a finding the machine will stop on (condition_not_met, `check` exits 3): the motion card
 //  moves the axis, but its counter never steps onto the position in the condition's sense
 //  (judged from the previous stop to this card's stop, as the counters count: modulo 10 in).
@@ -56,7 +59,16 @@ private:
         int slot = 0;
         ConditionOrder condition;
     };
+    // A cancel: removes the every-condition of `event`; false if none stands.
+    bool cancel(int event);
+    // An identifier already pending or standing: the finding is added.
+    bool duplicate(std::int64_t index, int slot, const ConditionOrder& c,
+                   std::vector<ConditionFinding>& found) const;
     std::vector<Pending> pending_;
+    // Every-conditions armed for a motion card already and standing for the next (an addition
+    // beyond the seed's claims): they keep their pair of PFR and their identifier until a
+    // cancel.
+    std::vector<Pending> standing_;
     bool allowed_;
     std::string profile_;
     std::vector<int> tools_;

@@ -316,10 +316,10 @@ void CardLayout::index() {
         const LayoutField* cf = condition_field_at(c);
         const bool number = f && f->kind == FieldKind::card_number;
         condition_allowed_rows.at(static_cast<std::size_t>(c)) =
-            c == extension_column ? rows_allowed(FieldKind::extension)
-            : cf                  ? rows_allowed(cf->kind)
-            : number              ? kDigitRows
-                                  : ColumnWord{0};
+            c == extension_column                   ? rows_allowed(FieldKind::extension)
+            : cf                                    ? rows_allowed(cf->kind)
+            : number || is_condition_mode_column(c) ? kDigitRows
+                                                    : ColumnWord{0};
         const LayoutField* sf = sync_field_at(c);
         sync_allowed_rows.at(static_cast<std::size_t>(c)) = c == extension_column ? r2
                                                             : sf     ? rows_allowed(sf->kind)

@@ -150,9 +150,14 @@ std::pair<int, ConditionOrder> parse_condition_row(std::string_view text, const 
                                                    std::int64_t line) {
     auto fields = split_fields(text);
     auto fail = [&](const std::string& why) { return DeckError::at_line(file, line, why); };
-    if (fields.size() != kConditionFieldCount) {
+    // card,if,event,cancel: the end of an every-condition (an addition beyond the seed's claims)
+    const bool cancel = fields.size() == 4 && fields[3] == "cancel";
+    if (!cancel && fields.size() != kConditionFieldCount &&
+        fields.size() != kConditionFieldCount + 1) {
         throw fail(fmt::format("a condition row has 8 comma-separated fields "
-                               "(card,if,event,axis,sense,position,action,parameter), found {}",
+                               "(card,if,event,axis,sense,position,action,parameter), a 9th for "
+                               "its mode (once or every), or 4 for a cancel "
+                               "(card,if,event,cancel), found {}",
                                fields.size()));
     }
     if (!all_digits(fields[0]) || fields[0].size() > 4) {
@@ -163,6 +168,19 @@ std::pair<int, ConditionOrder> parse_condition_row(std::string_view text, const 
         throw fail(fmt::format("event '{}' is not an identifier 1..99", fields[2]));
     }
     c.event = std::stoi(std::string(fields[2]));
+    if (cancel) {
+        c.mode = ConditionMode::cancel;
+        return {std::stoi(std::string(fields[0])), c};
+    }
+    if (fields.size() == kConditionFieldCount + 1) {
+        if (fields[8] == "every") {
+            c.mode = ConditionMode::every;
+        } else if (fields[8] != "once") {
+            throw fail(fmt::format("mode '{}' is not once or every (a cancel is the row "
+                                   "card,if,event,cancel)",
+                                   fields[8]));
+        }
+    }
     const auto axis = axis_named(fields[3]);
     if (!axis) {
         throw fail(
@@ -544,15 +562,18 @@ std::string listing_row(const CardOrders& orders, Axis axis) {
 
 std::string condition_row(const CardOrders& orders, int index) {
     const ConditionOrder& c = orders.conditions.at(static_cast<std::size_t>(index));
+    if (c.mode == ConditionMode::cancel) {
+        return fmt::format("{},if,{},cancel", orders.number, c.event);
+    }
     std::string parameter;
     if (c.action == ActionKind::dwell) {
         parameter = axis_name(kAxes.at(static_cast<std::size_t>(c.parameter - 1)));
     } else if (c.parameter != 0) {
         parameter = std::to_string(c.parameter);
     }
-    return fmt::format("{},if,{},{},{},{},{},{}", orders.number, c.event, axis_name(c.axis),
+    return fmt::format("{},if,{},{},{},{},{},{}{}", orders.number, c.event, axis_name(c.axis),
                        sense_symbol(c.sense), format_inches(c.position), action_name(c.action),
-                       parameter);
+                       parameter, c.mode == ConditionMode::every ? ",every" : "");
 }
 
 std::unique_ptr<CardSource> make_listing_source(std::istream& in, std::string file,

@@ -55,6 +55,10 @@ std::string_view sense_symbol(PassingSense s) {
     return s == PassingSense::forward ? "+" : s == PassingSense::reverse ? "-" : "*";
 }
 
+std::string_view mode_name(ConditionMode m) {
+    return m == ConditionMode::every ? "every" : m == ConditionMode::cancel ? "cancel" : "once";
+}
+
 std::string_view sense_name(PassingSense s) {
     return s == PassingSense::forward   ? "forward"
            : s == PassingSense::reverse ? "reverse"

@@ -86,6 +86,14 @@ enum class ActionKind : std::uint8_t {
 inline constexpr int kActionKinds = 8;
 inline constexpr int kConditionsPerCard = 5;
 
+// How long a condition stays armed (column 14 of its slot; an addition beyond EP 0640901's
+// claims, after Siemens' later synchronized actions WHENEVER/EVERY): once, the seed's condition,
+// armed for the next motion card only (blank); every, armed for every motion card that follows
+// until a cancel or the deck's end, firing at each motion card whose counter steps onto its
+// position (digit 1); cancel, ending the every-condition of this identifier (digit 2: only the
+// event is punched besides).
+enum class ConditionMode : std::uint8_t { once, every, cancel };
+
 struct ConditionOrder {
     int event = 0; // identifier 1..99 shared by condition and action (claim 3)
     Axis axis = Axis::table;
@@ -93,6 +101,7 @@ struct ConditionOrder {
     PassingSense sense = PassingSense::either;
     ActionKind action = ActionKind::lamp;
     int parameter = 0; // 0..9999: tool number, held axis, lamp number (0 where unused)
+    ConditionMode mode = ConditionMode::once; // an addition beyond the seed's claims (above)
 
     bool operator==(const ConditionOrder&) const = default;
 };
@@ -103,6 +112,7 @@ std::optional<ActionKind> action_named(std::string_view name);
 // "+", "-", "*"
 std::string_view sense_symbol(PassingSense s);
 std::string_view sense_name(PassingSense s); // "forward", "reverse", "either"
+std::string_view mode_name(ConditionMode m); // "once", "every", "cancel"
 // The parameter in words: "tool 2", "hold cross", "lamp 3"; "" for an action without one.
 std::string parameter_text(ActionKind a, int parameter);
 // The action with its parameter in words: "tool-change (tool 2)", "dwell (hold cross)",

@@ -77,13 +77,25 @@ void print_condition_card(std::int64_t index, const CardOrders& o) {
     for (int i = 0; i < o.condition_count; ++i) {
         const ConditionOrder& c = o.conditions.at(static_cast<std::size_t>(i));
         const int first = 1 + i * kConditionSlotColumns;
-        fmt::print("  {:<5} {:<8} {:<6} {:<9} {:<9} {:<10} {:<16} {}\n", i + 1,
-                   fmt::format("{}-{}", first, first + 12), c.event, axis_name(c.axis),
+        const int mode = first + kConditionModeOffset;
+        if (c.mode == ConditionMode::cancel) { // an addition beyond the seed's claims
+            fmt::print("  {:<5} {:<8} {:<6} cancel (column {} row 2): ends every-condition {}\n",
+                       i + 1, fmt::format("{}-{}", first, mode), c.event, mode, c.event);
+            continue;
+        }
+        fmt::print("  {:<5} {:<8} {:<6} {:<9} {:<9} {:<10} {:<16} {}{}\n", i + 1,
+                   fmt::format("{}-{}", first, c.mode == ConditionMode::every ? mode : first + 12),
+                   c.event, axis_name(c.axis),
                    fmt::format("{} {}", sense_symbol(c.sense), sense_name(c.sense)),
                    format_inches(c.position), action_name(c.action),
                    parameter_text(c.action, c.parameter).empty()
                        ? std::string("-")
-                       : parameter_text(c.action, c.parameter));
+                       : parameter_text(c.action, c.parameter),
+                   c.mode == ConditionMode::every
+                       ? fmt::format(" · every (column {} row 1): armed for every motion card "
+                                     "until cancelled",
+                                     mode)
+                       : std::string());
     }
 }
 
@@ -92,13 +104,25 @@ Json condition_card_json(std::int64_t index, const CardOrders& o) {
     for (int i = 0; i < o.condition_count; ++i) {
         const ConditionOrder& c = o.conditions.at(static_cast<std::size_t>(i));
         const int first = 1 + i * kConditionSlotColumns;
-        conditions.push_back({{"columns", {{"first", first}, {"last", first + 12}}},
-                              {"event", c.event},
-                              {"axis", std::string(axis_name(c.axis))},
-                              {"sense", std::string(sense_name(c.sense))},
-                              {"position", inches_json(c.position)},
-                              {"action", std::string(action_name(c.action))},
-                              {"parameter", c.parameter}});
+        const int mode = first + kConditionModeOffset;
+        if (c.mode == ConditionMode::cancel) { // an addition beyond the seed's claims
+            conditions.push_back({{"columns", {{"first", first}, {"last", mode}}},
+                                  {"event", c.event},
+                                  {"mode", "cancel"}});
+            continue;
+        }
+        conditions.push_back(
+            {{"columns",
+              {{"first", first}, {"last", c.mode == ConditionMode::every ? mode : first + 12}}},
+             {"event", c.event},
+             {"axis", std::string(axis_name(c.axis))},
+             {"sense", std::string(sense_name(c.sense))},
+             {"position", inches_json(c.position)},
+             {"action", std::string(action_name(c.action))},
+             {"parameter", c.parameter}});
+        if (c.mode != ConditionMode::once) { // an addition beyond the seed's claims
+            conditions.back()["mode"] = std::string(mode_name(c.mode));
+        }
     }
     return {{"index", index},
             {"number", o.number},

@@ -83,6 +83,9 @@ struct ConditionEvent {
     cardreader::ActionKind action = cardreader::ActionKind::lamp;
     int parameter = 0;
     int tool_in_spindle = 0; // after the event
+    // An every-condition (an addition beyond EP 0640901's claims): which firing, 1, 2, ...;
+    // 0 for a once-condition.
+    int firing = 0;
 };
 
 // Every signal change as it came, in three arrays: what an observer that keeps the changes as

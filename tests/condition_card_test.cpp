@@ -79,7 +79,7 @@ TEST_CASE("Condition card: a bad punch is named by its column", "[conditions][ca
         const char* says;
     };
     const std::vector<Case> cases = {
-        {"a hole in a blank column of the slot", [](Card& c) { c.punch(14, Row::r3); }, 14,
+        {"a hole in a blank column of the slot", [](Card& c) { c.punch(15, Row::r3); }, 15,
          "where none belongs"},
         {"event 00", [](Card& c) { c.set_column(2, row_bit(Row::r0)); }, 1, "00"},
         {"axis 6", [](Card& c) { c.set_column(3, row_bit(Row::r6)); }, 3, "expected 1..5"},

@@ -289,6 +289,10 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachinePr
                                    {"acknowledged_seconds", time_s(a.acknowledged_s)},
                                    {"motion_end_seconds", time_s(a.motion_end_s)},
                                    {"overlap_seconds", time_s(a.overlap_s())}});
+            if (a.every) { // an every-condition's firing (an addition beyond the seed's claims)
+                actions.back()["mode"] = "every";
+                actions.back()["firing"] = a.firing;
+            }
         }
         j["actions"] = actions;
         j["actions_overlap_seconds"] = time_s(saved);
@@ -371,10 +375,12 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
         }
     }
     for (const auto& a : r.actions) {
-        line(fmt::format("  action         event {} ({} at {}, card {}): {} at {:.3f} s, "
+        line(fmt::format("  action         event {} ({} at {}, card {}{}): {} at {:.3f} s, "
                          "acknowledged {:.3f} s, {:.3f} s of it while the axes moved",
                          a.event, axis_name(a.axis), cardreader::format_inches(a.position),
-                         a.motion_card, cardreader::action_text(a.action, a.parameter), a.tripped_s,
+                         a.motion_card,
+                         a.every ? fmt::format(", every: firing {}", a.firing) : std::string(),
+                         cardreader::action_text(a.action, a.parameter), a.tripped_s,
                          a.acknowledged_s, a.overlap_s()));
     }
     if (r.tool_in_spindle && r.conditions_used) {

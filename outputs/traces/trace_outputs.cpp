@@ -510,7 +510,7 @@ void EventsJsonlWriter::on_stop(double seconds, const relaylogic::StopInfo& stop
 
 // {"t":..,"event":"condition_met","id":7,"card":2,"card_number":2,"condition_card":1,
 //  "axis":"table","position":"5.000","sense":"forward","action":"lamp","parameter":3,
-//  "tool_in_spindle":1}
+//  "tool_in_spindle":1}, and for an every-condition "mode":"every","firing":2 at the end
 void EventsJsonlWriter::on_condition(double seconds, const relaylogic::ConditionEvent& e) {
     buf_.put("{\"t\":");
     buf_.put_fixed(seconds, 6);
@@ -536,6 +536,10 @@ void EventsJsonlWriter::on_condition(double seconds, const relaylogic::Condition
     buf_.put_int(e.parameter);
     buf_.put(",\"tool_in_spindle\":");
     buf_.put_int(e.tool_in_spindle);
+    if (e.firing > 0) { // an every-condition (an addition): which firing
+        buf_.put(",\"mode\":\"every\",\"firing\":");
+        buf_.put_int(e.firing);
+    }
     buf_.put("}\n");
 }
 

@@ -14,6 +14,10 @@ nlohmann::json actions_to_json(const std::vector<ActionRecord>& actions) {
                         static_cast<int>(a.axis), a.position, static_cast<int>(a.action),
                         a.parameter, exact(a.tripped_s), exact(a.acknowledged_s),
                         exact(a.motion_end_s)});
+        if (a.every) { // an every-condition's firing: two more values
+            list.back().push_back(true);
+            list.back().push_back(a.firing);
+        }
     }
     return list;
 }
@@ -25,8 +29,9 @@ std::vector<ActionRecord> actions_from_json(const nlohmann::json& j) {
         throw axes::StateError("actions: expected an array");
     }
     for (const auto& e : j) {
-        if (!e.is_array() || e.size() != 11) {
-            throw axes::StateError("actions: each record has 11 values");
+        if (!e.is_array() || (e.size() != 11 && e.size() != 13)) {
+            throw axes::StateError(
+                "actions: each record has 11 values (13 for an every-condition)");
         }
         const int axis = e.at(4).get<int>();
         const int action = e.at(6).get<int>();
@@ -39,6 +44,10 @@ std::vector<ActionRecord> actions_from_json(const nlohmann::json& j) {
             e.at(3).get<int>(), static_cast<cardreader::Axis>(axis),
             e.at(5).get<cardreader::Thousandths>(), static_cast<cardreader::ActionKind>(action),
             e.at(7).get<int>(), exact(e.at(8)), exact(e.at(9)), exact(e.at(10))});
+        if (e.size() == 13) {
+            out.back().every = e.at(11).get<bool>();
+            out.back().firing = e.at(12).get<int>();
+        }
     }
     return out;
 }
@@ -75,7 +84,9 @@ std::optional<std::string> ConditionUnits::refuse_unmoved(const cardreader::Card
     }
     for (int k = 0; k < InternalBuffer::kChannels; ++k) {
         const BufferPair& p = buffer_->pair(k);
-        if (p.state == PairState::stored && motion.axis(p.condition.axis).check == 0) {
+        // An every-condition need not be met on every card, so a card that leaves its axis
+        // standing is no error for it.
+        if (p.state == PairState::stored && !p.every && motion.axis(p.condition.axis).check == 0) {
             return fmt::format("card {}: event {} of condition card {} watches the {} axis, which "
                                "this motion card does not move (check 0.000): the condition "
                                "could never be met (condition cards are an addition after "
@@ -116,7 +127,22 @@ void ConditionUnits::acknowledge(int k, double t) {
 }
 
 int ConditionUnits::first_unmet() const {
-    return buffer_ ? buffer_->first(PairState::armed) : -1;
+    for (int k = 0; buffer_ && k < InternalBuffer::kChannels; ++k) {
+        if (buffer_->pair(k).state == PairState::armed && !buffer_->pair(k).every) {
+            return k;
+        }
+    }
+    return -1;
+}
+
+int ConditionUnits::first_waiting() const {
+    for (int k = 0; buffer_ && k < InternalBuffer::kChannels; ++k) {
+        const BufferPair& p = buffer_->pair(k);
+        if (p.state == PairState::stored && (!p.every || p.motion_card == 0)) {
+            return k;
+        }
+    }
+    return -1;
 }
 
 void ConditionUnits::zeroize() {
@@ -126,11 +152,19 @@ void ConditionUnits::zeroize() {
     // Pairs still stored belong to a motion card not yet read (none: conditions stand right
     // before their card), so zeroizing clears the armed and acknowledged ones.
     for (int k = 0; k < InternalBuffer::kChannels; ++k) {
-        if (buffer_->pair(k).state != PairState::stored &&
-            buffer_->pair(k).state != PairState::empty) {
-            buffer_->set_state(k, PairState::empty);
-            buffer_->pair(k) = BufferPair{};
+        BufferPair& p = buffer_->pair(k);
+        if (p.state == PairState::stored || p.state == PairState::empty) {
+            continue;
         }
+        if (p.every) { // stays: stored again for the next motion card, met or not on this one
+            p.firings += p.state == PairState::acknowledged ? 1 : 0;
+            p.tripped_s = -1;
+            p.acknowledged_s = -1;
+            buffer_->set_state(k, PairState::stored);
+            continue;
+        }
+        buffer_->set_state(k, PairState::empty);
+        p = BufferPair{};
     }
     buffer_->set_motion(MotionEntry::empty, -1);
     prg_->clear();
@@ -152,6 +186,7 @@ ConditionEvent ConditionUnits::event(int k, ConditionEventKind kind, std::int64_
     e.action = p.action.action;
     e.parameter = p.action.parameter;
     e.tool_in_spindle = ale_->tool_in_spindle();
+    e.firing = p.every ? p.firings + 1 : 0;
     return e;
 }
 

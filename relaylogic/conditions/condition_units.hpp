@@ -41,6 +41,8 @@ struct ActionRecord {
     double tripped_s = 0;
     double acknowledged_s = 0;
     double motion_end_s = 0; // when the motion card's last axis stopped
+    bool every = false;      // an every-condition's firing (an addition beyond the seed's claims)
+    int firing = 0;          // and which: 1, 2, ... (0 for a once-condition)
     // How long the action ran while the card's axes still moved: min(acknowledged, motion
     // end) - tripped, or 0. The time the seed saves over starting it at the card's end.
     double overlap_s() const {
@@ -64,8 +66,9 @@ public:
 
     // A condition card was sensed (deck position `index`): UMS enters it, or says why not.
     std::optional<std::string> convert(const cardreader::CardOrders& card, std::int64_t index);
-    // Conditions stored and waiting for their motion card.
-    bool stored() const { return buffer_ && buffer_->any(PairState::stored); }
+    // A condition stored and never yet armed: waiting for its first motion card (an
+    // every-condition stored again after its motion cards is not), or -1.
+    int first_waiting() const;
     // Before a motion card's relays pick: a stored condition on an axis the card does not move
     // (check 0) cannot be met. Returns the message naming cards, event and axis.
     std::optional<std::string> refuse_unmoved(const cardreader::CardOrders& motion,
@@ -85,9 +88,11 @@ public:
     double trip(int k, double t);
     void acknowledge(int k, double t);
     bool all_acknowledged() const { return !buffer_ || !buffer_->any(PairState::tripped); }
-    // The first channel still armed (never met), or -1.
+    // The first channel of a once-condition still armed (never met), or -1 (an every-condition
+    // need not be met on every card).
     int first_unmet() const;
-    // The zeroizing circuit: PFR and PRG cleared, output lamps out.
+    // The zeroizing circuit: PFR and PRG cleared, output lamps out; an every-condition's pair
+    // is stored again for the next motion card (its firings counted).
     void zeroize();
     bool held(cardreader::Axis axis) const { return ale_ && ale_->held(axis); }
     void drive_spindle(axes::SpindleMotor& motor) {

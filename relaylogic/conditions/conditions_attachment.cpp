@@ -22,10 +22,11 @@ ConditionsAttachment::ConditionsAttachment(Tracer& tracer, const axes::MachinePr
 
 // A condition card with no motion card after it: the deck ends.
 void ConditionsAttachment::deck_ended(ControlCabinet& cab) {
-    if (!units_.stored()) {
-        return;
+    const int waiting = units_.first_waiting();
+    if (waiting < 0) {
+        return; // every-conditions standing after their motion cards end with the deck
     }
-    const BufferPair& p = units_.buffer().pair(units_.buffer().first(PairState::stored));
+    const BufferPair& p = units_.buffer().pair(waiting);
     cab.machine_stop(StopReason::condition_refused, std::nullopt,
                      fmt::format("card {} (number {:04}): a condition card with no motion card "
                                  "after it: the deck ends (condition cards stand before the "
@@ -186,7 +187,7 @@ void ConditionsAttachment::zeroized(ControlCabinet& cab) {
             actions_.push_back(ActionRecord{
                 p.condition.event, p.card, cab.cards_read(), cab.orders().number, p.condition.axis,
                 p.condition.position, p.action.action, p.action.parameter, p.tripped_s,
-                p.acknowledged_s, cab.motion_end_s()});
+                p.acknowledged_s, cab.motion_end_s(), p.every, p.every ? p.firings + 1 : 0});
         }
     }
     // The card's actions in the order they were tripped (channel order at one instant).

@@ -96,6 +96,10 @@ nlohmann::json InternalBuffer::save() const {
                         {"motion_card", p.motion_card},
                         {"tripped_s", exact(p.tripped_s)},
                         {"acknowledged_s", exact(p.acknowledged_s)}});
+        if (p.every) { // only then, so that states of decks without one stay as they were
+            list.back()["every"] = true;
+            list.back()["firings"] = p.firings;
+        }
     }
     return list;
 }
@@ -133,6 +137,11 @@ void InternalBuffer::load(const nlohmann::json& j) {
         p.motion_card = read<std::int64_t>(e, "motion_card");
         p.tripped_s = exact(axes::member(e, "tripped_s"));
         p.acknowledged_s = exact(axes::member(e, "acknowledged_s"));
+        p.every = e.contains("every") && read<bool>(e, "every");
+        p.firings = e.contains("firings") ? read<int>(e, "firings") : 0;
+        if (p.firings < 0) {
+            throw axes::StateError(fmt::format("buffer_pfr[{}]: firings out of range", k));
+        }
         pair(k) = p;
         set_state(k, static_cast<PairState>(state));
     }
@@ -144,6 +153,26 @@ std::optional<std::string> convert_condition_card(const cardreader::CardOrders& 
         const cardreader::ConditionOrder& c = card.conditions.at(static_cast<std::size_t>(i));
         const int column = 1 + i * cardreader::kConditionSlotColumns;
         const int other = buffer.pair_with_event(c.event);
+        if (c.mode == cardreader::ConditionMode::cancel) {
+            if (other < 0 || !buffer.pair(other).every) {
+                return fmt::format("card {}, column {}: a cancel of event {}, but no "
+                                   "every-condition with that identifier stands in buffer PFR "
+                                   "(every and cancel are an addition beyond EP 0640901's claims, "
+                                   "after Siemens' WHENEVER/EVERY)",
+                                   index, column + cardreader::kConditionModeOffset, c.event);
+            }
+            buffer.set_state(other, PairState::empty);
+            buffer.pair(other) = BufferPair{};
+            continue;
+        }
+        if (other >= 0 && buffer.pair(other).every) {
+            const BufferPair& o = buffer.pair(other);
+            return fmt::format("card {}, column {}: event {} stands as an every-condition (card "
+                               "{}, condition {}) until it is cancelled: an identifier names one "
+                               "condition and its action (EP 0640901 claim 3; cancel it first, "
+                               "a slot with the event and 2 in its mode column)",
+                               index, column, c.event, o.card, o.slot + 1);
+        }
         if (other >= 0) {
             const BufferPair& o = buffer.pair(other);
             return fmt::format("card {}, column {}: event {} is already stored for the same "
@@ -166,6 +195,7 @@ std::optional<std::string> convert_condition_card(const cardreader::CardOrders& 
         p.card = index;
         p.card_number = card.number;
         p.slot = i;
+        p.every = c.mode == cardreader::ConditionMode::every;
         buffer.set_state(k, PairState::stored);
     }
     return std::nullopt;

@@ -58,6 +58,10 @@ struct BufferPair {
     std::int64_t motion_card = 0; // the motion card it watches (once armed)
     double tripped_s = -1;        // when PRG reported it
     double acknowledged_s = -1;
+    // An every-condition (an addition beyond the seed's claims, after Siemens' WHENEVER/EVERY):
+    // zeroizing stores it again for the next motion card instead of clearing it, until a cancel.
+    bool every = false;
+    int firings = 0; // how many motion cards it has fired on (acknowledged) so far
 };
 
 // The card column of a field of the pair's condition (offset 0 the event, 8 the action digit).
@@ -103,8 +107,9 @@ private:
 
 // Converter UMS (claim 1): takes a condition card's records and enters each as a condition
 // entry and an action entry of the buffer. Returns an error sentence (naming the condition's
-// column) when the buffer cannot take them: an identifier already stored for this motion card,
-// or no free pair.
+// column) when the buffer cannot take them: an identifier already stored for this motion card
+// (or standing as an every-condition), or no free pair. A cancel (an addition) empties the pair
+// of its every-condition, or is refused when no every-condition has that identifier.
 std::optional<std::string> convert_condition_card(const cardreader::CardOrders& card,
                                                   std::int64_t index, InternalBuffer& buffer);
 

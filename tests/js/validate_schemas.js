@@ -501,6 +501,7 @@ async function runAll() {
   const conditions = path.join(SAMPLES, 'condition-cards.csv');
   const pressSync = path.join(SAMPLES, 'press-sync.csv');
   const pressReset = path.join(SAMPLES, 'press-reset.csv');
+  const everyCondition = path.join(SAMPLES, 'every-condition.csv');
   const sampleText = fs.readFileSync(sample, 'utf8');
   const conditionText = fs.readFileSync(conditions, 'utf8');
   const X = ['--profile', 'parsons-extended'];
@@ -601,6 +602,18 @@ async function runAll() {
        'conditions.events.jsonl']);
   expect('conditions.report.json', 'report');
   expect('conditions.events.jsonl', 'events');
+  // An every-condition (an addition): its firings in the report and the events, and a state
+  // saved with it standing (stopped by a soft limit on the table's way back).
+  run(['run', everyCondition, ...X, '-q', '--report', 'every.report.json', '--events',
+       'every.events.jsonl']);
+  expect('every.report.json', 'report');
+  expect('every.events.jsonl', 'events');
+  if (JSON.parse(fs.readFileSync(inWork('every.report.json'), 'utf8')).actions.map((a) => a.firing).join() !== '1,2') {
+    fail('every.report.json: the every-condition did not fire twice (firings 1, 2)');
+  }
+  run(['run', everyCondition, ...X, '-q', '--limit', 'table=0.150:5', '--save-state',
+       'every.state.json'], { codes: [3] });
+  expect('every.state.json', 'state');
   writeWork('condition-not-met.csv', replaceLine(conditionText, '1,if,7,table,+,5.000,lamp,3',
                                                  '1,if,7,table,+,9.500,lamp,3'));
   run(['run', 'condition-not-met.csv', ...X, '-q', '--report', 'condition-not-met.report.json',
@@ -800,6 +813,7 @@ async function runAll() {
     ['show-sample.json', [sample], [0]],
     ['show-stall.json', ['stall.csv'], [0]],
     ['show-conditions.json', [conditions, ...X], [0]],
+    ['show-every.json', [everyCondition, ...X], [0]],
     ['show-press-sync.json', [pressSync, ...X], [0]],
     ['show-press-reset.json', [pressReset, ...X], [0]],
     ['show-plate.json', ['plate.csv', ...X], [0]],
