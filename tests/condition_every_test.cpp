@@ -166,7 +166,7 @@ TEST_CASE("Every-condition: the cabinet refuses a cancel with no every-condition
 }
 
 TEST_CASE("Every-condition: punched in column 14 (row 1 every, row 2 cancel), listed with its "
-          "mode and read back; a bad mode or a cancel with more punched is a bad punch",
+          "mode and read back, and a bad mode or a cancel with more punched is a bad punch",
           "[conditions][every][card]") {
     const CardOrders card = condition_card(
         7, {every(cond(1, Axis::table, 200, PassingSense::forward, ActionKind::lamp, 1)), cancel(3),
