@@ -220,6 +220,7 @@ std::string_view field_short_label(FieldKind kind) {
     case FieldKind::tap_depth:
     case FieldKind::tap_pitch:
     case FieldKind::tap_rpm:
+    case FieldKind::tap_index:
         return tap_field_short_label(kind);
     }
     return "";
@@ -255,6 +256,7 @@ std::string field_label(const LayoutField& field) {
     case FieldKind::tap_depth:
     case FieldKind::tap_pitch:
     case FieldKind::tap_rpm:
+    case FieldKind::tap_index:
         return tap_field_label(field);
     case FieldKind::motion:
         what = "motion";

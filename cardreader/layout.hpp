@@ -56,13 +56,15 @@ enum class FieldKind : std::uint8_t {
     // The fields of a tap card (an addition after EP 0360190; docs/card-layout.md): the tool T
     // (two digits, 01-99), the feed axis (one digit 1-5), the sense into the work (row 0
     // forward, row 1 reverse), the depth (d.ddd in), the pitch (five digits read 0.ddddd in per
-    // tool revolution) and spindle motor 27's speed S (four digits, rev/min).
+    // tool revolution) and spindle motor 27's speed S (four digits, rev/min); the rigid-tapping
+    // additions: the index wait (one digit, blank or 1).
     tap_tool,
     tap_axis,
     tap_sense,
     tap_depth,
     tap_pitch,
     tap_rpm,
+    tap_index,
 };
 
 struct LayoutField {

@@ -167,6 +167,9 @@ struct TapOrder {
     Thousandths depth = 0;           // travel into the work and back, d.ddd in (1..9999)
     int pitch = 0;                   // per tool revolution, hundred-thousandths of an inch
     int rpm = 0;                     // S: motor 27's speed, revolutions a minute (1..9999)
+    // An addition after rigid tapping (LinuxCNC G33.1, Fanuc G84): the feed waits for the index
+    // of encoder 32 that puts the tool at the same angle every pass (column 19 punched 1).
+    bool index_wait = false;
 
     bool operator==(const TapOrder&) const = default;
 };

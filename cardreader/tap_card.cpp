@@ -83,6 +83,25 @@ Motion read_sense(const Card& card, const LayoutField& f, Problems& problems) {
     return s == r1 ? Motion::reverse : Motion::forward;
 }
 
+// Column 19 (an addition after rigid tapping): blank, no wait (the feed follows from the tool's
+// first turn); 1, the feed waits for encoder 32's index. Any other digit is refused.
+bool read_index_wait(const Card& card, const LayoutField& f, Problems& problems) {
+    Problems own;
+    const std::optional<int> digit = detail::read_number(card, f, own);
+    if (const auto bad = own.first()) {
+        problems.add(bad->column, bad->what);
+        return false;
+    }
+    if (digit && *digit != 1) {
+        problems.add(f.first_column,
+                     fmt::format("{} is {}: blank (the feed follows from the tool's first turn) "
+                                 "or 1 (the feed waits for encoder 32's index)",
+                                 tap_field_label(f), *digit));
+        return false;
+    }
+    return digit.has_value();
+}
+
 } // namespace
 
 void add_tap_fields(CardLayout& layout) {
@@ -92,6 +111,7 @@ void add_tap_fields(CardLayout& layout) {
     layout.tap_fields.push_back({FieldKind::tap_depth, std::nullopt, 6, 4});
     layout.tap_fields.push_back({FieldKind::tap_pitch, std::nullopt, 10, 5});
     layout.tap_fields.push_back({FieldKind::tap_rpm, std::nullopt, 15, 4});
+    layout.tap_fields.push_back({FieldKind::tap_index, std::nullopt, 19, 1});
 }
 
 std::string tap_field_label(const LayoutField& field) {
@@ -108,6 +128,8 @@ std::string tap_field_label(const LayoutField& field) {
         return "tap pitch";
     case FieldKind::tap_rpm:
         return "tap speed";
+    case FieldKind::tap_index:
+        return "tap index wait";
     default:
         return "tap field";
     }
@@ -127,6 +149,8 @@ std::string_view tap_field_short_label(FieldKind kind) {
         return "PITCH";
     case FieldKind::tap_rpm:
         return "SPEED S";
+    case FieldKind::tap_index:
+        return "INDEX";
     default:
         return "";
     }
@@ -163,6 +187,7 @@ DecodeResult decode_tap_card(const Card& card, const CardLayout& layout) {
     t.rpm = read_required(card, tap_field(layout, FieldKind::tap_rpm),
                           "spindle motor 27's speed S, 0001-9999 rev/min",
                           "the spindle must turn to tap (0001-9999 rev/min)", problems);
+    t.index_wait = read_index_wait(card, tap_field(layout, FieldKind::tap_index), problems);
     result.bad_punch = problems.first();
     return result;
 }
@@ -214,6 +239,9 @@ std::optional<std::string> encode_tap_card(const TapOrder& t, const CardLayout& 
     number(FieldKind::tap_depth, t.depth);
     number(FieldKind::tap_pitch, t.pitch);
     number(FieldKind::tap_rpm, t.rpm);
+    if (t.index_wait) {
+        number(FieldKind::tap_index, 1);
+    }
     return error;
 }
 

@@ -27,6 +27,18 @@ std::string held_tools(const SpindleLimits& limits) {
 
 } // namespace
 
+std::optional<int> motor_revs_per_tool_rev(double ratio) {
+    if (!(ratio > 0)) {
+        return std::nullopt;
+    }
+    const double n = 1.0 / ratio;
+    const double whole = std::round(n);
+    if (whole < 1 || whole > 1000 || std::abs(n - whole) > 1e-6 * whole) {
+        return std::nullopt;
+    }
+    return static_cast<int>(whole);
+}
+
 const SpindleLimits::Head* SpindleLimits::head(int tool) const {
     for (const Head& h : heads) {
         if (h.tool == tool) {
@@ -85,6 +97,13 @@ std::vector<TapFinding> TapReview::card(std::int64_t index, const CardOrders& or
                                      "(profile {}): a tap card feeds the axis one pitch a turn of "
                                      "the tool, which only a tap may be fed",
                                      t.tool, profile_)});
+    }
+    if (head && t.index_wait && !motor_revs_per_tool_rev(head->ratio)) {
+        found.push_back({index, tap_column(FieldKind::tap_index), t.axis,
+                         fmt::format("tap index wait: tool {}'s gear ratio {:.4g} is not 1/n, so "
+                                     "no index of encoder 32 (once a motor revolution) puts the "
+                                     "tool at one angle every pass; leave column 19 blank",
+                                     t.tool, head->ratio)});
     }
     if (t.rpm > limits_.max_rpm + 1e-9) {
         found.push_back({index, tap_column(FieldKind::tap_rpm), t.axis,

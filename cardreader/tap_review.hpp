@@ -11,7 +11,9 @@
 //     gear unit 30 with that tool's head, the figure memory 12a holds, claim 1), so the axis
 //     must feed pitch x S x A in/min: column 10, with the most pitch it can be at that speed;
 //   - a feed slower than the drive's least (kLeastTapFeedInPerMin): column 10, with the least
-//     pitch at that speed.
+//     pitch at that speed;
+//   - an index wait (rigid tapping, an addition) with a head whose ratio A is not 1/n: the
+//     motor's index then never puts the tool at one angle: column 19.
 // Emulation note: a static reading of the cards, not a run; what motor 27, PC 130 and the feed
 // do with the card is relaylogic's business.
 #pragma once
@@ -51,6 +53,11 @@ struct SpindleLimits {
     // The smallest pitch that feeds at least kLeastTapFeedInPerMin at `rpm` through `ratio`.
     static int min_pitch(int rpm, double ratio);
 };
+
+// Rigid tapping's index wait (an addition): encoder 32's index comes once a motor revolution,
+// and the tool turns A of a revolution for each, so the tool stands at one angle at every n-th
+// index only where A = 1/n. That n (1..1000), or none when 1/A is not a whole number.
+std::optional<int> motor_revs_per_tool_rev(double ratio);
 
 struct TapFinding {
     std::int64_t card = 0; // deck position the finding is on

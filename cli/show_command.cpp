@@ -222,6 +222,10 @@ std::vector<std::array<std::string, 3>> tap_card_fields(const CardOrders& o,
         case FieldKind::tap_rpm:
             value = fmt::format("S {} rev/min of spindle motor 27", t.rpm);
             break;
+        case FieldKind::tap_index:
+            value = t.index_wait ? "1: the feed waits for encoder 32's index (an addition)"
+                                 : "blank: the feed follows from the tool's first turn";
+            break;
         default:
             break;
         }
@@ -260,6 +264,7 @@ Json tap_card_json(std::int64_t index, const CardOrders& o) {
             {"depth", inches_json(t.depth)},
             {"pitch", t.pitch / 100000.0},
             {"rpm", t.rpm},
+            {"index_wait", t.index_wait},
             {"warnings", Json::array()}};
 }
 

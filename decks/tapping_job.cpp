@@ -211,7 +211,18 @@ private:
         const axes::SpindleSyncProfile& s = profile_.spindle;
         const double run_up_s = rpm / s.run_up_rpm_per_s;
         const double v = feed_in_per_min / 60.0;
-        return v * run_up_s / 2 + 2 * v * s.sample_s;
+        const double run_up = v * run_up_s / 2 + 2 * v * s.sample_s;
+        if (!o_.index_wait) {
+            return run_up;
+        }
+        // With the index wait the feed may start at full speed v (the motor at S when the index
+        // comes): it falls behind by the index's sample, the NC's and the drive's two, and the
+        // drive's acceleration to v, L = 3 v sample_s + v^2 / 2a, and takes that up at the
+        // drive's fastest, vmax, gaining vmax - v: vmax L / (vmax - v) of travel.
+        const double acc = profile_.sync_drive.acceleration_in_per_s2;
+        const double vmax = profile_.sync_drive.max_in_per_min / 60.0;
+        const double lag = 3 * v * s.sample_s + v * v / (2 * acc);
+        return std::max(run_up, vmax * lag / std::max(vmax - v, 1e-9));
     }
 
     // The motion card to a hole: the head to the start height first, then the cross slide and
@@ -276,6 +287,7 @@ private:
                                                            thousandths(o_.thread_depth_in));
         c.tap.pitch = pitch;
         c.tap.rpm = rpm;
+        c.tap.index_wait = o_.index_wait;
         deck_.cards.push_back(c);
         TappingHole h;
         h.hole = hole;

@@ -50,6 +50,16 @@ nlohmann::json hole_json(const HoleRecord& h) {
             {"samples", samples}};
 }
 
+// The index wait's figures, only for a hole that waited (a saved state without them is one
+// from before the addition, or of holes that did not wait).
+void add_index_json(const HoleRecord& h, nlohmann::json& j) {
+    if (h.index_wait) {
+        j["index_wait"] = true;
+        j["sync_s"] = exact(h.sync_s);
+        j["sync_tool_revs"] = exact(h.sync_tool_revs);
+    }
+}
+
 HoleRecord hole_from_json(const nlohmann::json& j) {
     HoleRecord h;
     h.card = j.at("card").get<std::int64_t>();
@@ -76,6 +86,13 @@ HoleRecord hole_from_json(const nlohmann::json& j) {
     h.completed = j.at("completed").get<bool>();
     for (const auto& s : j.at("samples")) {
         h.samples.push_back({exact(s.at(0)), exact(s.at(1)), exact(s.at(2))});
+    }
+    if (j.contains("index_wait")) {
+        h.index_wait = j.at("index_wait").get<bool>();
+        h.sync_s = exact(j.at("sync_s"));
+        h.sync_tool_revs = exact(j.at("sync_tool_revs"));
+    } else {
+        h.sync_s = h.start_s;
     }
     return h;
 }
@@ -151,8 +168,13 @@ void TappingUnits::install(Tracer& tracer, const axes::MachineProfile& profile) 
                           static_cast<std::uint32_t>(p.first_tool));
     phase_signal_ = tracer.define("spindle", "synchronous_control.phase",
                                   "synchronous operation control: 0 idle, 1 tool call, 2 in, 3 "
-                                  "out, 4 spindle stopping, 5 feed settling",
+                                  "out, 4 spindle stopping, 5 feed settling, 6 waiting for "
+                                  "encoder 32's index (rigid tapping, an addition)",
                                   "", 3);
+    index_signal_ = tracer.define("spindle", "encoder_32.index",
+                                  "encoder 32's index: high for the edge onto each whole motor "
+                                  "revolution, turning forward (rigid tapping, an addition)",
+                                  "32", 1);
     z_cmd_signal_ = tracer.define("spindle", "synchronous_control.depth_called",
                                   "the depth the tool's turns call for (S x A x pitch summed), "
                                   "thousandths of an inch",
@@ -180,6 +202,27 @@ void TappingUnits::on_edge(const axes::DetectorEdge& edge, double t) {
         speed_33_->pulse();
         last_edge_s_ = t;
     }
+    const bool index = sense > 0 && edge.count % profile_.spindle.encoder_pulses_per_rev == 0;
+    if (index != index_shown_) {
+        index_shown_ = index;
+        tracer_->set(index_signal_, index ? 1U : 0U);
+    }
+    if (index) {
+        look_for_index(edge.count, t);
+    }
+}
+
+// Rigid tapping's index wait (an addition): the first forward edge onto a count that is a
+// multiple of index_every_ (n motor revolutions, A = 1/n: the tool stands at the one angle it has
+// at each such index while its head is on) starts the feed's count. Register 14 reads 0 there.
+void TappingUnits::look_for_index(std::int64_t m, double t) {
+    if (phase_ != Phase::index_wait || index_count_ || m % index_every_ != 0) {
+        return;
+    }
+    index_count_ = m;
+    HoleRecord& h = holes_.back();
+    h.sync_s = t;
+    h.sync_tool_revs = spindle_->tool_revs_at_edge(m);
 }
 
 void TappingUnits::catch_up(double t) {
@@ -220,6 +263,15 @@ void TappingUnits::jump_to(double t) {
         const std::int64_t n = spindle_->pulses_by(t);
         if (n > 0) {
             const std::int64_t before = spindle_->count();
+            if (phase_ == Phase::index_wait && !index_count_ &&
+                spindle_->motor_revs_at(spindle_->pulse_time(1)) > spindle_->motor_revs()) {
+                // The index among the edges jumped: the first multiple above the count (forward).
+                const std::int64_t e = index_every_;
+                const std::int64_t m = (before >= 0 ? before / e : (before - e + 1) / e) * e + e;
+                if (m - before <= n) {
+                    look_for_index(m, spindle_->pulse_time(m - before));
+                }
+            }
             const double last_s = spindle_->pulse_time(n);
             const axes::DetectorEdge last = spindle_->skip_pulses(n);
             last_edge_s_ = last_s;
@@ -227,6 +279,11 @@ void TappingUnits::jump_to(double t) {
             device_13_->jump_to(last.count, way);
             counter_33_->count_many(n, way);
             speed_33_->count_many(n);
+            const bool index = way > 0 && last.count % profile_.spindle.encoder_pulses_per_rev == 0;
+            if (index != index_shown_) {
+                index_shown_ = index;
+                tracer_->set(index_signal_, index ? 1U : 0U);
+            }
         }
         if (spindle_->next_event_time() > t) {
             spindle_->advance_to(t); // nothing due: only the motor's clock moves
@@ -280,6 +337,11 @@ std::optional<std::string> TappingUnits::refusal(const cardreader::TapOrder& o,
     }
     if (o.depth < 1) {
         return std::string("depth 0.000: a tap card taps at least 0.001 in");
+    }
+    if (o.index_wait && !cardreader::motor_revs_per_tool_rev(head->ratio)) {
+        return fmt::format("index wait with tool {} (ratio {:.4f}): the ratio is not 1/n, so no "
+                           "index of encoder 32 puts the tool at one angle every pass",
+                           o.tool, head->ratio);
     }
     return std::nullopt;
 }
@@ -336,7 +398,11 @@ double TappingUnits::run_down_travel(double edges_per_sample) const {
 }
 
 void TappingUnits::start(double t, int counter, double real_in) {
-    phase_ = Phase::run_in;
+    phase_ = order_.index_wait ? Phase::index_wait : Phase::run_in;
+    index_count_.reset();
+    index_every_ = static_cast<std::int64_t>(
+                       cardreader::motor_revs_per_tool_rev(memory_->ratio()).value_or(1)) *
+                   profile_.spindle.encoder_pulses_per_rev;
     start_counter_ = counter;
     z_cmd_in_ = 0;
     last_counter_33_ = counter_33_->value();
@@ -361,6 +427,9 @@ void TappingUnits::start(double t, int counter, double real_in) {
     h.start_in = real_in;
     h.depth_in = order_.depth / 1000.0;
     h.start_s = t;
+    h.index_wait = order_.index_wait;
+    h.sync_s = t;
+    h.sync_tool_revs = spindle_->tool_revs();
     spindle_->command_rpm(order_.rpm);
     feed_ = FeedCommand{h.sense, 0.0};
     record(t, real_in);
@@ -398,11 +467,24 @@ bool TappingUnits::sample(double t, int counter, double real_in, bool feed_at_re
     }
     const double z_counted = sense * moved / 1000.0;
     const double per_edge = travel_per_edge();
-    z_cmd_in_ += d * per_edge;
+    if (phase_ != Phase::index_wait) {
+        z_cmd_in_ += d * per_edge;
+    }
     measure_speed(t, d);
     const double depth = order_.depth / 1000.0;
     record(t, real_in);
     HoleRecord& h = holes_.back();
+    if (phase_ == Phase::index_wait) {
+        if (!index_count_) {
+            feed_ = FeedCommand{sense, 0.0}; // the feed stands until the index
+            show();
+            return false;
+        }
+        // The index came in this sample (at most half a revolution a sample): register 14 read 0
+        // there, so it now holds the edges since it.
+        z_cmd_in_ = ((counter_33_->value() % ppr) + ppr) % ppr * per_edge;
+        phase_ = Phase::run_in;
+    }
     switch (phase_) {
     case Phase::run_in:
         if (!reverse_at_s_) {
@@ -559,7 +641,9 @@ nlohmann::json TappingUnits::save() const {
     j["last_edge_s"] = exact(last_edge_s_);
     j["holes"] = nlohmann::json::array();
     for (const HoleRecord& h : holes_) {
-        j["holes"].push_back(hole_json(h));
+        nlohmann::json hj = hole_json(h);
+        add_index_json(h, hj);
+        j["holes"].push_back(std::move(hj));
     }
     return j;
 }
