@@ -221,6 +221,7 @@ std::string_view field_short_label(FieldKind kind) {
     case FieldKind::tap_pitch:
     case FieldKind::tap_rpm:
     case FieldKind::tap_index:
+    case FieldKind::tap_retract:
         return tap_field_short_label(kind);
     }
     return "";
@@ -257,6 +258,7 @@ std::string field_label(const LayoutField& field) {
     case FieldKind::tap_pitch:
     case FieldKind::tap_rpm:
     case FieldKind::tap_index:
+    case FieldKind::tap_retract:
         return tap_field_label(field);
     case FieldKind::motion:
         what = "motion";

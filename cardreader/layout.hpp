@@ -57,7 +57,8 @@ enum class FieldKind : std::uint8_t {
     // (two digits, 01-99), the feed axis (one digit 1-5), the sense into the work (row 0
     // forward, row 1 reverse), the depth (d.ddd in), the pitch (five digits read 0.ddddd in per
     // tool revolution) and spindle motor 27's speed S (four digits, rev/min); the rigid-tapping
-    // additions: the index wait (one digit, blank or 1).
+    // additions: the index wait (one digit, blank or 1), the retract multiple k (one digit, blank
+    // or 1-4).
     tap_tool,
     tap_axis,
     tap_sense,
@@ -65,6 +66,7 @@ enum class FieldKind : std::uint8_t {
     tap_pitch,
     tap_rpm,
     tap_index,
+    tap_retract,
 };
 
 struct LayoutField {

@@ -102,6 +102,25 @@ bool read_index_wait(const Card& card, const LayoutField& f, Problems& problems)
     return digit.has_value();
 }
 
+// Column 20 (an addition after LinuxCNC G33.1): the retract multiple k, the return stroke at
+// k x S. Blank is 1 (as before the addition); 1-4 read as punched; 0 and 5-9 are refused.
+int read_retract(const Card& card, const LayoutField& f, Problems& problems) {
+    Problems own;
+    const std::optional<int> digit = detail::read_number(card, f, own);
+    if (const auto bad = own.first()) {
+        problems.add(bad->column, bad->what);
+        return 1;
+    }
+    if (digit && (*digit < 1 || *digit > kMaxTapRetract)) {
+        problems.add(f.first_column,
+                     fmt::format("{} is {}: blank or 1 (out at S, as in), or 2-{} (out at that "
+                                 "multiple of S)",
+                                 tap_field_label(f), *digit, kMaxTapRetract));
+        return 1;
+    }
+    return digit.value_or(1);
+}
+
 } // namespace
 
 void add_tap_fields(CardLayout& layout) {
@@ -112,6 +131,7 @@ void add_tap_fields(CardLayout& layout) {
     layout.tap_fields.push_back({FieldKind::tap_pitch, std::nullopt, 10, 5});
     layout.tap_fields.push_back({FieldKind::tap_rpm, std::nullopt, 15, 4});
     layout.tap_fields.push_back({FieldKind::tap_index, std::nullopt, 19, 1});
+    layout.tap_fields.push_back({FieldKind::tap_retract, std::nullopt, 20, 1});
 }
 
 std::string tap_field_label(const LayoutField& field) {
@@ -130,6 +150,8 @@ std::string tap_field_label(const LayoutField& field) {
         return "tap speed";
     case FieldKind::tap_index:
         return "tap index wait";
+    case FieldKind::tap_retract:
+        return "tap retract multiple";
     default:
         return "tap field";
     }
@@ -151,6 +173,8 @@ std::string_view tap_field_short_label(FieldKind kind) {
         return "SPEED S";
     case FieldKind::tap_index:
         return "INDEX";
+    case FieldKind::tap_retract:
+        return "RETRACT";
     default:
         return "";
     }
@@ -188,6 +212,7 @@ DecodeResult decode_tap_card(const Card& card, const CardLayout& layout) {
                           "spindle motor 27's speed S, 0001-9999 rev/min",
                           "the spindle must turn to tap (0001-9999 rev/min)", problems);
     t.index_wait = read_index_wait(card, tap_field(layout, FieldKind::tap_index), problems);
+    t.retract = read_retract(card, tap_field(layout, FieldKind::tap_retract), problems);
     result.bad_punch = problems.first();
     return result;
 }
@@ -213,6 +238,9 @@ std::optional<std::string> tap_order_error(const TapOrder& t) {
     }
     if (t.rpm < 1 || t.rpm > kMaxTapRpm) {
         return fmt::format("tap speed {} is not 1..9999 rev/min", t.rpm);
+    }
+    if (t.retract < 1 || t.retract > kMaxTapRetract) {
+        return fmt::format("tap retract multiple {} is not 1..{}", t.retract, kMaxTapRetract);
     }
     return std::nullopt;
 }
@@ -241,6 +269,9 @@ std::optional<std::string> encode_tap_card(const TapOrder& t, const CardLayout& 
     number(FieldKind::tap_rpm, t.rpm);
     if (t.index_wait) {
         number(FieldKind::tap_index, 1);
+    }
+    if (t.retract > 1) {
+        number(FieldKind::tap_retract, t.retract);
     }
     return error;
 }

@@ -18,6 +18,8 @@
 //   15 .. 18        spindle motor 27's speed S, 0001-9999 rev/min
 //   column 19       index wait (rigid tapping, an addition): blank none, 1 the feed waits for
 //                   encoder 32's index (docs/tapping.md, "Rigid tapping")
+//   column 20       retract multiple k (rigid tapping, an addition): blank or 1, out at S; 2-4,
+//                   motor 27 reverses to k x S (the feed follows, the pitch held)
 //   column 76       row 3, the extension mark
 //   every other column blank
 //
@@ -41,9 +43,10 @@ namespace parsons::cardreader {
 // Adds the tap-card fields to a layout whose extension column is set.
 void add_tap_fields(CardLayout& layout);
 // "tap tool", "tap feed axis", "tap sense", "tap depth", "tap pitch", "tap speed",
-// "tap index wait"
+// "tap index wait", "tap retract multiple"
 std::string tap_field_label(const LayoutField& field);
-// Short labels for card pictures: "TOOL T", "AXIS", "SENSE", "DEPTH", "PITCH", "SPEED S", "INDEX"
+// Short labels for card pictures: "TOOL T", "AXIS", "SENSE", "DEPTH", "PITCH", "SPEED S", "INDEX",
+// "RETRACT"
 std::string_view tap_field_short_label(FieldKind kind);
 
 DecodeResult decode_tap_card(const Card& card, const CardLayout& layout);

@@ -13,7 +13,9 @@
 //   - a feed slower than the drive's least (kLeastTapFeedInPerMin): column 10, with the least
 //     pitch at that speed;
 //   - an index wait (rigid tapping, an addition) with a head whose ratio A is not 1/n: the
-//     motor's index then never puts the tool at one angle: column 19.
+//     motor's index then never puts the tool at one angle: column 19;
+//   - a retract multiple k (the faster retract, an addition) with k x S above motor 27's
+//     fastest, or k x pitch x S x A above the drive's fastest: column 20.
 // Emulation note: a static reading of the cards, not a run; what motor 27, PC 130 and the feed
 // do with the card is relaylogic's business.
 #pragma once
@@ -77,6 +79,9 @@ public:
     std::vector<TapFinding> card(std::int64_t index, const CardOrders& orders) const;
 
 private:
+    void retract_findings(std::int64_t index, const TapOrder& t, const SpindleLimits::Head* head,
+                          std::vector<TapFinding>& found) const;
+
     bool allowed_;
     std::string profile_;
     SpindleLimits limits_;

@@ -109,6 +109,12 @@ void print_tapping(const TappingFlags& f, const GeneratedTappingJob& g) {
                "thread {:.3f} in deep; tolerance {:g} % of the pitch\n",
                o.surface_in + o.clearance_in, o.clearance_in, o.surface_in, o.thread_depth_in,
                o.tolerance_percent);
+    if (o.retract > 1) {
+        fmt::print(out,
+                   "  retract        every tap comes out at {} x S, the feed following (column "
+                   "20; an addition after rigid tapping)\n",
+                   o.retract);
+    }
     if (o.index_wait) {
         fmt::print(out, "  index wait     every tap's feed waits for encoder 32's index (column "
                         "19; an addition after rigid tapping)\n");
@@ -194,6 +200,11 @@ void add_tapping_command(CLI::App& gen, Command& selected) {
     cmd->add_flag("--index-wait", o.index_wait,
                   "Every tap waits for encoder 32's index before its feed starts, so that "
                   "every pass starts at one tool angle (rigid tapping, an addition)");
+    cmd->add_option("--retract", o.retract,
+                    "Every tap comes out at this multiple of S, the feed following so the pitch "
+                    "holds (rigid tapping's faster retract, an addition; 1 = out at S)")
+        ->check(CLI::Range(1, cardreader::kMaxTapRetract))
+        ->capture_default_str();
     cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")
         ->type_name(std::string(kDeckValue))
         ->required();

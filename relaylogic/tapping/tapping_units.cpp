@@ -21,93 +21,7 @@ std::uint32_t thousandths(double x) {
     return static_cast<std::uint32_t>(std::lround(std::clamp(x, 0.0, 4e6) * 1000));
 }
 
-// A hole's record in a saved state: a resumed run reports the holes tapped before the card it
-// resumes at, as an uninterrupted run does (found by the property test, tests/property_test.cpp).
-nlohmann::json hole_json(const HoleRecord& h) {
-    nlohmann::json samples = nlohmann::json::array();
-    for (const TapSample& s : h.samples) {
-        samples.push_back({exact(s.t), exact(s.tool_revs), exact(s.feed_in)});
-    }
-    return {{"card", h.card},
-            {"number", h.number},
-            {"tool_called", h.tool_called},
-            {"tool", h.tool},
-            {"tap_pitch_in", h.tap_pitch_in ? exact(*h.tap_pitch_in) : nlohmann::json(nullptr)},
-            {"head_ratio", exact(h.head_ratio)},
-            {"ratio_used", exact(h.ratio_used)},
-            {"pitch_ordered_in", exact(h.pitch_ordered_in)},
-            {"rpm", h.rpm},
-            {"axis", static_cast<int>(cardreader::axis_index(h.axis))},
-            {"sense", h.sense},
-            {"start_in", exact(h.start_in)},
-            {"depth_in", exact(h.depth_in)},
-            {"deepest_in", exact(h.deepest_in)},
-            {"end_in", exact(h.end_in)},
-            {"start_s", exact(h.start_s)},
-            {"reverse_s", exact(h.reverse_s)},
-            {"end_s", exact(h.end_s)},
-            {"completed", h.completed},
-            {"samples", samples}};
-}
-
-// The index wait's figures, only for a hole that waited (a saved state without them is one
-// from before the addition, or of holes that did not wait).
-void add_index_json(const HoleRecord& h, nlohmann::json& j) {
-    if (h.index_wait) {
-        j["index_wait"] = true;
-        j["sync_s"] = exact(h.sync_s);
-        j["sync_tool_revs"] = exact(h.sync_tool_revs);
-    }
-}
-
-HoleRecord hole_from_json(const nlohmann::json& j) {
-    HoleRecord h;
-    h.card = j.at("card").get<std::int64_t>();
-    h.number = j.at("number").get<int>();
-    h.tool_called = j.at("tool_called").get<int>();
-    h.tool = j.at("tool").get<int>();
-    if (!j.at("tap_pitch_in").is_null()) {
-        h.tap_pitch_in = exact(j.at("tap_pitch_in"));
-    }
-    h.head_ratio = exact(j.at("head_ratio"));
-    h.ratio_used = exact(j.at("ratio_used"));
-    h.pitch_ordered_in = exact(j.at("pitch_ordered_in"));
-    h.rpm = j.at("rpm").get<int>();
-    h.axis = cardreader::kAxes.at(static_cast<std::size_t>(
-        std::clamp(j.at("axis").get<int>(), 0, static_cast<int>(cardreader::kAxisCount) - 1)));
-    h.sense = j.at("sense").get<int>();
-    h.start_in = exact(j.at("start_in"));
-    h.depth_in = exact(j.at("depth_in"));
-    h.deepest_in = exact(j.at("deepest_in"));
-    h.end_in = exact(j.at("end_in"));
-    h.start_s = exact(j.at("start_s"));
-    h.reverse_s = exact(j.at("reverse_s"));
-    h.end_s = exact(j.at("end_s"));
-    h.completed = j.at("completed").get<bool>();
-    for (const auto& s : j.at("samples")) {
-        h.samples.push_back({exact(s.at(0)), exact(s.at(1)), exact(s.at(2))});
-    }
-    if (j.contains("index_wait")) {
-        h.index_wait = j.at("index_wait").get<bool>();
-        h.sync_s = exact(j.at("sync_s"));
-        h.sync_tool_revs = exact(j.at("sync_tool_revs"));
-    } else {
-        h.sync_s = h.start_s;
-    }
-    return h;
-}
-
 } // namespace
-
-double depth_miss_in(const HoleRecord& hole, int encoder_pulses_per_rev) {
-    if (!hole.completed) {
-        return 0;
-    }
-    const double edge_in =
-        hole.pitch_ordered_in * hole.ratio_used / std::max(encoder_pulses_per_rev, 1);
-    const double miss = hole.deepest_in - hole.depth_in;
-    return std::abs(miss) > std::max(0.001, edge_in) + 1e-9 ? miss : 0.0;
-}
 
 int net_edges(int reading_change, int edges, int ppr, int last_sense) {
     const int r = ((reading_change % ppr) + ppr) % ppr; // d modulo ppr, 0 .. ppr - 1
@@ -313,15 +227,27 @@ std::optional<std::string> TappingUnits::refusal(const cardreader::TapOrder& o,
         return fmt::format("spindle speed {} rev/min: motor 27 turns at most {:g} rev/min", o.rpm,
                            p.max_rpm);
     }
-    const double fastest = // rev/s, at the lasting change's speed if it is faster
-        o.rpm * (p.change_at_s ? std::max(1.0, p.change_factor) : 1.0) / 60.0;
+    if (o.retract < 1 || o.retract * o.rpm > p.max_rpm) {
+        return fmt::format("retract multiple {}: out at {} rev/min; motor 27 turns at most {:g} "
+                           "rev/min",
+                           o.retract, o.retract * o.rpm, p.max_rpm);
+    }
+    const double fastest = // rev/s, out at k x S, at the lasting change's speed if it is faster
+        o.retract * o.rpm * (p.change_at_s ? std::max(1.0, p.change_factor) : 1.0) / 60.0;
     if (fastest * p.sample_s >= 0.5) {
         return fmt::format("spindle speed {} rev/min turns motor 27 half a revolution or more "
                            "between two samples of interface 33 (sample_s {:g} s): its counter "
                            "could not tell the sense",
-                           o.rpm, p.sample_s);
+                           o.retract * o.rpm, p.sample_s);
     }
     const double feed = o.pitch / 100000.0 * head->ratio * o.rpm;
+    if (feed * o.retract > profile.sync_drive.max_in_per_min) {
+        return fmt::format("retract multiple {}: pitch {} at {} rev/min out with tool {} (ratio "
+                           "{:.4f}) feeds {:.2f} in/min; the sync drive follows at most {:g} "
+                           "in/min",
+                           o.retract, cardreader::format_pitch(o.pitch), o.retract * o.rpm, o.tool,
+                           head->ratio, feed * o.retract, profile.sync_drive.max_in_per_min);
+    }
     if (feed > profile.sync_drive.max_in_per_min) {
         return fmt::format(
             "pitch {} at {} rev/min with tool {} (ratio {:.4f}) feeds {:.2f} in/min; "
@@ -428,6 +354,7 @@ void TappingUnits::start(double t, int counter, double real_in) {
     h.depth_in = order_.depth / 1000.0;
     h.start_s = t;
     h.index_wait = order_.index_wait;
+    h.retract = order_.retract;
     h.sync_s = t;
     h.sync_tool_revs = spindle_->tool_revs();
     spindle_->command_rpm(order_.rpm);
@@ -602,7 +529,9 @@ void TappingUnits::reverse(double t) {
     if (phase_ != Phase::run_in || !reverse_at_s_) {
         return; // the card ended or the machine stopped first
     }
-    spindle_->command_rpm(-order_.rpm); // reverse: run down at the depth, then out
+    // Reverse: run down at the depth, then out at k x S (the faster retract, an addition; k = 1
+    // without it). The feed follows the tool's edges as going in, so the pitch holds.
+    spindle_->command_rpm(-order_.retract * order_.rpm);
     holes_.back().reverse_s = t;
     phase_ = Phase::run_out;
     reverse_at_s_.reset();
@@ -641,9 +570,7 @@ nlohmann::json TappingUnits::save() const {
     j["last_edge_s"] = exact(last_edge_s_);
     j["holes"] = nlohmann::json::array();
     for (const HoleRecord& h : holes_) {
-        nlohmann::json hj = hole_json(h);
-        add_index_json(h, hj);
-        j["holes"].push_back(std::move(hj));
+        j["holes"].push_back(tap_hole_json(h));
     }
     return j;
 }
@@ -675,7 +602,7 @@ void TappingUnits::load(const nlohmann::json& j) {
     holes_.clear();
     if (j.contains("holes")) {
         for (const auto& h : j.at("holes")) {
-            holes_.push_back(hole_from_json(h));
+            holes_.push_back(tap_hole_from_json(h));
         }
     }
     show();

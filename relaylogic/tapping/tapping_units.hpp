@@ -92,6 +92,8 @@ struct HoleRecord {
     bool index_wait = false;
     double sync_s = 0;
     double sync_tool_revs = 0;
+    // The faster retract (an addition; column 20): out at retract x S (1: as going in).
+    int retract = 1;
     bool completed = false;         // came back out and stood (false: the machine stopped first)
     std::vector<TapSample> samples; // if asked for (record_tap_samples)
 };
@@ -112,6 +114,11 @@ struct TappingResult {
 // (docs/tapping.md, "Near the depth"). Positive: past the depth; negative: short of it; 0 for
 // a hole within that, or not completed (a stop says why).
 double depth_miss_in(const HoleRecord& hole, int encoder_pulses_per_rev);
+
+// A hole's record in a saved state and back (tap_holes.cpp): a resumed run reports the holes
+// tapped before the card it resumes at, as an uninterrupted run does.
+nlohmann::json tap_hole_json(const HoleRecord& hole);
+HoleRecord tap_hole_from_json(const nlohmann::json& j);
 
 // The net edges d of encoder 32 over one sample of interface 33, as the NC reads them. Register
 // 14 counts modulo a revolution (device 16: ppr edges), so its two readings a sample apart give
