@@ -14,7 +14,9 @@
 // lasting change is a boundary of every segment that spans change_at_s, unless the motor stands
 // commanded to stand: then nothing happens there, and the next command finds the change come.
 //
-// Encoder 32: phases A and B in quadrature, encoder_pulses_per_rev edges a motor revolution.
+// Encoder 32: phases A and B in quadrature, encoder_pulses_per_rev edges a motor revolution, and
+// (rigid tapping, an addition) an index, once a revolution: the forward edge onto a whole
+// revolution, count m with m mod ppr == 0 (relaylogic/tapping/tapping_units.hpp latches it).
 // The count c = floor(phi x ppr): an edge at each whole multiple m / ppr of a revolution
 // (forward, c becomes m; backward, c becomes m - 1); the phases after count c stand at the
 // Gray code of c mod 4, as detector 10 of the press (axes/press.hpp: phases_at()), so the same
@@ -83,6 +85,11 @@ public:
     double ratio() const { return ratio_; } // the head's real ratio A (0 with no head)
     double tool_revs() const;               // the tool's revolutions, unwrapped
     double tool_revs_at(double t) const;    // t within the current segment
+    // The tool's revolutions where encoder edge m stands (m / ppr motor revolutions), the head
+    // now on: where the tool stood at an index of encoder 32 (rigid tapping, an addition).
+    double tool_revs_at_edge(std::int64_t m) const {
+        return mount_tool_revs_ + (edge_revs(m) - mount_phi_) * ratio_;
+    }
 
     const SpindleSyncProfile& profile() const { return profile_; }
     nlohmann::json save() const;

@@ -238,6 +238,8 @@ std::string_view field_short_label(FieldKind kind) {
     case FieldKind::tap_depth:
     case FieldKind::tap_pitch:
     case FieldKind::tap_rpm:
+    case FieldKind::tap_index:
+    case FieldKind::tap_retract:
         return tap_field_short_label(kind);
     case FieldKind::segment_end:
     case FieldKind::segment_feed:
@@ -276,6 +278,8 @@ std::string field_label(const LayoutField& field) {
     case FieldKind::tap_depth:
     case FieldKind::tap_pitch:
     case FieldKind::tap_rpm:
+    case FieldKind::tap_index:
+    case FieldKind::tap_retract:
         return tap_field_label(field);
     case FieldKind::segment_end:
     case FieldKind::segment_feed:

@@ -56,13 +56,17 @@ enum class FieldKind : std::uint8_t {
     // The fields of a tap card (an addition after EP 0360190; docs/card-layout.md): the tool T
     // (two digits, 01-99), the feed axis (one digit 1-5), the sense into the work (row 0
     // forward, row 1 reverse), the depth (d.ddd in), the pitch (five digits read 0.ddddd in per
-    // tool revolution) and spindle motor 27's speed S (four digits, rev/min).
+    // tool revolution) and spindle motor 27's speed S (four digits, rev/min); the rigid-tapping
+    // additions: the index wait (one digit, blank or 1), the retract multiple k (one digit, blank
+    // or 1-4).
     tap_tool,
     tap_axis,
     tap_sense,
     tap_depth,
     tap_pitch,
     tap_rpm,
+    tap_index,
+    tap_retract,
     // The fields of a segment card (an addition after EP 0636958; docs/card-layout.md): the end
     // point in X, Y and Z (d.ddd in each, axis table, cross, vertical) and the feed F (three
     // digits, tenths of an inch a minute).

@@ -166,9 +166,10 @@ std::string format_travel_per_pulse(int hundred_thousandths);
 // runs forward at S, the axis feeds into the work in step with the tool (the ordered pitch per
 // tool revolution, from the encoder's speed times the ratio, S x A) to the depth, and comes back
 // out as the spindle reverses. It stands alone: no axis moves by the 1952 columns on it.
-inline constexpr int kMaxPitch = 99999; // 0.99999 in per tool revolution
-inline constexpr int kMaxTapTool = 99;  // T: two digits on the card
-inline constexpr int kMaxTapRpm = 9999; // S: four digits on the card, rev/min
+inline constexpr int kMaxPitch = 99999;  // 0.99999 in per tool revolution
+inline constexpr int kMaxTapTool = 99;   // T: two digits on the card
+inline constexpr int kMaxTapRpm = 9999;  // S: four digits on the card, rev/min
+inline constexpr int kMaxTapRetract = 4; // the retract multiple k: one digit, 1..4
 
 struct TapOrder {
     int tool = 0;                    // T: the head to tap with (1..99)
@@ -177,6 +178,12 @@ struct TapOrder {
     Thousandths depth = 0;           // travel into the work and back, d.ddd in (1..9999)
     int pitch = 0;                   // per tool revolution, hundred-thousandths of an inch
     int rpm = 0;                     // S: motor 27's speed, revolutions a minute (1..9999)
+    // An addition after rigid tapping (LinuxCNC G33.1, Fanuc G84): the feed waits for the index
+    // of encoder 32 that puts the tool at the same angle every pass (column 19 punched 1).
+    bool index_wait = false;
+    // An addition after LinuxCNC G33.1's faster retract: the return stroke at k x S, the feed
+    // still following the tool (column 20; 1..4, blank 1 = the same speed as going in).
+    int retract = 1;
 
     bool operator==(const TapOrder&) const = default;
 };

@@ -83,6 +83,44 @@ Motion read_sense(const Card& card, const LayoutField& f, Problems& problems) {
     return s == r1 ? Motion::reverse : Motion::forward;
 }
 
+// Column 19 (an addition after rigid tapping): blank, no wait (the feed follows from the tool's
+// first turn); 1, the feed waits for encoder 32's index. Any other digit is refused.
+bool read_index_wait(const Card& card, const LayoutField& f, Problems& problems) {
+    Problems own;
+    const std::optional<int> digit = detail::read_number(card, f, own);
+    if (const auto bad = own.first()) {
+        problems.add(bad->column, bad->what);
+        return false;
+    }
+    if (digit && *digit != 1) {
+        problems.add(f.first_column,
+                     fmt::format("{} is {}: blank (the feed follows from the tool's first turn) "
+                                 "or 1 (the feed waits for encoder 32's index)",
+                                 tap_field_label(f), *digit));
+        return false;
+    }
+    return digit.has_value();
+}
+
+// Column 20 (an addition after LinuxCNC G33.1): the retract multiple k, the return stroke at
+// k x S. Blank is 1 (as before the addition); 1-4 read as punched; 0 and 5-9 are refused.
+int read_retract(const Card& card, const LayoutField& f, Problems& problems) {
+    Problems own;
+    const std::optional<int> digit = detail::read_number(card, f, own);
+    if (const auto bad = own.first()) {
+        problems.add(bad->column, bad->what);
+        return 1;
+    }
+    if (digit && (*digit < 1 || *digit > kMaxTapRetract)) {
+        problems.add(f.first_column,
+                     fmt::format("{} is {}: blank or 1 (out at S, as in), or 2-{} (out at that "
+                                 "multiple of S)",
+                                 tap_field_label(f), *digit, kMaxTapRetract));
+        return 1;
+    }
+    return digit.value_or(1);
+}
+
 } // namespace
 
 void add_tap_fields(CardLayout& layout) {
@@ -92,6 +130,8 @@ void add_tap_fields(CardLayout& layout) {
     layout.tap_fields.push_back({FieldKind::tap_depth, std::nullopt, 6, 4});
     layout.tap_fields.push_back({FieldKind::tap_pitch, std::nullopt, 10, 5});
     layout.tap_fields.push_back({FieldKind::tap_rpm, std::nullopt, 15, 4});
+    layout.tap_fields.push_back({FieldKind::tap_index, std::nullopt, 19, 1});
+    layout.tap_fields.push_back({FieldKind::tap_retract, std::nullopt, 20, 1});
 }
 
 std::string tap_field_label(const LayoutField& field) {
@@ -108,6 +148,10 @@ std::string tap_field_label(const LayoutField& field) {
         return "tap pitch";
     case FieldKind::tap_rpm:
         return "tap speed";
+    case FieldKind::tap_index:
+        return "tap index wait";
+    case FieldKind::tap_retract:
+        return "tap retract multiple";
     default:
         return "tap field";
     }
@@ -127,6 +171,10 @@ std::string_view tap_field_short_label(FieldKind kind) {
         return "PITCH";
     case FieldKind::tap_rpm:
         return "SPEED S";
+    case FieldKind::tap_index:
+        return "INDEX";
+    case FieldKind::tap_retract:
+        return "RETRACT";
     default:
         return "";
     }
@@ -163,6 +211,8 @@ DecodeResult decode_tap_card(const Card& card, const CardLayout& layout) {
     t.rpm = read_required(card, tap_field(layout, FieldKind::tap_rpm),
                           "spindle motor 27's speed S, 0001-9999 rev/min",
                           "the spindle must turn to tap (0001-9999 rev/min)", problems);
+    t.index_wait = read_index_wait(card, tap_field(layout, FieldKind::tap_index), problems);
+    t.retract = read_retract(card, tap_field(layout, FieldKind::tap_retract), problems);
     result.bad_punch = problems.first();
     return result;
 }
@@ -189,6 +239,9 @@ std::optional<std::string> tap_order_error(const TapOrder& t) {
     if (t.rpm < 1 || t.rpm > kMaxTapRpm) {
         return fmt::format("tap speed {} is not 1..9999 rev/min", t.rpm);
     }
+    if (t.retract < 1 || t.retract > kMaxTapRetract) {
+        return fmt::format("tap retract multiple {} is not 1..{}", t.retract, kMaxTapRetract);
+    }
     return std::nullopt;
 }
 
@@ -214,6 +267,12 @@ std::optional<std::string> encode_tap_card(const TapOrder& t, const CardLayout& 
     number(FieldKind::tap_depth, t.depth);
     number(FieldKind::tap_pitch, t.pitch);
     number(FieldKind::tap_rpm, t.rpm);
+    if (t.index_wait) {
+        number(FieldKind::tap_index, 1);
+    }
+    if (t.retract > 1) {
+        number(FieldKind::tap_retract, t.retract);
+    }
     return error;
 }
 

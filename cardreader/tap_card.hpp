@@ -16,6 +16,10 @@
 //   6 .. 9          depth d.ddd in, 0.001-9.999
 //   10 .. 14        pitch: five digits read 0.ddddd in per tool revolution, 00001-99999
 //   15 .. 18        spindle motor 27's speed S, 0001-9999 rev/min
+//   column 19       index wait (rigid tapping, an addition): blank none, 1 the feed waits for
+//                   encoder 32's index (docs/tapping.md, "Rigid tapping")
+//   column 20       retract multiple k (rigid tapping, an addition): blank or 1, out at S; 2-4,
+//                   motor 27 reverses to k x S (the feed follows, the pitch held)
 //   column 76       row 3, the extension mark
 //   every other column blank
 //
@@ -38,9 +42,11 @@ namespace parsons::cardreader {
 
 // Adds the tap-card fields to a layout whose extension column is set.
 void add_tap_fields(CardLayout& layout);
-// "tap tool", "tap feed axis", "tap sense", "tap depth", "tap pitch", "tap speed"
+// "tap tool", "tap feed axis", "tap sense", "tap depth", "tap pitch", "tap speed",
+// "tap index wait", "tap retract multiple"
 std::string tap_field_label(const LayoutField& field);
-// Short labels for card pictures: "TOOL T", "AXIS", "SENSE", "DEPTH", "PITCH", "SPEED S"
+// Short labels for card pictures: "TOOL T", "AXIS", "SENSE", "DEPTH", "PITCH", "SPEED S", "INDEX",
+// "RETRACT"
 std::string_view tap_field_short_label(FieldKind kind);
 
 DecodeResult decode_tap_card(const Card& card, const CardLayout& layout);

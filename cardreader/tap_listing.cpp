@@ -61,9 +61,10 @@ std::pair<int, TapOrder> read_tap_row(std::string_view text, const std::string& 
                                       std::int64_t line) {
     const auto fields = split_fields(text);
     auto fail = [&](const std::string& why) { return DeckError::at_line(file, line, why); };
-    if (fields.size() != kTapFieldCount) {
+    if (fields.size() < kTapFieldCount) {
         throw fail(fmt::format("a tap row has 8 comma-separated fields "
-                               "(card,tap,TOOL,AXIS,SENSE,DEPTH,PITCH,RPM), found {}",
+                               "(card,tap,TOOL,AXIS,SENSE,DEPTH,PITCH,RPM), then the rigid-tapping "
+                               "words if any (index, retract=K), found {}",
                                fields.size()));
     }
     if (!all_digits(fields[0]) || fields[0].size() > 4) {
@@ -95,14 +96,49 @@ std::pair<int, TapOrder> read_tap_row(std::string_view text, const std::string& 
     }
     t.pitch = parse_pitch(fields[6], file, line);
     t.rpm = parse_count(fields[7], "speed", 4, kMaxTapRpm, file, line);
+    // The rigid-tapping additions, each a word after RPM, each at most once.
+    bool retract_given = false;
+    for (std::size_t i = kTapFieldCount; i < fields.size(); ++i) {
+        const std::string_view word = fields[i];
+        if (word == "index") {
+            if (t.index_wait) {
+                throw fail("'index' given twice");
+            }
+            t.index_wait = true;
+        } else if (word.substr(0, 8) == "retract=") {
+            const std::string_view k = word.substr(8);
+            if (retract_given) {
+                throw fail("'retract=' given twice");
+            }
+            if (k.size() != 1 || k[0] < '1' || k[0] > '0' + kMaxTapRetract) {
+                throw fail(fmt::format("retract multiple '{}' is not 1..{} (the return stroke at "
+                                       "that multiple of S)",
+                                       k, kMaxTapRetract));
+            }
+            t.retract = k[0] - '0';
+            retract_given = true;
+        } else {
+            throw fail(fmt::format("unknown word '{}' after the tap row's speed (the rigid-tapping "
+                                   "additions: index, retract=K)",
+                                   word));
+        }
+    }
     return {std::stoi(std::string(fields[0])), t};
 }
 
 std::string tap_row(const CardOrders& orders) {
     const TapOrder& t = orders.tap;
-    return fmt::format("{},tap,{},{},{},{},{},{}", orders.number, t.tool, axis_name(t.axis),
-                       t.motion == Motion::forward ? "forward" : "reverse", format_inches(t.depth),
-                       format_pitch(t.pitch), t.rpm);
+    std::string row =
+        fmt::format("{},tap,{},{},{},{},{},{}", orders.number, t.tool, axis_name(t.axis),
+                    t.motion == Motion::forward ? "forward" : "reverse", format_inches(t.depth),
+                    format_pitch(t.pitch), t.rpm);
+    if (t.index_wait) {
+        row += ",index";
+    }
+    if (t.retract > 1) {
+        row += fmt::format(",retract={}", t.retract);
+    }
+    return row;
 }
 
 } // namespace parsons::cardreader

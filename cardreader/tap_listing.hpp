@@ -6,7 +6,10 @@
 //
 // TOOL 1..99; AXIS table .. tilt; SENSE forward or reverse (the sense into the work, as the
 // axis's counters count); DEPTH d.ddd in, over 0; PITCH 0.ddddd in per tool revolution, over 0;
-// RPM spindle motor 27's speed S, 1..9999 rev/min.
+// RPM spindle motor 27's speed S, 1..9999 rev/min. Then the rigid-tapping additions, each a
+// word, each at most once, written only when ordered: `index` (the feed waits for encoder 32's
+// index; column 19 punched 1), `retract=K` (K 1..4: the return stroke at K x S; column 20,
+// written only for K over 1).
 #pragma once
 
 #include "cardreader/orders.hpp"

@@ -27,6 +27,18 @@ std::string held_tools(const SpindleLimits& limits) {
 
 } // namespace
 
+std::optional<int> motor_revs_per_tool_rev(double ratio) {
+    if (!(ratio > 0)) {
+        return std::nullopt;
+    }
+    const double n = 1.0 / ratio;
+    const double whole = std::round(n);
+    if (whole < 1 || whole > 1000 || std::abs(n - whole) > 1e-6 * whole) {
+        return std::nullopt;
+    }
+    return static_cast<int>(whole);
+}
+
 const SpindleLimits::Head* SpindleLimits::head(int tool) const {
     for (const Head& h : heads) {
         if (h.tool == tool) {
@@ -58,6 +70,38 @@ int SpindleLimits::min_pitch(int rpm, double ratio) {
     return static_cast<int>(std::min<double>(least, kMaxPitch));
 }
 
+// The faster retract (an addition): motor 27 reverses to k x S, and the feed follows the tool
+// out through the head's ratio, k x pitch x S x A in/min; either past its limit is column 20.
+void TapReview::retract_findings(std::int64_t index, const TapOrder& t,
+                                 const SpindleLimits::Head* head,
+                                 std::vector<TapFinding>& found) const {
+    const int out_rpm = t.retract * t.rpm;
+    if (out_rpm > limits_.max_rpm + 1e-9) {
+        found.push_back(
+            {index, tap_column(FieldKind::tap_retract), t.axis,
+             fmt::format(
+                 "tap retract multiple {}: out at {} x S {} = {} rev/min, "
+                 "above spindle motor 27's fastest, {:g} rev/min (max_rpm of "
+                 "profile {}): at most {} at that speed",
+                 t.retract, t.retract, t.rpm, out_rpm, limits_.max_rpm, profile_,
+                 std::max(1, static_cast<int>(std::floor(limits_.max_rpm / t.rpm + 1e-9))))});
+        return;
+    }
+    if (!head) {
+        return;
+    }
+    const double feed = SpindleLimits::feed_in_per_min(t.pitch, out_rpm, head->ratio);
+    if (feed > limits_.drive_max_in_per_min + 1e-9) {
+        found.push_back(
+            {index, tap_column(FieldKind::tap_retract), t.axis,
+             fmt::format("tap retract multiple {}: out at {} rev/min the {} axis must follow at "
+                         "{:.2f} in/min (pitch {} through tool {}'s gear ratio {:.4g}); the "
+                         "follower drive follows at most {:g} in/min",
+                         t.retract, out_rpm, axis_name(t.axis), feed, format_pitch(t.pitch), t.tool,
+                         head->ratio, limits_.drive_max_in_per_min)});
+    }
+}
+
 std::vector<TapFinding> TapReview::card(std::int64_t index, const CardOrders& orders) const {
     std::vector<TapFinding> found;
     if (orders.kind != CardKind::tap) {
@@ -86,11 +130,21 @@ std::vector<TapFinding> TapReview::card(std::int64_t index, const CardOrders& or
                                      "the tool, which only a tap may be fed",
                                      t.tool, profile_)});
     }
+    if (head && t.index_wait && !motor_revs_per_tool_rev(head->ratio)) {
+        found.push_back({index, tap_column(FieldKind::tap_index), t.axis,
+                         fmt::format("tap index wait: tool {}'s gear ratio {:.4g} is not 1/n, so "
+                                     "no index of encoder 32 (once a motor revolution) puts the "
+                                     "tool at one angle every pass; leave column 19 blank",
+                                     t.tool, head->ratio)});
+    }
     if (t.rpm > limits_.max_rpm + 1e-9) {
         found.push_back({index, tap_column(FieldKind::tap_rpm), t.axis,
                          fmt::format("tap speed S {} rev/min is above spindle motor 27's fastest, "
                                      "{:g} rev/min (max_rpm of profile {})",
                                      t.rpm, limits_.max_rpm, profile_)});
+    }
+    if (t.retract > 1) {
+        retract_findings(index, t, head, found);
     }
     if (head) {
         const double feed = SpindleLimits::feed_in_per_min(t.pitch, t.rpm, head->ratio);

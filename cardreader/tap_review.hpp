@@ -11,7 +11,11 @@
 //     gear unit 30 with that tool's head, the figure memory 12a holds, claim 1), so the axis
 //     must feed pitch x S x A in/min: column 10, with the most pitch it can be at that speed;
 //   - a feed slower than the drive's least (kLeastTapFeedInPerMin): column 10, with the least
-//     pitch at that speed.
+//     pitch at that speed;
+//   - an index wait (rigid tapping, an addition) with a head whose ratio A is not 1/n: the
+//     motor's index then never puts the tool at one angle: column 19;
+//   - a retract multiple k (the faster retract, an addition) with k x S above motor 27's
+//     fastest, or k x pitch x S x A above the drive's fastest: column 20.
 // Emulation note: a static reading of the cards, not a run; what motor 27, PC 130 and the feed
 // do with the card is relaylogic's business.
 #pragma once
@@ -52,6 +56,11 @@ struct SpindleLimits {
     static int min_pitch(int rpm, double ratio);
 };
 
+// Rigid tapping's index wait (an addition): encoder 32's index comes once a motor revolution,
+// and the tool turns A of a revolution for each, so the tool stands at one angle at every n-th
+// index only where A = 1/n. That n (1..1000), or none when 1/A is not a whole number.
+std::optional<int> motor_revs_per_tool_rev(double ratio);
+
 struct TapFinding {
     std::int64_t card = 0; // deck position the finding is on
     int column = 0;        // the column to look at on that card
@@ -70,6 +79,9 @@ public:
     std::vector<TapFinding> card(std::int64_t index, const CardOrders& orders) const;
 
 private:
+    void retract_findings(std::int64_t index, const TapOrder& t, const SpindleLimits::Head* head,
+                          std::vector<TapFinding>& found) const;
+
     bool allowed_;
     std::string profile_;
     SpindleLimits limits_;

@@ -109,6 +109,16 @@ void print_tapping(const TappingFlags& f, const GeneratedTappingJob& g) {
                "thread {:.3f} in deep; tolerance {:g} % of the pitch\n",
                o.surface_in + o.clearance_in, o.clearance_in, o.surface_in, o.thread_depth_in,
                o.tolerance_percent);
+    if (o.retract > 1) {
+        fmt::print(out,
+                   "  retract        every tap comes out at {} x S, the feed following (column "
+                   "20; an addition after rigid tapping)\n",
+                   o.retract);
+    }
+    if (o.index_wait) {
+        fmt::print(out, "  index wait     every tap's feed waits for encoder 32's index (column "
+                        "19; an addition after rigid tapping)\n");
+    }
     for (const auto& h : g.deck.holes) {
         fmt::print(out,
                    "  hole {:<9} card {:04}: table {:.3f}, cross {:.3f}; tool {} (pitch {:.5f} "
@@ -186,6 +196,14 @@ void add_tapping_command(CLI::App& gen, Command& selected) {
                     "130 sends it after each head exchange) or stored (per tool, in advance)")
         ->type_name(one_of({decks::ratio_source_name(axes::RatioSource::transferred),
                             decks::ratio_source_name(axes::RatioSource::stored)}))
+        ->capture_default_str();
+    cmd->add_flag("--index-wait", o.index_wait,
+                  "Every tap waits for encoder 32's index before its feed starts, so that "
+                  "every pass starts at one tool angle (rigid tapping, an addition)");
+    cmd->add_option("--retract", o.retract,
+                    "Every tap comes out at this multiple of S, the feed following so the pitch "
+                    "holds (rigid tapping's faster retract, an addition; 1 = out at S)")
+        ->check(CLI::Range(1, cardreader::kMaxTapRetract))
         ->capture_default_str();
     cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")
         ->type_name(std::string(kDeckValue))

@@ -247,6 +247,17 @@ std::vector<std::array<std::string, 3>> tap_card_fields(const CardOrders& o,
         case FieldKind::tap_rpm:
             value = fmt::format("S {} rev/min of spindle motor 27", t.rpm);
             break;
+        case FieldKind::tap_index:
+            value = t.index_wait ? "1: the feed waits for encoder 32's index (an addition)"
+                                 : "blank: the feed follows from the tool's first turn";
+            break;
+        case FieldKind::tap_retract:
+            value = t.retract > 1
+                        ? fmt::format("{}: out at {} x S = {} rev/min, the feed following (an "
+                                      "addition)",
+                                      t.retract, t.retract, t.retract * t.rpm)
+                        : std::string("blank: out at S, as in");
+            break;
         default:
             break;
         }
@@ -285,6 +296,8 @@ Json tap_card_json(std::int64_t index, const CardOrders& o) {
             {"depth", inches_json(t.depth)},
             {"pitch", t.pitch / 100000.0},
             {"rpm", t.rpm},
+            {"index_wait", t.index_wait},
+            {"retract", t.retract},
             {"warnings", Json::array()}};
 }
 

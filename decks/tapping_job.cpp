@@ -157,6 +157,10 @@ private:
         if (o.tools.empty()) {
             refuse("--tools: give at least one tool");
         }
+        if (o.retract < 1 || o.retract > cardreader::kMaxTapRetract) {
+            refuse(
+                fmt::format("--retract {}: give 1 to {}", o.retract, cardreader::kMaxTapRetract));
+        }
         if (o.rpm && (*o.rpm < 1 || *o.rpm > kMaxRpmOnCard)) {
             refuse(fmt::format("--rpm {}: give 1 to {} rev/min", *o.rpm, kMaxRpmOnCard));
         }
@@ -181,25 +185,29 @@ private:
         return *head;
     }
 
-    // S for a tap: the given one, or the fastest motor 27 and the follower drive allow.
+    // S for a tap: the given one, or the fastest motor 27 and the follower drive allow, out
+    // at k x S with the faster retract (an addition; k = 1 without it).
     int rpm_for(const axes::SpindleHead& head, int pitch) const {
         const double tool_in_per_motor_rev = pitch / 1e5 * head.ratio;
         const double drive_max = profile_.sync_drive.max_in_per_min;
         const double max_rpm = profile_.spindle.max_rpm;
+        const int k = o_.retract;
         const int fastest = static_cast<int>(
-            std::floor(std::min(max_rpm, drive_max / tool_in_per_motor_rev) + 1e-9));
+            std::floor(std::min(max_rpm, drive_max / tool_in_per_motor_rev) / k + 1e-9));
         const int rpm = o_.rpm.value_or(fastest);
-        if (rpm > max_rpm + 1e-9) {
-            refuse(fmt::format("--rpm {}: spindle motor 27 turns at most {:g} rev/min (max_rpm of "
-                               "profile {})",
-                               rpm, max_rpm, profile_.name));
+        const std::string out =
+            k > 1 ? fmt::format(" (out at --retract {} x S = {} rev/min)", k, k * rpm) : "";
+        if (k * rpm > max_rpm + 1e-9) {
+            refuse(fmt::format("--rpm {}{}: spindle motor 27 turns at most {:g} rev/min (max_rpm "
+                               "of profile {})",
+                               rpm, out, max_rpm, profile_.name));
         }
-        if (tool_in_per_motor_rev * rpm > drive_max + 1e-9 || rpm < 1) {
-            refuse(fmt::format("tool {} (pitch {:.5f} in, gear ratio {:.4f}) at S {} rev/min "
+        if (tool_in_per_motor_rev * k * rpm > drive_max + 1e-9 || rpm < 1) {
+            refuse(fmt::format("tool {} (pitch {:.5f} in, gear ratio {:.4f}) at S {} rev/min{} "
                                "needs a feed of {:.2f} in/min; the follower drive follows at most "
                                "{:g} in/min (sync_drive.max_in_per_min): give --rpm {} or less",
-                               head.tool, pitch / 1e5, head.ratio, rpm, tool_in_per_motor_rev * rpm,
-                               drive_max, fastest));
+                               head.tool, pitch / 1e5, head.ratio, rpm, out,
+                               tool_in_per_motor_rev * k * rpm, drive_max, fastest));
         }
         return rpm;
     }
@@ -211,7 +219,18 @@ private:
         const axes::SpindleSyncProfile& s = profile_.spindle;
         const double run_up_s = rpm / s.run_up_rpm_per_s;
         const double v = feed_in_per_min / 60.0;
-        return v * run_up_s / 2 + 2 * v * s.sample_s;
+        const double run_up = v * run_up_s / 2 + 2 * v * s.sample_s;
+        if (!o_.index_wait) {
+            return run_up;
+        }
+        // With the index wait the feed may start at full speed v (the motor at S when the index
+        // comes): it falls behind by the index's sample, the NC's and the drive's two, and the
+        // drive's acceleration to v, L = 3 v sample_s + v^2 / 2a, and takes that up at the
+        // drive's fastest, vmax, gaining vmax - v: vmax L / (vmax - v) of travel.
+        const double acc = profile_.sync_drive.acceleration_in_per_s2;
+        const double vmax = profile_.sync_drive.max_in_per_min / 60.0;
+        const double lag = 3 * v * s.sample_s + v * v / (2 * acc);
+        return std::max(run_up, vmax * lag / std::max(vmax - v, 1e-9));
     }
 
     // The motion card to a hole: the head to the start height first, then the cross slide and
@@ -276,6 +295,8 @@ private:
                                                            thousandths(o_.thread_depth_in));
         c.tap.pitch = pitch;
         c.tap.rpm = rpm;
+        c.tap.index_wait = o_.index_wait;
+        c.tap.retract = o_.retract;
         deck_.cards.push_back(c);
         TappingHole h;
         h.hole = hole;

@@ -59,6 +59,10 @@ struct TappingOptions {
     std::optional<int> rpm;          // S for every hole; none: the fastest each tap allows
     double tolerance_percent = 5.0;  // the thread proof's tolerance on the pitch
     axes::RatioSource ratio_source = axes::RatioSource::transferred;
+    // Rigid tapping (an addition): every tap card's feed waits for encoder 32's index (column 19).
+    bool index_wait = false;
+    // The faster retract (an addition): every tap card comes out at retract x S (column 20).
+    int retract = 1;
 };
 
 // One hole of the plate, in the order it is tapped.

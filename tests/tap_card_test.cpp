@@ -298,9 +298,13 @@ TEST_CASE("Tap card: a bad punch is named by its column", "[tap_card][card]") {
         {"the speed blank", [&](Card& c) { clear(c, 15, 18); }, 15, "tap speed is blank"},
         {"a hole in the blank column 1", [](Card& c) { c.punch(1, Row::r0); }, 1,
          "column 1, which layout fig8 leaves unused on a tap card"},
-        {"a hole in column 19", [](Card& c) { c.punch(19, Row::r5); }, 19,
-         "punch in row 5 where none belongs (in column 19, which layout fig8 leaves unused on a "
+        {"a hole in column 21", [](Card& c) { c.punch(21, Row::r5); }, 21,
+         "punch in row 5 where none belongs (in column 21, which layout fig8 leaves unused on a "
          "tap card)"},
+        {"column 20 (retract multiple) punched 7", [](Card& c) { c.punch(20, Row::r7); }, 20,
+         "tap retract multiple is 7: blank or 1 (out at S, as in), or 2-4"},
+        {"column 19 (index wait) punched 5", [](Card& c) { c.punch(19, Row::r5); }, 19,
+         "tap index wait is 5: blank (the feed follows from the tool's first turn) or 1"},
         {"a hole in column 75", [](Card& c) { c.punch(75, Row::r1); }, 75,
          "leaves unused on a tap card"},
         {"row 12 over the tool", [](Card& c) { c.punch(2, Row::r12); }, 2,
@@ -400,7 +404,8 @@ TEST_CASE("Tap card: the listing's errors name file and line", "[tap_card][listi
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"12,tap,1,vertical,reverse,0.600,0.05000\n",
          "t.csv:2: a tap row has 8 comma-separated fields "
-         "(card,tap,TOOL,AXIS,SENSE,DEPTH,PITCH,RPM), found 7"},
+         "(card,tap,TOOL,AXIS,SENSE,DEPTH,PITCH,RPM), then the rigid-tapping words if any "
+         "(index, retract=K), found 7"},
         {"12,tap\n", "t.csv:2: a tap row has 8 comma-separated fields"},
         {"10000,tap,1,vertical,reverse,0.600,0.05000,240\n",
          "t.csv:2: card number '10000' is not 0..9999"},

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <fcntl.h>
@@ -93,7 +94,13 @@ namespace {
 
 ProcessResult run_command(const std::string& command) {
     ProcessResult result;
+    // The shell starts with SIGPIPE at its default, as from a terminal: the in-process command
+    // line ignores it (cli/command_line.cpp), an ignored signal is inherited, and a shell cannot
+    // restore one ignored when it started - a producer loop feeding a pipe whose reader has
+    // gone would then run for ever.
+    const auto before = std::signal(SIGPIPE, SIG_DFL);
     FILE* pipe = popen(command.c_str(), "r");
+    std::signal(SIGPIPE, before);
     if (!pipe) {
         return result;
     }

@@ -45,6 +45,13 @@ nlohmann::json tapping_json(const relaylogic::TappingResult& t) {
                  {"reverse_seconds", decimals(h.reverse_s, 6)},
                  {"end_seconds", decimals(h.end_s, 6)},
                  {"completed", h.completed}});
+        if (h.index_wait) { // rigid tapping's index wait (an addition): the time waited
+            holes.back()["index_wait_seconds"] = decimals(h.sync_s - h.start_s, 6);
+            holes.back()["index_tool_revs"] = decimals(h.sync_tool_revs, 6);
+        }
+        if (h.retract != 1) { // the faster retract (an addition): out at retract x S
+            holes.back()["retract"] = h.retract;
+        }
     }
     return json{
         {"tool_on_spindle", t.tool_on_spindle}, {"ratio_in_memory", decimals(t.ratio_in_memory, 6)},

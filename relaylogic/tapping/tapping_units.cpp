@@ -21,76 +21,7 @@ std::uint32_t thousandths(double x) {
     return static_cast<std::uint32_t>(std::lround(std::clamp(x, 0.0, 4e6) * 1000));
 }
 
-// A hole's record in a saved state: a resumed run reports the holes tapped before the card it
-// resumes at, as an uninterrupted run does (found by the property test, tests/property_test.cpp).
-nlohmann::json hole_json(const HoleRecord& h) {
-    nlohmann::json samples = nlohmann::json::array();
-    for (const TapSample& s : h.samples) {
-        samples.push_back({exact(s.t), exact(s.tool_revs), exact(s.feed_in)});
-    }
-    return {{"card", h.card},
-            {"number", h.number},
-            {"tool_called", h.tool_called},
-            {"tool", h.tool},
-            {"tap_pitch_in", h.tap_pitch_in ? exact(*h.tap_pitch_in) : nlohmann::json(nullptr)},
-            {"head_ratio", exact(h.head_ratio)},
-            {"ratio_used", exact(h.ratio_used)},
-            {"pitch_ordered_in", exact(h.pitch_ordered_in)},
-            {"rpm", h.rpm},
-            {"axis", static_cast<int>(cardreader::axis_index(h.axis))},
-            {"sense", h.sense},
-            {"start_in", exact(h.start_in)},
-            {"depth_in", exact(h.depth_in)},
-            {"deepest_in", exact(h.deepest_in)},
-            {"end_in", exact(h.end_in)},
-            {"start_s", exact(h.start_s)},
-            {"reverse_s", exact(h.reverse_s)},
-            {"end_s", exact(h.end_s)},
-            {"completed", h.completed},
-            {"samples", samples}};
-}
-
-HoleRecord hole_from_json(const nlohmann::json& j) {
-    HoleRecord h;
-    h.card = j.at("card").get<std::int64_t>();
-    h.number = j.at("number").get<int>();
-    h.tool_called = j.at("tool_called").get<int>();
-    h.tool = j.at("tool").get<int>();
-    if (!j.at("tap_pitch_in").is_null()) {
-        h.tap_pitch_in = exact(j.at("tap_pitch_in"));
-    }
-    h.head_ratio = exact(j.at("head_ratio"));
-    h.ratio_used = exact(j.at("ratio_used"));
-    h.pitch_ordered_in = exact(j.at("pitch_ordered_in"));
-    h.rpm = j.at("rpm").get<int>();
-    h.axis = cardreader::kAxes.at(static_cast<std::size_t>(
-        std::clamp(j.at("axis").get<int>(), 0, static_cast<int>(cardreader::kAxisCount) - 1)));
-    h.sense = j.at("sense").get<int>();
-    h.start_in = exact(j.at("start_in"));
-    h.depth_in = exact(j.at("depth_in"));
-    h.deepest_in = exact(j.at("deepest_in"));
-    h.end_in = exact(j.at("end_in"));
-    h.start_s = exact(j.at("start_s"));
-    h.reverse_s = exact(j.at("reverse_s"));
-    h.end_s = exact(j.at("end_s"));
-    h.completed = j.at("completed").get<bool>();
-    for (const auto& s : j.at("samples")) {
-        h.samples.push_back({exact(s.at(0)), exact(s.at(1)), exact(s.at(2))});
-    }
-    return h;
-}
-
 } // namespace
-
-double depth_miss_in(const HoleRecord& hole, int encoder_pulses_per_rev) {
-    if (!hole.completed) {
-        return 0;
-    }
-    const double edge_in =
-        hole.pitch_ordered_in * hole.ratio_used / std::max(encoder_pulses_per_rev, 1);
-    const double miss = hole.deepest_in - hole.depth_in;
-    return std::abs(miss) > std::max(0.001, edge_in) + 1e-9 ? miss : 0.0;
-}
 
 int net_edges(int reading_change, int edges, int ppr, int last_sense) {
     const int r = ((reading_change % ppr) + ppr) % ppr; // d modulo ppr, 0 .. ppr - 1
@@ -151,8 +82,13 @@ void TappingUnits::install(Tracer& tracer, const axes::MachineProfile& profile) 
                           static_cast<std::uint32_t>(p.first_tool));
     phase_signal_ = tracer.define("spindle", "synchronous_control.phase",
                                   "synchronous operation control: 0 idle, 1 tool call, 2 in, 3 "
-                                  "out, 4 spindle stopping, 5 feed settling",
+                                  "out, 4 spindle stopping, 5 feed settling, 6 waiting for "
+                                  "encoder 32's index (rigid tapping, an addition)",
                                   "", 3);
+    index_signal_ = tracer.define("spindle", "encoder_32.index",
+                                  "encoder 32's index: high for the edge onto each whole motor "
+                                  "revolution, turning forward (rigid tapping, an addition)",
+                                  "32", 1);
     z_cmd_signal_ = tracer.define("spindle", "synchronous_control.depth_called",
                                   "the depth the tool's turns call for (S x A x pitch summed), "
                                   "thousandths of an inch",
@@ -180,6 +116,27 @@ void TappingUnits::on_edge(const axes::DetectorEdge& edge, double t) {
         speed_33_->pulse();
         last_edge_s_ = t;
     }
+    const bool index = sense > 0 && edge.count % profile_.spindle.encoder_pulses_per_rev == 0;
+    if (index != index_shown_) {
+        index_shown_ = index;
+        tracer_->set(index_signal_, index ? 1U : 0U);
+    }
+    if (index) {
+        look_for_index(edge.count, t);
+    }
+}
+
+// Rigid tapping's index wait (an addition): the first forward edge onto a count that is a
+// multiple of index_every_ (n motor revolutions, A = 1/n: the tool stands at the one angle it has
+// at each such index while its head is on) starts the feed's count. Register 14 reads 0 there.
+void TappingUnits::look_for_index(std::int64_t m, double t) {
+    if (phase_ != Phase::index_wait || index_count_ || m % index_every_ != 0) {
+        return;
+    }
+    index_count_ = m;
+    HoleRecord& h = holes_.back();
+    h.sync_s = t;
+    h.sync_tool_revs = spindle_->tool_revs_at_edge(m);
 }
 
 void TappingUnits::catch_up(double t) {
@@ -220,6 +177,15 @@ void TappingUnits::jump_to(double t) {
         const std::int64_t n = spindle_->pulses_by(t);
         if (n > 0) {
             const std::int64_t before = spindle_->count();
+            if (phase_ == Phase::index_wait && !index_count_ &&
+                spindle_->motor_revs_at(spindle_->pulse_time(1)) > spindle_->motor_revs()) {
+                // The index among the edges jumped: the first multiple above the count (forward).
+                const std::int64_t e = index_every_;
+                const std::int64_t m = (before >= 0 ? before / e : (before - e + 1) / e) * e + e;
+                if (m - before <= n) {
+                    look_for_index(m, spindle_->pulse_time(m - before));
+                }
+            }
             const double last_s = spindle_->pulse_time(n);
             const axes::DetectorEdge last = spindle_->skip_pulses(n);
             last_edge_s_ = last_s;
@@ -227,6 +193,11 @@ void TappingUnits::jump_to(double t) {
             device_13_->jump_to(last.count, way);
             counter_33_->count_many(n, way);
             speed_33_->count_many(n);
+            const bool index = way > 0 && last.count % profile_.spindle.encoder_pulses_per_rev == 0;
+            if (index != index_shown_) {
+                index_shown_ = index;
+                tracer_->set(index_signal_, index ? 1U : 0U);
+            }
         }
         if (spindle_->next_event_time() > t) {
             spindle_->advance_to(t); // nothing due: only the motor's clock moves
@@ -256,15 +227,27 @@ std::optional<std::string> TappingUnits::refusal(const cardreader::TapOrder& o,
         return fmt::format("spindle speed {} rev/min: motor 27 turns at most {:g} rev/min", o.rpm,
                            p.max_rpm);
     }
-    const double fastest = // rev/s, at the lasting change's speed if it is faster
-        o.rpm * (p.change_at_s ? std::max(1.0, p.change_factor) : 1.0) / 60.0;
+    if (o.retract < 1 || o.retract * o.rpm > p.max_rpm) {
+        return fmt::format("retract multiple {}: out at {} rev/min; motor 27 turns at most {:g} "
+                           "rev/min",
+                           o.retract, o.retract * o.rpm, p.max_rpm);
+    }
+    const double fastest = // rev/s, out at k x S, at the lasting change's speed if it is faster
+        o.retract * o.rpm * (p.change_at_s ? std::max(1.0, p.change_factor) : 1.0) / 60.0;
     if (fastest * p.sample_s >= 0.5) {
         return fmt::format("spindle speed {} rev/min turns motor 27 half a revolution or more "
                            "between two samples of interface 33 (sample_s {:g} s): its counter "
                            "could not tell the sense",
-                           o.rpm, p.sample_s);
+                           o.retract * o.rpm, p.sample_s);
     }
     const double feed = o.pitch / 100000.0 * head->ratio * o.rpm;
+    if (feed * o.retract > profile.sync_drive.max_in_per_min) {
+        return fmt::format("retract multiple {}: pitch {} at {} rev/min out with tool {} (ratio "
+                           "{:.4f}) feeds {:.2f} in/min; the sync drive follows at most {:g} "
+                           "in/min",
+                           o.retract, cardreader::format_pitch(o.pitch), o.retract * o.rpm, o.tool,
+                           head->ratio, feed * o.retract, profile.sync_drive.max_in_per_min);
+    }
     if (feed > profile.sync_drive.max_in_per_min) {
         return fmt::format(
             "pitch {} at {} rev/min with tool {} (ratio {:.4f}) feeds {:.2f} in/min; "
@@ -280,6 +263,11 @@ std::optional<std::string> TappingUnits::refusal(const cardreader::TapOrder& o,
     }
     if (o.depth < 1) {
         return std::string("depth 0.000: a tap card taps at least 0.001 in");
+    }
+    if (o.index_wait && !cardreader::motor_revs_per_tool_rev(head->ratio)) {
+        return fmt::format("index wait with tool {} (ratio {:.4f}): the ratio is not 1/n, so no "
+                           "index of encoder 32 puts the tool at one angle every pass",
+                           o.tool, head->ratio);
     }
     return std::nullopt;
 }
@@ -336,7 +324,11 @@ double TappingUnits::run_down_travel(double edges_per_sample) const {
 }
 
 void TappingUnits::start(double t, int counter, double real_in) {
-    phase_ = Phase::run_in;
+    phase_ = order_.index_wait ? Phase::index_wait : Phase::run_in;
+    index_count_.reset();
+    index_every_ = static_cast<std::int64_t>(
+                       cardreader::motor_revs_per_tool_rev(memory_->ratio()).value_or(1)) *
+                   profile_.spindle.encoder_pulses_per_rev;
     start_counter_ = counter;
     z_cmd_in_ = 0;
     last_counter_33_ = counter_33_->value();
@@ -361,6 +353,10 @@ void TappingUnits::start(double t, int counter, double real_in) {
     h.start_in = real_in;
     h.depth_in = order_.depth / 1000.0;
     h.start_s = t;
+    h.index_wait = order_.index_wait;
+    h.retract = order_.retract;
+    h.sync_s = t;
+    h.sync_tool_revs = spindle_->tool_revs();
     spindle_->command_rpm(order_.rpm);
     feed_ = FeedCommand{h.sense, 0.0};
     record(t, real_in);
@@ -398,11 +394,24 @@ bool TappingUnits::sample(double t, int counter, double real_in, bool feed_at_re
     }
     const double z_counted = sense * moved / 1000.0;
     const double per_edge = travel_per_edge();
-    z_cmd_in_ += d * per_edge;
+    if (phase_ != Phase::index_wait) {
+        z_cmd_in_ += d * per_edge;
+    }
     measure_speed(t, d);
     const double depth = order_.depth / 1000.0;
     record(t, real_in);
     HoleRecord& h = holes_.back();
+    if (phase_ == Phase::index_wait) {
+        if (!index_count_) {
+            feed_ = FeedCommand{sense, 0.0}; // the feed stands until the index
+            show();
+            return false;
+        }
+        // The index came in this sample (at most half a revolution a sample): register 14 read 0
+        // there, so it now holds the edges since it.
+        z_cmd_in_ = ((counter_33_->value() % ppr) + ppr) % ppr * per_edge;
+        phase_ = Phase::run_in;
+    }
     switch (phase_) {
     case Phase::run_in:
         if (!reverse_at_s_) {
@@ -520,7 +529,9 @@ void TappingUnits::reverse(double t) {
     if (phase_ != Phase::run_in || !reverse_at_s_) {
         return; // the card ended or the machine stopped first
     }
-    spindle_->command_rpm(-order_.rpm); // reverse: run down at the depth, then out
+    // Reverse: run down at the depth, then out at k x S (the faster retract, an addition; k = 1
+    // without it). The feed follows the tool's edges as going in, so the pitch holds.
+    spindle_->command_rpm(-order_.retract * order_.rpm);
     holes_.back().reverse_s = t;
     phase_ = Phase::run_out;
     reverse_at_s_.reset();
@@ -559,7 +570,7 @@ nlohmann::json TappingUnits::save() const {
     j["last_edge_s"] = exact(last_edge_s_);
     j["holes"] = nlohmann::json::array();
     for (const HoleRecord& h : holes_) {
-        j["holes"].push_back(hole_json(h));
+        j["holes"].push_back(tap_hole_json(h));
     }
     return j;
 }
@@ -591,7 +602,7 @@ void TappingUnits::load(const nlohmann::json& j) {
     holes_.clear();
     if (j.contains("holes")) {
         for (const auto& h : j.at("holes")) {
-            holes_.push_back(hole_from_json(h));
+            holes_.push_back(tap_hole_from_json(h));
         }
     }
     show();

@@ -20,6 +20,9 @@
 //                         v = d / ppr x A x pitch / sample_s  +  gain x (z_cmd - z_counted)
 //                     where z_cmd, the depth the tool's turns call for, grows by d / ppr x A x
 //                     pitch each sample (S x A: A is the ratio in 12a, right or stale)
+//   index wait ...... (rigid tapping, an addition; column 19) motor 27 turns, the feed stands
+//                     until the index of encoder 32 at which the tool has its angle of every
+//                     pass (A = 1/n: every n-th index); z_cmd counts from that edge
 //   near the depth .. the speed measured from the times of the last sample's edges; when the
 //                     depth left, less what motor 27 covers running down from that speed, comes
 //                     within a sample's travel, the NC times the reversal (-S) for the instant it
@@ -82,6 +85,15 @@ struct HoleRecord {
     double start_s = 0;
     double reverse_s = 0; // when the NC reversed the spindle at the bottom
     double end_s = 0;
+    // Rigid tapping's index wait (an addition; column 19): the feed's count began at the index
+    // of encoder 32 that came at sync_s (without the wait, at start_s, where the motor stood).
+    // sync_tool_revs: the tool's revolutions there (the plant's), whose fraction is the tool's
+    // angle where the thread's helix is referred to; sync_s - start_s is the time waited.
+    bool index_wait = false;
+    double sync_s = 0;
+    double sync_tool_revs = 0;
+    // The faster retract (an addition; column 20): out at retract x S (1: as going in).
+    int retract = 1;
     bool completed = false;         // came back out and stood (false: the machine stopped first)
     std::vector<TapSample> samples; // if asked for (record_tap_samples)
 };
@@ -103,6 +115,11 @@ struct TappingResult {
 // a hole within that, or not completed (a stop says why).
 double depth_miss_in(const HoleRecord& hole, int encoder_pulses_per_rev);
 
+// A hole's record in a saved state and back (tap_holes.cpp): a resumed run reports the holes
+// tapped before the card it resumes at, as an uninterrupted run does.
+nlohmann::json tap_hole_json(const HoleRecord& hole);
+HoleRecord tap_hole_from_json(const nlohmann::json& j);
+
 // The net edges d of encoder 32 over one sample of interface 33, as the NC reads them. Register
 // 14 counts modulo a revolution (device 16: ppr edges), so its two readings a sample apart give
 // d only modulo ppr: `reading_change` is the later reading less the earlier. Register 11 counts
@@ -122,7 +139,8 @@ struct FeedCommand {
 
 class TappingUnits {
 public:
-    enum class Phase : std::uint8_t { idle, tool, run_in, run_out, stopping, settle };
+    // index_wait (rigid tapping, an addition): motor 27 turns, the feed stands until the index.
+    enum class Phase : std::uint8_t { idle, tool, run_in, run_out, stopping, settle, index_wait };
 
     void install(Tracer& tracer, const axes::MachineProfile& profile);
     bool present() const { return spindle_ != nullptr; }
@@ -192,6 +210,7 @@ private:
     double run_down_travel(double edges_per_sample) const;
     void measure_speed(double t, int d);
     void plan_reversal(double t, double depth, double per_edge);
+    void look_for_index(std::int64_t m, double t); // an edge onto count m came at t
 
     axes::MachineProfile profile_;
     double max_feed_in_per_s_ = 0;
@@ -223,6 +242,10 @@ private:
     bool measured_ = false;
     std::optional<double> reverse_at_s_; // the reversal at the depth, timed
     bool reversal_scheduled_ = false;
+    // The index wait: the feed starts at the index where the motor's count is a multiple of
+    // index_every_ (n x ppr, A = 1/n: the tool at one angle); set when it came.
+    std::int64_t index_every_ = 1;
+    std::optional<std::int64_t> index_count_;
     FeedCommand feed_{};
 
     SignalId motor_rpm_ = 0;
@@ -231,6 +254,8 @@ private:
     SignalId phase_signal_ = 0;
     SignalId z_cmd_signal_ = 0;
     SignalId feed_signal_ = 0;
+    SignalId index_signal_ = 0;
+    bool index_shown_ = false;
 };
 
 } // namespace parsons::relaylogic
