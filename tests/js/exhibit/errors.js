@@ -71,11 +71,16 @@ module.exports = async function errors(t) {
           `${screen}: the bad cell, and only it, is aria-invalid and visibly marked`, JSON.stringify(where));
     check(where.gap >= -2 && where.gap < 80 && where.inView && /listing\.csv:15: speed '7'/.test(where.text),
           `${screen}: the message stands right under the bad cell, in view`, `${where.gap.toFixed(0)} px below it: ${where.text}`);
+    await t.shot(page, `error-field-${screen}`);
+    // A card's picture is made when it scrolls into view (an IntersectionObserver, whose callback
+    // a loaded machine may run late): bring the cards into view and give it the time to.
+    await page.evaluate(() => document.querySelector('#cards').scrollIntoView({ block: 'start' }));
+    await page.waitForFunction(() => document.querySelectorAll('#cards figure img').length > 0, { timeout: 10000 })
+      .catch(() => {});
     const figsAfter = await page.$$eval('#cards figure', (f) => f.length);
     const imgs = await page.$$eval('#cards figure img', (f) => f.length);
     check(figsAfter === figsBefore && figsAfter === 4 && imgs > 0, `${screen}: the card pictures stay under a bad cell`,
           `${figsBefore} -> ${figsAfter} figures, ${imgs} pictures`);
-    await t.shot(page, `error-field-${screen}`);
     // Play on the bad deck: stopped, saying why beside Play; machine time does not move.
     const t0 = await page.$eval('#machine-time', (e) => e.dataset.seconds);
     await page.$eval('#play', (b) => b.scrollIntoView({ block: 'center', inline: 'center' }));
