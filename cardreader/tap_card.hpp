@@ -20,6 +20,8 @@
 //                   encoder 32's index (docs/tapping.md, "Rigid tapping")
 //   column 20       retract multiple k (rigid tapping, an addition): blank or 1, out at S; 2-4,
 //                   motor 27 reverses to k x S (the feed follows, the pitch held)
+//   21 .. 24        peck depth Q (rigid peck tapping, an addition): blank, one pass; d.ddd in,
+//                   0001-9999, in to Q, out, in to 2Q, ... the feed on one helix throughout
 //   column 76       row 3, the extension mark
 //   every other column blank
 //
@@ -43,10 +45,10 @@ namespace parsons::cardreader {
 // Adds the tap-card fields to a layout whose extension column is set.
 void add_tap_fields(CardLayout& layout);
 // "tap tool", "tap feed axis", "tap sense", "tap depth", "tap pitch", "tap speed",
-// "tap index wait", "tap retract multiple"
+// "tap index wait", "tap retract multiple", "tap peck depth"
 std::string tap_field_label(const LayoutField& field);
 // Short labels for card pictures: "TOOL T", "AXIS", "SENSE", "DEPTH", "PITCH", "SPEED S", "INDEX",
-// "RETRACT"
+// "RETRACT", "PECK Q"
 std::string_view tap_field_short_label(FieldKind kind);
 
 DecodeResult decode_tap_card(const Card& card, const CardLayout& layout);

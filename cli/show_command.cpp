@@ -5,8 +5,8 @@
 #include "cli/support/applied_profile.hpp"
 #include "cli/support/deck_files.hpp"
 #include "cli/support/deck_prediction.hpp"
-#include "cli/support/segment_show.hpp"
 #include "cli/support/json_output.hpp"
+#include "cli/support/segment_show.hpp"
 #include "cli/support/value_names.hpp"
 #include "outputs/output_file.hpp"
 
@@ -258,6 +258,14 @@ std::vector<std::array<std::string, 3>> tap_card_fields(const CardOrders& o,
                                       t.retract, t.retract, t.retract * t.rpm)
                         : std::string("blank: out at S, as in");
             break;
+        case FieldKind::tap_peck:
+            value = t.peck > 0
+                        ? fmt::format("{} in a peck: {} pass{} in to {} in, out to the start "
+                                      "between, the feed on one helix (an addition)",
+                                      format_inches(t.peck), tap_passes(t),
+                                      tap_passes(t) == 1 ? "" : "es", format_inches(t.depth))
+                        : std::string("blank: one pass to the depth");
+            break;
         default:
             break;
         }
@@ -287,18 +295,23 @@ void print_tap_card(std::int64_t index, const CardOrders& o, const CardLayout& l
 
 Json tap_card_json(std::int64_t index, const CardOrders& o) {
     const TapOrder& t = o.tap;
-    return {{"index", index},
-            {"number", o.number},
-            {"kind", "tap"},
-            {"tool", t.tool},
-            {"axis", std::string(axis_name(t.axis))},
-            {"sense", t.motion == Motion::forward ? "forward" : "reverse"},
-            {"depth", inches_json(t.depth)},
-            {"pitch", t.pitch / 100000.0},
-            {"rpm", t.rpm},
-            {"index_wait", t.index_wait},
-            {"retract", t.retract},
-            {"warnings", Json::array()}};
+    Json j = {{"index", index},
+              {"number", o.number},
+              {"kind", "tap"},
+              {"tool", t.tool},
+              {"axis", std::string(axis_name(t.axis))},
+              {"sense", t.motion == Motion::forward ? "forward" : "reverse"},
+              {"depth", inches_json(t.depth)},
+              {"pitch", t.pitch / 100000.0},
+              {"rpm", t.rpm},
+              {"index_wait", t.index_wait},
+              {"retract", t.retract},
+              {"warnings", Json::array()}};
+    if (t.peck > 0) { // rigid peck tapping (an addition): columns 21-24, only when punched
+        j["peck_in"] = inches_json(t.peck);
+        j["pecks"] = tap_passes(t);
+    }
+    return j;
 }
 
 void print_card(std::int64_t index, const DecodeResult& decoded, const CardLayout& layout,
