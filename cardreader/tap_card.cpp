@@ -204,6 +204,17 @@ std::string_view tap_field_short_label(FieldKind kind) {
     }
 }
 
+std::string tap_peck_text(const TapOrder& t) {
+    if (t.peck == 0) {
+        return "blank: one pass to the depth";
+    }
+    const int passes = tap_passes(t);
+    return fmt::format("{} in a peck: {} pass{} in to {} in, out to the start between, the feed "
+                       "on one helix (an addition)",
+                       format_inches(t.peck), passes, passes == 1 ? "" : "es",
+                       format_inches(t.depth));
+}
+
 DecodeResult decode_tap_card(const Card& card, const CardLayout& layout) {
     DecodeResult result;
     Problems problems;

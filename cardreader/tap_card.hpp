@@ -50,6 +50,9 @@ std::string tap_field_label(const LayoutField& field);
 // Short labels for card pictures: "TOOL T", "AXIS", "SENSE", "DEPTH", "PITCH", "SPEED S", "INDEX",
 // "RETRACT", "PECK Q"
 std::string_view tap_field_short_label(FieldKind kind);
+// What columns 21-24 order, for `parsons show`: "0.100 in a peck: 3 passes in to 0.300 in, ..."
+// or "blank: one pass to the depth".
+std::string tap_peck_text(const TapOrder& t);
 
 DecodeResult decode_tap_card(const Card& card, const CardLayout& layout);
 // Punches a tap card's order and its mark (not the card number); the error says what the card

@@ -14,6 +14,7 @@
 #include "cardreader/condition_card.hpp"
 #include "cardreader/deck_error.hpp"
 #include "cardreader/deck_review.hpp"
+#include "cardreader/tap_card.hpp"
 #include "relaylogic/card_reader.hpp"
 
 #include <CLI/CLI.hpp>
@@ -259,12 +260,7 @@ std::vector<std::array<std::string, 3>> tap_card_fields(const CardOrders& o,
                         : std::string("blank: out at S, as in");
             break;
         case FieldKind::tap_peck:
-            value = t.peck > 0
-                        ? fmt::format("{} in a peck: {} pass{} in to {} in, out to the start "
-                                      "between, the feed on one helix (an addition)",
-                                      format_inches(t.peck), tap_passes(t),
-                                      tap_passes(t) == 1 ? "" : "es", format_inches(t.depth))
-                        : std::string("blank: one pass to the depth");
+            value = tap_peck_text(t);
             break;
         default:
             break;
