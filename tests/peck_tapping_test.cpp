@@ -45,10 +45,10 @@ CardOrders tap(int number, int depth, int rpm, int q) {
     return c;
 }
 
-RunResult run(int depth, int q, Pace pace) {
+RunResult run(const CardOrders& card, Pace pace) {
     const std::array<int, 5> home = {0, 0, 0, 0, 0};
     std::vector<Card> punched;
-    for (const auto& o : {idle_card(1, home), tap(2, depth, 120, q), idle_card(3, home)}) {
+    for (const auto& o : {idle_card(1, home), card, idle_card(3, home)}) {
         auto e = encode(o, fig8_layout());
         if (!e) {
             throw std::runtime_error(*e.error);
@@ -60,6 +60,10 @@ RunResult run(int depth, int q, Pace pace) {
     cabinet.set_pace(pace);
     cabinet.record_tap_samples(true);
     return cabinet.run(deck);
+}
+
+RunResult run(int depth, int q, Pace pace) {
+    return run(tap(2, depth, 120, q), pace);
 }
 
 // One pass into the hole as the samples show it: from the sample the tool first turned to the
@@ -374,4 +378,42 @@ TEST_CASE("Peck tapping through punch, convert, show, gen tapping, the report an
                                            test::q(dir.str("job2.csv")));
     CHECK(bad_gen.exit_code == 2);
     CHECK_THAT(bad_gen.output, Catch::Contains("--peck 12: give 0.001 to 9.999 in"));
+}
+
+TEST_CASE("Peck tapping with the index wait and the faster retract: the wait once, before the "
+          "first pass, every pass out at k x S, the same machine at both paces",
+          "[tapping][rigid][peck]") {
+    CardOrders o = peck::tap(2, 300, 120, 100);
+    o.tap.index_wait = true;
+    o.tap.retract = 2;
+    const RunResult a = peck::run(o, Pace::fast_forward);
+    const RunResult b = peck::run(o, Pace::impulse_level);
+    INFO((a.stop ? a.stop->message : std::string("completed")));
+    REQUIRE(a.completed);
+    REQUIRE(b.completed);
+    const HoleRecord& h = a.tapping->holes.at(0);
+    REQUIRE(h.completed);
+    CHECK(h.pecks == 3);
+    CHECK(h.retract == 2);
+    CHECK(h.index_wait);
+    // By hand: motor 27 runs up to 2 rev/s in 0.5 s (0.5 rev), the index at 4 revolutions comes
+    // 3.5 revolutions later at 2 rev/s: 2.25 s after the tool was ready; once, not each pass.
+    CHECK(h.sync_s - h.start_s == Approx(2.25).margin(1e-9));
+    const auto ps = peck::passes(h);
+    REQUIRE(ps.size() == 3);
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+        CHECK(ps[i].deepest_in == Approx(0.1 * static_cast<double>(i + 1)).margin(0.002));
+    }
+    CHECK(std::abs(h.end_in - h.start_in) < 0.0006);
+    CHECK(a.machine_seconds == b.machine_seconds);
+    CHECK(h.end_s == b.tapping->holes.at(0).end_s);
+    CHECK(h.deepest_in == b.tapping->holes.at(0).deepest_in);
+    // Out at 2 x S (4 rev/s) each pass of N motor revolutions comes out in N / 4 + 0.875 s
+    // against N / 2 + 0.4375 s at S: N / 4 - 0.4375 s sooner; N 8, 16, 24: 10.6875 s by hand
+    // (measured 10.55 s: the stops near the top judged at a sample from the faster speed).
+    o.tap.retract = 1;
+    const RunResult slow = peck::run(o, Pace::fast_forward);
+    REQUIRE(slow.completed);
+    INFO("saved " << slow.machine_seconds - a.machine_seconds);
+    CHECK(slow.machine_seconds - a.machine_seconds == Approx(10.6875).margin(0.2));
 }
