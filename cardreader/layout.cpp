@@ -162,10 +162,10 @@ const LayoutField* CardLayout::find_tap(FieldKind kind) const {
 }
 
 const LayoutField* CardLayout::segment_field_at(int column) const {
-    auto it = std::find_if(segment_fields.begin(), segment_fields.end(),
-                           [column](const LayoutField& f) {
-                               return column >= f.first_column && column <= f.last_column();
-                           });
+    auto it =
+        std::find_if(segment_fields.begin(), segment_fields.end(), [column](const LayoutField& f) {
+            return column >= f.first_column && column <= f.last_column();
+        });
     return it == segment_fields.end() ? nullptr : &*it;
 }
 
@@ -240,6 +240,7 @@ std::string_view field_short_label(FieldKind kind) {
     case FieldKind::tap_rpm:
     case FieldKind::tap_index:
     case FieldKind::tap_retract:
+    case FieldKind::tap_peck:
         return tap_field_short_label(kind);
     case FieldKind::segment_end:
     case FieldKind::segment_feed:
@@ -280,6 +281,7 @@ std::string field_label(const LayoutField& field) {
     case FieldKind::tap_rpm:
     case FieldKind::tap_index:
     case FieldKind::tap_retract:
+    case FieldKind::tap_peck:
         return tap_field_label(field);
     case FieldKind::segment_end:
     case FieldKind::segment_feed:
@@ -336,8 +338,8 @@ void CardLayout::index() {
                                                                     : ColumnWord{0};
         const LayoutField* gf = segment_field_at(c);
         segment_allowed_rows.at(static_cast<std::size_t>(c)) = c == extension_column ? r4
-                                                               : gf     ? kDigitRows
-                                                               : number ? kDigitRows
+                                                               : gf                  ? kDigitRows
+                                                               : number              ? kDigitRows
                                                                         : ColumnWord{0};
     }
 }

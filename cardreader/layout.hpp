@@ -58,7 +58,7 @@ enum class FieldKind : std::uint8_t {
     // forward, row 1 reverse), the depth (d.ddd in), the pitch (five digits read 0.ddddd in per
     // tool revolution) and spindle motor 27's speed S (four digits, rev/min); the rigid-tapping
     // additions: the index wait (one digit, blank or 1), the retract multiple k (one digit, blank
-    // or 1-4).
+    // or 1-4), the peck depth Q (four digits, d.ddd in, blank for one pass).
     tap_tool,
     tap_axis,
     tap_sense,
@@ -67,6 +67,7 @@ enum class FieldKind : std::uint8_t {
     tap_rpm,
     tap_index,
     tap_retract,
+    tap_peck,
     // The fields of a segment card (an addition after EP 0636958; docs/card-layout.md): the end
     // point in X, Y and Z (d.ddd in each, axis table, cross, vertical) and the feed F (three
     // digits, tenths of an inch a minute).

@@ -170,6 +170,7 @@ inline constexpr int kMaxPitch = 99999;  // 0.99999 in per tool revolution
 inline constexpr int kMaxTapTool = 99;   // T: two digits on the card
 inline constexpr int kMaxTapRpm = 9999;  // S: four digits on the card, rev/min
 inline constexpr int kMaxTapRetract = 4; // the retract multiple k: one digit, 1..4
+inline constexpr int kMaxTapPeck = 9999; // the peck depth Q: d.ddd in, four digits
 
 struct TapOrder {
     int tool = 0;                    // T: the head to tap with (1..99)
@@ -184,9 +185,18 @@ struct TapOrder {
     // An addition after LinuxCNC G33.1's faster retract: the return stroke at k x S, the feed
     // still following the tool (column 20; 1..4, blank 1 = the same speed as going in).
     int retract = 1;
+    // An addition after rigid peck tapping (LinuxCNC and Fanuc G84 with Q): in to Q, out to the
+    // starting count, in to 2Q, ... to the depth, the feed following one helix throughout
+    // (columns 21-24; d.ddd in, 0 = blank, one pass).
+    Thousandths peck = 0;
 
     bool operator==(const TapOrder&) const = default;
 };
+
+// The passes into the hole a tap order makes: ceil(depth / Q) with a peck Q, else 1.
+inline int tap_passes(const TapOrder& t) {
+    return t.peck > 0 ? (t.depth + t.peck - 1) / t.peck : 1;
+}
 
 // "0.05000" (hundred-thousandths of an inch per tool revolution)
 std::string format_pitch(int hundred_thousandths);
@@ -196,7 +206,7 @@ std::string format_pitch(int hundred_thousandths);
 // of a contouring path: its end point in X (the table), Y (the cross slide) and Z (the vertical
 // slide), d.ddd in from the reference point, and the nominal speed F along it. The contouring
 // attachment's interpolator runs the three stepper axes together along it (docs/contouring.md).
-inline constexpr int kSegmentAxes = 3;    // X, Y, Z
+inline constexpr int kSegmentAxes = 3;      // X, Y, Z
 inline constexpr int kMaxSegmentFeed = 999; // F: three digits, tenths of an inch a minute
 
 struct SegmentOrder {

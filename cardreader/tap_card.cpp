@@ -121,6 +121,25 @@ int read_retract(const Card& card, const LayoutField& f, Problems& problems) {
     return digit.value_or(1);
 }
 
+// Columns 21-24 (an addition after rigid peck tapping, G84 with Q): the peck depth Q, d.ddd in.
+// Blank is one pass (as before the addition); 0000 is refused (blank is the way to say none).
+Thousandths read_peck(const Card& card, const LayoutField& f, Problems& problems) {
+    Problems own;
+    const std::optional<int> value = detail::read_number(card, f, own);
+    if (const auto bad = own.first()) {
+        problems.add(bad->column, bad->what);
+        return 0;
+    }
+    if (value && *value == 0) {
+        problems.add(f.first_column,
+                     fmt::format("{} is 0000: leave it blank for one pass (a peck of 0.001-9.999 "
+                                 "in, or blank)",
+                                 tap_field_label(f)));
+        return 0;
+    }
+    return static_cast<Thousandths>(value.value_or(0));
+}
+
 } // namespace
 
 void add_tap_fields(CardLayout& layout) {
@@ -132,6 +151,7 @@ void add_tap_fields(CardLayout& layout) {
     layout.tap_fields.push_back({FieldKind::tap_rpm, std::nullopt, 15, 4});
     layout.tap_fields.push_back({FieldKind::tap_index, std::nullopt, 19, 1});
     layout.tap_fields.push_back({FieldKind::tap_retract, std::nullopt, 20, 1});
+    layout.tap_fields.push_back({FieldKind::tap_peck, std::nullopt, 21, 4});
 }
 
 std::string tap_field_label(const LayoutField& field) {
@@ -152,6 +172,8 @@ std::string tap_field_label(const LayoutField& field) {
         return "tap index wait";
     case FieldKind::tap_retract:
         return "tap retract multiple";
+    case FieldKind::tap_peck:
+        return "tap peck depth";
     default:
         return "tap field";
     }
@@ -175,9 +197,22 @@ std::string_view tap_field_short_label(FieldKind kind) {
         return "INDEX";
     case FieldKind::tap_retract:
         return "RETRACT";
+    case FieldKind::tap_peck:
+        return "PECK Q";
     default:
         return "";
     }
+}
+
+std::string tap_peck_text(const TapOrder& t) {
+    if (t.peck == 0) {
+        return "blank: one pass to the depth";
+    }
+    const int passes = tap_passes(t);
+    return fmt::format("{} in a peck: {} pass{} in to {} in, out to the start between, the feed "
+                       "on one helix (an addition)",
+                       format_inches(t.peck), passes, passes == 1 ? "" : "es",
+                       format_inches(t.depth));
 }
 
 DecodeResult decode_tap_card(const Card& card, const CardLayout& layout) {
@@ -213,6 +248,7 @@ DecodeResult decode_tap_card(const Card& card, const CardLayout& layout) {
                           "the spindle must turn to tap (0001-9999 rev/min)", problems);
     t.index_wait = read_index_wait(card, tap_field(layout, FieldKind::tap_index), problems);
     t.retract = read_retract(card, tap_field(layout, FieldKind::tap_retract), problems);
+    t.peck = read_peck(card, tap_field(layout, FieldKind::tap_peck), problems);
     result.bad_punch = problems.first();
     return result;
 }
@@ -241,6 +277,9 @@ std::optional<std::string> tap_order_error(const TapOrder& t) {
     }
     if (t.retract < 1 || t.retract > kMaxTapRetract) {
         return fmt::format("tap retract multiple {} is not 1..{}", t.retract, kMaxTapRetract);
+    }
+    if (t.peck > kMaxTapPeck) {
+        return fmt::format("tap peck depth {} is not 0.001..9.999 in (or 0, one pass)", t.peck);
     }
     return std::nullopt;
 }
@@ -272,6 +311,9 @@ std::optional<std::string> encode_tap_card(const TapOrder& t, const CardLayout& 
     }
     if (t.retract > 1) {
         number(FieldKind::tap_retract, t.retract);
+    }
+    if (t.peck > 0) {
+        number(FieldKind::tap_peck, t.peck);
     }
     return error;
 }

@@ -20,6 +20,8 @@
 //                   encoder 32's index (docs/tapping.md, "Rigid tapping")
 //   column 20       retract multiple k (rigid tapping, an addition): blank or 1, out at S; 2-4,
 //                   motor 27 reverses to k x S (the feed follows, the pitch held)
+//   21 .. 24        peck depth Q (rigid peck tapping, an addition): blank, one pass; d.ddd in,
+//                   0001-9999, in to Q, out, in to 2Q, ... the feed on one helix throughout
 //   column 76       row 3, the extension mark
 //   every other column blank
 //
@@ -43,11 +45,14 @@ namespace parsons::cardreader {
 // Adds the tap-card fields to a layout whose extension column is set.
 void add_tap_fields(CardLayout& layout);
 // "tap tool", "tap feed axis", "tap sense", "tap depth", "tap pitch", "tap speed",
-// "tap index wait", "tap retract multiple"
+// "tap index wait", "tap retract multiple", "tap peck depth"
 std::string tap_field_label(const LayoutField& field);
 // Short labels for card pictures: "TOOL T", "AXIS", "SENSE", "DEPTH", "PITCH", "SPEED S", "INDEX",
-// "RETRACT"
+// "RETRACT", "PECK Q"
 std::string_view tap_field_short_label(FieldKind kind);
+// What columns 21-24 order, for `parsons show`: "0.100 in a peck: 3 passes in to 0.300 in, ..."
+// or "blank: one pass to the depth".
+std::string tap_peck_text(const TapOrder& t);
 
 DecodeResult decode_tap_card(const Card& card, const CardLayout& layout);
 // Punches a tap card's order and its mark (not the card number); the error says what the card

@@ -64,7 +64,7 @@ std::pair<int, TapOrder> read_tap_row(std::string_view text, const std::string& 
     if (fields.size() < kTapFieldCount) {
         throw fail(fmt::format("a tap row has 8 comma-separated fields "
                                "(card,tap,TOOL,AXIS,SENSE,DEPTH,PITCH,RPM), then the rigid-tapping "
-                               "words if any (index, retract=K), found {}",
+                               "words if any (index, retract=K, peck=D.DDD), found {}",
                                fields.size()));
     }
     if (!all_digits(fields[0]) || fields[0].size() > 4) {
@@ -98,6 +98,7 @@ std::pair<int, TapOrder> read_tap_row(std::string_view text, const std::string& 
     t.rpm = parse_count(fields[7], "speed", 4, kMaxTapRpm, file, line);
     // The rigid-tapping additions, each a word after RPM, each at most once.
     bool retract_given = false;
+    bool peck_given = false;
     for (std::size_t i = kTapFieldCount; i < fields.size(); ++i) {
         const std::string_view word = fields[i];
         if (word == "index") {
@@ -117,9 +118,22 @@ std::pair<int, TapOrder> read_tap_row(std::string_view text, const std::string& 
             }
             t.retract = k[0] - '0';
             retract_given = true;
+        } else if (word.substr(0, 5) == "peck=") {
+            // Rigid peck tapping (an addition; columns 21-24): the peck depth Q, d.ddd in.
+            if (peck_given) {
+                throw fail("'peck=' given twice");
+            }
+            const std::string_view q = word.substr(5);
+            t.peck = q.empty() ? 0 : detail::parse_inches(q, "peck depth", file, line);
+            if (t.peck == 0) {
+                throw fail(fmt::format("peck depth '{}': a peck of 0 taps nothing (leave the "
+                                       "word out for one pass)",
+                                       q));
+            }
+            peck_given = true;
         } else {
             throw fail(fmt::format("unknown word '{}' after the tap row's speed (the rigid-tapping "
-                                   "additions: index, retract=K)",
+                                   "additions: index, retract=K, peck=D.DDD)",
                                    word));
         }
     }
@@ -137,6 +151,9 @@ std::string tap_row(const CardOrders& orders) {
     }
     if (t.retract > 1) {
         row += fmt::format(",retract={}", t.retract);
+    }
+    if (t.peck > 0) {
+        row += ",peck=" + format_inches(t.peck);
     }
     return row;
 }

@@ -9,7 +9,8 @@
 // RPM spindle motor 27's speed S, 1..9999 rev/min. Then the rigid-tapping additions, each a
 // word, each at most once, written only when ordered: `index` (the feed waits for encoder 32's
 // index; column 19 punched 1), `retract=K` (K 1..4: the return stroke at K x S; column 20,
-// written only for K over 1).
+// written only for K over 1), `peck=D.DDD` (the peck depth Q, 0.001..9.999 in: in to Q, out,
+// in to 2Q, ... to the depth; columns 21-24, written only when punched).
 #pragma once
 
 #include "cardreader/orders.hpp"

@@ -115,6 +115,12 @@ void print_tapping(const TappingFlags& f, const GeneratedTappingJob& g) {
                    "20; an addition after rigid tapping)\n",
                    o.retract);
     }
+    if (o.peck_in > 0) {
+        fmt::print(out,
+                   "  peck           every tap goes in {:.3f} in a pass, out to its start between "
+                   "(columns 21-24; an addition after rigid peck tapping)\n",
+                   o.peck_in);
+    }
     if (o.index_wait) {
         fmt::print(out, "  index wait     every tap's feed waits for encoder 32's index (column "
                         "19; an addition after rigid tapping)\n");
@@ -204,6 +210,10 @@ void add_tapping_command(CLI::App& gen, Command& selected) {
                     "Every tap comes out at this multiple of S, the feed following so the pitch "
                     "holds (rigid tapping's faster retract, an addition; 1 = out at S)")
         ->check(CLI::Range(1, cardreader::kMaxTapRetract))
+        ->capture_default_str();
+    cmd->add_option("--peck", o.peck_in,
+                    "Every tap pecks: in this far (inches) a pass, out to its start, in again, "
+                    "the feed on one helix (rigid peck tapping, an addition; 0 = one pass)")
         ->capture_default_str();
     cmd->add_option("-o,--output", flags->output, "The deck to write (.cbn .bin .csv)")
         ->type_name(std::string(kDeckValue))

@@ -5,8 +5,8 @@
 #include "cli/support/applied_profile.hpp"
 #include "cli/support/deck_files.hpp"
 #include "cli/support/deck_prediction.hpp"
-#include "cli/support/segment_show.hpp"
 #include "cli/support/json_output.hpp"
+#include "cli/support/segment_show.hpp"
 #include "cli/support/value_names.hpp"
 #include "outputs/output_file.hpp"
 
@@ -14,6 +14,7 @@
 #include "cardreader/condition_card.hpp"
 #include "cardreader/deck_error.hpp"
 #include "cardreader/deck_review.hpp"
+#include "cardreader/tap_card.hpp"
 #include "relaylogic/card_reader.hpp"
 
 #include <CLI/CLI.hpp>
@@ -258,6 +259,9 @@ std::vector<std::array<std::string, 3>> tap_card_fields(const CardOrders& o,
                                       t.retract, t.retract, t.retract * t.rpm)
                         : std::string("blank: out at S, as in");
             break;
+        case FieldKind::tap_peck:
+            value = tap_peck_text(t);
+            break;
         default:
             break;
         }
@@ -287,18 +291,23 @@ void print_tap_card(std::int64_t index, const CardOrders& o, const CardLayout& l
 
 Json tap_card_json(std::int64_t index, const CardOrders& o) {
     const TapOrder& t = o.tap;
-    return {{"index", index},
-            {"number", o.number},
-            {"kind", "tap"},
-            {"tool", t.tool},
-            {"axis", std::string(axis_name(t.axis))},
-            {"sense", t.motion == Motion::forward ? "forward" : "reverse"},
-            {"depth", inches_json(t.depth)},
-            {"pitch", t.pitch / 100000.0},
-            {"rpm", t.rpm},
-            {"index_wait", t.index_wait},
-            {"retract", t.retract},
-            {"warnings", Json::array()}};
+    Json j = {{"index", index},
+              {"number", o.number},
+              {"kind", "tap"},
+              {"tool", t.tool},
+              {"axis", std::string(axis_name(t.axis))},
+              {"sense", t.motion == Motion::forward ? "forward" : "reverse"},
+              {"depth", inches_json(t.depth)},
+              {"pitch", t.pitch / 100000.0},
+              {"rpm", t.rpm},
+              {"index_wait", t.index_wait},
+              {"retract", t.retract},
+              {"warnings", Json::array()}};
+    if (t.peck > 0) { // rigid peck tapping (an addition): columns 21-24, only when punched
+        j["peck_in"] = inches_json(t.peck);
+        j["pecks"] = tap_passes(t);
+    }
+    return j;
 }
 
 void print_card(std::int64_t index, const DecodeResult& decoded, const CardLayout& layout,

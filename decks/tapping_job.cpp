@@ -161,6 +161,9 @@ private:
             refuse(
                 fmt::format("--retract {}: give 1 to {}", o.retract, cardreader::kMaxTapRetract));
         }
+        if (o.peck_in != 0 && !(o.peck_in * 1000.0 >= 0.5 && o.peck_in * 1000.0 < 9999.5)) {
+            refuse(fmt::format("--peck {}: give 0.001 to 9.999 in (or 0 for one pass)", o.peck_in));
+        }
         if (o.rpm && (*o.rpm < 1 || *o.rpm > kMaxRpmOnCard)) {
             refuse(fmt::format("--rpm {}: give 1 to {} rev/min", *o.rpm, kMaxRpmOnCard));
         }
@@ -297,6 +300,7 @@ private:
         c.tap.rpm = rpm;
         c.tap.index_wait = o_.index_wait;
         c.tap.retract = o_.retract;
+        c.tap.peck = static_cast<cardreader::Thousandths>(thousandths(o_.peck_in));
         deck_.cards.push_back(c);
         TappingHole h;
         h.hole = hole;

@@ -63,6 +63,9 @@ struct TappingOptions {
     bool index_wait = false;
     // The faster retract (an addition): every tap card comes out at retract x S (column 20).
     int retract = 1;
+    // Rigid peck tapping (an addition): every tap card pecks this deep, inches (columns 21-24;
+    // 0: one pass).
+    double peck_in = 0;
 };
 
 // One hole of the plate, in the order it is tapped.

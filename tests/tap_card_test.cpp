@@ -298,9 +298,16 @@ TEST_CASE("Tap card: a bad punch is named by its column", "[tap_card][card]") {
         {"the speed blank", [&](Card& c) { clear(c, 15, 18); }, 15, "tap speed is blank"},
         {"a hole in the blank column 1", [](Card& c) { c.punch(1, Row::r0); }, 1,
          "column 1, which layout fig8 leaves unused on a tap card"},
-        {"a hole in column 21", [](Card& c) { c.punch(21, Row::r5); }, 21,
-         "punch in row 5 where none belongs (in column 21, which layout fig8 leaves unused on a "
+        {"a hole in column 25", [](Card& c) { c.punch(25, Row::r5); }, 25,
+         "punch in row 5 where none belongs (in column 25, which layout fig8 leaves unused on a "
          "tap card)"},
+        {"columns 21-24 (peck depth) punched 0000",
+         [](Card& c) {
+             for (int col = 21; col <= 24; ++col) {
+                 c.punch(col, Row::r0);
+             }
+         },
+         21, "tap peck depth is 0000: leave it blank for one pass"},
         {"column 20 (retract multiple) punched 7", [](Card& c) { c.punch(20, Row::r7); }, 20,
          "tap retract multiple is 7: blank or 1 (out at S, as in), or 2-4"},
         {"column 19 (index wait) punched 5", [](Card& c) { c.punch(19, Row::r5); }, 19,
@@ -405,7 +412,7 @@ TEST_CASE("Tap card: the listing's errors name file and line", "[tap_card][listi
         {"12,tap,1,vertical,reverse,0.600,0.05000\n",
          "t.csv:2: a tap row has 8 comma-separated fields "
          "(card,tap,TOOL,AXIS,SENSE,DEPTH,PITCH,RPM), then the rigid-tapping words if any "
-         "(index, retract=K), found 7"},
+         "(index, retract=K, peck=D.DDD), found 7"},
         {"12,tap\n", "t.csv:2: a tap row has 8 comma-separated fields"},
         {"10000,tap,1,vertical,reverse,0.600,0.05000,240\n",
          "t.csv:2: card number '10000' is not 0..9999"},

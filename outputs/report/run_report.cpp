@@ -52,6 +52,10 @@ nlohmann::json tapping_json(const relaylogic::TappingResult& t) {
         if (h.retract != 1) { // the faster retract (an addition): out at retract x S
             holes.back()["retract"] = h.retract;
         }
+        if (h.peck_in > 0) { // rigid peck tapping (an addition): the peck and the passes in
+            holes.back()["peck_in"] = decimals(h.peck_in, 3);
+            holes.back()["pecks"] = h.pecks;
+        }
     }
     return json{
         {"tool_on_spindle", t.tool_on_spindle}, {"ratio_in_memory", decimals(t.ratio_in_memory, 6)},

@@ -35,6 +35,10 @@ void add_index_json(const HoleRecord& h, nlohmann::json& j) {
     if (h.retract != 1) { // the faster retract (an addition): only when ordered
         j["retract"] = h.retract;
     }
+    if (h.peck_in > 0) { // rigid peck tapping (an addition): only when ordered
+        j["peck_in"] = exact(h.peck_in);
+        j["pecks"] = h.pecks;
+    }
 }
 
 } // namespace
@@ -106,6 +110,10 @@ HoleRecord tap_hole_from_json(const nlohmann::json& j) {
         h.sync_s = h.start_s;
     }
     h.retract = j.value("retract", 1);
+    if (j.contains("peck_in")) {
+        h.peck_in = exact(j.at("peck_in"));
+        h.pecks = j.at("pecks").get<int>();
+    }
     return h;
 }
 

@@ -331,6 +331,7 @@ void TappingUnits::start(double t, int counter, double real_in) {
                    profile_.spindle.encoder_pulses_per_rev;
     start_counter_ = counter;
     z_cmd_in_ = 0;
+    pass_target_ = order_.peck > 0 ? std::min<int>(order_.peck, order_.depth) : order_.depth;
     last_counter_33_ = counter_33_->value();
     speed_33_->sample(); // the first sample counts from here
     prev_edge_s_ = last_edge_s_;
@@ -355,6 +356,8 @@ void TappingUnits::start(double t, int counter, double real_in) {
     h.start_s = t;
     h.index_wait = order_.index_wait;
     h.retract = order_.retract;
+    h.peck_in = order_.peck / 1000.0;
+    h.pecks = 1;
     h.sync_s = t;
     h.sync_tool_revs = spindle_->tool_revs();
     spindle_->command_rpm(order_.rpm);
@@ -398,7 +401,7 @@ bool TappingUnits::sample(double t, int counter, double real_in, bool feed_at_re
         z_cmd_in_ += d * per_edge;
     }
     measure_speed(t, d);
-    const double depth = order_.depth / 1000.0;
+    const double depth = pass_target_ / 1000.0; // this pass's (rigid peck tapping)
     record(t, real_in);
     HoleRecord& h = holes_.back();
     if (phase_ == Phase::index_wait) {
@@ -432,6 +435,9 @@ bool TappingUnits::sample(double t, int counter, double real_in, bool feed_at_re
         break;
     default:
         break;
+    }
+    if (phase_ == Phase::settle && moved == 0 && feed_at_rest && pass_target_ < order_.depth) {
+        next_peck(t); // back on the starting count, the depth not yet reached: in again
     }
     double v = 0;
     if (phase_ == Phase::settle) {
@@ -515,6 +521,24 @@ void TappingUnits::plan_reversal(double t, double depth, double per_edge) {
     if (left <= feed * p.sample_s) {
         reverse_at_s_ = t + std::max(0.0, left / feed);
     }
+}
+
+// Rigid peck tapping (an addition): the feed stands on its starting count, motor 27 at rest.
+// The next pass goes Q deeper (at most to the depth); its speed is measured afresh as at the
+// tap's start, but z_cmd (the edges counted since the tap began) and the tool's angle reference
+// are kept, so the feed follows the helix of the first pass: the thread stays in phase.
+void TappingUnits::next_peck(double t) {
+    pass_target_ = std::min<int>(pass_target_ + order_.peck, order_.depth);
+    ++holes_.back().pecks;
+    prev_edge_s_ = last_edge_s_;
+    rate_ = 0;
+    accel_ = 0;
+    mid_s_ = t;
+    measured_ = false;
+    reverse_at_s_.reset();
+    reversal_scheduled_ = false;
+    spindle_->command_rpm(order_.rpm);
+    phase_ = Phase::run_in;
 }
 
 std::optional<double> TappingUnits::take_reversal() {

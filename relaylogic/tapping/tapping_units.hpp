@@ -30,6 +30,10 @@
 //                     up backwards; the feed follows it out
 //   near the top .... the same, commanding the motor to rest; once it stands, the feed creeps
 //                     to the counter reading it started from and stops (the card ends there)
+//   peck ............ (rigid peck tapping, an addition; columns 21-24) the first pass reverses
+//                     at Q, not the depth; with the feed on its starting count motor 27 runs
+//                     forward at S again, in to 2Q, and so on to the depth. z_cmd is not reset:
+//                     the feed follows the same count of encoder 32's edges, one helix
 //   end ............. the NC drops the tool call; the zeroizing circuit indexes the next card
 //
 // Emulation notes: the counters of the feed axis count the way the drive really turns during a
@@ -94,6 +98,11 @@ struct HoleRecord {
     double sync_tool_revs = 0;
     // The faster retract (an addition; column 20): out at retract x S (1: as going in).
     int retract = 1;
+    // Rigid peck tapping (an addition; columns 21-24): the peck depth Q, inches (0: none, one
+    // pass), and the passes into the hole it made (in to Q, 2Q, ... the depth; reverse_s is the
+    // last pass's reversal, deepest_in the deepest of all).
+    double peck_in = 0;
+    int pecks = 1;
     bool completed = false;         // came back out and stood (false: the machine stopped first)
     std::vector<TapSample> samples; // if asked for (record_tap_samples)
 };
@@ -210,6 +219,7 @@ private:
     double run_down_travel(double edges_per_sample) const;
     void measure_speed(double t, int d);
     void plan_reversal(double t, double depth, double per_edge);
+    void next_peck(double t); // rigid peck tapping: in again, to the next pass's target
     void look_for_index(std::int64_t m, double t); // an edge onto count m came at t
 
     axes::MachineProfile profile_;
@@ -232,7 +242,8 @@ private:
     bool selected_ = false;
     int last_counter_33_ = 0; // interface 33's counter at the last sample
     int start_counter_ = 0;   // the feed axis's absolute counter where the tap started
-    double z_cmd_in_ = 0;     // the depth the tool's turns call for
+    double z_cmd_in_ = 0;     // the depth the tool's turns call for (kept between pecks)
+    int pass_target_ = 0;     // this pass's depth, thousandths: min(k Q, depth), or the depth
     double settle_since_s_ = 0;
     double last_edge_s_ = 0; // when interface 33 counted its last edge
     double prev_edge_s_ = 0; // the last edge of the last sample that saw one

@@ -768,7 +768,8 @@ async function runAll() {
   // that hangs (transfer_timeout, exit 3), also at the first hole (no hole measured); a job
   // that knows only the first row (holes it does not know), with --thread-tolerance.
   for (const [deck, extra] of [['plate.csv', []], ['plate-stored.csv', ['--ratio-source', 'stored']],
-    ['plate-row.csv', ['--rows', '1']], ['plate-21.csv', ['--tools', '2', '1']]]) {
+    ['plate-row.csv', ['--rows', '1']], ['plate-21.csv', ['--tools', '2', '1']],
+    ['plate-peck.csv', ['--peck', '0.2']]]) {
     const stem = deck.replace(/\.csv$/, '');
     run(['gen', 'tapping', ...extra, '-o', deck, '--json'], { stdout: `gen-${stem}.json` });
     expect(`gen-${stem}.json`, 'json-output');
@@ -800,6 +801,13 @@ async function runAll() {
        'plate-row.csv.job.json', '--thread-tolerance', '10', '--report', 'plate-unknown-holes.report.json'],
       { codes: [3] });
   expect('plate-unknown-holes.report.json', 'report');
+  // Rigid peck tapping (an addition): the holes' peck_in and pecks in the report and the state
+  // (the table's limit stops the run on the way to hole 2, hole 1 tapped in three passes).
+  run(['run', 'plate-peck.csv', '-q', '--thread-proof', 'plate-peck.csv.job.json', '--limit',
+       'table=0:2', '--report', 'plate-peck.report.json', '--save-state', 'plate-peck.state.json'],
+      { codes: [3] });
+  expect('plate-peck.report.json', 'report');
+  expect('plate-peck.state.json', 'state');
 
   // gen gcode: a small program in millimetres with arcs both ways (it writes no job file).
   writeWork('program.ngc', ['G21 G90 G17 (millimetres)', 'G0 Z5', 'M3 S800', 'G1 Z-1 F100', 'G1 X20',
@@ -817,6 +825,7 @@ async function runAll() {
     ['show-press-sync.json', [pressSync, ...X], [0]],
     ['show-press-reset.json', [pressReset, ...X], [0]],
     ['show-plate.json', ['plate.csv', ...X], [0]],
+    ['show-plate-peck.json', ['plate-peck.csv', ...X], [0]],
     ['show-stray-hole.json', ['stray-hole.txt'], [0]],
     ['show-double-punch.json', ['double-punch.txt'], [0]],
     ['show-deck-errors.json', [conditions], [2]],
