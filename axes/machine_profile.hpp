@@ -195,12 +195,12 @@ enum class JunctionPolicy : std::uint8_t {
 };
 
 struct ContourProfile {
-    int steps_per_in = 1000;                 // one step a thousandth, the card's resolution
-    double pull_in_steps_per_s = 100.0;      // a change of pulse rate the motor follows at once
-    double acceleration_steps_per_s2 = 2000; // how fast its rotor can change its rate
-    double ramp_steps_per_s2 = 1000;         // the interpolator's ramps (at most the above)
+    int steps_per_in = 1000;                  // one step a thousandth, the card's resolution
+    double pull_in_steps_per_s = 100.0;       // a change of pulse rate the motor follows at once
+    double acceleration_steps_per_s2 = 2000;  // how fast its rotor can change its rate
+    double ramp_steps_per_s2 = 1000;          // the interpolator's ramps (at most the above)
     double max_rate_change_steps_per_s = 100; // claim 1's maximum difference
-    double minimum_in_per_min = 0.0;         // claims 1, 4: the speed a slowed junction is met at
+    double minimum_in_per_min = 0.0;          // claims 1, 4: the speed a slowed junction is met at
     JunctionPolicy junctions = JunctionPolicy::rule;
     bool short_segment_rule = true; // claims 7, 8: slow before a segment shorter than the ramp
 };

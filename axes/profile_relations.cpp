@@ -216,8 +216,7 @@ const ProfileRelation kRelations[] = {
      "with contouring: the interpolator's ramps change no motor's pulse rate faster than its "
      "rotor can follow (steps are lost only where the rate jumps: docs/contouring.md)",
      [](const MachineProfile& p) {
-         return !p.contouring ||
-                p.contour.ramp_steps_per_s2 <= p.contour.acceleration_steps_per_s2;
+         return !p.contouring || p.contour.ramp_steps_per_s2 <= p.contour.acceleration_steps_per_s2;
      },
      [](const MachineProfile& p) {
          return fmt::format("contour.ramp_steps_per_s2: {:g} steps/s² is faster than the rotor "

@@ -2,8 +2,8 @@
 
 #include "cardreader/deck_error.hpp"
 #include "cardreader/listing_fields.hpp"
-#include "cardreader/sync_listing.hpp"
 #include "cardreader/segment_listing.hpp"
+#include "cardreader/sync_listing.hpp"
 #include "cardreader/tap_listing.hpp"
 
 #include <fmt/format.h>

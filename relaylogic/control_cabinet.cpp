@@ -121,8 +121,8 @@ void ControlCabinet::schedule_lasting(const Attachment& owner, double t, int cod
     while (attachments_.at(slot).get() != &owner) {
         ++slot;
     }
-    Event e{t, seq_++, EventKind::attachment, static_cast<std::uint8_t>(slot), false, code,
-            cards_read_};
+    Event e{t,    seq_++,     EventKind::attachment, static_cast<std::uint8_t>(slot), false,
+            code, cards_read_};
     e.lasting = true;
     queue_.push(e);
 }

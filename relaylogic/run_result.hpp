@@ -71,7 +71,7 @@ struct RunResult {
     std::optional<int> tool_in_spindle;
     bool conditions_used = false;     // a condition card was read: the report shows them only then
     std::optional<PressResult> press; // when the profile has press synchronisation
-    std::optional<TappingResult> tapping; // when the profile has spindle synchronisation
+    std::optional<TappingResult> tapping;       // when the profile has spindle synchronisation
     std::optional<ContouringResult> contouring; // when the profile has contouring
 };
 
