@@ -9,6 +9,7 @@ namespace {
 
 using detail::kDigitRows;
 using detail::Problems;
+using detail::read_card_number;
 using detail::read_number;
 
 using detail::r0;
@@ -182,13 +183,7 @@ DecodeResult decode_condition_card(const Card& card, const CardLayout& layout) {
     CardOrders& o = result.orders;
     o.kind = CardKind::condition;
     detail::find_strays(card, layout.condition_allowed_rows, layout, CardKind::condition, problems);
-    if (const LayoutField* f = layout.find(FieldKind::card_number)) {
-        const std::optional<int> number = read_number(card, *f, problems);
-        if (!number) {
-            problems.add(f->first_column, "card number is blank (it is always punched)");
-        }
-        o.number = number.value_or(0);
-    }
+    o.number = read_card_number(card, layout, problems);
     int first_blank_slot = -1;
     for (int slot = 0; slot < kConditionsPerCard; ++slot) {
         const int b = 1 + slot * kConditionSlotColumns;

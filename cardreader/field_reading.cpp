@@ -113,6 +113,18 @@ void find_strays(const Card& card, const std::array<ColumnWord, kColumns + 1>& a
     }
 }
 
+int read_card_number(const Card& card, const CardLayout& layout, Problems& problems) {
+    const LayoutField* f = layout.find(FieldKind::card_number);
+    if (f == nullptr) {
+        return 0;
+    }
+    const std::optional<int> number = read_number(card, *f, problems);
+    if (!number) {
+        problems.add(f->first_column, "card number is blank (it is always punched)");
+    }
+    return number.value_or(0);
+}
+
 } // namespace detail
 
 } // namespace parsons::cardreader

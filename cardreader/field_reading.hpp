@@ -1,7 +1,7 @@
 // Reading punched fields, shared by the motion card's decode (layout.cpp), the condition
-// card's (condition_card.cpp), the sync card's (sync_card.cpp) and the tap card's (tap_card.cpp):
-// a digit column, a number of digit columns, and the collection of bad punches that reports the
-// lowest column first.
+// card's (condition_card.cpp), the sync card's (sync_card.cpp), the tap card's (tap_card.cpp) and
+// the segment card's (segment_card.cpp): a digit column, a number of digit columns, and the
+// collection of bad punches that reports the lowest column first.
 #pragma once
 
 #include "cardreader/card.hpp"
@@ -42,6 +42,10 @@ std::optional<int> read_number(const Card& card, const LayoutField& f, Problems&
 
 // The keypunch: `value` in the field's digit columns, or why it does not fit.
 std::optional<std::string> punch_number(Card& card, const LayoutField& f, int value);
+
+// The card number of columns 77-80 on a card of an addition's kind, always punched: its bad
+// punch, or its being blank, added to `problems` (and 0 read).
+int read_card_number(const Card& card, const CardLayout& layout, Problems& problems);
 
 // Punches in columns where the table `allowed` (index 1..80) allows none, each named by the
 // field of a card of this kind the column belongs to.

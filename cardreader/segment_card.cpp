@@ -82,16 +82,7 @@ DecodeResult decode_segment_card(const Card& card, const CardLayout& layout) {
     CardOrders& o = result.orders;
     o.kind = CardKind::segment;
     detail::find_strays(card, layout.segment_allowed_rows, layout, CardKind::segment, problems);
-    if (const LayoutField* f = layout.find(FieldKind::card_number)) {
-        Problems own;
-        const std::optional<int> number = detail::read_number(card, *f, own);
-        if (const auto bad = own.first()) {
-            problems.add(bad->column, bad->what);
-        } else if (!number) {
-            problems.add(f->first_column, "card number is blank (it is always punched)");
-        }
-        o.number = number.value_or(0);
-    }
+    o.number = detail::read_card_number(card, layout, problems);
     SegmentOrder& g = o.segment;
     for (int i = 0; i < kSegmentAxes; ++i) {
         g.to.at(static_cast<std::size_t>(i)) = static_cast<Thousandths>(read_punched(

@@ -221,16 +221,7 @@ DecodeResult decode_tap_card(const Card& card, const CardLayout& layout) {
     CardOrders& o = result.orders;
     o.kind = CardKind::tap;
     detail::find_strays(card, layout.tap_allowed_rows, layout, CardKind::tap, problems);
-    if (const LayoutField* f = layout.find(FieldKind::card_number)) {
-        Problems own;
-        const std::optional<int> number = detail::read_number(card, *f, own);
-        if (const auto bad = own.first()) {
-            problems.add(bad->column, bad->what);
-        } else if (!number) {
-            problems.add(f->first_column, "card number is blank (it is always punched)");
-        }
-        o.number = number.value_or(0);
-    }
+    o.number = detail::read_card_number(card, layout, problems);
     TapOrder& t = o.tap;
     t.tool = read_required(card, tap_field(layout, FieldKind::tap_tool),
                            "the tool to tap with, 01-99 (the head that holds it goes on)",

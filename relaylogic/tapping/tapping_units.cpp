@@ -334,13 +334,7 @@ void TappingUnits::start(double t, int counter, double real_in) {
     pass_target_ = order_.peck > 0 ? std::min<int>(order_.peck, order_.depth) : order_.depth;
     last_counter_33_ = counter_33_->value();
     speed_33_->sample(); // the first sample counts from here
-    prev_edge_s_ = last_edge_s_;
-    rate_ = 0;
-    accel_ = 0;
-    mid_s_ = t;
-    measured_ = false;
-    reverse_at_s_.reset();
-    reversal_scheduled_ = false;
+    measure_afresh(t);
     const axes::SpindleHead* head = profile_.spindle.head(spindle_->tool());
     HoleRecord& h = holes_.back();
     h.tool = spindle_->tool();
@@ -523,13 +517,8 @@ void TappingUnits::plan_reversal(double t, double depth, double per_edge) {
     }
 }
 
-// Rigid peck tapping (an addition): the feed stands on its starting count, motor 27 at rest.
-// The next pass goes Q deeper (at most to the depth); its speed is measured afresh as at the
-// tap's start, but z_cmd (the edges counted since the tap began) and the tool's angle reference
-// are kept, so the feed follows the helix of the first pass: the thread stays in phase.
-void TappingUnits::next_peck(double t) {
-    pass_target_ = std::min<int>(pass_target_ + order_.peck, order_.depth);
-    ++holes_.back().pecks;
+// The tool's speed is measured afresh from t (a pass begins), no reversal timed.
+void TappingUnits::measure_afresh(double t) {
     prev_edge_s_ = last_edge_s_;
     rate_ = 0;
     accel_ = 0;
@@ -537,6 +526,16 @@ void TappingUnits::next_peck(double t) {
     measured_ = false;
     reverse_at_s_.reset();
     reversal_scheduled_ = false;
+}
+
+// Rigid peck tapping (an addition): the feed stands on its starting count, motor 27 at rest.
+// The next pass goes Q deeper (at most to the depth); its speed is measured afresh as at the
+// tap's start, but z_cmd (the edges counted since the tap began) and the tool's angle reference
+// are kept, so the feed follows the helix of the first pass: the thread stays in phase.
+void TappingUnits::next_peck(double t) {
+    pass_target_ = std::min<int>(pass_target_ + order_.peck, order_.depth);
+    ++holes_.back().pecks;
+    measure_afresh(t);
     spindle_->command_rpm(order_.rpm);
     phase_ = Phase::run_in;
 }

@@ -218,6 +218,7 @@ private:
     double travel_per_edge() const; // inches of feed per encoder edge, with the ratio in 12a
     double run_down_travel(double edges_per_sample) const;
     void measure_speed(double t, int d);
+    void measure_afresh(double t);
     void plan_reversal(double t, double depth, double per_edge);
     void next_peck(double t); // rigid peck tapping: in again, to the next pass's target
     void look_for_index(std::int64_t m, double t); // an edge onto count m came at t
