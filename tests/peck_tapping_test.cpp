@@ -329,20 +329,9 @@ TEST_CASE("Peck tapping through punch, convert, show, gen tapping, the report an
           "[tapping][rigid][peck][cli]") {
     test::TempDir dir;
     const std::string row = "2,tap,1,vertical,reverse,0.600,0.05000,240,peck=0.250\n";
-    test::write_bytes(dir.path("tap.csv"), test::deck_with(row));
-    const auto punched = test::run_parsons("punch " + test::q(dir.str("tap.csv")) + " -o " +
-                                           test::q(dir.str("tap.cbn")));
-    INFO(punched.output);
-    REQUIRE(punched.exit_code == 0);
-    const auto back = test::run_parsons("convert " + test::q(dir.str("tap.cbn")) + " -o " +
-                                        test::q(dir.str("back.csv")));
-    REQUIRE(back.exit_code == 0);
-    CHECK_THAT(test::read_bytes(dir.path("back.csv")), Catch::Contains(row));
-    const auto shown =
-        test::run_parsons("show " + test::q(dir.str("tap.cbn")) + " --profile parsons-extended");
-    CHECK(shown.exit_code == 0);
-    CHECK_THAT(shown.output, Catch::Contains("21-24    tap peck depth 0.250 in a peck: 3 passes in "
-                                             "to 0.600 in"));
+    const std::string shown = test::tap_row_round_trip(dir, row);
+    CHECK_THAT(shown, Catch::Contains("21-24    tap peck depth 0.250 in a peck: 3 passes in "
+                                      "to 0.600 in"));
 
     // The report and the saved state carry the peck and the passes; a resumed run reports the
     // hole as the run it goes on from did.

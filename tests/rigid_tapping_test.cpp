@@ -236,19 +236,8 @@ TEST_CASE("Rigid tapping: the index wait through punch, convert, show and check"
           "[tapping][rigid][cli]") {
     test::TempDir dir;
     const std::string row = "2,tap,1,vertical,reverse,0.600,0.05000,240,index\n";
-    test::write_bytes(dir.path("tap.csv"), test::deck_with(row));
-    const auto punched = test::run_parsons("punch " + test::q(dir.str("tap.csv")) + " -o " +
-                                           test::q(dir.str("tap.cbn")));
-    INFO(punched.output);
-    REQUIRE(punched.exit_code == 0);
-    const auto back = test::run_parsons("convert " + test::q(dir.str("tap.cbn")) + " -o " +
-                                        test::q(dir.str("back.csv")));
-    REQUIRE(back.exit_code == 0);
-    CHECK_THAT(test::read_bytes(dir.path("back.csv")), Catch::Contains(row));
-    const auto shown =
-        test::run_parsons("show " + test::q(dir.str("tap.cbn")) + " --profile parsons-extended");
-    CHECK(shown.exit_code == 0);
-    CHECK_THAT(shown.output,
+    const std::string shown = test::tap_row_round_trip(dir, row);
+    CHECK_THAT(shown,
                Catch::Contains("19       tap index wait 1: the feed waits for encoder 32's index"));
 
     // Column 19 punched 2 instead of 1: `check` names card 1 and column 19, exit 2.
@@ -408,20 +397,9 @@ TEST_CASE("Rigid tapping: the retract multiple through punch, convert, show, che
           "[tapping][rigid][cli]") {
     test::TempDir dir;
     const std::string row = "2,tap,1,vertical,reverse,0.600,0.05000,120,retract=2\n";
-    test::write_bytes(dir.path("tap.csv"), test::deck_with(row));
-    const auto punched = test::run_parsons("punch " + test::q(dir.str("tap.csv")) + " -o " +
-                                           test::q(dir.str("tap.cbn")));
-    INFO(punched.output);
-    REQUIRE(punched.exit_code == 0);
-    const auto back = test::run_parsons("convert " + test::q(dir.str("tap.cbn")) + " -o " +
-                                        test::q(dir.str("back.csv")));
-    REQUIRE(back.exit_code == 0);
-    CHECK_THAT(test::read_bytes(dir.path("back.csv")), Catch::Contains(row));
-    const auto shown =
-        test::run_parsons("show " + test::q(dir.str("tap.cbn")) + " --profile parsons-extended");
-    CHECK(shown.exit_code == 0);
-    CHECK_THAT(shown.output, Catch::Contains("20       tap retract multiple 2: out at 2 x S = 240 "
-                                             "rev/min, the feed following"));
+    const std::string shown = test::tap_row_round_trip(dir, row);
+    CHECK_THAT(shown, Catch::Contains("20       tap retract multiple 2: out at 2 x S = 240 "
+                                      "rev/min, the feed following"));
 
     // Out at 3 x S: run and check refuse it by card and column, exit 2.
     test::write_bytes(dir.path("bad.csv"),

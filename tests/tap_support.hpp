@@ -3,6 +3,9 @@
 #pragma once
 
 #include "cardreader/listing_format.hpp"
+#include "tests/test_support.hpp"
+
+#include <catch2/catch.hpp>
 
 #include <fmt/format.h>
 
@@ -30,6 +33,24 @@ inline std::string motion_rows(int card, const char* stop, const char* check) {
 inline std::string deck_with(const std::string& tap_row_text) {
     return std::string(cardreader::kListingHeader) + "\n" + motion_rows(1, "1.000", "1.000") +
            tap_row_text;
+}
+
+// The deck of one tap row (deck_with) written to DIR/tap.csv, punched to tap.cbn (exit 0), that
+// converted back to a listing holding the row as it was, and shown under parsons-extended (exit
+// 0): returns what show printed.
+inline std::string tap_row_round_trip(const TempDir& dir, const std::string& row) {
+    write_bytes(dir.path("tap.csv"), deck_with(row));
+    const auto punched =
+        run_parsons("punch " + q(dir.str("tap.csv")) + " -o " + q(dir.str("tap.cbn")));
+    INFO(punched.output);
+    REQUIRE(punched.exit_code == 0);
+    const auto back =
+        run_parsons("convert " + q(dir.str("tap.cbn")) + " -o " + q(dir.str("back.csv")));
+    REQUIRE(back.exit_code == 0);
+    CHECK_THAT(read_bytes(dir.path("back.csv")), Catch::Contains(row));
+    const auto shown = run_parsons("show " + q(dir.str("tap.cbn")) + " --profile parsons-extended");
+    CHECK(shown.exit_code == 0);
+    return shown.output;
 }
 
 } // namespace parsons::test

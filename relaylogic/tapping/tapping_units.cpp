@@ -116,14 +116,21 @@ void TappingUnits::on_edge(const axes::DetectorEdge& edge, double t) {
         speed_33_->pulse();
         last_edge_s_ = t;
     }
-    const bool index = sense > 0 && edge.count % profile_.spindle.encoder_pulses_per_rev == 0;
+    const bool index = show_index(sense, edge.count);
+    if (index) {
+        look_for_index(edge.count, t);
+    }
+}
+
+// Encoder 32's index signal after an edge onto `count` turning `sense`: high on the forward edge
+// onto a whole motor revolution, low otherwise (traced on a change). True when high.
+bool TappingUnits::show_index(int sense, std::int64_t count) {
+    const bool index = sense > 0 && count % profile_.spindle.encoder_pulses_per_rev == 0;
     if (index != index_shown_) {
         index_shown_ = index;
         tracer_->set(index_signal_, index ? 1U : 0U);
     }
-    if (index) {
-        look_for_index(edge.count, t);
-    }
+    return index;
 }
 
 // Rigid tapping's index wait (an addition): the first forward edge onto a count that is a
@@ -193,11 +200,7 @@ void TappingUnits::jump_to(double t) {
             device_13_->jump_to(last.count, way);
             counter_33_->count_many(n, way);
             speed_33_->count_many(n);
-            const bool index = way > 0 && last.count % profile_.spindle.encoder_pulses_per_rev == 0;
-            if (index != index_shown_) {
-                index_shown_ = index;
-                tracer_->set(index_signal_, index ? 1U : 0U);
-            }
+            show_index(way, last.count);
         }
         if (spindle_->next_event_time() > t) {
             spindle_->advance_to(t); // nothing due: only the motor's clock moves

@@ -222,6 +222,7 @@ private:
     void plan_reversal(double t, double depth, double per_edge);
     void next_peck(double t); // rigid peck tapping: in again, to the next pass's target
     void look_for_index(std::int64_t m, double t); // an edge onto count m came at t
+    bool show_index(int sense, std::int64_t count);
 
     axes::MachineProfile profile_;
     double max_feed_in_per_s_ = 0;
