@@ -181,9 +181,22 @@ bool same_run(const RunResult& a, const RunResult& b) {
             const auto& k = y.holes.at(i);
             if (h.tool != k.tool || h.ratio_used != k.ratio_used || h.deepest_in != k.deepest_in ||
                 h.end_in != k.end_in || h.reverse_s != k.reverse_s || h.end_s != k.end_s ||
-                h.completed != k.completed) {
+                h.completed != k.completed || h.pecks != k.pecks || h.sync_s != k.sync_s) {
                 return false;
             }
+        }
+    }
+    // Contouring (an addition): the same segments, junctions decided alike, the same steps lost.
+    if (a.contouring.has_value() != b.contouring.has_value()) {
+        return false;
+    }
+    if (a.contouring) {
+        const auto& x = *a.contouring;
+        const auto& y = *b.contouring;
+        if (x.segments != y.segments || x.junctions.size() != y.junctions.size() ||
+            x.lost != y.lost || x.position_in != y.position_in || x.motion_s != y.motion_s ||
+            x.largest_offset_in != y.largest_offset_in) {
+            return false;
         }
     }
     return true;

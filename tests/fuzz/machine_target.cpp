@@ -62,6 +62,16 @@
 //                rev/min: above 240 the cabinet refuses it); bit 3 the ratios stored per tool;
 //                bit 4 fault stale-ratio:1; bit 5 fault transfer-hang:1; bit 6 a lasting
 //                change of motor 27 to 0.8 of its speed at 20 s.
+//   then         1 byte, the additions of issue 50 (each after its system's own byte, so
+//                inputs kept before them replay the same deck): bit 0 every tap card waits for
+//                encoder 32's index (column 19; a head whose ratio is not 1/n is refused);
+//                bits 1-2 every tap card retracts at k = 1 + b % 4 times S (column 20); bits
+//                3-4 q = b % 4: every tap card pecks q / 4 of its depth (at least 0.001 in;
+//                columns 21-24); bit 5 the first condition of each condition card is an
+//                every-condition (column 14); bit 6 turns contouring on (parsons-extended's
+//                stepper axes) and puts 1 + b % 4 segment cards of 4 bytes each at the end of
+//                the deck: the end point X, Y, Z (b * 8 thousandths each) and the feed F
+//                (5.0 + b * 0.3 in/min).
 // Missing bytes read as zero: an empty input is one card on which nothing moves, and every
 // reading the patent's.
 #include "tests/fuzz/fuzz_targets.hpp"
@@ -401,6 +411,45 @@ std::vector<CardOrders> with_taps(Recipe& recipe, std::vector<CardOrders> deck,
     return out;
 }
 
+// The additions' byte (above): tap cards' index wait, retract and peck, every-conditions, and
+// segment cards at the end; the whole deck is numbered again from its first card's number.
+std::vector<CardOrders> with_additions(Recipe& recipe, std::vector<CardOrders> deck,
+                                       axes::MachineProfile& profile) {
+    const std::uint8_t bits = recipe.next();
+    if (bits == 0) {
+        return deck;
+    }
+    for (CardOrders& o : deck) {
+        if (o.kind == CardKind::tap) {
+            o.tap.index_wait = (bits & 0x01) != 0;
+            o.tap.retract = 1 + (bits >> 1) % 4;
+            const int q = (bits >> 3) % 4;
+            o.tap.peck = q == 0 ? 0 : static_cast<Thousandths>(std::max(1, o.tap.depth * q / 4));
+        } else if (o.kind == CardKind::condition && (bits & 0x20) && o.condition_count > 0) {
+            o.conditions.front().mode = ConditionMode::every;
+        }
+    }
+    if (bits & 0x40) {
+        profile.contouring = true;
+        const int count = 1 + recipe.next() % 4;
+        for (int n = 0; n < count; ++n) {
+            CardOrders card;
+            card.kind = CardKind::segment;
+            for (Thousandths& to : card.segment.to) {
+                to = static_cast<Thousandths>(recipe.next() * 8);
+            }
+            card.segment.feed = 50 + recipe.next() * 3;
+            deck.push_back(card);
+        }
+    }
+    int number = deck.front().number;
+    for (CardOrders& o : deck) {
+        o.number = number;
+        number = (number + 1) % 10000;
+    }
+    return deck;
+}
+
 std::vector<Card> deck_from_recipe(Recipe& recipe, axes::MachineProfile& profile,
                                    std::vector<relaylogic::Fault>* faults) {
     const int count = 1 + recipe.next() % kMaxCards;
@@ -429,10 +478,13 @@ std::vector<Card> deck_from_recipe(Recipe& recipe, axes::MachineProfile& profile
         flips.push_back({card, column, recipe.next()});
     }
     std::vector<Card> cards;
-    for (const CardOrders& orders : with_taps(
+    for (const CardOrders& orders : with_additions(
              recipe,
-             with_sync(recipe, with_conditions(recipe, std::move(motion), from, profile), profile),
-             profile, faults)) {
+             with_taps(recipe,
+                       with_sync(recipe, with_conditions(recipe, std::move(motion), from, profile),
+                                 profile),
+                       profile, faults),
+             profile)) {
         EncodeResult punched = encode(orders, fig8_layout());
         if (!punched) {
             throw Finding("machine: the keypunch refused orders the layout holds: " +
