@@ -13,6 +13,7 @@
 #include "cardreader/five_card_format.hpp"
 #include "cardreader/layout.hpp"
 #include "cardreader/listing_format.hpp"
+#include "cardreader/segment_listing.hpp"
 #include "cardreader/sync_listing.hpp"
 #include "cardreader/tap_listing.hpp"
 #include "cardreader/tape_format.hpp"
@@ -39,13 +40,14 @@ void check_names_file(const DeckError& e, const std::string& file) {
     }
 }
 
-// A condition, sync or tap card (additions) that decodes is punched again by the keypunch into a
-// card that reads as the same orders (not always the same holes: a parameter punched 0000 is
-// punched blank), and its listing rows read back as the same orders.
+// A condition, sync, tap or segment card (additions) that decodes is punched again by the keypunch
+// into a card that reads as the same orders (not always the same holes: a parameter punched 0000
+// is punched blank), and its listing rows read back as the same orders.
 void extension_round_trip(const CardOrders& orders) {
-    const std::string_view kind = orders.kind == CardKind::sync  ? "sync"
-                                  : orders.kind == CardKind::tap ? "tap"
-                                                                 : "condition";
+    const std::string_view kind = orders.kind == CardKind::sync      ? "sync"
+                                  : orders.kind == CardKind::tap     ? "tap"
+                                  : orders.kind == CardKind::segment ? "segment"
+                                                                     : "condition";
     const EncodeResult punched = encode(orders, fig8_layout());
     const DecodeResult again = punched ? decode(punched.card, fig8_layout()) : DecodeResult{};
     if (!punched || !again || again.orders != orders) {
@@ -64,6 +66,9 @@ void extension_round_trip(const CardOrders& orders) {
     }
     if (orders.kind == CardKind::tap) {
         rows << tap_row(orders) << '\n';
+    }
+    if (orders.kind == CardKind::segment) {
+        rows << segment_row(orders) << '\n';
     }
     std::istringstream in(rows.str());
     ListingReader reader(in, "rows.csv");
