@@ -108,6 +108,10 @@ struct PressProfile {
     // Motor 22 stops at revolution stop_cycle, angle stop_angle_deg (0 = it never stops).
     int stop_cycle = 0;
     double stop_angle_deg = 0.0;
+    // The feeder's interlock (docs/press-sync.md, "The feeder holds the press"): processor 17
+    // holds the press while a synchronised axis is behind its reference travel by more than
+    // this, until every one is within half of it (0 = no interlock: the press never waits).
+    double feeder_hold_lag_in = 0.0;
 };
 
 // The drive that follows a commanded speed, which speed synchronisation needs: the 1952 motors

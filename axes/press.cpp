@@ -189,7 +189,7 @@ bool Press::in_segment(std::int64_t m) const {
 }
 
 std::int64_t Press::edges_left() const {
-    if (stopped_) {
+    if (stopped_ || held_) {
         return 0;
     }
     if (sense_ > 0) {
@@ -219,7 +219,7 @@ void Press::plan_pulse() {
 }
 
 double Press::pulse_time(std::int64_t n) const {
-    if (stopped_ || n < 1) {
+    if (stopped_ || held_ || n < 1) {
         return kNever;
     }
     const std::int64_t m = edge_index(n);
@@ -283,6 +283,31 @@ std::optional<DetectorEdge> Press::advance_to(double t) {
         t_ = t;
     }
     return std::nullopt;
+}
+
+// ---- The feeder's interlock ----
+
+void Press::hold(double t) {
+    if (held_ || stopped_) {
+        return;
+    }
+    assert(t < next_time_ && "hold: an event due by t not taken");
+    advance_to(t);
+    t0_ = t_;
+    theta0_ = theta_;
+    w_ = 0;
+    seg_end_t_ = kNever;
+    held_ = true;
+    plan_pulse();
+}
+
+void Press::release(double t) {
+    if (!held_) {
+        return;
+    }
+    held_ = false;
+    t_ = std::max(t, t_);
+    start_segment();
 }
 
 double Press::theta_at(double t) const {
@@ -357,7 +382,8 @@ nlohmann::json Press::save() const {
                           {"segment_end_deg", exact(seg_end_theta_)},
                           {"next_time", exact(next_time_)},
                           {"next_is_pulse", next_is_pulse_},
-                          {"stopped", stopped_}};
+                          {"stopped", stopped_},
+                          {"held", held_}};
 }
 
 void Press::load(const nlohmann::json& j) {
@@ -373,20 +399,29 @@ void Press::load(const nlohmann::json& j) {
     p.next_time_ = exact(member(j, "next_time"));
     p.next_is_pulse_ = read<bool>(j, "next_is_pulse");
     p.stopped_ = read<bool>(j, "stopped");
+    // A state saved before the interlock existed: the press was not held.
+    p.held_ = j.contains("held") && read<bool>(j, "held");
     auto fail = [](const std::string& what) { throw StateError("press: " + what); };
     if (!std::isfinite(p.t_) || !std::isfinite(p.theta_) || !std::isfinite(p.t0_) ||
         !std::isfinite(p.theta0_) || !std::isfinite(p.seg_end_theta_) || !(p.t0_ <= p.t_)) {
         fail("times and angles must be finite, with t0 <= t");
     }
-    // The segment must be the one this profile gives from where it starts.
-    const Segment s = p.segment_from(p.t0_, p.theta0_);
-    if (s.w != p.w_ || s.end_theta != p.seg_end_theta_ || s.end_t != p.seg_end_t_ ||
-        p.stopped_ != (p.w_ == 0)) {
-        fail("the segment does not follow from the press profile");
+    // The segment must be the one this profile gives from where it starts; a held crank
+    // stands where the hold caught it, with no end.
+    if (p.held_) {
+        if (p.stopped_ || p.w_ != 0 || p.seg_end_t_ != kNever) {
+            fail("a held press stands (speed 0, no segment end) and motor 22 runs");
+        }
+    } else {
+        const Segment s = p.segment_from(p.t0_, p.theta0_);
+        if (s.w != p.w_ || s.end_theta != p.seg_end_theta_ || s.end_t != p.seg_end_t_ ||
+            p.stopped_ != (p.w_ == 0)) {
+            fail("the segment does not follow from the press profile");
+        }
     }
     const bool within = p.sense_ > 0 ? p.theta0_ <= p.theta_ && p.theta_ <= p.seg_end_theta_
                                      : p.seg_end_theta_ <= p.theta_ && p.theta_ <= p.theta0_;
-    if ((p.stopped_ ? p.theta_ != p.theta0_ : !within) ||
+    if ((p.stopped_ || p.held_ ? p.theta_ != p.theta0_ : !within) ||
         !(p.edge_angle(p.count_) <= p.theta_ && p.theta_ <= p.edge_angle(p.count_ + 1))) {
         fail("the crank angle lies outside its segment or off its pulse count");
     }

@@ -76,6 +76,15 @@ public:
     // Motor 22 has stopped: set when the crank reaches the profile's stop (or starts past it),
     // never cleared; the press then stands for good.
     bool stopped() const { return stopped_; }
+    // The feeder's interlock (docs/press-sync.md, "The feeder holds the press"): the press's
+    // clutch and brake hold crank 21 where it stands at machine time t, and let it go at t, when
+    // it turns on at the speed the profile gives where it stands (every speed is a function of
+    // the angle, so a hold shifts the rest of the run in time and changes nothing else). hold()
+    // wants every event due by t taken (t before next_event_time()); holding a stopped or held
+    // press, or letting go of one not held, changes nothing.
+    void hold(double t);
+    void release(double t);
+    bool held() const { return held_; }
     // Die 20 above its bottom dead centre, in inches, with the crank at angle a (slider crank:
     // r cos a + sqrt(L^2 - r^2 sin^2 a) - (L - r), r = stroke / 2).
     double die_height_in_at_angle(double a_deg) const;
@@ -131,6 +140,7 @@ private:
     double next_time_ = kNever;
     bool next_is_pulse_ = false;
     bool stopped_ = false;
+    bool held_ = false; // the interlock holds the crank (a segment of speed 0 with no end)
 };
 
 } // namespace parsons::axes

@@ -243,7 +243,7 @@ struct PressNumber {
     const char* key;
     double PressProfile::*field;
 };
-const std::array<PressNumber, 11> kPressNumbers = {{
+const std::array<PressNumber, 12> kPressNumbers = {{
     {"strokes_per_min", &PressProfile::strokes_per_min},
     {"start_angle_deg", &PressProfile::start_angle_deg},
     {"stroke_in", &PressProfile::stroke_in},
@@ -255,6 +255,7 @@ const std::array<PressNumber, 11> kPressNumbers = {{
     {"variation", &PressProfile::variation},
     {"change_angle_deg", &PressProfile::change_angle_deg},
     {"change_factor", &PressProfile::change_factor},
+    {"feeder_hold_lag_in", &PressProfile::feeder_hold_lag_in},
 }};
 
 void apply_press_key(PressProfile& p, const std::string& key, const json& value,

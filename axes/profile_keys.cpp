@@ -10,6 +10,8 @@
 //   tool numbers 1..99: two columns of a card.
 //   press.pulses_per_degree 1..27: 360 x it fits the four decades of position register 14.
 //   press.change_cycle, stop_cycle up to 1e9 revolutions: beyond any run, and 360 x it is exact.
+//   press.feeder_hold_lag_in 0 (none) or 0.001..1 in: under the counters' thousandth the press
+//     would wait on a lag the counters cannot see go (a relation); an inch is no feeder's lag.
 //   spindle.max_rpm 1..9999: a tap card's speed field has four digits.
 //   spindle.encoder_pulses_per_rev 4..9999: phases A and B in quadrature give four edges for each
 //     line of the disc at least; interface 33's counter holds a revolution in four decades.
@@ -103,6 +105,8 @@ const KeyRange kKeys[] = {
     {"press.stop_cycle", T::whole, 0, kShut, 1e9, kShut, "",
      "The revolution motor 22 stops at (0: never)"},
     {"press.stop_angle_deg", T::number, 0, kShut, 360, kOpen, "deg", "The crank angle it stops at"},
+    {"press.feeder_hold_lag_in", T::number, 0, kShut, 1, kShut, "in",
+     "The lag of a synchronised axis that holds the press (0: never)"},
     {"sync_drive.max_in_per_min", T::number, 0.1, kShut, 1000, kShut, "in/min",
      "The speed-following drive's fastest"},
     {"sync_drive.acceleration_in_per_s2", T::number, 0.001, kShut, kN, kShut, "in/s²",

@@ -135,6 +135,16 @@ const ProfileRelation kRelations[] = {
                             "crank throw, stroke_in / 2 ({} in)",
                             p.press.rod_in, p.press.stroke_in / 2);
      }},
+    {"press.feeder_hold_lag_in = 0 or >= 0.001",
+     "the feeder's interlock waits on a lag the counters' thousandth can take out",
+     [](const MachineProfile& p) {
+         return p.press.feeder_hold_lag_in == 0 || p.press.feeder_hold_lag_in >= 0.001;
+     },
+     [](const MachineProfile& p) {
+         return fmt::format("press.feeder_hold_lag_in: {:g} in is under the counters' thousandth: "
+                            "0 (no interlock) or at least 0.001 in",
+                            p.press.feeder_hold_lag_in);
+     }},
     {"press.pressing_from_deg < press.pressing_to_deg", "the pressing angles in order",
      [](const MachineProfile& p) { return p.press.pressing_from_deg < p.press.pressing_to_deg; },
      [](const MachineProfile& p) {

@@ -24,6 +24,29 @@ double PressProof::clearance(double die_height_in, double safe_height_in, double
     return std::max(die_height_in - safe_height_in, zone_edge_x_in - feeder_x_in);
 }
 
+void PressProof::on_signal_defined(const relaylogic::SignalInfo& info, std::uint32_t initial) {
+    if (info.scope == "press" && info.name == "feeder_interlock.hold") {
+        interlock_ = info.id;
+        if (initial != 0) {
+            press_.hold(press_.time_s()); // a resumed run that was held when saved
+        }
+    }
+}
+
+void PressProof::on_signal(double t, relaylogic::SignalId id, std::uint32_t /*old_value*/,
+                           std::uint32_t value) {
+    advance(t);
+    if (interlock_ && id == *interlock_) {
+        // The cabinet held or let go of its press at t, every edge due by then taken: so is
+        // this copy.
+        if (value != 0) {
+            press_.hold(t);
+        } else {
+            press_.release(t);
+        }
+    }
+}
+
 void PressProof::on_motion(double t, const std::array<double, 5>& real) {
     advance(t);
     x_ = real[0];

@@ -7,7 +7,10 @@
 // How: the press is a machine of its own that the control never drives, so the proof turns a
 // copy of it (axes::Press, the same profile) in step with machine time and reads the die's
 // height there, exactly, between the trace's tenth-of-a-degree crank signal; the feeder's X is
-// the table's real position from on_motion.
+// the table's real position from on_motion. The one thing the control does to the press, the
+// feeder's interlock holding it (press.feeder_hold_lag_in), the proof takes from the machine:
+// its copy is held and let go at the instants the cabinet's signal
+// press.feeder_interlock.hold says, so it never decides a hold of its own.
 //
 //   clearance (in) = max(die height - safe height, zone edge - feeder X)   (< 0: collision)
 //   time margin (s) = the die going below safe height - the feeder's last exit from the zone,
@@ -48,9 +51,8 @@ public:
     static double clearance(double die_height_in, double safe_height_in, double zone_edge_x_in,
                             double feeder_x_in);
 
-    void on_signal(double t, relaylogic::SignalId, std::uint32_t, std::uint32_t) override {
-        advance(t);
-    }
+    void on_signal_defined(const relaylogic::SignalInfo& info, std::uint32_t initial) override;
+    void on_signal(double t, relaylogic::SignalId id, std::uint32_t, std::uint32_t value) override;
     void on_motion(double t, const std::array<double, 5>& real) override;
     void on_card(double t, std::int64_t index, const cardreader::CardOrders& orders) override;
     void on_finish(double t) override { advance(t); }
@@ -72,6 +74,7 @@ private:
     double crossing_time(double t, double a_deg) const; // the die passing a_deg since last
 
     axes::Press press_;
+    std::optional<relaylogic::SignalId> interlock_; // the cabinet's press.feeder_interlock.hold
     double edge_;
     double safe_;
     int cycle_card_;

@@ -330,6 +330,13 @@ nlohmann::json report_json(const relaylogic::RunResult& r, const axes::MachinePr
                           {"max_lead_speed_only_in", fine_length(p.max_lead_speed_only_in)},
                           {"register_resets", p.register_resets},
                           {"drive_saturated", saturation_json(p.drive_saturated)}};
+        if (const auto& fi = p.feeder_interlock) {
+            j["press"]["feeder_interlock"] = json{{"lag_limit_in", fine_length(fi->limit_in)},
+                                                  {"holds", fi->holds},
+                                                  {"held_seconds", time_s(fi->held_s)},
+                                                  {"longest_hold_seconds", time_s(fi->longest_s)},
+                                                  {"holding_at_end", fi->holding}};
+        }
     }
     // Spindle synchronisation (an addition after EP 0360190): only when a tap card was read.
     if (r.tapping && r.tapping->used) {
@@ -410,6 +417,13 @@ std::string summary_text(const relaylogic::RunResult& r, const std::string& deck
                                            *p.mean_cycle_s, *p.shortest_cycle_s, *p.longest_cycle_s)
                              : "",
                          p.waited_s, reset_text(p), lag_text(p)));
+        if (const auto& fi = p.feeder_interlock) {
+            line(fmt::format("  interlock      the feeder held the press {} time{}, {:.3f} s in "
+                             "all (longest {:.3f} s){}: a synchronised axis behind by more "
+                             "than {:g} in (press.feeder_hold_lag_in)",
+                             fi->holds, fi->holds == 1 ? "" : "s", fi->held_s, fi->longest_s,
+                             fi->holding ? ", holding it at the end" : "", fi->limit_in));
+        }
         if (const std::string drive = press_drive_warning(r); !drive.empty()) {
             line("  warning: " + drive);
         }

@@ -311,7 +311,23 @@ void PressAttachment::reference_block(ControlCabinet& cab) {
             }
         }
     }
+    FeederInterlock* interlock = units_.interlock();
+    if (interlock != nullptr) {
+        feeder_interlock(cab, *interlock);
+    }
     const double timeout = profile.sync_timeout_s;
+    if (interlock != nullptr && interlock->holding() && now - interlock->held_since() >= timeout) {
+        refuse(cab, std::nullopt,
+               fmt::format("{}: the feeder's interlock held the press {:.1f} s (crank at {:.1f} "
+                           "deg) and no synchronised axis made its lag up to half of "
+                           "press.feeder_hold_lag_in {:g} in; synchronisation control processor "
+                           "17 gave up after sync_timeout_s {:.1f} s (the interlock is an "
+                           "addition: docs/press-sync.md)",
+                           cab.card_name(), now - interlock->held_since(),
+                           units_.press().angle_deg(), interlock->limit_in(), timeout),
+               StopReason::sync_timeout);
+        return;
+    }
     if (scp.holding() && now - scp.hold_since() >= timeout) {
         refuse(cab, std::nullopt,
                fmt::format("{}: the card waited {:.1f} s for crank 21 to reach {} deg and "
@@ -325,7 +341,12 @@ void PressAttachment::reference_block(ControlCabinet& cab) {
                StopReason::sync_timeout);
         return;
     }
-    if (!scp.holding() && now - units_.last_edge_s() >= timeout) {
+    // The press's silence is timed from its last pulse, or from the end of a hold of the
+    // interlock's, whichever came later (while the interlock holds, it times the hold).
+    const double silent_since = std::max(
+        units_.last_edge_s(), interlock != nullptr ? interlock->free_since() : -axes::kNever);
+    if (!scp.holding() && (interlock == nullptr || !interlock->holding()) &&
+        now - silent_since >= timeout) {
         for (const auto& c : cab.circuits()) {
             if (c->powered && scp.speed_synced(c->axis)) {
                 refuse(cab, c->axis,
@@ -334,7 +355,7 @@ void PressAttachment::reference_block(ControlCabinet& cab) {
                                    "stands; synchronisation control processor 17 gave up "
                                    "after sync_timeout_s {:.1f} s (press synchronisation "
                                    "is an addition after EP 0436887, Mitsubishi)",
-                                   cab.card_name(), axis_name(c->axis), now - units_.last_edge_s(),
+                                   cab.card_name(), axis_name(c->axis), now - silent_since,
                                    units_.press().angle_deg(),
                                    units_.press().stopped() ? ", motor 22 stopped" : "", timeout),
                        StopReason::sync_timeout);
@@ -344,6 +365,26 @@ void PressAttachment::reference_block(ControlCabinet& cab) {
     }
     ++block_;
     schedule_block(cab);
+}
+
+// The feeder's interlock at a reference block: the relay the last block computed holds or
+// lets go the press now (every edge due by now taken first), and the relay is computed anew from
+// the lags processor 63 has just read.
+void PressAttachment::feeder_interlock(ControlCabinet& cab, FeederInterlock& interlock) {
+    const double now = cab.now();
+    const bool hold = interlock.block(units_.scp().most_behind_in(), now);
+    axes::Press& press = units_.press();
+    if (hold == press.held()) {
+        return;
+    }
+    while (press.next_event_time() <= now) {
+        press_edges(cab, now);
+    }
+    if (hold) {
+        press.hold(now);
+    } else {
+        press.release(now);
+    }
 }
 
 void PressAttachment::sync_release(ControlCabinet& cab) {
@@ -447,6 +488,11 @@ void PressAttachment::add_to(RunResult& result) const {
     p.max_lead_position_sync_in = units_.scp().worst_lead_in(true);
     p.max_lead_speed_only_in = units_.scp().worst_lead_in(false);
     p.drive_saturated = units_.scp().saturation();
+    if (const FeederInterlock* fi = units_.interlock()) {
+        const double t = result.machine_seconds; // the hold in force counted to the end
+        p.feeder_interlock = FeederHolds{fi->limit_in(), fi->holds(), fi->held_s(t),
+                                         fi->longest_s(t), fi->holding()};
+    }
     result.press = p;
 }
 

@@ -55,6 +55,7 @@ private:
     void schedule_block(ControlCabinet& cab);
     void reference_block(ControlCabinet& cab);
     void sync_release(ControlCabinet& cab);
+    void feeder_interlock(ControlCabinet& cab, FeederInterlock& interlock);
     void refuse(ControlCabinet& cab, std::optional<cardreader::Axis> axis,
                 const std::string& message, StopReason reason = StopReason::sync_refused);
 

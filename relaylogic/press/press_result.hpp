@@ -25,6 +25,15 @@ struct DriveSaturation {
     double drive_max_in_per_min = 0;  // sync_drive.max_in_per_min
 };
 
+// The feeder's interlock (press.feeder_hold_lag_in): how often and how long it held the press.
+struct FeederHolds {
+    double limit_in = 0;    // press.feeder_hold_lag_in
+    std::int64_t holds = 0; // holds begun
+    double held_s = 0;      // the press's machine time held, all holds
+    double longest_s = 0;   // the longest hold
+    bool holding = false;   // held at the end of the run
+};
+
 struct PressResult {
     int revolution = 0;               // the crank's revolution (1 = the first)
     double crank_angle_deg = 0;       // where crank 21 stood at the last detector edge taken
@@ -48,6 +57,8 @@ struct PressResult {
     double max_lead_speed_only_in = 0;
     // The drive could not follow the crank: when, which axis, how much it was asked.
     std::optional<DriveSaturation> drive_saturated;
+    // The feeder's interlock, when the profile has one.
+    std::optional<FeederHolds> feeder_interlock;
     // The deck used it (a sync card was read): the report and the summary show the press only
     // then (it turns under parsons-extended whatever the deck).
     bool used = false;

@@ -38,6 +38,9 @@ void SyncUnits::install(Tracer& tracer, const axes::MachineProfile& profile) {
                               "second",
                               "11", 20);
     scp_ = std::make_unique<SynchronisationProcessor>(tracer, profile);
+    if (profile.press.feeder_hold_lag_in > 0) {
+        interlock_ = std::make_unique<FeederInterlock>(tracer, profile.press.feeder_hold_lag_in);
+    }
 }
 
 std::uint32_t SyncUnits::crank_tenths() const {
@@ -123,17 +126,21 @@ void SyncUnits::show_press() {
 }
 
 nlohmann::json SyncUnits::save() const {
-    return {{"press", press_->save()},
-            {"direction_judging_13", device_13_->save()},
-            {"position_register_14", register_14_->save()},
-            {"speed_register_11", register_11_->save()},
-            {"synchronisation_processor_17", scp_->save()},
-            {"last_edge_s", axes::exact(last_edge_s_)},
-            {"speed_timer",
-             {{"first_edge_s", axes::exact(first_edge_s_)},
-              {"sampled_edge_s", axes::exact(sampled_edge_s_)},
-              {"rate", axes::exact(rate_)},
-              {"turning", turning_}}}};
+    nlohmann::json j = {{"press", press_->save()},
+                        {"direction_judging_13", device_13_->save()},
+                        {"position_register_14", register_14_->save()},
+                        {"speed_register_11", register_11_->save()},
+                        {"synchronisation_processor_17", scp_->save()},
+                        {"last_edge_s", axes::exact(last_edge_s_)},
+                        {"speed_timer",
+                         {{"first_edge_s", axes::exact(first_edge_s_)},
+                          {"sampled_edge_s", axes::exact(sampled_edge_s_)},
+                          {"rate", axes::exact(rate_)},
+                          {"turning", turning_}}}};
+    if (interlock_) {
+        j["feeder_interlock"] = interlock_->save();
+    }
+    return j;
 }
 
 void SyncUnits::load(const nlohmann::json& j) {
@@ -148,6 +155,12 @@ void SyncUnits::load(const nlohmann::json& j) {
     sampled_edge_s_ = axes::exact(axes::member(timer, "sampled_edge_s"));
     rate_ = axes::exact(axes::member(timer, "rate"));
     turning_ = axes::read<bool>(timer, "turning");
+    if (interlock_) {
+        interlock_->load(axes::member(j, "feeder_interlock"));
+    } else if (j.contains("feeder_interlock")) {
+        throw axes::StateError("the saved press has a feeder interlock; this profile has none "
+                               "(press.feeder_hold_lag_in 0)");
+    }
 }
 
 } // namespace parsons::relaylogic

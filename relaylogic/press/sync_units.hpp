@@ -19,10 +19,14 @@
 //                               14 stands on R; 61 drops it when 14 reaches R
 //   a synced axis, any speed . the follower drive runs the axis at 63's speed
 //   zeroizing ................. 60 and 62 cleared
+//   feeder interlock .......... (press.feeder_hold_lag_in) at each block: a synchronised axis
+//                               too far behind holds the press from the next block
+//                               (relaylogic/press/feeder_interlock.hpp)
 #pragma once
 
 #include "axes/press.hpp"
 #include "relaylogic/press/direction_judging_device.hpp"
+#include "relaylogic/press/feeder_interlock.hpp"
 #include "relaylogic/press/position_register.hpp"
 #include "relaylogic/press/speed_register.hpp"
 #include "relaylogic/press/synchronisation_processor.hpp"
@@ -44,6 +48,9 @@ public:
     const PositionRegister& position_register() const { return *register_14_; }
     PositionRegister& position_register() { return *register_14_; }
     const SpeedRegister& speed_register() const { return *register_11_; }
+    // The feeder's interlock, when the profile sets press.feeder_hold_lag_in (else nullptr).
+    FeederInterlock* interlock() { return interlock_.get(); }
+    const FeederInterlock* interlock() const { return interlock_.get(); }
 
     // A detector edge at time t: 13, 14, 11. Returns true when detector 61 conducts (the
     // card's motion is to start).
@@ -82,6 +89,7 @@ private:
     std::unique_ptr<PositionRegister> register_14_;
     std::unique_ptr<SpeedRegister> register_11_;
     std::unique_ptr<SynchronisationProcessor> scp_;
+    std::unique_ptr<FeederInterlock> interlock_;
     Tracer* tracer_ = nullptr;
     double last_edge_s_ = 0;
     double first_edge_s_ = -1;   // the first pulse timed (-1: none yet)

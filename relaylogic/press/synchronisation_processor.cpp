@@ -239,6 +239,7 @@ bool SynchronisationProcessor::reference_block(
     // A loop that corrects once a block takes out at most the lag it sees within two blocks
     // (its correction reaches the drive a block later): the gain is bounded by 1 / (2 blocks).
     const double gain = std::min(gain_per_s_, 0.5 / block_s_);
+    most_behind_.reset();
     for (std::size_t i = 0; i < follow_.size(); ++i) {
         Follow& f = follow_.at(i);
         if (f.out != f.next || f.go_out != f.go_next) {
@@ -266,6 +267,7 @@ bool SynchronisationProcessor::reference_block(
         const cardreader::Axis a = cardreader::kAxes.at(i);
         f.ref_in += per_pulse_in(a, fb->speed_position) * step;
         f.lag_in = f.ref_in - static_cast<double>(fb->impulses - f.impulses0) * 0.001;
+        most_behind_ = std::max(most_behind_.value_or(f.lag_in), f.lag_in);
         tracer_.set(behind_63_.at(i), static_cast<std::uint32_t>(
                                           std::clamp(std::lround(f.lag_in * 1e4), 0L, 65535L)));
         tracer_.set(ahead_63_.at(i), static_cast<std::uint32_t>(

@@ -122,6 +122,9 @@ public:
                          const std::array<std::optional<Feedback>, cardreader::kAxisCount>& axes);
     // The most a started synchronised axis was behind its reference travel at any block, on
     // cards with position sync (the loop) or on speed-only cards; and the most it was ahead.
+    // The most a synchronised axis running on its card (one the last block read) was behind
+    // its reference at the last block; nothing when none ran (the feeder's interlock).
+    std::optional<double> most_behind_in() const { return most_behind_; }
     double worst_lag_in(bool with_loop) const { return worst_lag_.at(with_loop ? 1 : 0); }
     double worst_lead_in(bool with_loop) const { return worst_lead_.at(with_loop ? 1 : 0); }
     // The speed last sent to the axis's drive (traced), in/s.
@@ -162,6 +165,7 @@ private:
     std::array<double, 2> worst_lag_{};         // speed only, with the loop
     std::array<double, 2> worst_lead_{};        // the same, ahead of the reference
     std::optional<DriveSaturation> saturation_; // the drive asked past its top speed
+    std::optional<double> most_behind_;         // at the last block (not saved: used at once)
     double rate_next_ = 0;                      // 63: the crank's speed computed, pulses a second
     double rate_out_ = 0;                       // 63: in force
     bool turning_next_ = false; // register 11 timed it between pulses (the crank turns)
