@@ -204,9 +204,9 @@ TEST_CASE("Press interlock: the command line runs the job with the key, says the
     profile["press"]["drift_per_cycle"] = 0.1;
     profile["press"]["feeder_hold_lag_in"] = 0.02;
     test::write_bytes(dir.str("held.json"), profile.dump(1));
-    const auto run =
-        run_parsons("run " + q(deck) + " --profile " + q(dir.str("held.json")) + " --press-proof " +
-                    q(deck + ".job.json") + " --report " + q(dir.str("r.json")));
+    const auto run = run_parsons("run " + q(deck) + " --profile " + q(dir.str("held.json")) +
+                                 " --press-proof " + q(deck + ".job.json") + " --report " +
+                                 q(dir.str("r.json")) + " --plot " + q(dir.str("p.svg")));
     INFO(run.output);
     REQUIRE(run.exit_code == 0);
     CHECK(run.output.find("interlock      the feeder held the press ") != std::string::npos);
@@ -214,6 +214,11 @@ TEST_CASE("Press interlock: the command line runs the job with the key, says the
     CHECK(r.at("press").at("feeder_interlock").at("holds").get<int>() > 10);
     CHECK(r.at("press").at("feeder_interlock").at("lag_limit_in").get<double>() == 0.02);
     CHECK(r.at("press").at("collision").is_null());
+    // The plot draws a band over the crank's lane for each hold, and says what it is.
+    const std::string svg = test::read_bytes(dir.str("p.svg"));
+    CHECK(test::count(svg, "<rect class=\"interlock-hold\"") ==
+          r.at("press").at("feeder_interlock").at("holds").get<std::size_t>());
+    CHECK(test::count(svg, "the feeder's interlock holds the press") >= 2);
 
     profile["press"]["feeder_hold_lag_in"] = 0.0005;
     test::write_bytes(dir.str("tiny.json"), profile.dump(1));

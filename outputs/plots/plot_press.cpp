@@ -37,6 +37,9 @@ std::optional<std::size_t> PressTrace::define(const relaylogic::SignalInfo& info
     } else if (info.name == "synchronisation_processor_17.sync_card") {
         role = Role{Source::card_17};
         cards_.assign(1, Point{0, initial != 0 ? 1.0 : 0.0});
+    } else if (info.name == "feeder_interlock.hold") {
+        role = Role{Source::interlock};
+        interlock_.assign(1, Point{0, initial != 0 ? 1.0 : 0.0});
     } else if (info.name == "sync_position_detector_61") {
         role = Role{Source::detector_61};
     } else if (info.name.rfind("processor_63.", 0) == 0) {
@@ -86,6 +89,9 @@ void PressTrace::change(std::size_t slot, double seconds, std::uint32_t old_valu
     case Source::card_17:
         cards_.push_back(Point{seconds, new_value != 0 ? 1.0 : 0.0});
         break;
+    case Source::interlock:
+        interlock_.push_back(Point{seconds, new_value != 0 ? 1.0 : 0.0});
+        break;
     case Source::detector_61:
         if (new_value != 0) {
             releases_.push_back(seconds);
@@ -123,6 +129,10 @@ std::vector<Point> PressTrace::speed_63(cardreader::Axis axis) const {
 
 std::vector<std::pair<double, double>> PressTrace::holds(double t_end) const {
     return plot::on_intervals(hold_, t_end);
+}
+
+std::vector<std::pair<double, double>> PressTrace::interlock_holds(double t_end) const {
+    return plot::on_intervals(interlock_, t_end);
 }
 
 std::vector<std::pair<double, double>> PressTrace::waiting_cards(double t_end) const {

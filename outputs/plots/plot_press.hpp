@@ -81,6 +81,10 @@ public:
     // the end is open until t_end), and those in which a sync card's orders waited in 17.
     std::vector<std::pair<double, double>> holds(double t_end) const;
     std::vector<std::pair<double, double>> waiting_cards(double t_end) const;
+    // The intervals in which the feeder's interlock held the press (press.feeder_hold_lag_in;
+    // one still holding at the end is open until t_end): none without the key.
+    std::vector<std::pair<double, double>> interlock_holds(double t_end) const;
+    bool has_interlock() const { return !interlock_.empty(); }
     // When detector 61 conducted: register 14 stood on R and the card's motion began.
     const std::vector<double>& releases() const { return releases_; }
     const std::vector<SyncMark>& sync_cards() const { return sync_cards_; }
@@ -94,7 +98,8 @@ private:
         hold_60,
         card_17,
         detector_61,
-        processor_63
+        processor_63,
+        interlock
     };
     struct Role {
         Source source = Source::crank_21;
@@ -104,8 +109,9 @@ private:
     std::vector<Role> roles_;
     std::array<Reduced, 4> series_{}; // by Series
     std::array<Reduced, cardreader::kAxisCount> speed_{};
-    std::vector<Point> hold_;  // (t, 0/1) from the initial value on
-    std::vector<Point> cards_; // (t, 0/1)
+    std::vector<Point> hold_;      // (t, 0/1) from the initial value on
+    std::vector<Point> cards_;     // (t, 0/1)
+    std::vector<Point> interlock_; // (t, 0/1): the feeder's interlock holds the press
     std::vector<double> releases_;
     std::vector<double> top_dead_centres_;
     std::vector<SyncMark> sync_cards_;

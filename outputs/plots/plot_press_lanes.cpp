@@ -7,6 +7,7 @@
 //   +--------------------------------------------+                   waits, ^ where 61 conducted
 //   die 20 (Fig. 2B) ... register 14 ... register 11 ...
 //   reader 60  [=====hold=====]   [==]                               a bar while 60 holds
+//   (a red band over the crank's lane while the feeder's interlock holds the press)
 //   processor 63 (when a drive followed the press)
 //   0     100     200 ...  machine time (s)
 #include "outputs/plots/plot_press_lanes.hpp"
@@ -102,6 +103,7 @@ private:
                const plot::Ticks& ticks);
     void line(const PagePoints& points, const char* cls, const char* colour, double width);
     void crank(const Scale& ty);
+    void interlock(double top, double bottom);
     void reader_60(double top, double bottom);
     void processor_63(const Scale& ty);
 
@@ -153,6 +155,22 @@ void LaneWriter::crank(const Scale& ty) {
                        R"(</title></path>)"
                        "\n",
                        frame_.tx(t), ty(a) - 1, kHoldEdge, a, t);
+    }
+}
+
+// The feeder's interlock: a band over the crank's lane while it held the press (the crank stands).
+void LaneWriter::interlock(double top, double bottom) {
+    for (const auto& [t0, t1] : press_.interlock_holds(t_end_)) {
+        const double x0 = frame_.tx(t0);
+        fmt::format_to(out(svg_),
+                       R"(<rect class="interlock-hold" x="{:.1f}" y="{:.1f}" width="{:.1f}" )"
+                       R"(height="{:.1f}" fill="{}" stroke="{}" stroke-width="0.5">)"
+                       R"(<title>the feeder's interlock holds the press (a synchronised axis )"
+                       R"(behind by more than press.feeder_hold_lag_in), {:.3f} s to {:.3f} s)"
+                       R"(</title></rect>)"
+                       "\n",
+                       x0, top + 2, std::max(1.0, frame_.tx(t1) - x0), bottom - top - 4,
+                       kInterlockColour, kInterlockEdge, t0, t1);
     }
 }
 
@@ -255,6 +273,7 @@ void LaneWriter::lane(std::size_t index, const LaneSpec& spec, double top) {
                    index);
     switch (spec.kind) {
     case LaneKind::crank_21:
+        interlock(top, bottom);
         crank(*ty);
         break;
     case LaneKind::reader_60:

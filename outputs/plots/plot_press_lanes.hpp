@@ -19,6 +19,8 @@ inline constexpr const char* kRegister11Colour = "#e377c2";
 inline constexpr const char* kHoldColour = "#edc948";
 inline constexpr const char* kHoldEdge = "#a67c00";
 inline constexpr const char* kWaitColour = "#bbbbbb";
+inline constexpr const char* kInterlockColour = "#f6c9c4"; // the feeder's interlock holds the press
+inline constexpr const char* kInterlockEdge = "#c0392b";
 inline constexpr std::array<const char*, cardreader::kAxisCount> kAxisColours = {
     "#1f4e9c", "#59a14f", "#76b7b2", "#9c755f", "#bab0ac"};
 

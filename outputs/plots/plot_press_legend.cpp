@@ -23,6 +23,10 @@ std::vector<LegendEntry> entries_of(const PressTrace& press) {
         {G::bar, kHoldColour, "reader 60 holds a card for its angle R", kHoldEdge},
         {G::mark, kHoldEdge, "detector 61: crank on R"},
     };
+    if (press.has_interlock()) {
+        entries.push_back(
+            {G::bar, kInterlockColour, "the feeder's interlock holds the press", kInterlockEdge});
+    }
     if (press.any_speed_63()) {
         entries.push_back({G::step, kAxisColours[0], "processor 63 speed, in/min"});
     }
