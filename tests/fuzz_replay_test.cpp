@@ -5,6 +5,7 @@
 
 #include "cardreader/layout.hpp"
 
+#include "tests/machine_support.hpp"
 #include "tests/test_support.hpp"
 
 #include <catch2/catch.hpp>
@@ -173,6 +174,34 @@ TEST_CASE("Fuzz replay: the machine target's tapping seed makes a deck with tap 
     parsons::fuzz::machine_deck(
         {reinterpret_cast<const std::uint8_t*>(faulty.data()), faulty.size()}, p2, &f2);
     CHECK(f2.size() == 2);
+}
+
+TEST_CASE("Fuzz replay: the machine target's press-interlock seed makes a sync deck under the "
+          "feeder's interlock, which holds the press alike at both paces",
+          "[fuzz][press_sync][press-interlock]") {
+    const std::string bytes = parsons::test::read_bytes(
+        parsons::test::source_path("tests/fuzz/corpus/machine/press-interlock"));
+    parsons::axes::MachineProfile profile = parsons::axes::default_profile();
+    const auto cards = parsons::fuzz::machine_deck(
+        {reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()}, profile);
+    CHECK(profile.press_sync);
+    CHECK(profile.press.feeder_hold_lag_in == 0.002);
+    std::vector<parsons::cardreader::CardOrders> orders;
+    for (const auto& card : cards) {
+        const auto decoded = parsons::cardreader::decode(card, parsons::cardreader::fig8_layout());
+        REQUIRE(decoded);
+        orders.push_back(decoded.orders);
+    }
+    REQUIRE(orders.size() == 4); // sync, motion, sync, motion
+    const auto fast = parsons::test::run_orders(orders, profile);
+    const auto slow = parsons::test::run_orders(orders, profile, nullptr, {},
+                                                parsons::relaylogic::Pace::impulse_level);
+    parsons::test::require_same(fast, slow);
+    REQUIRE(fast.press);
+    REQUIRE(fast.press->feeder_interlock);
+    CHECK(fast.press->feeder_interlock->holds >= 1);
+    CHECK(fast.press->feeder_interlock->holds == slow.press->feeder_interlock->holds);
+    CHECK(fast.press->feeder_interlock->held_s == slow.press->feeder_interlock->held_s);
 }
 
 TEST_CASE("Fuzz replay: every kept command line leaves its inputs as they were, refuses an output "

@@ -186,6 +186,26 @@ bool same_run(const RunResult& a, const RunResult& b) {
             }
         }
     }
+    // Press synchronisation (an addition): the crank where it stands, the cards held as long,
+    // the axes as far behind, and the feeder's interlock holding the press as often and as long.
+    if (a.press.has_value() != b.press.has_value()) {
+        return false;
+    }
+    if (a.press) {
+        const auto& x = *a.press;
+        const auto& y = *b.press;
+        if (x.revolution != y.revolution || x.crank_angle_deg != y.crank_angle_deg ||
+            x.position_register != y.position_register || x.waited_s != y.waited_s ||
+            x.max_lag_position_sync_in != y.max_lag_position_sync_in ||
+            x.max_lag_speed_only_in != y.max_lag_speed_only_in ||
+            x.feeder_interlock.has_value() != y.feeder_interlock.has_value()) {
+            return false;
+        }
+        if (x.feeder_interlock && (x.feeder_interlock->holds != y.feeder_interlock->holds ||
+                                   x.feeder_interlock->held_s != y.feeder_interlock->held_s)) {
+            return false;
+        }
+    }
     // Contouring (an addition): the same segments, junctions decided alike, the same steps lost.
     if (a.contouring.has_value() != b.contouring.has_value()) {
         return false;

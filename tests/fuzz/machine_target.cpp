@@ -71,7 +71,9 @@
 //                every-condition (column 14); bit 6 turns contouring on (parsons-extended's
 //                stepper axes) and puts 1 + b % 4 segment cards of 4 bytes each at the end of
 //                the deck: the end point X, Y, Z (b * 8 thousandths each) and the feed F
-//                (5.0 + b * 0.3 in/min).
+//                (5.0 + b * 0.3 in/min); bit 7 the feeder's interlock (press.feeder_hold_lag_in
+//                0.002 in, under the drive's own lag at a move's start: it holds the press
+//                often) when the press byte turned the press on.
 // Missing bytes read as zero: an empty input is one card on which nothing moves, and every
 // reading the patent's.
 #include "tests/fuzz/fuzz_targets.hpp"
@@ -428,6 +430,9 @@ std::vector<CardOrders> with_additions(Recipe& recipe, std::vector<CardOrders> d
         } else if (o.kind == CardKind::condition && (bits & 0x20) && o.condition_count > 0) {
             o.conditions.front().mode = ConditionMode::every;
         }
+    }
+    if (bits & 0x80) {
+        profile.press.feeder_hold_lag_in = 0.002;
     }
     if (bits & 0x40) {
         profile.contouring = true;
