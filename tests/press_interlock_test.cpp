@@ -227,3 +227,31 @@ TEST_CASE("Press interlock: the command line runs the job with the key, says the
     CHECK(tiny.output.find("press.feeder_hold_lag_in: 0.0005 in is under the counters' "
                            "thousandth") != std::string::npos);
 }
+
+TEST_CASE("Press interlock: a slipping drive holds the press while the part stands, and a hold "
+          "that lasts sync_timeout_s stops the machine",
+          "[press_sync][press-interlock][cli]") {
+    TempDir dir;
+    test::write_bytes(dir.str("il.json"),
+                      R"({"base":"parsons-extended","press":{"feeder_hold_lag_in":0.005}})");
+    const std::string run = "run " + q(test::source_path("decks/samples/press-sync.csv")) +
+                            " --profile " + q(dir.str("il.json"));
+    // 0.300 in of screw travel with the part standing: the counters (instrument shaft 74 follows
+    // the part) see the table fall behind, the press stands, and the drive makes the slip up at
+    // its least speed, 0.5 in/min: 0.3 / (0.5 / 60) = 36 s, less the lag it was let go at.
+    const auto slip =
+        run_parsons(run + " --fault slip:table:20:300 --report " + q(dir.str("r.json")));
+    INFO(slip.output);
+    REQUIRE(slip.exit_code == 0);
+    const nlohmann::json r = nlohmann::json::parse(test::read_bytes(dir.str("r.json")));
+    const double longest =
+        r.at("press").at("feeder_interlock").at("longest_hold_seconds").get<double>();
+    CHECK(longest > 33);
+    CHECK(longest < 36);
+    // 1.000 in would take 120 s: processor 17 gives up at sync_timeout_s (90 s).
+    const auto stuck = run_parsons(run + " --fault slip:table:20:1000");
+    INFO(stuck.output);
+    CHECK(stuck.exit_code == 3);
+    CHECK(stuck.output.find("sync_timeout: card 2 (number 0002): the feeder's interlock held the "
+                            "press 90.0 s") != std::string::npos);
+}
