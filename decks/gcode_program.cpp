@@ -31,6 +31,10 @@ constexpr double kMmPerInch = 25.4;
 // An arc whose end lies further than this from the circle through its start is refused
 // (inches): half a thousandth, the machine's own resolution.
 constexpr double kArcMismatchIn = 0.0005;
+// An arc of a larger radius is refused (inches): over the machine's 10 in its sagitta is under
+// 0.00002 in (a G1 cuts it as well), and far beyond it a double no longer places its end on
+// its circle to the mismatch above (the fuzzer's I22222267410415839 in millimetres).
+constexpr double kLargestArcRadiusIn = 1e6;
 
 class Reader {
 public:
@@ -569,6 +573,12 @@ private:
         const double r1 = (b - centre).norm();
         if (r0 < 1e-6) {
             refuse(word, "an arc of no radius: I and J are both 0");
+        }
+        if (!(r0 <= kLargestArcRadiusIn)) {
+            refuse(word, fmt::format("an arc of radius {:.6g} in, over 1,000,000 in: over the "
+                                     "machine's 10 in it is a straight line to 0.00002 in (give "
+                                     "it as G1)",
+                                     r0));
         }
         if (std::abs(r0 - r1) > kArcMismatchIn) {
             refuse(word, fmt::format("the arc's end is not on its circle: radius {:.5f} in at "

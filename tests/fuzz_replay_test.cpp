@@ -104,6 +104,12 @@ TEST_CASE("Fuzz replay: every kept airfoil file gives a smooth airfoil or a Deck
     replay("airfoil");
 }
 
+TEST_CASE("Fuzz replay: every kept G-code program is refused naming its line, or every move and "
+          "arc starts where the last ended and ends where it says",
+          "[fuzz][gcode]") {
+    replay("gcode");
+}
+
 TEST_CASE("Fuzz replay: every kept profile is refused with a ProfileError or runs the machine",
           "[fuzz][profile]") {
     replay("profile");
