@@ -227,8 +227,8 @@ TEST_CASE("Property: the key ranges it draws from are the schema's, every ranged
           "profile",
           "[property]") {
     const auto& ranges = key_ranges();
-    std::map<std::string, KeyRange> by_key;
-    for (const KeyRange& r : ranges) {
+    std::map<std::string, parsons::test::KeyRange> by_key;
+    for (const parsons::test::KeyRange& r : ranges) {
         by_key.emplace(r.key, r);
     }
     REQUIRE(by_key.count("spindle.max_rpm") == 1);
@@ -239,7 +239,8 @@ TEST_CASE("Property: the key ranges it draws from are the schema's, every ranged
     CHECK(by_key.at("speed_sample_s").max == 1);
     REQUIRE(by_key.count("axes.tilt.speed_in_per_min[2]") == 1);
     CHECK(by_key.at("axes.tilt.speed_in_per_min[2]").max == 1000);
-    CHECK(by_key.at("spindle.encoder_pulses_per_rev").kind == KeyRange::Kind::integer);
+    CHECK(by_key.at("spindle.encoder_pulses_per_rev").kind ==
+          parsons::test::KeyRange::Kind::integer);
     CHECK(by_key.at("measuring_chain").choices.size() == 2);
     CHECK(by_key.at("press.strokes_per_min").min_exclusive == false);
     CHECK(by_key.at("reader_cycle_s").min_exclusive);

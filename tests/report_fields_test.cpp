@@ -23,7 +23,7 @@ using nlohmann::json;
 
 namespace {
 
-json read_json(const std::filesystem::path& p) {
+json read_report_json(const std::filesystem::path& p) {
     return json::parse(read_bytes(p));
 }
 
@@ -84,7 +84,7 @@ TEST_CASE("Report: it names the parsons version, its schema version and the prof
     TempDir dir;
     const std::string sample = q(source_path("decks/samples/patent-example.csv"));
     REQUIRE(run_parsons("run " + sample + " -q --report " + q(dir.str("r.json"))).exit_code == 0);
-    const json r = read_json(dir.path("r.json"));
+    const json r = read_report_json(dir.path("r.json"));
     CHECK(r["parsons_version"] == project_version());
     CHECK(r["schema_version"] == 1);
     CHECK(r["profile"] == "parsons-1952");
@@ -102,7 +102,7 @@ TEST_CASE("Report: it names the parsons version, its schema version and the prof
     REQUIRE(run_parsons("run " + sample + " -q --profile parsons-safe --report " +
                         q(dir.str("safe.json")))
                 .exit_code == 0);
-    const json safe = read_json(dir.path("safe.json"));
+    const json safe = read_report_json(dir.path("safe.json"));
     CHECK(safe["profile_applied"]["name"] == "parsons-safe");
     CHECK(safe["profile_applied"]["differs_from_named"] == json::array());
 }
@@ -119,7 +119,7 @@ TEST_CASE("Report: a profile file is applied over the built-in profile it names,
     const auto run = run_parsons("run " + sample + " -q --profile " + q(dir.str("worn.json")) +
                                  " --limit cross=0:3 --report " + q(dir.str("r.json")));
     REQUIRE(run.exit_code == 0);
-    const json r = read_json(dir.path("r.json"));
+    const json r = read_report_json(dir.path("r.json"));
     const json& p = r["profile_applied"];
     CHECK(p["name"] == "parsons-safe");
     CHECK(p["named_profile"] == "parsons-safe");
@@ -149,7 +149,7 @@ TEST_CASE("Report: figures are rounded to what they resolve, a saved state keeps
     REQUIRE(run_parsons("run " + q(dir.str("deck.csv")) + " -q --report " + q(dir.str("r.json")) +
                         " --save-state " + q(dir.str("s.json")))
                 .exit_code == 3);
-    const json r = read_json(dir.path("r.json"));
+    const json r = read_report_json(dir.path("r.json"));
     CHECK(on_grid(r["machine_seconds"].get<double>(), 1e-6));
     int off_thousandth = 0;
     for (const auto& [name, a] : r["axes"].items()) {
@@ -167,7 +167,7 @@ TEST_CASE("Report: figures are rounded to what they resolve, a saved state keeps
         CHECK(on_grid(c["machine_seconds"].get<double>(), 1e-6));
     }
     // The saved state keeps the real positions to the last bit.
-    const json s = read_json(dir.path("s.json"));
+    const json s = read_report_json(dir.path("s.json"));
     int kept = 0;
     for (const auto& [name, a] : r["axes"].items()) {
         const double exact = s["stop"]["axes_at_rest"][name]["real_in"].get<double>();
@@ -189,7 +189,7 @@ TEST_CASE("Resume: it names the deck the state was saved from when another is gi
     const auto stopped = run_parsons("run " + q(dir.str("deck.csv")) +
                                      " -q --limit table=0:9.6 --save-state " + q(state_file));
     REQUIRE(stopped.exit_code == 3);
-    const json state = read_json(dir.path("state.json"));
+    const json state = read_report_json(dir.path("state.json"));
     REQUIRE(state["resume_card"] == 3);
     CHECK(state["cards_machined"]["cards"] == 2);
     CHECK(state["profile_applied"]["limits"]["table"]["movement_range"]["from"] ==
@@ -344,7 +344,7 @@ TEST_CASE("Report: docs/report.md names every key a report carries", "[cli][repo
                     q(dir.str("e.json")));
     INFO(pressed.output);
     REQUIRE(pressed.exit_code == 0);
-    const auto press_report = read_json(dir.path("e.json"));
+    const auto press_report = read_report_json(dir.path("e.json"));
     CHECK(press_report["press"]["cycles"] == 3);
     CHECK(press_report["press"]["loop_backs"] == 2);
     CHECK(press_report["press"]["mean_cycle_seconds"].get<double>() ==
@@ -355,7 +355,7 @@ TEST_CASE("Report: docs/report.md names every key a report carries", "[cli][repo
                         q(dir.str("f.csv.job.json")) + " --report " + q(dir.str("f.json")))
                 .exit_code == 0);
     for (const char* name : {"a.json", "b.json", "c.json", "d.json", "e.json", "f.json"}) {
-        collect_report_keys(read_json(dir.path(name)), keys);
+        collect_report_keys(read_report_json(dir.path(name)), keys);
     }
     // The reports exercised what they were meant to.
     for (const char* expected :

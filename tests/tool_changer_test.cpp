@@ -21,7 +21,7 @@ using parsons::test::table_move;
 
 namespace {
 
-class Watch : public test::Recorder {
+class ChangerWatch : public test::Recorder {
 public:
     void on_condition(double t, const ConditionEvent& e) override {
         events.push_back(e);
@@ -40,8 +40,8 @@ public:
     std::vector<double> times;
 };
 
-RunResult run(const std::vector<CardOrders>& cards, Pace pace,
-              MachineObserver* observer = nullptr) {
+RunResult run_changer(const std::vector<CardOrders>& cards, Pace pace,
+                      MachineObserver* observer = nullptr) {
     return test::run_conditions(cards, pace, observer);
 }
 
@@ -62,13 +62,13 @@ TEST_CASE("Tool changer: a second change tripped while the first is under way wa
     const double change_s = axes::extended_profile().actions.tool_change_s;
     // The table runs 0 -> 0.400 at speed 3 (0.01 in/s): tool 2 at 0.150, tool 3 at 0.206,
     // some 5.6 s later, well inside the first change's 8 s.
-    Watch watch;
-    const RunResult r =
-        run({condition_card(
-                 1, {cond(4, Axis::table, 150, PassingSense::forward, ActionKind::tool_change, 2),
-                     cond(5, Axis::table, 206, PassingSense::forward, ActionKind::tool_change, 3)}),
-             table_move(2, 0, 400), table_move(3, 400, 300)},
-            pace, &watch);
+    ChangerWatch watch;
+    const RunResult r = run_changer(
+        {condition_card(
+             1, {cond(4, Axis::table, 150, PassingSense::forward, ActionKind::tool_change, 2),
+                 cond(5, Axis::table, 206, PassingSense::forward, ActionKind::tool_change, 3)}),
+         table_move(2, 0, 400), table_move(3, 400, 300)},
+        pace, &watch);
     REQUIRE(r.completed);
     const ActionRecord& first = action_of(r, 4);
     const ActionRecord& second = action_of(r, 5);
@@ -107,8 +107,8 @@ TEST_CASE("Tool changer: a change tripped while the spindle is commanded to turn
     INFO("pace " << static_cast<int>(pace));
     const axes::MachineProfile profile = axes::extended_profile();
     SECTION("column 1 orders the spindle forward: the machine stops at the trip") {
-        Watch watch;
-        const RunResult r = run(
+        ChangerWatch watch;
+        const RunResult r = run_changer(
             {condition_card(
                  1, {cond(3, Axis::table, 100, PassingSense::forward, ActionKind::lamp, 1),
                      cond(4, Axis::table, 150, PassingSense::forward, ActionKind::tool_change, 2)}),
@@ -126,10 +126,10 @@ TEST_CASE("Tool changer: a change tripped while the spindle is commanded to turn
         CHECK(watch.value.at("conditions.tool_changer.changing") == 0);
     }
     SECTION("a spindle-stop action before it: the change begins when the spindle stands") {
-        Watch watch;
+        ChangerWatch watch;
         // Card 2 orders forward; the stop action trips at 0.100, the change 1 s later at 0.110,
         // inside the motor's 2-s run-down.
-        const RunResult r = run(
+        const RunResult r = run_changer(
             {condition_card(
                  1, {cond(3, Axis::table, 100, PassingSense::forward, ActionKind::spindle_stop),
                      cond(4, Axis::table, 110, PassingSense::forward, ActionKind::tool_change, 2)}),
@@ -179,8 +179,8 @@ TEST_CASE("Condition cards (claim 1): every motion card passes through converter
     }
     deck.push_back(table_move(2, 0, 400));
     deck.push_back(table_move(3, 400, 300));
-    Watch watch;
-    const RunResult r = run(deck, pace, &watch);
+    ChangerWatch watch;
+    const RunResult r = run_changer(deck, pace, &watch);
     REQUIRE(r.completed);
     std::vector<std::uint32_t> states;
     std::vector<double> at;
@@ -217,7 +217,7 @@ TEST_CASE("Condition cards: a condition card's row gives the reader cycle it too
           "and in the report",
           "[conditions][report]") {
     const axes::MachineProfile profile = axes::extended_profile();
-    const RunResult r = run(
+    const RunResult r = run_changer(
         {condition_card(1, {cond(4, Axis::table, 150, PassingSense::forward, ActionKind::lamp, 2)}),
          table_move(2, 0, 400)},
         Pace::fast_forward);

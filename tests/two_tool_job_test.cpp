@@ -25,7 +25,7 @@ using parsons::test::run_orders;
 
 namespace {
 
-constexpr double kQuantisation = 0.0007 + 0.00025; // as template_job_test.cpp
+constexpr double kTwoToolQuantisation = 0.0007 + 0.00025; // as template_job_test.cpp
 
 struct Job {
     TwoToolDeck deck;
@@ -233,14 +233,15 @@ TEST_CASE("Two-tool job: the cut proof, each pass with the radius of the tool th
     CHECK(finish.proof.machined_points == t.design.points.size());
     // Tool 1, its cards offset by r1 + 0.010: no gouge, the allowance left standing.
     CHECK(rough.proof.max_gouge_in == 0);
-    CHECK(rough.proof.max_leftover_in > 0.010 - kQuantisation);
+    CHECK(rough.proof.max_leftover_in > 0.010 - kTwoToolQuantisation);
     CHECK(rough.proof.max_leftover_in <=
-          0.010 + deck.passes[0].deck.planned_leftover_in + kQuantisation);
+          0.010 + deck.passes[0].deck.planned_leftover_in + kTwoToolQuantisation);
     // Tool 2 on the design: its staircase dip and scallop as planned, within quantisation
     // (measured: gouge 0.00142 in, leftover 0.00269 in).
-    CHECK(finish.proof.max_gouge_in <= deck.passes[1].deck.planned_gouge_in + kQuantisation);
+    CHECK(finish.proof.max_gouge_in <= deck.passes[1].deck.planned_gouge_in + kTwoToolQuantisation);
     CHECK(finish.proof.max_gouge_in < 0.0015);
-    CHECK(finish.proof.max_leftover_in <= deck.passes[1].deck.planned_leftover_in + kQuantisation);
+    CHECK(finish.proof.max_leftover_in <=
+          deck.passes[1].deck.planned_leftover_in + kTwoToolQuantisation);
     // Together: per design point the least deviation, here everywhere the finish's.
     CHECK(t.combined.deviation_in == finish.proof.deviation_in);
     CHECK(t.combined.max_gouge_in == finish.proof.max_gouge_in);
