@@ -60,6 +60,14 @@ int hole_count(ColumnWord word);
 
 class Card {
 public:
+    Card() = default;
+    // Every column at once, column 1 first, each word masked to the twelve rows (a reader's
+    // whole card in one copy: no column number to check).
+    explicit Card(const std::array<ColumnWord, kColumns>& columns) {
+        for (std::size_t i = 0; i < columns.size(); ++i) {
+            columns_[i] = columns[i] & kAllRowsMask;
+        }
+    }
     // Columns are numbered 1 .. 80 as printed on the card.
     ColumnWord column(int col) const { return columns_.at(static_cast<std::size_t>(col - 1)); }
     void set_column(int col, ColumnWord word) {

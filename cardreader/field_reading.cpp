@@ -4,7 +4,10 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <bit>
+#include <cstdint>
+#include <stdexcept>
 
 namespace parsons::cardreader {
 
@@ -31,21 +34,47 @@ int digit_of(ColumnWord digits) {
     return 9 - std::countr_zero(static_cast<unsigned>(digits));
 }
 
+namespace {
+
+// What rows 0..9 of a column read as, for every way of punching them: the digit, kBlank or
+// kDoublePunch (row d is bit 9 - d, as digit_of() reads it). Worked out when compiled, so that
+// a number column costs a look-up.
+constexpr std::int8_t kBlank = -1;
+constexpr std::int8_t kDoublePunch = -2;
+constexpr std::array<std::int8_t, kDigitRows + 1> kDigitRead = [] {
+    std::array<std::int8_t, kDigitRows + 1> read{};
+    for (unsigned rows = 0; rows <= kDigitRows; ++rows) {
+        read.at(rows) = rows == 0 ? kBlank
+                        : (rows & (rows - 1)) != 0
+                            ? kDoublePunch
+                            : static_cast<std::int8_t>(9 - std::countr_zero(rows));
+    }
+    return read;
+}();
+
+} // namespace
+
 std::optional<int> read_number(const Card& card, const LayoutField& f, Problems& problems) {
     int value = 0;
     int blanks = 0;
     int first_blank = 0;
     bool bad = false;
+    if (f.first_column < 1 || f.last_column() > kColumns) {
+        throw std::out_of_range(fmt::format("{}: columns {}..{} are not on the card",
+                                            field_label(f), f.first_column, f.last_column()));
+    }
+    const auto& columns = card.columns();
     for (int c = f.first_column; c <= f.last_column(); ++c) {
-        ColumnWord digits = card.column(c) & kDigitRows;
-        if (digits == 0) {
+        const auto digits =
+            static_cast<ColumnWord>(columns[static_cast<std::size_t>(c - 1)] & kDigitRows);
+        const int d = kDigitRead[digits];
+        if (d == kBlank) {
             blanks += 1;
             first_blank = first_blank == 0 ? c : first_blank;
             value *= 10;
             continue;
         }
-        int d = digit_of(digits);
-        if (d < 0) {
+        if (d == kDoublePunch) {
             problems.add(
                 c, fmt::format("double punch (rows {}) in {}", join_rows(digits), field_label(f)));
             bad = true;

@@ -7,6 +7,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
+#include <bit>
 #include <random>
 #include <sstream>
 
@@ -157,4 +160,79 @@ TEST_CASE("Column binary: any one bit flipped in any byte of a card is refused, 
                                        160 + i + 1, 160 + i, i / 2 + 1)) == 0);
         }
     }
+}
+
+TEST_CASE("Column binary: a card is refused exactly when one of its bytes breaks the rule, byte "
+          "by byte, wherever the bad bytes stand",
+          "[cbn][bad-input]") {
+    // The rule one byte at a time, as SIMH states it: bit 7 on the first byte only, odd parity
+    // over bits 6..0. The reader checks eight bytes at a time; each of them, and each pair, is
+    // made bad in turn here, besides cards of random bytes.
+    auto byte_good = [](std::size_t i, std::uint8_t b) {
+        const auto low = static_cast<unsigned>(b & 0x7F);
+        const bool mark_ok = i == 0 ? (b & 0x80) != 0 : (b & 0x80) == 0;
+        return mark_ok && std::popcount(low) % 2 == 1;
+    };
+    std::mt19937 rng(1952);
+    const std::string good = write_deck({random_card(rng)});
+    std::array<std::uint8_t, kCbnCardBytes> base{};
+    std::copy(good.begin(), good.end(), base.begin());
+    auto check = [&](const std::array<std::uint8_t, kCbnCardBytes>& bytes) {
+        bool expect_good = true;
+        for (std::size_t i = 0; i < bytes.size(); ++i) {
+            expect_good = expect_good && byte_good(i, bytes[i]);
+        }
+        bool read = true;
+        try {
+            const Card card = cbn_decode(bytes, "deck.cbn", 1, 0);
+            for (int c = 1; c <= 80; ++c) {
+                const auto i = static_cast<std::size_t>(2 * (c - 1));
+                REQUIRE(card.column(c) ==
+                        static_cast<ColumnWord>((bytes[i] & 0x3F) << 6 | (bytes[i + 1] & 0x3F)));
+            }
+        } catch (const DeckError&) {
+            read = false;
+        }
+        return read == expect_good;
+    };
+    REQUIRE(check(base));
+    // A blank card too (every byte 0x40 after the first): a check that wrongly calls good bytes
+    // bad only sends the reader to its byte-by-byte search, so the bad bytes are set among
+    // bytes that are as plain as they can be, where one wrongly called good shows.
+    std::array<std::uint8_t, kCbnCardBytes> blank{};
+    blank.fill(0x40);
+    blank[0] = 0xC0;
+    int refused = 0;
+    for (const auto& card : {base, blank}) {
+        for (std::size_t i = 0; i < kCbnCardBytes; ++i) {
+            for (unsigned v = 0; v < 256; ++v) { // every byte position, every value
+                auto bytes = card;
+                bytes[i] = static_cast<std::uint8_t>(v | (i == 0 ? 0x80 : 0));
+                INFO("byte " << i << " = " << v);
+                REQUIRE(check(bytes));
+                refused += byte_good(i, bytes[i]) ? 0 : 1;
+            }
+        }
+    }
+    CHECK(refused > 20000);
+    int read = 0;
+    for (int n = 0; n < 3000; ++n) {
+        auto bytes = base;
+        // One to three bytes anywhere set to anything, the first keeping its mark.
+        const int k = 1 + static_cast<int>(rng() % 3);
+        for (int j = 0; j < k; ++j) {
+            const std::size_t i = rng() % kCbnCardBytes;
+            bytes[i] = static_cast<std::uint8_t>(rng() & 0xFF);
+            bytes[0] |= 0x80;
+        }
+        INFO("case " << n);
+        REQUIRE(check(bytes));
+        bool all = true;
+        for (std::size_t i = 0; i < bytes.size(); ++i) {
+            all = all && byte_good(i, bytes[i]);
+        }
+        read += all ? 1 : 0;
+    }
+    CHECK(read > 100); // both outcomes met: cards read and cards refused
+    CHECK(read < 2900);
 }
