@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include <array>
-#include <bit>
 #include <cstdint>
 #include <stdexcept>
 
@@ -24,30 +23,18 @@ std::string join_rows(ColumnWord word) {
     return text;
 }
 
-// The digit of a column punched in one of rows 0..9, or -1 (blank or a double punch).
-// Row d is bit 9 - d of the column word.
-int digit_of(ColumnWord digits) {
-    static_assert(row_bit(digit_row(0)) == 1U << 9 && row_bit(digit_row(9)) == 1U);
-    if (digits == 0 || (digits & (digits - 1)) != 0) {
-        return -1;
-    }
-    return 9 - std::countr_zero(static_cast<unsigned>(digits));
-}
-
 namespace {
 
 // What rows 0..9 of a column read as, for every way of punching them: the digit, kBlank or
-// kDoublePunch (row d is bit 9 - d, as digit_of() reads it). Worked out when compiled, so that
-// a number column costs a look-up.
+// kDoublePunch: digit_of() for each, worked out when compiled, so that a number column costs a
+// look-up.
 constexpr std::int8_t kBlank = -1;
 constexpr std::int8_t kDoublePunch = -2;
 constexpr std::array<std::int8_t, kDigitRows + 1> kDigitRead = [] {
     std::array<std::int8_t, kDigitRows + 1> read{};
     for (unsigned rows = 0; rows <= kDigitRows; ++rows) {
-        read.at(rows) = rows == 0 ? kBlank
-                        : (rows & (rows - 1)) != 0
-                            ? kDoublePunch
-                            : static_cast<std::int8_t>(9 - std::countr_zero(rows));
+        const int d = digit_of(static_cast<ColumnWord>(rows));
+        read.at(rows) = rows == 0 ? kBlank : d < 0 ? kDoublePunch : static_cast<std::int8_t>(d);
     }
     return read;
 }();

@@ -7,6 +7,7 @@
 #include "cardreader/card.hpp"
 #include "cardreader/layout.hpp"
 
+#include <bit>
 #include <optional>
 #include <string>
 
@@ -20,7 +21,14 @@ inline constexpr ColumnWord r1 = row_bit(Row::r1);
 std::string join_rows(ColumnWord word);
 
 // The digit of a column punched in one of rows 0..9, or -1 (blank or a double punch).
-int digit_of(ColumnWord digits);
+// Row d is bit 9 - d of the column word.
+constexpr int digit_of(ColumnWord digits) {
+    static_assert(row_bit(digit_row(0)) == 1U << 9 && row_bit(digit_row(9)) == 1U);
+    if (digits == 0 || (digits & (digits - 1)) != 0) {
+        return -1;
+    }
+    return 9 - std::countr_zero(static_cast<unsigned>(digits));
+}
 
 // Collects the bad punch with the lowest column: the one the operator finds first.
 class Problems {
