@@ -132,10 +132,13 @@ double ray_enters_capsule(const Vector2d& p, const Vector2d& n, const Vector2d& 
 // came nearer than R to is gouged by the difference; a point it did not reach has material
 // left standing up to where, out along its normal, the cutter's swept region begins. The span
 // is judged at evenly spaced points, one every kJudgeStep inches of chord-wise parameter but
-// never fewer than 8 nor more than `samples`.
+// never fewer than 8 nor more than `samples`, coarse to fine (the ends, the middle, the quarters
+// ...): the deviation is the largest of them, whatever their order. A caller that only asks
+// whether the span stays within `limit` is answered at the first point past it (the deviation
+// returned then exceeds the limit, and is not the span's largest).
 Deviation span_deviation(const Airfoil& airfoil, const TemplateOptions& o, const Track& track,
-                         double wa, double wb, const Station& a, const Station& b,
-                         int samples = 16) {
+                         double wa, double wb, const Station& a, const Station& b, int samples = 16,
+                         double limit = std::numeric_limits<double>::infinity()) {
     const Vector2d corner = corner_between(a, b);
     const double r = o.cutter_radius_in;
     auto dist = [&](const Vector2d& p) {
@@ -150,17 +153,31 @@ Deviation span_deviation(const Airfoil& airfoil, const TemplateOptions& o, const
     const int n =
         std::isnan(wanted) || wanted >= samples ? samples : std::max(8, static_cast<int>(wanted));
     Deviation d;
-    for (int k = 0; k <= n; ++k) {
+    auto judge = [&](int k) {
         const Station s = station_at(airfoil, o, track, wa + (wb - wa) * k / n);
         const double d0 = dist(s.work);
         if (d0 <= r) {
             d.gouge = std::max(d.gouge, r - d0);
-            continue;
+        } else {
+            const double t_max = 2 * r + d0;
+            const double t =
+                std::min(ray_enters_capsule(s.work, s.toward_cutter, a.centre, corner, r),
+                         ray_enters_capsule(s.work, s.toward_cutter, corner, b.centre, r));
+            d.leftover = std::max(d.leftover, std::min(t, t_max));
         }
-        const double t_max = 2 * r + d0;
-        const double t = std::min(ray_enters_capsule(s.work, s.toward_cutter, a.centre, corner, r),
-                                  ray_enters_capsule(s.work, s.toward_cutter, corner, b.centre, r));
-        d.leftover = std::max(d.leftover, std::min(t, t_max));
+        return std::max(d.leftover, d.gouge) <= limit;
+    };
+    // Point k is judged at the widest stride that divides it: each of 0 .. n once.
+    int top = 1;
+    while (top < n) {
+        top *= 2;
+    }
+    for (int stride = top; stride >= 1; stride /= 2) {
+        for (int k = 0; k <= n; k += stride) {
+            if ((stride == top || (k / stride) % 2 == 1) && !judge(k)) {
+                return d;
+            }
+        }
     }
     return d;
 }
@@ -217,7 +234,7 @@ std::vector<double> stations_by_scallop(const Airfoil& airfoil, const TemplateOp
     auto fits = [&](double step) {
         const double wb = std::min(track.end(), w + step);
         const Station b = station_at(airfoil, o, track, wb);
-        const Deviation d = span_deviation(airfoil, o, track, w, wb, a, b, 256);
+        const Deviation d = span_deviation(airfoil, o, track, w, wb, a, b, 256, o.scallop_in);
         return std::max(d.leftover, d.gouge) <= o.scallop_in;
     };
     while (w < track.end()) {
