@@ -594,7 +594,9 @@ void add_bench_command(CLI::App& app, Command& selected) {
     cmd->add_option("--child-trace", o->child_trace)->group("");
     cmd->add_option("--child-profile", o->child_profile)->group("");
     cmd->footer(exit_codes_help({{ExitCode::ok, "the figures were printed"}}) +
-                "Examples:\n  parsons bench\n  parsons bench --runs 7 --json > bench.json");
+                "Examples:\n  parsons bench\n  parsons bench --runs 1 --short-cards 1000 "
+                "--memory-cards 1000 "
+                "--json > quick.json   (a quick look: one run each, smaller decks)");
     cmd->callback([&selected, o] { selected = [o] { return run_bench(*o); }; });
 }
 

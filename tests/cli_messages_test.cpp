@@ -20,6 +20,7 @@ using parsons::test::run_parsons;
 using parsons::test::run_shell;
 using parsons::test::source_path;
 using parsons::test::TempDir;
+using parsons::test::whole_share;
 using parsons::test::write_bytes;
 
 namespace {
@@ -69,10 +70,15 @@ TEST_CASE("Messages: demo --out a device that takes nothing is exit 2, as run --
         run_parsons("run " + q(source_path(kSample)) + " -q --report " + q(full->string()));
     CHECK(report.exit_code == 2);
     CHECK(says(report.output, "No space left on device"));
-    const auto onto_full = run_parsons("demo --out " + q(full->string()));
-    CHECK(onto_full.exit_code == 2);
-    CHECK(says(onto_full.output, "parsons: error: " + full->string() + ": "));
-    CHECK(says(onto_full.output, "No space left on device"));
+    // The whole demo runs before its first write fails: under the sanitizers (a share of the
+    // cases, test_support.hpp) only the null device's run below, some 11 s there; the regular
+    // build runs both.
+    if (whole_share()) {
+        const auto onto_full = run_parsons("demo --out " + q(full->string()));
+        CHECK(onto_full.exit_code == 2);
+        CHECK(says(onto_full.output, "parsons: error: " + full->string() + ": "));
+        CHECK(says(onto_full.output, "No space left on device"));
+    }
     // Into a null device: the story on standard output, nothing on standard error (its
     // intended collision and wrong pitch are told in the story, not as errors).
     const auto onto_null =
