@@ -80,6 +80,11 @@ void Tracer::attach(MachineObserver* observer) {
 
 void Tracer::report(SignalId id, std::uint32_t value) {
     std::uint32_t& old = values_.at(id);
+    if (log_ != nullptr) {
+        old = value;
+        log_->append(now_, id, value);
+        return;
+    }
     observer_->on_signal(now_, id, old, value);
     old = value;
 }
