@@ -69,7 +69,8 @@ bool running_as_root();
 // (default 1, the whole count). The sanitizer run (CMakePresets.json, preset sanitize) sets a
 // quarter: the memory errors it looks for show on any case, and the main suite runs them all.
 // share_of_cases(n) is that share of n, at least 1; whole_share() says whether it is all of them (a
-// test's checks on how its random cases are spread hold only then).
+// test's checks on how its random cases are spread hold only then, and a run that repeats what
+// another case or pass already ran, such as a second whole demo, is left out under a share).
 int share_of_cases(int n);
 bool whole_share();
 // A character device node of the test's own, `dir`/`name` made with mknod (major, minor: 1, 3 is
